@@ -1,0 +1,315 @@
+//! Hard limits on one evaluation, checked explicitly as work is done.
+//!
+//! One [`Budget`] travels through evaluation, meshing and export. Every stage
+//! asks it before doing work (`charge_*`, `reserve_memory`), and it answers
+//! with a typed [`LimitExceeded`] naming the limit, the configured value and
+//! the value that would have been reached. Nothing is allocated first and
+//! checked after, so a hostile grammar cannot run the process out of memory.
+
+use serde::{Deserialize, Serialize};
+use std::time::{Duration, Instant};
+
+/// The limits a request runs under. Defaults suit a phone icon; each may be
+/// raised by a request up to [`Limits::ceiling`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Limits {
+    /// Deepest rule-call nesting allowed (the start rule is depth 0).
+    pub max_depth: u32,
+    /// Most primitive instances in the scene.
+    pub max_primitives: u64,
+    /// Most triangles in the output mesh.
+    pub max_triangles: u64,
+    /// Most bytes of accounted memory (scene, evaluation stack, mesh and output buffers).
+    pub max_memory: u64,
+    /// Wall-clock limit in milliseconds for evaluation, meshing and export together.
+    pub timeout_ms: u64,
+    /// Largest accepted source, in bytes.
+    pub max_source_bytes: u64,
+    /// Most evaluation steps (rule expansions and iterator copies). Unlike the
+    /// deadline this is deterministic, so runaway grammars fail the same way everywhere.
+    pub max_steps: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_depth: 1_000,
+            max_primitives: 200_000,
+            max_triangles: 2_000_000,
+            max_memory: 256 * 1024 * 1024,
+            timeout_ms: 10_000,
+            max_source_bytes: 1024 * 1024,
+            max_steps: 10_000_000,
+        }
+    }
+}
+
+impl Limits {
+    /// The largest value any request may ask for.
+    pub fn ceiling() -> Limits {
+        Limits {
+            max_depth: 100_000,
+            max_primitives: 50_000_000,
+            max_triangles: 1_000_000_000,
+            max_memory: 16 * 1024 * 1024 * 1024,
+            timeout_ms: 600_000,
+            max_source_bytes: 16 * 1024 * 1024,
+            max_steps: 2_000_000_000,
+        }
+    }
+
+    /// Each field lowered to at most the matching field of `ceiling`.
+    pub fn clamped_to(self, ceiling: &Limits) -> Limits {
+        Limits {
+            max_depth: self.max_depth.min(ceiling.max_depth),
+            max_primitives: self.max_primitives.min(ceiling.max_primitives),
+            max_triangles: self.max_triangles.min(ceiling.max_triangles),
+            max_memory: self.max_memory.min(ceiling.max_memory),
+            timeout_ms: self.timeout_ms.min(ceiling.timeout_ms),
+            max_source_bytes: self.max_source_bytes.min(ceiling.max_source_bytes),
+            max_steps: self.max_steps.min(ceiling.max_steps),
+        }
+    }
+}
+
+/// Which limit ran out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Limit {
+    /// [`Limits::max_depth`]
+    Depth,
+    /// [`Limits::max_primitives`]
+    Primitives,
+    /// [`Limits::max_triangles`]
+    Triangles,
+    /// [`Limits::max_memory`]
+    Memory,
+    /// [`Limits::timeout_ms`]
+    Deadline,
+    /// [`Limits::max_source_bytes`]
+    SourceBytes,
+    /// [`Limits::max_steps`]
+    Steps,
+}
+
+impl Limit {
+    /// The limit's name as used in errors and metrics.
+    pub fn name(self) -> &'static str {
+        match self {
+            Limit::Depth => "depth",
+            Limit::Primitives => "primitives",
+            Limit::Triangles => "triangles",
+            Limit::Memory => "memory",
+            Limit::Deadline => "deadline",
+            Limit::SourceBytes => "source_bytes",
+            Limit::Steps => "steps",
+        }
+    }
+}
+
+/// A limit was exceeded: which, what it was set to, and what would have been reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, thiserror::Error)]
+#[error("limit exceeded: {} (configured {configured}, reached {reached})", limit.name())]
+pub struct LimitExceeded {
+    /// The limit.
+    pub limit: Limit,
+    /// Its configured value.
+    pub configured: u64,
+    /// The value the work would have reached (at least `configured + 1`).
+    pub reached: u64,
+}
+
+/// What to do when a limit runs out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "snake_case")]
+pub enum OnLimit {
+    /// Fail with [`LimitExceeded`].
+    #[default]
+    Error,
+    /// Stop and return what was made so far, marked truncated.
+    Truncate,
+}
+
+/// Running counters checked against [`Limits`].
+#[derive(Debug)]
+pub struct Budget {
+    limits: Limits,
+    started: Instant,
+    deadline: Option<Instant>,
+    primitives: u64,
+    triangles: u64,
+    memory: u64,
+    steps: u64,
+}
+
+impl Budget {
+    /// A fresh budget whose deadline starts counting now.
+    pub fn new(limits: Limits) -> Budget {
+        let started = Instant::now();
+        Budget {
+            limits,
+            started,
+            deadline: started.checked_add(Duration::from_millis(limits.timeout_ms)),
+            primitives: 0,
+            triangles: 0,
+            memory: 0,
+            steps: 0,
+        }
+    }
+
+    /// The limits this budget enforces.
+    pub fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    /// Primitives charged so far.
+    pub fn primitives(&self) -> u64 {
+        self.primitives
+    }
+
+    /// Triangles charged so far.
+    pub fn triangles(&self) -> u64 {
+        self.triangles
+    }
+
+    /// Accounted memory in use.
+    pub fn memory(&self) -> u64 {
+        self.memory
+    }
+
+    /// Evaluation steps taken so far.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    fn exceeded(limit: Limit, configured: u64, reached: u64) -> LimitExceeded {
+        LimitExceeded { limit, configured, reached }
+    }
+
+    /// Checks a depth before descending to it.
+    pub fn check_depth(&self, depth: u32) -> Result<(), LimitExceeded> {
+        if depth > self.limits.max_depth {
+            return Err(Self::exceeded(Limit::Depth, self.limits.max_depth.into(), depth.into()));
+        }
+        Ok(())
+    }
+
+    /// Counts one evaluation step; every 1024 steps also checks the clock.
+    #[inline]
+    pub fn charge_step(&mut self) -> Result<(), LimitExceeded> {
+        self.steps += 1;
+        if self.steps > self.limits.max_steps {
+            return Err(Self::exceeded(Limit::Steps, self.limits.max_steps, self.steps));
+        }
+        if self.steps % 1024 == 0 {
+            self.check_deadline()?;
+        }
+        Ok(())
+    }
+
+    /// Counts one primitive with `triangles` triangles.
+    #[inline]
+    pub fn charge_primitive(&mut self, triangles: u64) -> Result<(), LimitExceeded> {
+        let p = self.primitives + 1;
+        if p > self.limits.max_primitives {
+            return Err(Self::exceeded(Limit::Primitives, self.limits.max_primitives, p));
+        }
+        self.charge_triangles(triangles)?;
+        self.primitives = p;
+        Ok(())
+    }
+
+    /// Counts triangles (from primitives or free geometry).
+    pub fn charge_triangles(&mut self, triangles: u64) -> Result<(), LimitExceeded> {
+        let t = self.triangles.saturating_add(triangles);
+        if t > self.limits.max_triangles {
+            return Err(Self::exceeded(Limit::Triangles, self.limits.max_triangles, t));
+        }
+        self.triangles = t;
+        Ok(())
+    }
+
+    /// Accounts `bytes` more memory before it is allocated.
+    #[inline]
+    pub fn reserve_memory(&mut self, bytes: u64) -> Result<(), LimitExceeded> {
+        let m = self.memory.saturating_add(bytes);
+        if m > self.limits.max_memory {
+            return Err(Self::exceeded(Limit::Memory, self.limits.max_memory, m));
+        }
+        self.memory = m;
+        Ok(())
+    }
+
+    /// Returns accounted memory that has been freed.
+    pub fn release_memory(&mut self, bytes: u64) {
+        self.memory = self.memory.saturating_sub(bytes);
+    }
+
+    /// Fails once the wall-clock deadline has passed.
+    pub fn check_deadline(&self) -> Result<(), LimitExceeded> {
+        match self.deadline {
+            Some(d) if Instant::now() >= d => Err(Self::exceeded(
+                Limit::Deadline,
+                self.limits.timeout_ms,
+                self.elapsed().as_millis().try_into().unwrap_or(u64::MAX),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// Time since the budget was created.
+    pub fn elapsed(&self) -> Duration {
+        self.started.elapsed()
+    }
+
+    /// Checks a source length against [`Limits::max_source_bytes`].
+    pub fn check_source(limits: &Limits, len: u64) -> Result<(), LimitExceeded> {
+        if len > limits.max_source_bytes {
+            return Err(Self::exceeded(Limit::SourceBytes, limits.max_source_bytes, len));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_counter_names_its_limit() {
+        let limits = Limits { max_primitives: 2, max_triangles: 30, max_memory: 100, max_steps: 3, ..Limits::default() };
+        let mut b = Budget::new(limits);
+        b.charge_primitive(12).unwrap();
+        b.charge_primitive(12).unwrap();
+        let e = b.charge_primitive(1).unwrap_err();
+        assert_eq!((e.limit, e.configured, e.reached), (Limit::Primitives, 2, 3));
+        let mut b = Budget::new(limits);
+        b.charge_primitive(20).unwrap();
+        let e = b.charge_primitive(20).unwrap_err();
+        assert_eq!((e.limit, e.configured, e.reached), (Limit::Triangles, 30, 40));
+        let mut b = Budget::new(limits);
+        b.reserve_memory(60).unwrap();
+        assert_eq!(b.reserve_memory(41).unwrap_err().reached, 101);
+        b.release_memory(60);
+        b.reserve_memory(41).unwrap();
+        let mut b = Budget::new(limits);
+        for _ in 0..3 {
+            b.charge_step().unwrap();
+        }
+        assert_eq!(b.charge_step().unwrap_err().limit, Limit::Steps);
+        assert_eq!(b.check_depth(1001).unwrap_err().limit, Limit::Depth);
+    }
+
+    #[test]
+    fn zero_timeout_expires_immediately() {
+        let b = Budget::new(Limits { timeout_ms: 0, ..Limits::default() });
+        assert_eq!(b.check_deadline().unwrap_err().limit, Limit::Deadline);
+    }
+
+    #[test]
+    fn clamping_respects_the_ceiling() {
+        let big = Limits { max_primitives: u64::MAX, ..Limits::default() };
+        assert_eq!(big.clamped_to(&Limits::ceiling()).max_primitives, Limits::ceiling().max_primitives);
+    }
+}

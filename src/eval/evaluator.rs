@@ -1,0 +1,415 @@
+//! Depth-first evaluation of the IR into a [`Scene`], with an explicit stack.
+//!
+//! No Rust recursion follows the grammar: every pending piece of work is a
+//! [`Task`] on a heap-allocated stack whose peak size is charged to the
+//! memory budget. Each call's random stream key is derived from its parent's
+//! key, its call site and its iteration index (see [`StreamKey`]), so results
+//! do not depend on the order in which work is done.
+
+use super::budget::{Budget, OnLimit};
+use super::frame::Frame;
+use super::rng::StreamKey;
+use super::scene::{Instance, Scene, INSTANCE_BYTES};
+use super::EvalError;
+use crate::geom::primitives;
+use crate::lang::expr::{Expr, ExprEnv};
+use crate::lang::ir::{Adjust, AdjustOp, Axis, Item, Iterate, Program, Target};
+use crate::lang::Span;
+use glam::{DQuat, DVec3};
+
+/// A frame change plus a colour change: the effect of one adjustment list.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Delta {
+    frame: Frame,
+    colour: [f64; 4],
+}
+
+impl Delta {
+    const IDENTITY: Delta = Delta { frame: Frame::IDENTITY, colour: [0.0; 4] };
+}
+
+/// The state a piece of work runs in.
+#[derive(Debug, Clone, Copy)]
+struct Ctx {
+    frame: Frame,
+    /// Colour as offsets: RGB start at 0 (black), alpha is 1 + offset (seed 000 L1249).
+    colour: [f64; 4],
+    depth: u32,
+    key: StreamKey,
+}
+
+impl Ctx {
+    fn apply(&self, d: &Delta) -> (Frame, [f64; 4]) {
+        let mut c = self.colour;
+        for (a, b) in c.iter_mut().zip(d.colour) {
+            *a += b;
+        }
+        (self.frame.then(&d.frame), c)
+    }
+}
+
+/// Pending work.
+enum Task<'p> {
+    /// Run `items[next..]` in order, each from `ctx`.
+    Items { items: &'p [Item], next: usize, ctx: Ctx },
+    /// Produce copies `k..=count` of an iterator body; `current` is copy k's frame and colour.
+    Copies { it: &'p Iterate, k: u64, count: u64, step: Delta, current: Ctx, base_key: StreamKey },
+}
+
+/// Bytes charged per stack slot (the task enum is at most this big).
+const TASK_BYTES: u64 = std::mem::size_of::<Task<'static>>() as u64;
+
+/// Expression environment for one invocation: bound parameters plus the invocation's stream.
+struct Env<'a> {
+    params: &'a [f64],
+    key: StreamKey,
+}
+
+impl ExprEnv for Env<'_> {
+    fn param(&self, index: u32) -> f64 {
+        self.params.get(index as usize).copied().unwrap_or(f64::NAN)
+    }
+    fn rand(&mut self, site: u32) -> f64 {
+        self.key.uniform(site)
+    }
+}
+
+/// Evaluates one number and rejects NaN and infinities with the adjustment's position.
+fn finite(e: &Expr, env: &mut Env, span: Span, what: &str) -> Result<f64, EvalError> {
+    let v = e.eval(env);
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(EvalError::NonFinite { span, what: what.to_string(), value: v.to_string() })
+    }
+}
+
+/// Computes the combined effect of an adjustment list, each argument divided by `divisor`
+/// (an iterator's `/n`; scale becomes k^(1/n) so that n steps multiply by k).
+fn eval_adjust(adjust: &[Adjust], env: &mut Env, divisor: f64) -> Result<Delta, EvalError> {
+    let mut d = Delta::IDENTITY;
+    for a in adjust {
+        let op = match &a.op {
+            AdjustOp::Translate([x, y, z]) => {
+                let v = DVec3::new(
+                    finite(x, env, a.span, "translation")?,
+                    finite(y, env, a.span, "translation")?,
+                    finite(z, env, a.span, "translation")?,
+                );
+                Frame::from_translation(v / divisor)
+            }
+            AdjustOp::Rotate { axis, angle } => {
+                let t = finite(angle, env, a.span, "angle")? / divisor;
+                Frame::from_rotation(match axis {
+                    Axis::X => DQuat::from_rotation_x(t),
+                    Axis::Y => DQuat::from_rotation_y(t),
+                    Axis::Z => DQuat::from_rotation_z(t),
+                })
+            }
+            AdjustOp::Scale(k) => {
+                let k = finite(k, env, a.span, "scale")?;
+                let k = if divisor == 1.0 { k } else { k.signum() * k.abs().powf(1.0 / divisor) };
+                Frame::from_scale(k)
+            }
+            AdjustOp::Reflect([x, y, z]) => Frame::reflection(DVec3::new(
+                finite(x, env, a.span, "reflection normal")?,
+                finite(y, env, a.span, "reflection normal")?,
+                finite(z, env, a.span, "reflection normal")?,
+            )),
+            AdjustOp::Colour { channel, delta } => {
+                let v = finite(delta, env, a.span, "colour")? / divisor;
+                if let Some(c) = d.colour.get_mut(usize::from(*channel)) {
+                    *c += v;
+                }
+                continue;
+            }
+        };
+        d.frame = d.frame.then(&op);
+        if !d.frame.is_finite() {
+            return Err(EvalError::NonFinite { span: a.span, what: "transform".into(), value: "overflow".into() });
+        }
+    }
+    Ok(d)
+}
+
+/// Everything fixed for one evaluation: the program, bound parameters, precomputed deltas.
+struct Evaluator<'p> {
+    program: &'p Program,
+    params: &'p [f64],
+    /// Deltas of call sites whose adjustments contain no `rand()`, indexed by site.
+    fixed: Vec<Option<Delta>>,
+    /// Cumulative weights per group, for weighted selection.
+    cumulative: Vec<Vec<f64>>,
+    /// Triangles per primitive kind at the requested detail.
+    tris: [u64; 9],
+    maxiter: u64,
+}
+
+/// Evaluation slot reserved for rule selection (never a `rand()` site).
+const SELECT_SLOT: u32 = u32::MAX;
+
+impl<'p> Evaluator<'p> {
+    fn new(program: &'p Program, params: &'p [f64], detail: u32) -> Result<Self, EvalError> {
+        let mut fixed = vec![None; program.site_count as usize];
+        for g in &program.groups {
+            for r in &g.rules {
+                collect_fixed(&r.body, params, &mut fixed)?;
+            }
+        }
+        let cumulative = program
+            .groups
+            .iter()
+            .map(|g| {
+                let mut acc = 0.0;
+                g.rules.iter().map(|r| {
+                    acc += r.weight.max(0.0);
+                    acc
+                }).collect()
+            })
+            .collect();
+        let mut tris = [0u64; 9];
+        for k in crate::lang::ir::PrimitiveKind::ALL {
+            tris[k as usize] = primitives::triangle_count(k, detail);
+        }
+        Ok(Evaluator {
+            program,
+            params,
+            fixed,
+            cumulative,
+            tris,
+            maxiter: program.directives.maxiter.unwrap_or(u64::MAX),
+        })
+    }
+
+    fn delta(&self, adjust: &[Adjust], site: u32, key: StreamKey) -> Result<Delta, EvalError> {
+        if let Some(Some(d)) = self.fixed.get(site as usize) {
+            return Ok(*d);
+        }
+        eval_adjust(adjust, &mut Env { params: self.params, key }, 1.0)
+    }
+}
+
+/// Precomputes the deltas of every call whose adjustments are deterministic.
+fn collect_fixed(items: &[Item], params: &[f64], fixed: &mut [Option<Delta>]) -> Result<(), EvalError> {
+    // Iterative walk: bodies can be deeply nested blocks.
+    let mut pending: Vec<&[Item]> = vec![items];
+    while let Some(items) = pending.pop() {
+        for item in items {
+            match item {
+                Item::Call(c) => {
+                    if c.adjust.iter().all(|a| adjust_is_deterministic(&a.op)) {
+                        let d = eval_adjust(&c.adjust, &mut Env { params, key: StreamKey(0) }, 1.0)?;
+                        if let Some(slot) = fixed.get_mut(c.site as usize) {
+                            *slot = Some(d);
+                        }
+                    }
+                }
+                Item::Block(b) => pending.push(b),
+                Item::Iterate(it) => pending.push(std::slice::from_ref(&*it.body)),
+            }
+        }
+    }
+    Ok(())
+}
+
+fn adjust_is_deterministic(op: &AdjustOp) -> bool {
+    match op {
+        AdjustOp::Translate(v) | AdjustOp::Reflect(v) => v.iter().all(Expr::is_deterministic),
+        AdjustOp::Rotate { angle, .. } => angle.is_deterministic(),
+        AdjustOp::Scale(k) => k.is_deterministic(),
+        AdjustOp::Colour { delta, .. } => delta.is_deterministic(),
+    }
+}
+
+/// Options for one evaluation that do not come from the source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EvalOptions {
+    /// The seed; when `None`, the grammar's `randseed`, else 0.
+    pub seed: Option<u64>,
+    /// Tessellation detail, used to count triangles against the budget.
+    pub detail: u32,
+    /// Fail or truncate when a limit runs out.
+    pub on_limit: OnLimit,
+}
+
+impl Default for EvalOptions {
+    fn default() -> Self {
+        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error }
+    }
+}
+
+/// Evaluates `program` with bound `params` into a scene, under `budget`.
+pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
+    let ev = Evaluator::new(program, params, options.detail)?;
+    let seed = options.seed.or(program.directives.randseed).unwrap_or(0);
+    let mut scene = Scene {
+        background: program.directives.background.map(|c| c.map(|v| v.clamp(0.0, 1.0) as f32)),
+        ..Scene::default()
+    };
+    let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed) };
+    let mut stack: Vec<Task> = Vec::new();
+    let mut charged_slots: u64 = 0;
+    let result = run(&ev, root, &mut stack, &mut charged_slots, &mut scene, budget);
+    budget.release_memory(charged_slots * TASK_BYTES);
+    match result {
+        Ok(()) => Ok(scene),
+        Err(EvalError::Limit(e)) if options.on_limit == OnLimit::Truncate => {
+            scene.truncated = Some(e);
+            Ok(scene)
+        }
+        Err(e) => Err(e),
+    }
+}
+
+fn run<'p>(
+    ev: &Evaluator<'p>,
+    root: Ctx,
+    stack: &mut Vec<Task<'p>>,
+    charged_slots: &mut u64,
+    scene: &mut Scene,
+    budget: &mut Budget,
+) -> Result<(), EvalError> {
+    expand(ev, ev.program.start, root, stack, scene, budget)?;
+    loop {
+        // Charge the stack's peak size before it can grow further.
+        let needed = stack.len() as u64 + 2;
+        if needed > *charged_slots {
+            budget.reserve_memory((needed - *charged_slots) * TASK_BYTES)?;
+            *charged_slots = needed;
+        }
+        let Some(task) = stack.pop() else { return Ok(()) };
+        match task {
+            Task::Items { items, next, ctx } => {
+                let Some(item) = items.get(next) else { continue };
+                if next + 1 < items.len() {
+                    stack.push(Task::Items { items, next: next + 1, ctx });
+                }
+                run_item(ev, item, ctx, stack, scene, budget)?;
+            }
+            Task::Copies { it, k, count, step, current, base_key } => {
+                budget.charge_step()?;
+                if k < count {
+                    let (frame, colour) = current.apply(&step);
+                    stack.push(Task::Copies {
+                        it,
+                        k: k + 1,
+                        count,
+                        step,
+                        current: Ctx { frame, colour, ..current },
+                        base_key,
+                    });
+                }
+                let ctx = Ctx { key: base_key.child(it.site, k), ..current };
+                run_item(ev, &it.body, ctx, stack, scene, budget)?;
+            }
+        }
+    }
+}
+
+/// Starts one item in `ctx`: calls resolve now, blocks and iterators push work.
+fn run_item<'p>(
+    ev: &Evaluator<'p>,
+    item: &'p Item,
+    ctx: Ctx,
+    stack: &mut Vec<Task<'p>>,
+    scene: &mut Scene,
+    budget: &mut Budget,
+) -> Result<(), EvalError> {
+    match item {
+        Item::Call(call) => {
+            let key = ctx.key.child(call.site, 0);
+            let d = ev.delta(&call.adjust, call.site, key)?;
+            let (frame, colour) = ctx.apply(&d);
+            let child = Ctx { frame, colour, depth: ctx.depth + 1, key };
+            expand(ev, call.target, child, stack, scene, budget)
+        }
+        Item::Block(items) => {
+            if !items.is_empty() {
+                stack.push(Task::Items { items, next: 0, ctx });
+            }
+            Ok(())
+        }
+        Item::Iterate(it) => {
+            let mut env = Env { params: ev.params, key: ctx.key.child(it.site, 0) };
+            let count = finite(&it.count, &mut env, it.span, "iteration count")?;
+            if count < 0.0 || count.fract() != 0.0 {
+                return Err(EvalError::BadIteration { span: it.span, value: count.to_string() });
+            }
+            let divisor = match &it.divisor {
+                Some(e) => {
+                    let n = finite(e, &mut env, it.span, "iteration divisor")?;
+                    if n <= 0.0 {
+                        return Err(EvalError::BadIteration { span: it.span, value: format!("divisor {n}") });
+                    }
+                    n
+                }
+                None => 1.0,
+            };
+            // `count` is a finite non-negative whole number; saturate absurd values, the
+            // step budget stops them long before they matter.
+            let count = (count.min(u64::MAX as f64) as u64).min(ev.maxiter);
+            if count == 0 {
+                return Ok(());
+            }
+            let step = eval_adjust(&it.step, &mut env, divisor)?;
+            let (frame, colour) = ctx.apply(&step);
+            stack.push(Task::Copies {
+                it,
+                k: 1,
+                count,
+                step,
+                current: Ctx { frame, colour, ..ctx },
+                base_key: ctx.key,
+            });
+            Ok(())
+        }
+    }
+}
+
+/// Runs a call's target in `ctx` (already adjusted, depth already increased).
+fn expand<'p>(
+    ev: &Evaluator<'p>,
+    target: Target,
+    ctx: Ctx,
+    stack: &mut Vec<Task<'p>>,
+    scene: &mut Scene,
+    budget: &mut Budget,
+) -> Result<(), EvalError> {
+    match target {
+        Target::Primitive(kind) => {
+            budget.charge_step()?;
+            budget.charge_primitive(ev.tris[kind as usize])?;
+            if scene.instances.len() == scene.instances.capacity() {
+                let grow = scene.instances.capacity().max(64);
+                budget.reserve_memory(grow as u64 * INSTANCE_BYTES)?;
+                scene.instances.reserve_exact(grow);
+            }
+            let mut colour = ctx.colour;
+            colour[3] += 1.0;
+            scene.instances.push(Instance::new(kind, &ctx.frame, colour));
+            Ok(())
+        }
+        Target::Group(g) => {
+            let dirs = &ev.program.directives;
+            if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
+                return Ok(());
+            }
+            budget.check_depth(ctx.depth)?;
+            budget.charge_step()?;
+            let Some(group) = ev.program.groups.get(g as usize) else { return Ok(()) };
+            let rule = if group.rules.len() == 1 {
+                &group.rules[0]
+            } else {
+                let cum = &ev.cumulative[g as usize];
+                let total = cum.last().copied().unwrap_or(0.0);
+                let target = ctx.key.uniform(SELECT_SLOT) * total;
+                let i = cum.iter().position(|&c| c > target).unwrap_or(0);
+                &group.rules[i]
+            };
+            if !rule.body.is_empty() {
+                stack.push(Task::Items { items: &rule.body, next: 0, ctx });
+            }
+            Ok(())
+        }
+    }
+}

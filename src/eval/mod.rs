@@ -1,0 +1,69 @@
+//! The evaluator: frames, seeded random streams, budgets, and the
+//! depth-first expansion of the IR into a [`scene::Scene`].
+
+pub mod budget;
+pub mod evaluator;
+pub mod frame;
+pub mod params;
+pub mod rng;
+pub mod scene;
+
+pub use budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
+pub use evaluator::{evaluate, EvalOptions};
+pub use frame::Frame;
+pub use params::{bind_params, ParamValue};
+pub use scene::{Instance, Scene};
+
+use crate::lang::Span;
+
+/// Why an evaluation failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EvalError {
+    /// A budget limit ran out (and the request asked for an error, not truncation).
+    #[error(transparent)]
+    Limit(#[from] LimitExceeded),
+    /// An argument evaluated to NaN or an infinity (e.g. division by zero).
+    #[error("{}:{}: {what} is not a finite number ({value})", span.line, span.column)]
+    NonFinite {
+        /// Where the argument is written.
+        span: Span,
+        /// Which argument.
+        what: String,
+        /// The value computed.
+        value: String,
+    },
+    /// An iterator count or divisor that is not a usable number.
+    #[error("{}:{}: iteration count must be a whole number ≥ 0 and divisor > 0, got {value}", span.line, span.column)]
+    BadIteration {
+        /// Where the iterator is written.
+        span: Span,
+        /// The value computed.
+        value: String,
+    },
+    /// A request parameter the grammar does not declare.
+    #[error("unknown parameter `{name}` (declared: {declared})")]
+    UnknownParam {
+        /// The name given.
+        name: String,
+        /// The names the grammar declares, comma-separated.
+        declared: String,
+    },
+    /// A request parameter with a bad value.
+    #[error("parameter `{name}`: {message}")]
+    BadParam {
+        /// The parameter.
+        name: String,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+impl EvalError {
+    /// The source position, when the error comes from a place in the source.
+    pub fn span(&self) -> Option<Span> {
+        match self {
+            EvalError::NonFinite { span, .. } | EvalError::BadIteration { span, .. } => Some(*span),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,63 @@
+//! Binding request parameters to a program's `@param` declarations.
+
+use super::EvalError;
+use crate::lang::ir::{ParamKind, Program};
+use std::collections::BTreeMap;
+
+/// A parameter value as a request gives it.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(untagged)]
+pub enum ParamValue {
+    /// A number (ints and floats).
+    Number(f64),
+    /// A boolean.
+    Bool(bool),
+    /// Text, parsed as a number or `true`/`false` (from CLI `name=value` and URL query strings).
+    Text(String),
+}
+
+impl ParamValue {
+    fn as_number(&self) -> Option<f64> {
+        match self {
+            ParamValue::Number(v) => Some(*v),
+            ParamValue::Bool(b) => Some(if *b { 1.0 } else { 0.0 }),
+            ParamValue::Text(s) => match s.trim() {
+                "true" => Some(1.0),
+                "false" => Some(0.0),
+                t => t.parse::<f64>().ok(),
+            },
+        }
+    }
+}
+
+/// Returns the value of every declared parameter, in declaration order: the
+/// request's value where given, else the default. Unknown names, values of
+/// the wrong type and values outside the declared range are errors.
+pub fn bind_params(program: &Program, given: &BTreeMap<String, ParamValue>) -> Result<Vec<f64>, EvalError> {
+    for name in given.keys() {
+        if !program.params.iter().any(|p| &p.name == name) {
+            let declared: Vec<&str> = program.params.iter().map(|p| p.name.as_str()).collect();
+            return Err(EvalError::UnknownParam { name: name.clone(), declared: declared.join(", ") });
+        }
+    }
+    program
+        .params
+        .iter()
+        .map(|p| {
+            let Some(raw) = given.get(&p.name) else { return Ok(p.default) };
+            let bad = |message: String| EvalError::BadParam { name: p.name.clone(), message };
+            let v = raw.as_number().filter(|v| v.is_finite()).ok_or_else(|| bad(format!("{raw:?} is not a finite number")))?;
+            match p.kind {
+                ParamKind::Int if v.fract() != 0.0 => return Err(bad(format!("{v} is not a whole number"))),
+                ParamKind::Bool if v != 0.0 && v != 1.0 => return Err(bad(format!("{v} is not a boolean"))),
+                _ => {}
+            }
+            if let Some((lo, hi)) = p.range {
+                if v < lo || v > hi {
+                    return Err(bad(format!("{v} is outside [{lo}, {hi}]")));
+                }
+            }
+            Ok(v)
+        })
+        .collect()
+}

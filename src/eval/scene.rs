@@ -1,0 +1,67 @@
+//! The evaluator's output: primitive instances with transforms and colours.
+//!
+//! A `Scene` is what exporters ultimately describe; it knows nothing about
+//! the language it came from. Instances are stored compactly in f32 (the
+//! precision of every output format) so a million of them fit in ~52 MB.
+
+use crate::eval::budget::LimitExceeded;
+use crate::eval::frame::Frame;
+use crate::lang::ir::PrimitiveKind;
+use glam::{Mat3, Quat, Vec3};
+
+/// One placed primitive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Instance {
+    /// Which primitive.
+    pub kind: PrimitiveKind,
+    /// True when the transform is a reflection (odd parity): winding must flip.
+    pub parity: bool,
+    /// Translation of the primitive's origin.
+    pub translation: Vec3,
+    /// Rotation (unit).
+    pub rotation: Quat,
+    /// Uniform scale.
+    pub scale: f32,
+    /// Linear RGBA, each clamped to [0, 1].
+    pub colour: [f32; 4],
+}
+
+impl Instance {
+    /// Builds an instance from an evaluation frame and an unclamped colour.
+    pub fn new(kind: PrimitiveKind, frame: &Frame, colour: [f64; 4]) -> Instance {
+        Instance {
+            kind,
+            parity: frame.parity,
+            translation: frame.translation.as_vec3(),
+            rotation: frame.rotation.as_quat().normalize(),
+            scale: frame.scale as f32,
+            colour: colour.map(|c| c.clamp(0.0, 1.0) as f32),
+        }
+    }
+
+    /// The linear part s·σ·R as a matrix.
+    pub fn linear(&self) -> Mat3 {
+        let sign = if self.parity { -1.0 } else { 1.0 };
+        Mat3::from_quat(self.rotation) * (sign * self.scale)
+    }
+
+    /// The normal matrix σ·R (inverse transpose of the linear part, without the scale).
+    pub fn normal_matrix(&self) -> Mat3 {
+        let sign = if self.parity { -1.0 } else { 1.0 };
+        Mat3::from_quat(self.rotation) * sign
+    }
+}
+
+/// Everything an evaluation produced.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Scene {
+    /// Primitive instances in evaluation (depth-first) order.
+    pub instances: Vec<Instance>,
+    /// Clear colour from `background`, if the grammar set one.
+    pub background: Option<[f32; 4]>,
+    /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.
+    pub truncated: Option<LimitExceeded>,
+}
+
+/// Bytes accounted per stored instance (for the memory budget).
+pub const INSTANCE_BYTES: u64 = std::mem::size_of::<Instance>() as u64;

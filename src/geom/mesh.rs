@@ -1,0 +1,36 @@
+//! Indexed triangle meshes, the common input of every exporter.
+
+/// An indexed triangle mesh. Triangles are counter-clockwise seen from
+/// outside (right-handed), so the winding-derived normal points outward.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Mesh {
+    /// Vertex positions.
+    pub positions: Vec<[f32; 3]>,
+    /// Unit vertex normals, one per position.
+    pub normals: Vec<[f32; 3]>,
+    /// Linear RGBA8 colours, one per position.
+    pub colours: Vec<[u8; 4]>,
+    /// Three indices per triangle.
+    pub indices: Vec<u32>,
+}
+
+impl Mesh {
+    /// Number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+
+    /// Bytes this mesh's buffers occupy (for the memory budget).
+    pub fn byte_size(&self) -> u64 {
+        (self.positions.len() * 12 + self.normals.len() * 12 + self.colours.len() * 4 + self.indices.len() * 4) as u64
+    }
+}
+
+/// A mesh with a name (the primitive kind, or "model" for a merged mesh).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct NamedMesh {
+    /// The name written to the output (glTF mesh/node name, STL solid name).
+    pub name: String,
+    /// The geometry.
+    pub mesh: Mesh,
+}

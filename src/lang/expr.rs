@@ -1,0 +1,226 @@
+//! Arithmetic expressions shared by every front end.
+//!
+//! Front ends build [`Expr`] trees; the evaluator computes them with an
+//! [`ExprEnv`] that supplies parameter values and per-site random numbers.
+//! Expressions are pure apart from `rand()`, whose value comes from the
+//! caller's deterministic stream, so the same inputs always give the same value.
+//! Trigonometric functions work in radians.
+
+/// A binary operator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BinOp {
+    /// `+`
+    Add,
+    /// `-`
+    Sub,
+    /// `*`
+    Mul,
+    /// `/` (division by zero yields a non-finite value, which the evaluator rejects)
+    Div,
+    /// `^` (power, right-associative)
+    Pow,
+}
+
+/// A built-in function.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Func {
+    /// sin(x), radians
+    Sin,
+    /// cos(x), radians
+    Cos,
+    /// tan(x), radians
+    Tan,
+    /// asin(x), radians
+    Asin,
+    /// acos(x), radians
+    Acos,
+    /// atan(x), radians
+    Atan,
+    /// atan2(y, x), radians
+    Atan2,
+    /// sqrt(x)
+    Sqrt,
+    /// abs(x)
+    Abs,
+    /// min(a, b, …)
+    Min,
+    /// max(a, b, …)
+    Max,
+    /// floor(x)
+    Floor,
+    /// ceil(x)
+    Ceil,
+    /// pow(x, y)
+    Pow,
+    /// exp(x)
+    Exp,
+    /// log(x), natural
+    Log,
+}
+
+impl Func {
+    /// Looks a function name up (lower-case names as written in the source).
+    pub fn from_name(name: &str) -> Option<Func> {
+        Some(match name {
+            "sin" => Func::Sin,
+            "cos" => Func::Cos,
+            "tan" => Func::Tan,
+            "asin" => Func::Asin,
+            "acos" => Func::Acos,
+            "atan" => Func::Atan,
+            "atan2" => Func::Atan2,
+            "sqrt" => Func::Sqrt,
+            "abs" => Func::Abs,
+            "min" => Func::Min,
+            "max" => Func::Max,
+            "floor" => Func::Floor,
+            "ceil" => Func::Ceil,
+            "pow" => Func::Pow,
+            "exp" => Func::Exp,
+            "log" => Func::Log,
+            _ => return None,
+        })
+    }
+
+    /// How many arguments the function takes: (min, max); `None` max means "any number ≥ min".
+    pub fn arity(self) -> (usize, Option<usize>) {
+        match self {
+            Func::Atan2 | Func::Pow => (2, Some(2)),
+            Func::Min | Func::Max => (1, None),
+            _ => (1, Some(1)),
+        }
+    }
+}
+
+/// An expression tree. Depth is bounded by the parser's nesting limit, so
+/// recursive evaluation cannot overflow the stack.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Expr {
+    /// A literal.
+    Num(f64),
+    /// The value of `Program::params[i]`.
+    Param(u32),
+    /// Unary minus.
+    Neg(Box<Expr>),
+    /// A binary operation.
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// A function call (arity already checked by the parser).
+    Func(Func, Vec<Expr>),
+    /// `rand()`: uniform in [0, 1) from the stream of this site within the current call.
+    Rand(u32),
+}
+
+/// What an expression needs from its surroundings.
+pub trait ExprEnv {
+    /// The bound value of parameter `index`.
+    fn param(&self, index: u32) -> f64;
+    /// A uniform number in [0, 1) for `rand()` site `site`, deterministic per invocation.
+    fn rand(&mut self, site: u32) -> f64;
+}
+
+impl Expr {
+    /// Computes the value. May be NaN or infinite (e.g. `1/0`); callers check.
+    pub fn eval(&self, env: &mut dyn ExprEnv) -> f64 {
+        match self {
+            Expr::Num(v) => *v,
+            Expr::Param(i) => env.param(*i),
+            Expr::Neg(e) => -e.eval(env),
+            Expr::Binary(op, a, b) => {
+                let (a, b) = (a.eval(env), b.eval(env));
+                match op {
+                    BinOp::Add => a + b,
+                    BinOp::Sub => a - b,
+                    BinOp::Mul => a * b,
+                    BinOp::Div => a / b,
+                    BinOp::Pow => a.powf(b),
+                }
+            }
+            Expr::Func(f, args) => {
+                let mut vals = args.iter().map(|a| a.eval(env));
+                let mut next = || vals.next().unwrap_or(f64::NAN);
+                match f {
+                    Func::Sin => next().sin(),
+                    Func::Cos => next().cos(),
+                    Func::Tan => next().tan(),
+                    Func::Asin => next().asin(),
+                    Func::Acos => next().acos(),
+                    Func::Atan => next().atan(),
+                    Func::Atan2 => {
+                        let y = next();
+                        y.atan2(next())
+                    }
+                    Func::Sqrt => next().sqrt(),
+                    Func::Abs => next().abs(),
+                    Func::Floor => next().floor(),
+                    Func::Ceil => next().ceil(),
+                    Func::Pow => {
+                        let b = next();
+                        b.powf(next())
+                    }
+                    Func::Exp => next().exp(),
+                    Func::Log => next().ln(),
+                    Func::Min => {
+                        let first = next();
+                        vals.fold(first, f64::min)
+                    }
+                    Func::Max => {
+                        let first = next();
+                        vals.fold(first, f64::max)
+                    }
+                }
+            }
+            Expr::Rand(site) => env.rand(*site),
+        }
+    }
+
+    /// True when the expression contains no `rand()`, so its value depends only on parameters.
+    pub fn is_deterministic(&self) -> bool {
+        match self {
+            Expr::Num(_) | Expr::Param(_) => true,
+            Expr::Rand(_) => false,
+            Expr::Neg(e) => e.is_deterministic(),
+            Expr::Binary(_, a, b) => a.is_deterministic() && b.is_deterministic(),
+            Expr::Func(_, args) => args.iter().all(Expr::is_deterministic),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Env;
+    impl ExprEnv for Env {
+        fn param(&self, i: u32) -> f64 {
+            f64::from(i) * 10.0
+        }
+        fn rand(&mut self, _site: u32) -> f64 {
+            0.25
+        }
+    }
+
+    fn n(v: f64) -> Box<Expr> {
+        Box::new(Expr::Num(v))
+    }
+
+    #[test]
+    fn evaluates_operators_functions_params_and_rand() {
+        let e = Expr::Binary(
+            BinOp::Add,
+            Box::new(Expr::Func(Func::Max, vec![Expr::Num(1.0), Expr::Param(2), Expr::Num(3.0)])),
+            Box::new(Expr::Binary(BinOp::Pow, n(2.0), n(3.0))),
+        );
+        assert_eq!(e.eval(&mut Env), 28.0);
+        assert_eq!(Expr::Rand(7).eval(&mut Env), 0.25);
+        assert!(!Expr::Rand(7).is_deterministic());
+        assert!(e.is_deterministic());
+        let e = Expr::Func(Func::Atan2, vec![Expr::Num(1.0), Expr::Num(0.0)]);
+        assert!((e.eval(&mut Env) - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn division_by_zero_is_not_finite() {
+        let e = Expr::Binary(BinOp::Div, n(1.0), n(0.0));
+        assert!(!e.eval(&mut Env).is_finite());
+    }
+}

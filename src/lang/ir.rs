@@ -1,0 +1,263 @@
+//! The shared rule IR that every front end lowers into and the evaluator runs.
+//!
+//! The IR is deliberately small: rules grouped by name, bodies of calls,
+//! blocks and iterators, and adjustments whose arguments are expressions.
+//! Names are already resolved (a call points at a rule group or a built-in
+//! primitive), angles are already in radians, and `@define` constants are
+//! already substituted, so the evaluator never looks at source text.
+
+use super::expr::Expr;
+use super::Span;
+
+/// Index of a rule group in [`Program::groups`].
+pub type GroupId = u32;
+
+/// A whole parsed program, ready to be bound to parameters and evaluated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Program {
+    /// The group evaluated first (from `startshape`, else the first rule defined).
+    pub start: Target,
+    /// Every rule name with its alternatives; indexed by [`GroupId`].
+    pub groups: Vec<RuleGroup>,
+    /// Top-level directives that change how evaluation runs.
+    pub directives: Directives,
+    /// `@param` declarations, in source order; [`Expr::Param`] indexes this.
+    pub params: Vec<ParamDecl>,
+    /// Number of distinct call sites and `rand()` sites; every site id is below it.
+    /// Random streams are derived from site ids, so they must be stable for a given source.
+    pub site_count: u32,
+    /// Non-fatal diagnostics found while parsing (ignored blocks, unknown directives).
+    pub warnings: Vec<super::Diagnostic>,
+}
+
+/// All rules that share one name; a call picks one of them by weight.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RuleGroup {
+    /// The rule name as written in the source.
+    pub name: String,
+    /// The alternatives, in source order.
+    pub rules: Vec<Rule>,
+}
+
+/// One `rule NAME [weight] { body }` definition.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rule {
+    /// Relative weight; weights are normalised per group at selection time. Default 1.
+    pub weight: f64,
+    /// The body items, run in order, each from the rule's own frame.
+    pub body: Vec<Item>,
+    /// Where the rule header is.
+    pub span: Span,
+}
+
+/// What a call refers to, resolved at parse time.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Target {
+    /// A user rule group.
+    Group(GroupId),
+    /// A built-in drawable.
+    Primitive(PrimitiveKind),
+}
+
+/// The built-in drawables. Each is unit-sized and centred at the origin (see `docs/mdg.md`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[repr(u8)]
+pub enum PrimitiveKind {
+    /// Axis-aligned cube with edge 1.
+    Box,
+    /// Sphere of diameter 1.
+    Sphere,
+    /// Cylinder of diameter 1 and height 1 along +Y.
+    Cylinder,
+    /// Cone of base diameter 1 and height 1, apex at +Y.
+    Cone,
+    /// Torus in the XZ plane with outer diameter 1 (major radius 0.375, minor 0.125).
+    Torus,
+    /// Regular tetrahedron with circumradius 0.5.
+    Tetrahedron,
+    /// Regular octahedron with circumradius 0.5.
+    Octahedron,
+    /// Regular icosahedron with circumradius 0.5.
+    Icosahedron,
+    /// Regular dodecahedron with circumradius 0.5.
+    Dodecahedron,
+}
+
+impl PrimitiveKind {
+    /// Every primitive, in a fixed order (used for per-kind meshes).
+    pub const ALL: [PrimitiveKind; 9] = [
+        PrimitiveKind::Box,
+        PrimitiveKind::Sphere,
+        PrimitiveKind::Cylinder,
+        PrimitiveKind::Cone,
+        PrimitiveKind::Torus,
+        PrimitiveKind::Tetrahedron,
+        PrimitiveKind::Octahedron,
+        PrimitiveKind::Icosahedron,
+        PrimitiveKind::Dodecahedron,
+    ];
+
+    /// The canonical (upper-case) keyword.
+    pub fn name(self) -> &'static str {
+        match self {
+            PrimitiveKind::Box => "BOX",
+            PrimitiveKind::Sphere => "SPHERE",
+            PrimitiveKind::Cylinder => "CYLINDER",
+            PrimitiveKind::Cone => "CONE",
+            PrimitiveKind::Torus => "TORUS",
+            PrimitiveKind::Tetrahedron => "TETRAHEDRON",
+            PrimitiveKind::Octahedron => "OCTAHEDRON",
+            PrimitiveKind::Icosahedron => "ICOSAHEDRON",
+            PrimitiveKind::Dodecahedron => "DODECAHEDRON",
+        }
+    }
+
+    /// Looks a keyword up case-insensitively (`sphere` = `SPHERE`).
+    pub fn from_keyword(word: &str) -> Option<PrimitiveKind> {
+        PrimitiveKind::ALL
+            .into_iter()
+            .find(|k| k.name().eq_ignore_ascii_case(word))
+    }
+}
+
+/// One item of a rule body.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Item {
+    /// `NAME { adjustments }`: run the target from the current frame plus the adjustments.
+    Call(Call),
+    /// `{ items }`: a group of items sharing the frame they are run from (used under iterators).
+    Block(Vec<Item>),
+    /// `m[/n] * { step } item`: copies k = 1..m of `body`, copy k with the step applied k times.
+    Iterate(Iterate),
+}
+
+/// A call of a rule group or primitive.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Call {
+    /// What is called.
+    pub target: Target,
+    /// Applied left to right in the caller's local frame.
+    pub adjust: Vec<Adjust>,
+    /// Unique per call site; seeds the random stream of this call.
+    pub site: u32,
+    /// Where the call is written.
+    pub span: Span,
+}
+
+/// An iterator `count [/ divisor] * { step } body`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Iterate {
+    /// Number of copies m (must evaluate to a finite non-negative integer).
+    pub count: Expr,
+    /// Optional n: the step is divided into n equal parts (each argument / n, scale k^(1/n)).
+    pub divisor: Option<Expr>,
+    /// The step transform applied once more for each successive copy.
+    pub step: Vec<Adjust>,
+    /// What each copy runs.
+    pub body: Box<Item>,
+    /// Unique per iterator site; combined with the copy index for random streams.
+    pub site: u32,
+    /// Where the iterator is written.
+    pub span: Span,
+}
+
+/// One adjustment with its source position (for errors such as a NaN argument).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Adjust {
+    /// What the adjustment does.
+    pub op: AdjustOp,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// A coordinate axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Axis {
+    /// The X axis.
+    X,
+    /// The Y axis.
+    Y,
+    /// The Z axis.
+    Z,
+}
+
+/// The adjustment operations of MDG Table B.3, after sugar is removed
+/// (`up a` is `Rotate{X, a}`, `r a b c` is three rotations, `fx` is `Reflect(1,0,0)`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum AdjustOp {
+    /// Move by (x, y, z) in the local frame.
+    Translate([Expr; 3]),
+    /// Rotate about a local axis by an angle in radians (right-handed).
+    Rotate {
+        /// The axis.
+        axis: Axis,
+        /// The angle, already converted to radians.
+        angle: Expr,
+    },
+    /// Multiply lengths by k (a negative k also reflects through the origin).
+    Scale(Expr),
+    /// Reflect across the plane through the origin with this normal (normalised at evaluation).
+    Reflect([Expr; 3]),
+    /// Add to a colour channel: 0 = R, 1 = G, 2 = B, 3 = A.
+    Colour {
+        /// Channel index 0..=3.
+        channel: u8,
+        /// Amount added.
+        delta: Expr,
+    },
+}
+
+/// The angle unit chosen by the `angle` directive.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum AngleMode {
+    /// Degrees (the default).
+    #[default]
+    Degrees,
+    /// Radians.
+    Radians,
+    /// Full turns: 1 = 360°.
+    Orbits,
+}
+
+/// Top-level directives that affect evaluation.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Directives {
+    /// `maxdepth N`: calls deeper than N are silently not expanded (a grammar's own termination).
+    pub maxdepth: Option<u32>,
+    /// `minsize v`: rule calls whose frame scale is below v are silently not expanded.
+    pub minsize: Option<f64>,
+    /// `maxiter N`: every iterator runs at most N copies.
+    pub maxiter: Option<u64>,
+    /// `randseed N`: the seed used when the request gives none.
+    pub randseed: Option<u64>,
+    /// `background r g b [a]`: clear colour, carried to the output as metadata.
+    pub background: Option<[f64; 4]>,
+    /// `angle …`: informational; angles in the IR are already radians.
+    pub angle: AngleMode,
+}
+
+/// The type of an `@param`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ParamKind {
+    /// Whole numbers only.
+    Int,
+    /// Any finite number.
+    Float,
+    /// 0 or 1 (`true`/`false` accepted from requests).
+    Bool,
+}
+
+/// An `@param kind name default [min max]` declaration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParamDecl {
+    /// The parameter name, as used in expressions and in requests.
+    pub name: String,
+    /// Its type.
+    pub kind: ParamKind,
+    /// The default value.
+    pub default: f64,
+    /// Inclusive range, if declared.
+    pub range: Option<(f64, f64)>,
+    /// Where it is declared.
+    pub span: Span,
+}

@@ -1,0 +1,16 @@
+//! rulemesh: shape grammars to 3D models.
+//!
+//! Data flows one way: source → [`lang`] (IR) → [`eval`] ([`eval::Scene`]) →
+//! [`geom`] (meshes) → [`export`] (bytes). [`render`] runs the whole pipeline
+//! under one [`eval::Budget`].
+
+pub mod export;
+pub mod eval;
+pub mod geom;
+pub mod lang;
+pub mod pipeline;
+
+pub use pipeline::{render, RenderError, RenderOutput, RenderRequest};
+
+/// The engine version; part of every cache key, since outputs may change with it.
+pub const ENGINE_VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -1,0 +1,207 @@
+//! The whole render pipeline for one request: parse, bind, evaluate, mesh, export.
+//!
+//! This is the one entry point the CLI and the service share, so the same
+//! request gives the same bytes whichever front door it came through.
+
+use crate::eval::{self, bind_params, Budget, EvalError, EvalOptions, LimitExceeded, Limits, OnLimit, ParamValue};
+use crate::export::{self, ExportError, ExportMeta, Format};
+use crate::geom::{self, primitives, MeshLayout};
+use crate::lang::{self, Diagnostic, Language, ParseError};
+use std::collections::BTreeMap;
+use std::time::Duration;
+
+/// Everything that determines a render besides the source text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderRequest {
+    /// The language; detected from the source when `None`.
+    pub language: Option<Language>,
+    /// The seed; the grammar's `randseed`, else 0, when `None`.
+    pub seed: Option<u64>,
+    /// Values for the grammar's `@param`s.
+    pub params: BTreeMap<String, ParamValue>,
+    /// Output format.
+    pub format: Format,
+    /// Limits, already clamped to the caller's ceiling.
+    pub limits: Limits,
+    /// Fail or truncate at a limit.
+    pub on_limit: OnLimit,
+    /// Tessellation detail (MIN_DETAIL..=MAX_DETAIL).
+    pub detail: u32,
+    /// One merged mesh or one per primitive kind.
+    pub layout: MeshLayout,
+}
+
+impl Default for RenderRequest {
+    fn default() -> Self {
+        RenderRequest {
+            language: None,
+            seed: None,
+            params: BTreeMap::new(),
+            format: Format::Glb,
+            limits: Limits::default(),
+            on_limit: OnLimit::Error,
+            detail: geom::DEFAULT_DETAIL,
+            layout: MeshLayout::Merged,
+        }
+    }
+}
+
+/// A finished render.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderOutput {
+    /// The model in the requested format.
+    pub bytes: Vec<u8>,
+    /// The language the source was read as.
+    pub language: Language,
+    /// Primitive instances in the model.
+    pub primitives: u64,
+    /// Triangles in the model.
+    pub triangles: u64,
+    /// Set when a limit cut the model short (only with `on_limit = truncate`).
+    pub truncated: Option<LimitExceeded>,
+    /// Parser warnings.
+    pub warnings: Vec<Diagnostic>,
+    /// Wall-clock time of the whole pipeline.
+    pub elapsed: Duration,
+}
+
+/// Why a render failed.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    /// The request itself is malformed (bad detail, undetectable language).
+    #[error("{0}")]
+    BadRequest(String),
+    /// The source does not parse.
+    #[error(transparent)]
+    Parse(#[from] ParseError),
+    /// A limit ran out.
+    #[error(transparent)]
+    Limit(LimitExceeded),
+    /// Evaluation failed for a reason in the source or parameters.
+    #[error(transparent)]
+    Eval(EvalError),
+    /// Writing the output failed.
+    #[error(transparent)]
+    Export(ExportError),
+}
+
+impl From<EvalError> for RenderError {
+    fn from(e: EvalError) -> Self {
+        match e {
+            EvalError::Limit(l) => RenderError::Limit(l),
+            other => RenderError::Eval(other),
+        }
+    }
+}
+
+impl From<LimitExceeded> for RenderError {
+    fn from(e: LimitExceeded) -> Self {
+        RenderError::Limit(e)
+    }
+}
+
+impl From<ExportError> for RenderError {
+    fn from(e: ExportError) -> Self {
+        match e {
+            ExportError::Limit(l) => RenderError::Limit(l),
+            other => RenderError::Export(other),
+        }
+    }
+}
+
+/// Parses `source` as `language` (or the detected one), enforcing the source-size limit.
+pub fn parse_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, lang::ir::Program), RenderError> {
+    Budget::check_source(limits, source.len() as u64)?;
+    let language = match language.or_else(|| Language::detect(source)) {
+        Some(l) => l,
+        None => return Err(RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into())),
+    };
+    Ok((language, lang::parse(language, source)?))
+}
+
+/// Renders `source` as the request says. Never panics on bad input; every
+/// failure is a typed [`RenderError`].
+pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
+    if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
+        return Err(RenderError::BadRequest(format!(
+            "detail must be in {}..={}, got {}",
+            geom::MIN_DETAIL,
+            geom::MAX_DETAIL,
+            req.detail
+        )));
+    }
+    let mut budget = Budget::new(req.limits);
+    let (language, program) = parse_source(source, req.language, &req.limits)?;
+    let params = bind_params(&program, &req.params)?;
+    let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit };
+    let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
+    budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut scene))?;
+
+    // Check the mesh and output buffers against the memory budget before
+    // building them; under `truncate`, keep the longest prefix that fits.
+    let fit = fitting_prefix(&scene, req, &budget);
+    if fit < scene.instances.len() {
+        let need = projected_bytes(&scene.instances, req);
+        let e = LimitExceeded {
+            limit: eval::Limit::Memory,
+            configured: req.limits.max_memory,
+            reached: budget.memory().saturating_add(need),
+        };
+        truncate_or_fail(req.on_limit, e, &mut scene)?;
+        scene.instances.truncate(fit);
+    }
+
+    let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
+    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
+    let bytes = export::export(req.format, &meshes, &meta, &mut budget)?;
+    let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+    Ok(RenderOutput {
+        bytes,
+        language,
+        primitives: scene.instances.len() as u64,
+        triangles,
+        truncated: scene.truncated,
+        warnings: program.warnings,
+        elapsed: budget.elapsed(),
+    })
+}
+
+fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene) -> Result<(), RenderError> {
+    match on_limit {
+        OnLimit::Error => Err(RenderError::Limit(e)),
+        OnLimit::Truncate => {
+            scene.truncated.get_or_insert(e);
+            Ok(())
+        }
+    }
+}
+
+/// Bytes the mesh buffers and the encoded output of `instances` will need.
+fn projected_bytes(instances: &[eval::Instance], req: &RenderRequest) -> u64 {
+    let (v, t) = instances.iter().fold((0u64, 0u64), |(v, t), i| {
+        (v + primitives::vertex_count(i.kind, req.detail), t + primitives::triangle_count(i.kind, req.detail))
+    });
+    crate::geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t))
+}
+
+/// How many leading instances fit in the memory left.
+fn fitting_prefix(scene: &eval::Scene, req: &RenderRequest, budget: &Budget) -> usize {
+    let left = req.limits.max_memory.saturating_sub(budget.memory());
+    if projected_bytes(&scene.instances, req) <= left {
+        return scene.instances.len();
+    }
+    let mut used = 0u64;
+    for (n, i) in scene.instances.iter().enumerate() {
+        let v = primitives::vertex_count(i.kind, req.detail);
+        let t = primitives::triangle_count(i.kind, req.detail);
+        let overhead = export::estimated_size(req.format, 0, 0);
+        used = used
+            .saturating_add(crate::geom::meshing::mesh_bytes(v, t))
+            .saturating_add(export::estimated_size(req.format, v, t).saturating_sub(overhead));
+        // Fixed per-file overhead of the output format.
+        if used.saturating_add(export::estimated_size(req.format, 0, 0)) > left {
+            return n;
+        }
+    }
+    scene.instances.len()
+}
