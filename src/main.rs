@@ -1,5 +1,245 @@
-//! The `rulemesh` command-line tool (CLI being implemented).
+//! The `rulemesh` command-line tool: render grammars to model files and check them.
+//!
+//! Exit codes: 0 ok, 2 parse or usage error, 3 limit exceeded, 1 any other failure.
 
-fn main() {
-    println!("rulemesh {}", rulemesh::ENGINE_VERSION);
+use clap::{Args, Parser, Subcommand};
+use rulemesh::eval::{Limits, OnLimit, ParamValue};
+use rulemesh::export::Format;
+use rulemesh::geom::{MeshLayout, DEFAULT_DETAIL};
+use rulemesh::lang::{Diagnostic, Language};
+use rulemesh::{render, RenderError, RenderRequest};
+use std::collections::BTreeMap;
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Exit code for a parse or usage error.
+const EXIT_USAGE: u8 = 2;
+/// Exit code for an exceeded limit.
+const EXIT_LIMIT: u8 = 3;
+/// Exit code for any other failure.
+const EXIT_FAILURE: u8 = 1;
+
+#[derive(Parser)]
+#[command(name = "rulemesh", version, about = "Shape grammars to 3D models (glTF, STL) under hard limits")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Evaluate a grammar and write the model.
+    Render(RenderArgs),
+    /// Parse a grammar and print diagnostics as `file:line:col: message`, without evaluating.
+    Check(CheckArgs),
+}
+
+#[derive(Args)]
+struct RenderArgs {
+    /// Grammar file, or `-` for standard input.
+    file: String,
+    /// Source language (default: from the file extension, then from the content).
+    #[arg(long, value_enum)]
+    language: Option<Language>,
+    /// Random seed (default: the grammar's `randseed`, else 0).
+    #[arg(long)]
+    seed: Option<u64>,
+    /// A grammar parameter, `name=value`; repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    params: Vec<String>,
+    /// Output format (default: from the output extension, else glb).
+    #[arg(long, value_enum)]
+    format: Option<Format>,
+    /// Output file, or `-` for standard output.
+    #[arg(short, long, default_value = "-")]
+    output: String,
+    /// Deepest rule nesting.
+    #[arg(long)]
+    max_depth: Option<u32>,
+    /// Most primitives.
+    #[arg(long)]
+    max_primitives: Option<u64>,
+    /// Most triangles.
+    #[arg(long)]
+    max_triangles: Option<u64>,
+    /// Most bytes of accounted memory.
+    #[arg(long)]
+    max_memory: Option<u64>,
+    /// Wall-clock limit in milliseconds.
+    #[arg(long)]
+    timeout: Option<u64>,
+    /// Most evaluation steps.
+    #[arg(long)]
+    max_steps: Option<u64>,
+    /// Largest source in bytes.
+    #[arg(long)]
+    max_source_bytes: Option<u64>,
+    /// What to do when a limit runs out.
+    #[arg(long, value_enum, default_value = "error")]
+    on_limit: OnLimit,
+    /// Tessellation detail (segments around round primitives).
+    #[arg(long, default_value_t = DEFAULT_DETAIL)]
+    detail: u32,
+    /// One merged mesh or one mesh per primitive kind.
+    #[arg(long, value_enum, default_value = "merged")]
+    layout: MeshLayout,
+}
+
+#[derive(Args)]
+struct CheckArgs {
+    /// Grammar file, or `-` for standard input.
+    file: String,
+    /// Source language (default: from the file extension, then from the content).
+    #[arg(long, value_enum)]
+    language: Option<Language>,
+}
+
+/// A failure with the exit code it maps to and the lines to print.
+struct Failure {
+    code: u8,
+    lines: Vec<String>,
+}
+
+impl Failure {
+    fn new(code: u8, line: String) -> Failure {
+        Failure { code, lines: vec![line] }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render(args) => run_render(args),
+        Command::Check(args) => run_check(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) => {
+            let mut err = std::io::stderr().lock();
+            for line in f.lines {
+                let _ = writeln!(err, "{line}");
+            }
+            ExitCode::from(f.code)
+        }
+    }
+}
+
+/// Reads the source, refusing to read more than `max` bytes (plus one, to detect the overflow).
+fn read_source(file: &str, max: u64) -> Result<Vec<u8>, Failure> {
+    let mut buf = Vec::new();
+    let res = if file == "-" {
+        std::io::stdin().lock().take(max.saturating_add(1)).read_to_end(&mut buf)
+    } else {
+        std::fs::File::open(file).and_then(|f| f.take(max.saturating_add(1)).read_to_end(&mut buf))
+    };
+    res.map_err(|e| Failure::new(EXIT_FAILURE, format!("{file}: cannot read: {e}")))?;
+    Ok(buf)
+}
+
+fn language_for(file: &str, given: Option<Language>) -> Option<Language> {
+    given.or_else(|| Language::from_extension(Path::new(file)))
+}
+
+fn diagnostic_lines(file: &str, diags: &[Diagnostic]) -> Vec<String> {
+    diags.iter().map(|d| format!("{file}:{d}")).collect()
+}
+
+fn parse_params(raw: &[String]) -> Result<BTreeMap<String, ParamValue>, Failure> {
+    raw.iter()
+        .map(|p| match p.split_once('=') {
+            Some((k, v)) if !k.is_empty() => Ok((k.to_string(), ParamValue::Text(v.to_string()))),
+            _ => Err(Failure::new(EXIT_USAGE, format!("--param expects NAME=VALUE, got `{p}`"))),
+        })
+        .collect()
+}
+
+fn limits_from(args: &RenderArgs) -> Limits {
+    let d = Limits::default();
+    Limits {
+        max_depth: args.max_depth.unwrap_or(d.max_depth),
+        max_primitives: args.max_primitives.unwrap_or(d.max_primitives),
+        max_triangles: args.max_triangles.unwrap_or(d.max_triangles),
+        max_memory: args.max_memory.unwrap_or(d.max_memory),
+        timeout_ms: args.timeout.unwrap_or(d.timeout_ms),
+        max_source_bytes: args.max_source_bytes.unwrap_or(d.max_source_bytes),
+        max_steps: args.max_steps.unwrap_or(d.max_steps),
+    }
+    .clamped_to(&Limits::ceiling())
+}
+
+fn run_render(args: RenderArgs) -> Result<(), Failure> {
+    let limits = limits_from(&args);
+    let format = args
+        .format
+        .or_else(|| (args.output != "-").then(|| Format::from_extension(Path::new(&args.output))).flatten())
+        .unwrap_or(Format::Glb);
+    let req = RenderRequest {
+        language: language_for(&args.file, args.language),
+        seed: args.seed,
+        params: parse_params(&args.params)?,
+        format,
+        limits,
+        on_limit: args.on_limit,
+        detail: args.detail,
+        layout: args.layout,
+    };
+    let source = read_source(&args.file, limits.max_source_bytes)?;
+    let out = render(&source, &req).map_err(|e| render_failure(&args.file, e))?;
+    for w in &out.warnings {
+        eprintln!("{}:{w}", args.file);
+    }
+    write_output(&args.output, &out.bytes)?;
+    let truncated = match out.truncated {
+        Some(t) => format!(", TRUNCATED at {} limit (configured {}, reached {})", t.limit.name(), t.configured, t.reached),
+        None => String::new(),
+    };
+    eprintln!(
+        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms{}",
+        args.file,
+        out.primitives,
+        out.triangles,
+        out.bytes.len(),
+        format,
+        out.elapsed.as_secs_f64() * 1000.0,
+        truncated
+    );
+    Ok(())
+}
+
+fn write_output(path: &str, bytes: &[u8]) -> Result<(), Failure> {
+    let res = if path == "-" {
+        let mut out = std::io::stdout().lock();
+        out.write_all(bytes).and_then(|()| out.flush())
+    } else {
+        std::fs::write(PathBuf::from(path), bytes)
+    };
+    res.map_err(|e| Failure::new(EXIT_FAILURE, format!("{path}: cannot write: {e}")))
+}
+
+fn render_failure(file: &str, e: RenderError) -> Failure {
+    match e {
+        RenderError::Parse(p) => Failure { code: EXIT_USAGE, lines: diagnostic_lines(file, &p.diagnostics) },
+        RenderError::Limit(l) => Failure::new(EXIT_LIMIT, format!("{file}: {l}")),
+        RenderError::BadRequest(m) => Failure::new(EXIT_USAGE, format!("{file}: {m}")),
+        // Errors in the source's numbers or in the given parameters are usage errors;
+        // those that point into the source read like parse errors (`file:line:col: …`).
+        RenderError::Eval(ev) if ev.span().is_some() => Failure::new(EXIT_USAGE, format!("{file}:{ev}")),
+        RenderError::Eval(ev) => Failure::new(EXIT_USAGE, format!("{file}: {ev}")),
+        RenderError::Export(x) => Failure::new(EXIT_FAILURE, format!("{file}: {x}")),
+    }
+}
+
+fn run_check(args: CheckArgs) -> Result<(), Failure> {
+    let limits = Limits::default();
+    let source = read_source(&args.file, limits.max_source_bytes)?;
+    match rulemesh::pipeline::parse_source(&source, language_for(&args.file, args.language), &limits) {
+        Ok((_, program)) => {
+            for line in diagnostic_lines(&args.file, &program.warnings) {
+                println!("{line}");
+            }
+            Ok(())
+        }
+        Err(e) => Err(render_failure(&args.file, e)),
+    }
 }

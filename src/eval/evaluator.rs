@@ -413,3 +413,147 @@ fn expand<'p>(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::eval::budget::{Limit, Limits};
+    use crate::lang::ir::{Call, Directives, PrimitiveKind, Rule, RuleGroup};
+
+    fn num(v: f64) -> Expr {
+        Expr::Num(v)
+    }
+
+    fn adj(op: AdjustOp) -> Adjust {
+        Adjust { op, span: Span::new(1, 1) }
+    }
+
+    fn call(target: Target, adjust: Vec<Adjust>, site: u32) -> Item {
+        Item::Call(Call { target, adjust, site, span: Span::new(1, 1) })
+    }
+
+    fn iterate(count: f64, divisor: Option<f64>, step: Vec<Adjust>, body: Item, site: u32) -> Item {
+        Item::Iterate(Iterate {
+            count: num(count),
+            divisor: divisor.map(num),
+            step,
+            body: Box::new(body),
+            site,
+            span: Span::new(1, 1),
+        })
+    }
+
+    fn program(groups: Vec<RuleGroup>, site_count: u32) -> Program {
+        Program {
+            start: Target::Group(0),
+            groups,
+            directives: Directives::default(),
+            params: vec![],
+            site_count,
+            warnings: vec![],
+        }
+    }
+
+    fn single(body: Vec<Item>) -> RuleGroup {
+        RuleGroup { name: "A".into(), rules: vec![Rule { weight: 1.0, body, span: Span::new(1, 1) }] }
+    }
+
+    fn run(p: &Program, limits: Limits, on_limit: OnLimit) -> Result<Scene, EvalError> {
+        let opts = EvalOptions { on_limit, ..EvalOptions::default() };
+        evaluate(p, &[], &opts, &mut Budget::new(limits))
+    }
+
+    const BOX: Target = Target::Primitive(PrimitiveKind::Box);
+
+    #[test]
+    fn iterator_copies_get_the_step_k_times() {
+        // 10 * {x 1} BOX {}
+        let step = vec![adj(AdjustOp::Translate([num(1.0), num(0.0), num(0.0)]))];
+        let p = program(vec![single(vec![iterate(10.0, None, step, call(BOX, vec![], 1), 0)])], 2);
+        let scene = run(&p, Limits::default(), OnLimit::Error).unwrap();
+        let xs: Vec<f32> = scene.instances.iter().map(|i| i.translation.x).collect();
+        assert_eq!(xs, (1..=10).map(|k| k as f32).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn divided_iterator_closes_a_turn() {
+        // 2/2 * {rz 180} BOX {x 1}: copies at rz 90 and rz 180, the last back at x = -1.
+        let step = vec![adj(AdjustOp::Rotate { axis: Axis::Z, angle: num(std::f64::consts::PI) })];
+        let body = call(BOX, vec![adj(AdjustOp::Translate([num(1.0), num(0.0), num(0.0)]))], 1);
+        let p = program(vec![single(vec![iterate(2.0, Some(2.0), step, body, 0)])], 2);
+        let scene = run(&p, Limits::default(), OnLimit::Error).unwrap();
+        let t: Vec<_> = scene.instances.iter().map(|i| i.translation).collect();
+        assert!((t[0] - glam::Vec3::new(0.0, 1.0, 0.0)).length() < 1e-6, "{t:?}");
+        assert!((t[1] - glam::Vec3::new(-1.0, 0.0, 0.0)).length() < 1e-6, "{t:?}");
+    }
+
+    #[test]
+    fn runaway_recursion_hits_the_depth_limit_without_recursing_in_rust() {
+        // rule A { A {} }
+        let p = program(vec![single(vec![call(Target::Group(0), vec![], 0)])], 1);
+        let limits = Limits { max_depth: 50_000, ..Limits::default() };
+        match run(&p, limits, OnLimit::Error) {
+            Err(EvalError::Limit(e)) => assert_eq!((e.limit, e.reached), (Limit::Depth, 50_001)),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn huge_iterator_is_lazy_and_truncates_at_the_primitive_limit() {
+        let step = vec![adj(AdjustOp::Translate([num(1.0), num(0.0), num(0.0)]))];
+        let p = program(vec![single(vec![iterate(1e9, None, step, call(BOX, vec![], 1), 0)])], 2);
+        let limits = Limits { max_primitives: 1000, ..Limits::default() };
+        let scene = run(&p, limits, OnLimit::Truncate).unwrap();
+        assert_eq!(scene.instances.len(), 1000);
+        assert_eq!(scene.truncated.map(|t| t.limit), Some(Limit::Primitives));
+        assert!(matches!(run(&p, limits, OnLimit::Error), Err(EvalError::Limit(_))));
+    }
+
+    #[test]
+    fn weighted_choice_depends_on_seed_and_position_not_order() {
+        // A → 200 * {x 1} B ; B has two alternatives (BOX or SPHERE), weights 1 and 3.
+        let a = single(vec![iterate(200.0, None, vec![adj(AdjustOp::Translate([num(1.0), num(0.0), num(0.0)]))], call(Target::Group(1), vec![], 1), 0)]);
+        let b = RuleGroup {
+            name: "B".into(),
+            rules: vec![
+                Rule { weight: 1.0, body: vec![call(BOX, vec![], 2)], span: Span::new(1, 1) },
+                Rule { weight: 3.0, body: vec![call(Target::Primitive(PrimitiveKind::Sphere), vec![], 3)], span: Span::new(1, 1) },
+            ],
+        };
+        let p = program(vec![a, b], 4);
+        let kinds = |seed| {
+            let opts = EvalOptions { seed: Some(seed), ..EvalOptions::default() };
+            evaluate(&p, &[], &opts, &mut Budget::new(Limits::default()))
+                .unwrap()
+                .instances
+                .iter()
+                .map(|i| i.kind)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(kinds(1), kinds(1));
+        assert_ne!(kinds(1), kinds(2));
+        let spheres = kinds(1).iter().filter(|k| **k == PrimitiveKind::Sphere).count();
+        assert!((120..=180).contains(&spheres), "{spheres} of 200 should be about 150");
+    }
+
+    #[test]
+    fn non_finite_arguments_are_errors_with_position() {
+        let bad = Expr::Binary(crate::lang::expr::BinOp::Div, Box::new(num(1.0)), Box::new(num(0.0)));
+        let p = program(vec![single(vec![call(BOX, vec![Adjust { op: AdjustOp::Scale(bad), span: Span::new(3, 7) }], 0)])], 1);
+        match run(&p, Limits::default(), OnLimit::Error) {
+            Err(EvalError::NonFinite { span, .. }) => assert_eq!(span, Span::new(3, 7)),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn stack_memory_is_charged() {
+        // rule A { A{} A{} } with a tiny memory budget fails on memory, not by OOM.
+        let p = program(vec![single(vec![call(Target::Group(0), vec![], 0), call(Target::Group(0), vec![], 1)])], 2);
+        let limits = Limits { max_memory: 10_000, max_depth: 100_000, ..Limits::default() };
+        match run(&p, limits, OnLimit::Error) {
+            Err(EvalError::Limit(e)) => assert_eq!(e.limit, Limit::Memory),
+            other => panic!("{other:?}"),
+        }
+    }
+}
