@@ -1,0 +1,10 @@
+//! Integration tests: the CLI and the library pipeline, checked with real
+//! tools (the Khronos glTF Validator, admesh, GNU time). Run them through
+//! `scripts/test`, which installs those tools.
+
+mod common;
+
+mod counts;
+mod determinism;
+mod grammars;
+mod hostile;
