@@ -10,7 +10,7 @@ pub mod geom;
 pub mod lang;
 pub mod pipeline;
 
-pub use pipeline::{render, RenderError, RenderOutput, RenderRequest};
+pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
 
 /// The engine version; part of every cache key, since outputs may change with it.
 pub const ENGINE_VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -194,14 +194,19 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
         Some(t) => format!(", TRUNCATED at {} limit (configured {}, reached {})", t.limit.name(), t.configured, t.reached),
         None => String::new(),
     };
+    let ms = |d: std::time::Duration| d.as_secs_f64() * 1000.0;
     eprintln!(
-        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms{}",
+        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms (parse {:.1}, eval {:.1}, mesh {:.1}, export {:.1}){}",
         args.file,
         out.primitives,
         out.triangles,
         out.bytes.len(),
         format,
-        out.elapsed.as_secs_f64() * 1000.0,
+        ms(out.elapsed),
+        ms(out.phases.parse),
+        ms(out.phases.eval),
+        ms(out.phases.mesh),
+        ms(out.phases.export),
         truncated
     );
     Ok(())

@@ -8,7 +8,7 @@ use crate::export::{self, ExportError, ExportMeta, Format};
 use crate::geom::{self, primitives, MeshLayout};
 use crate::lang::{self, Diagnostic, Language, ParseError};
 use std::collections::BTreeMap;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// Everything that determines a render besides the source text.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,6 +63,21 @@ pub struct RenderOutput {
     pub warnings: Vec<Diagnostic>,
     /// Wall-clock time of the whole pipeline.
     pub elapsed: Duration,
+    /// Wall-clock time of each stage, for benchmarks and logs.
+    pub phases: PhaseTimes,
+}
+
+/// How long each pipeline stage took.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PhaseTimes {
+    /// Parsing and parameter binding.
+    pub parse: Duration,
+    /// Evaluation (rule expansion) into a scene.
+    pub eval: Duration,
+    /// Tessellation and merging into meshes.
+    pub mesh: Duration,
+    /// Encoding the output bytes.
+    pub export: Duration,
 }
 
 /// Why a render failed.
@@ -131,10 +146,18 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         )));
     }
     let mut budget = Budget::new(req.limits);
+    let mut phases = PhaseTimes::default();
+    let mut mark = Instant::now();
+    let mut lap = |slot: &mut Duration| {
+        *slot = mark.elapsed();
+        mark = Instant::now();
+    };
     let (language, program) = parse_source(source, req.language, &req.limits)?;
     let params = bind_params(&program, &req.params)?;
+    lap(&mut phases.parse);
     let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit };
     let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
+    lap(&mut phases.eval);
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut scene))?;
 
     // Check the mesh and output buffers against the memory budget before
@@ -152,8 +175,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     }
 
     let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
+    lap(&mut phases.mesh);
     let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
     let bytes = export::export(req.format, &meshes, &meta, &mut budget)?;
+    lap(&mut phases.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     Ok(RenderOutput {
         bytes,
@@ -163,6 +188,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         truncated: scene.truncated,
         warnings: program.warnings,
         elapsed: budget.elapsed(),
+        phases,
     })
 }
 
