@@ -4,6 +4,8 @@
 //! [`geom`] (meshes) → [`export`] (bytes). [`render`] runs the whole pipeline
 //! under one [`eval::Budget`].
 
+#![warn(missing_docs)]
+
 pub mod export;
 pub mod eval;
 pub mod geom;

@@ -108,7 +108,7 @@ fn eval_adjust(adjust: &[Adjust], env: &mut Env, divisor: f64) -> Result<Delta, 
             }
             AdjustOp::Scale(k) => {
                 let k = finite(k, env, a.span, "scale")?;
-                let k = if divisor == 1.0 { k } else { k.signum() * k.abs().powf(1.0 / divisor) };
+                let k = if divisor == 1.0 { k } else { k.signum() * libm::pow(k.abs(), 1.0 / divisor) };
                 Frame::from_scale(k)
             }
             AdjustOp::Reflect([x, y, z]) => Frame::reflection(DVec3::new(

@@ -4,7 +4,9 @@
 //! [`ExprEnv`] that supplies parameter values and per-site random numbers.
 //! Expressions are pure apart from `rand()`, whose value comes from the
 //! caller's deterministic stream, so the same inputs always give the same value.
-//! Trigonometric functions work in radians.
+//! Trigonometric functions work in radians. Transcendental functions come from
+//! the pure-Rust `libm` crate, not the platform's C library, so values are
+//! bit-identical on every machine (outputs are cached by content hash).
 
 /// A binary operator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -132,33 +134,33 @@ impl Expr {
                     BinOp::Sub => a - b,
                     BinOp::Mul => a * b,
                     BinOp::Div => a / b,
-                    BinOp::Pow => a.powf(b),
+                    BinOp::Pow => libm::pow(a, b),
                 }
             }
             Expr::Func(f, args) => {
                 let mut vals = args.iter().map(|a| a.eval(env));
                 let mut next = || vals.next().unwrap_or(f64::NAN);
                 match f {
-                    Func::Sin => next().sin(),
-                    Func::Cos => next().cos(),
-                    Func::Tan => next().tan(),
-                    Func::Asin => next().asin(),
-                    Func::Acos => next().acos(),
-                    Func::Atan => next().atan(),
+                    Func::Sin => libm::sin(next()),
+                    Func::Cos => libm::cos(next()),
+                    Func::Tan => libm::tan(next()),
+                    Func::Asin => libm::asin(next()),
+                    Func::Acos => libm::acos(next()),
+                    Func::Atan => libm::atan(next()),
                     Func::Atan2 => {
                         let y = next();
-                        y.atan2(next())
+                        libm::atan2(y, next())
                     }
-                    Func::Sqrt => next().sqrt(),
+                    Func::Sqrt => libm::sqrt(next()),
                     Func::Abs => next().abs(),
                     Func::Floor => next().floor(),
                     Func::Ceil => next().ceil(),
                     Func::Pow => {
                         let b = next();
-                        b.powf(next())
+                        libm::pow(b, next())
                     }
-                    Func::Exp => next().exp(),
-                    Func::Log => next().ln(),
+                    Func::Exp => libm::exp(next()),
+                    Func::Log => libm::log(next()),
                     Func::Min => {
                         let first = next();
                         vals.fold(first, f64::min)
