@@ -64,6 +64,17 @@ pub enum ExportError {
         /// What overflowed.
         detail: String,
     },
+    /// A mesh handed to an exporter is malformed (index out of range,
+    /// attribute arrays of different lengths, non-finite positions). Meshes
+    /// from [`build_meshes`](crate::geom::build_meshes) never are; this guards
+    /// library callers who build meshes themselves.
+    #[error("invalid mesh {name:?}: {detail}")]
+    InvalidMesh {
+        /// The mesh's name.
+        name: String,
+        /// What is wrong with it.
+        detail: String,
+    },
     /// JSON serialisation failed.
     #[error("serialising glTF JSON: {0}")]
     Json(#[from] serde_json::Error),
