@@ -75,10 +75,13 @@ fn invalid(name: &str, detail: impl Into<String>) -> ExportError {
     ExportError::InvalidMesh { name: name.to_string(), detail: detail.into() }
 }
 
+/// A mesh with its place in the buffer.
+type Placement<'a> = (&'a NamedMesh, Placed);
+
 /// Checks each mesh and assigns buffer offsets. Meshes without triangles are
 /// left out (glTF accessors may not be empty). Returns the placements (paired
 /// with their mesh) and the buffer's byte length.
-fn place(meshes: &[NamedMesh]) -> Result<(Vec<(&NamedMesh, Placed)>, u64), ExportError> {
+fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), ExportError> {
     let mut placed = Vec::with_capacity(meshes.len());
     let mut offset = 0u64;
     for m in meshes {
@@ -174,7 +177,7 @@ fn scene_extras(meta: &ExportMeta) -> Result<json::Extras, ExportError> {
 }
 
 /// Builds the glTF JSON. `uri` is the buffer's URI (None for GLB).
-fn document(placed: &[(&NamedMesh, Placed)], buffer_len: u64, meta: &ExportMeta, uri: Option<String>) -> Result<Vec<u8>, ExportError> {
+fn document(placed: &[Placement<'_>], buffer_len: u64, meta: &ExportMeta, uri: Option<String>) -> Result<Vec<u8>, ExportError> {
     use json::accessor::{ComponentType, Type};
     use json::buffer::Target;
     let mut root = json::Root {
@@ -302,7 +305,7 @@ fn base64_len(n: u64) -> u64 {
 }
 
 /// Writes the binary buffer (exactly `buffer_len` bytes, zero padding between meshes).
-fn write_buffer(sink: &mut impl Sink, placed: &[(&NamedMesh, Placed)]) {
+fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
     let mut at = 0u64;
     for (m, p) in placed {
         while at < p.offset {
