@@ -3,7 +3,11 @@
 //! Each primitive kind present is tessellated once; every instance then
 //! copies its prototype through its transform. Mesh buffers are accounted in
 //! the [`Budget`] *before* they are allocated, with exact capacities, so the
-//! accounted memory is the memory actually used.
+//! accounted memory is the memory actually used. The per-kind prototypes are
+//! not accounted: they are transient, at most one per kind, and bounded by
+//! the detail limit (about 3 MB for all nine at `MAX_DETAIL`), and the
+//! pipeline's up-front projection (mesh bytes + output size) does not include
+//! them either.
 
 use super::primitives::{self, Prototype};
 use super::{Mesh, NamedMesh};
