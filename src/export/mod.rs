@@ -64,6 +64,17 @@ pub enum ExportError {
         /// What overflowed.
         detail: String,
     },
+    /// A mesh handed to an exporter is malformed (index out of range,
+    /// attribute arrays of different lengths, non-finite positions). Meshes
+    /// from [`build_meshes`](crate::geom::build_meshes) never are; this guards
+    /// library callers who build meshes themselves.
+    #[error("invalid mesh {name:?}: {detail}")]
+    InvalidMesh {
+        /// The mesh's name.
+        name: String,
+        /// What is wrong with it.
+        detail: String,
+    },
     /// JSON serialisation failed.
     #[error("serialising glTF JSON: {0}")]
     Json(#[from] serde_json::Error),
@@ -94,4 +105,83 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
         .saturating_mul(per_vertex)
         .saturating_add(triangles.saturating_mul(per_triangle))
         .saturating_add(fixed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::eval::budget::Limits;
+    use crate::export::gltf::tests::{all_nine, meshes_of};
+    use crate::geom::meshing::tests::{inst, scene};
+    use crate::geom::MeshLayout;
+    use crate::lang::ir::PrimitiveKind;
+    use std::path::{Path, PathBuf};
+
+    /// The sample models: each primitive alone, all nine merged and per kind,
+    /// mirrored ones, and an empty model.
+    fn samples() -> Vec<(String, Vec<NamedMesh>, ExportMeta)> {
+        let mut out = Vec::new();
+        let plain = ExportMeta::default();
+        for kind in PrimitiveKind::ALL {
+            let s = scene(vec![inst(kind, [0.0; 3], 1.0, false)]);
+            out.push((kind.name().to_ascii_lowercase(), meshes_of(&s, 16, MeshLayout::Merged), plain.clone()));
+        }
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true };
+        out.push(("all-merged".into(), meshes_of(&all_nine(), 16, MeshLayout::Merged), meta.clone()));
+        out.push(("all-per-kind".into(), meshes_of(&all_nine(), 5, MeshLayout::PerKind), meta));
+        let mirrored = scene(vec![inst(PrimitiveKind::Cone, [1.0, 2.0, 3.0], 2.0, true)]);
+        out.push(("mirrored-cone".into(), meshes_of(&mirrored, 16, MeshLayout::Merged), plain.clone()));
+        let mirrored = scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 1.0, true)]);
+        out.push(("mirrored-box".into(), meshes_of(&mirrored, 16, MeshLayout::Merged), plain.clone()));
+        let big = scene((0..3).map(|k| inst(PrimitiveKind::Sphere, [k as f32, 0.0, 0.0], 1.0, k == 1)).collect());
+        out.push(("u32-indices".into(), meshes_of(&big, 256, MeshLayout::Merged), plain.clone()));
+        out.push(("empty".into(), Vec::new(), plain));
+        out
+    }
+
+    fn counts(meshes: &[NamedMesh]) -> (u64, u64) {
+        meshes.iter().fold((0, 0), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64))
+    }
+
+    /// Writes every sample in every format (to `RULEMESH_SAMPLE_DIR` if set,
+    /// else a temporary folder), checks each size against [`estimated_size`],
+    /// and runs `scripts/validate-gltf.mjs` on the glTF files when Node and
+    /// the validator are available (see the script for where it looks).
+    #[test]
+    fn samples_fit_estimates_and_validate() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = std::env::var_os("RULEMESH_SAMPLE_DIR").map(PathBuf::from).unwrap_or_else(|| tmp.path().to_path_buf());
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut gltf_files = Vec::new();
+        for (name, meshes, meta) in samples() {
+            let (v, t) = counts(&meshes);
+            for (format, ext) in [(Format::Glb, "glb"), (Format::Gltf, "gltf"), (Format::Stl, "stl"), (Format::StlAscii, "ascii.stl")] {
+                let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
+                assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());
+                let path = dir.join(format!("{name}.{ext}"));
+                std::fs::write(&path, &bytes).unwrap();
+                if matches!(format, Format::Glb | Format::Gltf) {
+                    gltf_files.push(path);
+                }
+            }
+        }
+        let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/validate-gltf.mjs");
+        let run = std::process::Command::new("node").arg(&script).args(&gltf_files).output();
+        match run {
+            Err(e) => eprintln!("skipping glTF validation: cannot run node: {e}"),
+            Ok(o) if o.status.code() == Some(2) => {
+                eprintln!("skipping glTF validation: {}", String::from_utf8_lossy(&o.stderr))
+            }
+            Ok(o) => {
+                let report = String::from_utf8_lossy(&o.stdout);
+                assert!(o.status.success(), "validator found errors:\n{report}");
+                for line in report.lines() {
+                    let r: serde_json::Value = serde_json::from_str(line).unwrap();
+                    assert_eq!(r["numErrors"], 0, "{line}");
+                    assert_eq!(r["numWarnings"], 0, "{line}");
+                }
+                assert_eq!(report.lines().count(), gltf_files.len());
+            }
+        }
+    }
 }

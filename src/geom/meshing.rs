@@ -1,8 +1,20 @@
-//! Scene → meshes (stub: being implemented).
+//! Scene → meshes: each instance's prototype transformed into world space.
+//!
+//! Each primitive kind present is tessellated once; every instance then
+//! copies its prototype through its transform. Mesh buffers are accounted in
+//! the [`Budget`] *before* they are allocated, with exact capacities, so the
+//! accounted memory is the memory actually used. The per-kind prototypes are
+//! not accounted: they are transient, at most one per kind, and bounded by
+//! the detail limit (about 3 MB for all nine at `MAX_DETAIL`), and the
+//! pipeline's up-front projection (mesh bytes + output size) does not include
+//! them either.
 
-use super::NamedMesh;
-use crate::eval::budget::{Budget, LimitExceeded};
-use crate::eval::scene::Scene;
+use super::primitives::{self, Prototype};
+use super::{Mesh, NamedMesh};
+use crate::eval::budget::{Budget, Limit, LimitExceeded};
+use crate::eval::scene::{Instance, Scene};
+use crate::lang::ir::PrimitiveKind;
+use glam::Vec3;
 
 /// How instances are grouped into meshes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
@@ -15,14 +27,213 @@ pub enum MeshLayout {
     PerKind,
 }
 
+/// Whether an instance yields usable geometry. Instances with scale 0 collapse
+/// to a point (every triangle degenerate), and non-finite transforms would
+/// poison bounds and normals, so both are skipped rather than written.
+pub fn is_drawable(instance: &Instance) -> bool {
+    instance.scale != 0.0
+        && instance.scale.is_finite()
+        && instance.translation.is_finite()
+        && instance.rotation.is_finite()
+}
+
 /// Transforms every instance's prototype into world space and merges them,
 /// reserving the buffers' bytes in `budget` before allocating.
-pub fn build_meshes(_scene: &Scene, _detail: u32, _layout: MeshLayout, _budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
-    Ok(Vec::new())
+///
+/// * [`MeshLayout::Merged`] gives one mesh named `"model"` with the instances
+///   in scene order; [`MeshLayout::PerKind`] gives one mesh per kind present,
+///   named by the kind's lower-case keyword, in [`PrimitiveKind::ALL`] order.
+/// * Reflected instances (`parity`) have their triangles' winding reversed so
+///   faces still point outward.
+/// * Instances that are not [drawable](is_drawable) (scale 0, non-finite) are
+///   skipped. An empty scene gives no meshes.
+///
+/// Fails with a memory [`LimitExceeded`] before allocating a mesh that does
+/// not fit, or whose vertex count would not fit 32-bit indices.
+pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
+    let drawable = |i: &&Instance| is_drawable(i);
+    // Which kinds are present, and the prototypes' sizes (computed without tessellating).
+    let mut present = [false; PrimitiveKind::ALL.len()];
+    for i in scene.instances.iter().filter(drawable) {
+        present[i.kind as usize] = true;
+    }
+    if !present.iter().any(|&p| p) {
+        return Ok(Vec::new());
+    }
+    let mut protos: [Option<Prototype>; PrimitiveKind::ALL.len()] = Default::default();
+    let groups: Vec<(String, Option<PrimitiveKind>)> = match layout {
+        MeshLayout::Merged => vec![("model".to_string(), None)],
+        MeshLayout::PerKind => PrimitiveKind::ALL
+            .into_iter()
+            .filter(|k| present[*k as usize])
+            .map(|k| (k.name().to_ascii_lowercase(), Some(k)))
+            .collect(),
+    };
+    let mut meshes = Vec::with_capacity(groups.len());
+    for (name, only) in groups {
+        let members = || scene.instances.iter().filter(drawable).filter(move |i| only.map_or(true, |k| i.kind == k));
+        let (v, t) = members().fold((0u64, 0u64), |(v, t), i| {
+            (v.saturating_add(primitives::vertex_count(i.kind, detail)), t.saturating_add(primitives::triangle_count(i.kind, detail)))
+        });
+        let bytes = mesh_bytes(v, t);
+        if v > u64::from(u32::MAX) {
+            // 32-bit indices cannot address this many vertices; report it as the
+            // memory limit it would in practice exceed.
+            return Err(LimitExceeded { limit: Limit::Memory, configured: budget.limits().max_memory, reached: budget.memory().saturating_add(bytes) });
+        }
+        budget.reserve_memory(bytes)?;
+        // Both counts are ≤ u32::MAX (t ≤ 2v for every primitive) after the check above.
+        let (vu, iu) = (v as usize, (t as usize).saturating_mul(3));
+        let mut mesh = Mesh {
+            positions: Vec::with_capacity(vu),
+            normals: Vec::with_capacity(vu),
+            colours: Vec::with_capacity(vu),
+            indices: Vec::with_capacity(iu),
+        };
+        for inst in members() {
+            let proto = protos[inst.kind as usize].get_or_insert_with(|| primitives::tessellate(inst.kind, detail));
+            append_instance(&mut mesh, proto, inst);
+        }
+        debug_assert_eq!(mesh.byte_size(), bytes);
+        meshes.push(NamedMesh { name, mesh });
+    }
+    Ok(meshes)
+}
+
+/// Appends `proto` transformed by `inst` to `mesh`.
+fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
+    let linear = inst.linear();
+    let normal_matrix = inst.normal_matrix();
+    let colour = inst.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    // Fits: the caller checked the total vertex count against u32::MAX.
+    let base = mesh.positions.len() as u32;
+    for (p, n) in proto.positions.iter().zip(&proto.normals) {
+        let p = linear * Vec3::from_array(*p) + inst.translation;
+        let n = (normal_matrix * Vec3::from_array(*n)).normalize_or_zero();
+        mesh.positions.push(p.to_array());
+        mesh.normals.push(n.to_array());
+        mesh.colours.push(colour);
+    }
+    for t in proto.indices.chunks_exact(3) {
+        if inst.parity {
+            mesh.indices.extend_from_slice(&[base + t[0], base + t[2], base + t[1]]);
+        } else {
+            mesh.indices.extend_from_slice(&[base + t[0], base + t[1], base + t[2]]);
+        }
+    }
 }
 
 /// Bytes of mesh buffers for `vertices` vertices and `triangles` triangles
 /// (position 12 + normal 12 + colour 4 per vertex, 12 per triangle).
 pub fn mesh_bytes(vertices: u64, triangles: u64) -> u64 {
     vertices.saturating_mul(28).saturating_add(triangles.saturating_mul(12))
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::eval::budget::Limits;
+    use crate::geom::primitives::tests::{assert_closed, signed_volume};
+    use glam::Quat;
+
+    pub(crate) fn inst(kind: PrimitiveKind, t: [f32; 3], scale: f32, parity: bool) -> Instance {
+        Instance {
+            kind,
+            parity,
+            translation: Vec3::from_array(t),
+            rotation: Quat::from_rotation_y(0.3) * Quat::from_rotation_x(0.2),
+            scale,
+            colour: [1.0, 0.5, 0.0, 1.0],
+        }
+    }
+
+    pub(crate) fn scene(instances: Vec<Instance>) -> Scene {
+        Scene { instances, background: None, truncated: None }
+    }
+
+    #[test]
+    fn empty_scene_gives_no_meshes() {
+        let mut b = Budget::new(Limits::default());
+        assert!(build_meshes(&Scene::default(), 16, MeshLayout::Merged, &mut b).unwrap().is_empty());
+        assert!(build_meshes(&Scene::default(), 16, MeshLayout::PerKind, &mut b).unwrap().is_empty());
+        assert_eq!(b.memory(), 0);
+    }
+
+    #[test]
+    fn merged_counts_colours_and_budget() {
+        let s = scene(PrimitiveKind::ALL.iter().enumerate().map(|(k, &kind)| inst(kind, [k as f32, 0.0, 0.0], 1.0, false)).collect());
+        let mut b = Budget::new(Limits::default());
+        let m = build_meshes(&s, 12, MeshLayout::Merged, &mut b).unwrap();
+        assert_eq!(m.len(), 1);
+        assert_eq!(m[0].name, "model");
+        let v: u64 = PrimitiveKind::ALL.iter().map(|&k| primitives::vertex_count(k, 12)).sum();
+        let t: u64 = PrimitiveKind::ALL.iter().map(|&k| primitives::triangle_count(k, 12)).sum();
+        assert_eq!(m[0].mesh.positions.len() as u64, v);
+        assert_eq!(m[0].mesh.triangle_count() as u64, t);
+        assert_eq!(b.memory(), mesh_bytes(v, t));
+        assert_eq!(m[0].mesh.byte_size(), mesh_bytes(v, t));
+        assert!(m[0].mesh.colours.iter().all(|&c| c == [255, 128, 0, 255]));
+        for n in &m[0].mesh.normals {
+            assert!((Vec3::from_array(*n).length() - 1.0).abs() < 1e-5);
+        }
+    }
+
+    #[test]
+    fn per_kind_order_and_names() {
+        let s = scene(vec![
+            inst(PrimitiveKind::Torus, [0.0; 3], 1.0, false),
+            inst(PrimitiveKind::Box, [1.0, 0.0, 0.0], 1.0, false),
+            inst(PrimitiveKind::Torus, [2.0, 0.0, 0.0], 1.0, false),
+        ]);
+        let mut b = Budget::new(Limits::default());
+        let m = build_meshes(&s, 8, MeshLayout::PerKind, &mut b).unwrap();
+        let names: Vec<&str> = m.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["box", "torus"]);
+        assert_eq!(m[1].mesh.triangle_count() as u64, 2 * primitives::triangle_count(PrimitiveKind::Torus, 8));
+        let (v, e, f) = assert_closed(&m[1].mesh.positions, &m[1].mesh.indices);
+        assert_eq!(v as i64 - e as i64 + f as i64, 0); // two tori: χ = 0 + 0
+    }
+
+    #[test]
+    fn reflection_flips_winding() {
+        for kind in PrimitiveKind::ALL {
+            let s = scene(vec![inst(kind, [0.5, 1.0, 2.0], 2.0, true)]);
+            let mut b = Budget::new(Limits::default());
+            let m = build_meshes(&s, 16, MeshLayout::Merged, &mut b).unwrap();
+            let mesh = &m[0].mesh;
+            assert!(signed_volume(&mesh.positions, &mesh.indices) > 0.0, "{kind:?}");
+            // Normals still agree with the (flipped) winding.
+            for t in mesh.indices.chunks_exact(3) {
+                let [a, b, c] = [0, 1, 2].map(|k| Vec3::from_array(mesh.positions[t[k] as usize]));
+                let face = (b - a).cross(c - a).normalize();
+                assert!(face.dot(Vec3::from_array(mesh.normals[t[0] as usize])) > 0.2, "{kind:?}");
+            }
+        }
+        // A mirrored box keeps volume 8 at scale 2.
+        let s = scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 2.0, true)]);
+        let m = build_meshes(&s, 16, MeshLayout::Merged, &mut Budget::new(Limits::default())).unwrap();
+        assert!((signed_volume(&m[0].mesh.positions, &m[0].mesh.indices) - 8.0).abs() < 1e-4);
+    }
+
+    #[test]
+    fn zero_scale_instances_are_skipped() {
+        let s = scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 0.0, false), inst(PrimitiveKind::Sphere, [0.0; 3], 1.0, false)]);
+        let mut b = Budget::new(Limits::default());
+        let m = build_meshes(&s, 16, MeshLayout::PerKind, &mut b).unwrap();
+        assert_eq!(m.len(), 1);
+        assert_eq!(m[0].name, "sphere");
+        let s = scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 0.0, false)]);
+        assert!(build_meshes(&s, 16, MeshLayout::Merged, &mut b).unwrap().is_empty());
+    }
+
+    #[test]
+    fn budget_refusal_before_allocating() {
+        let s = scene(vec![inst(PrimitiveKind::Sphere, [0.0; 3], 1.0, false)]);
+        let mut b = Budget::new(Limits { max_memory: 1000, ..Limits::default() });
+        let e = build_meshes(&s, 64, MeshLayout::Merged, &mut b).unwrap_err();
+        assert_eq!(e.limit, Limit::Memory);
+        assert_eq!(e.configured, 1000);
+        assert_eq!(e.reached, mesh_bytes(primitives::vertex_count(PrimitiveKind::Sphere, 64), primitives::triangle_count(PrimitiveKind::Sphere, 64)));
+        assert_eq!(b.memory(), 0);
+    }
 }
