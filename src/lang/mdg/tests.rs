@@ -433,3 +433,20 @@ fn hostile_inputs_never_panic_and_big_inputs_are_linear() {
     // Generous: debug builds of dependencies are optimised, ours is not.
     assert!(elapsed.as_secs_f64() < 10.0, "{elapsed:?}");
 }
+
+#[test]
+fn every_example_in_the_docs_parses() {
+    let doc = include_str!("../../../docs/mdg.md");
+    let mut count = 0;
+    let mut rest = doc;
+    while let Some(start) = rest.find("```mdg\n") {
+        let after = &rest[start + 7..];
+        let end = after.find("```").expect("unclosed example");
+        let src = &after[..end];
+        let p = ok(src);
+        assert!(!p.groups.is_empty() || matches!(p.start, Target::Primitive(_)));
+        count += 1;
+        rest = &after[end + 3..];
+    }
+    assert!(count >= 12, "{count}");
+}
