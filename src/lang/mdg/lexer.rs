@@ -70,10 +70,12 @@ pub fn lex<'a>(pp: &'a Preprocessed) -> Result<Vec<Token<'a>>, ParseError> {
     let mut col = 1u32;
     let mut i = 0usize;
     // Helper to get the char at byte i.
-    let char_at = |i: usize| text.get(i..).and_then(|s| s.chars().next());
+    let char_at = |i: usize| match bytes.get(i) {
+        Some(&b) if b < 0x80 => Some(char::from(b)),
+        Some(_) => text.get(i..).and_then(|s| s.chars().next()),
+        None => None,
+    };
     while let Some(c) = char_at(i) {
-        let span = pp.span(line, col);
-        let out_line = u32::try_from(line).unwrap_or(u32::MAX);
         if c == '\n' {
             line += 1;
             col = 1;
@@ -85,6 +87,8 @@ pub fn lex<'a>(pp: &'a Preprocessed) -> Result<Vec<Token<'a>>, ParseError> {
             i += c.len_utf8();
             continue;
         }
+        let span = pp.span(line, col);
+        let out_line = u32::try_from(line).unwrap_or(u32::MAX);
         if c == '/' && bytes.get(i + 1) == Some(&b'/') {
             while let Some(c) = char_at(i) {
                 if c == '\n' {

@@ -68,6 +68,24 @@ enum Ctx {
     Angle,
 }
 
+/// What an argument belongs to, for error messages (formatted only on error).
+#[derive(Clone, Copy)]
+enum What<'s> {
+    /// After an adjustment or directive keyword.
+    After(&'s str),
+    /// A description such as "an iteration count".
+    Text(&'s str),
+}
+
+impl std::fmt::Display for What<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            What::After(w) => write!(f, "after `{w}`"),
+            What::Text(t) => write!(f, "for {t}"),
+        }
+    }
+}
+
 struct NaNEnv;
 impl ExprEnv for NaNEnv {
     fn param(&self, _: u32) -> f64 {
@@ -91,8 +109,8 @@ pub(crate) struct Parser<'a> {
     params: Vec<ParamDecl>,
     param_index: HashMap<&'a str, u32>,
     site: u32,
-    /// Unresolved call names by site.
-    call_names: HashMap<u32, (&'a str, Span)>,
+    /// Unresolved call names with their sites, in increasing site order.
+    call_names: Vec<(u32, &'a str, Span)>,
     directives: Directives,
     startshape: Option<(&'a str, Span)>,
     warnings: Vec<Diagnostic>,
@@ -134,7 +152,7 @@ impl<'a> Parser<'a> {
             params: Vec::new(),
             param_index: HashMap::new(),
             site: 0,
-            call_names: HashMap::new(),
+            call_names: Vec::new(),
             directives: Directives { angle: mode, ..Directives::default() },
             startshape: None,
             warnings: Vec::new(),
@@ -232,11 +250,11 @@ impl<'a> Parser<'a> {
             }
         };
         // Resolve call targets, in site order for a stable first error.
-        let mut names: Vec<(u32, &'a str, Span)> = self.call_names.iter().map(|(s, (n, sp))| (*s, *n, *sp)).collect();
-        names.sort_by_key(|x| x.0);
-        let mut targets: HashMap<u32, Target> = HashMap::with_capacity(names.len());
-        for (site, name, span) in names {
-            targets.insert(site, self.resolve(name, span)?);
+        let mut targets: Vec<Option<Target>> = vec![None; self.site as usize];
+        for &(site, name, span) in &self.call_names {
+            if let Some(slot) = targets.get_mut(site as usize) {
+                *slot = Some(self.resolve(name, span)?);
+            }
         }
         let mut groups = std::mem::take(&mut self.groups);
         for g in &mut groups {
@@ -381,7 +399,7 @@ impl<'a> Parser<'a> {
 
     fn const_value(&mut self, what: &str) -> PResult<(f64, Span)> {
         let span = self.peek().span;
-        let e = self.arg(Ctx::Plain, what)?;
+        let e = self.arg(Ctx::Plain, What::Text(what))?;
         if !is_const(&e.e) {
             return Err(err(span, format!("{what} must be a constant (no @param or rand())")));
         }
@@ -603,14 +621,14 @@ impl<'a> Parser<'a> {
         self.expect_punct('{', || format!("after rule name `{name}`"))?;
         let site = self.next_site(t.span)?;
         let adjust = self.adjustments('}')?;
-        self.call_names.insert(site, (name, t.span));
+        self.call_names.push((site, name, t.span));
         Ok(Item::Call(Call { target: Target::Primitive(PrimitiveKind::Box), adjust, site, span: t.span }))
     }
 
     fn iterator(&mut self) -> PResult<Item> {
         let start = self.peek().span;
         self.enter(start)?;
-        let count = self.arg(Ctx::Plain, "an iteration count")?;
+        let count = self.arg(Ctx::Plain, What::Text("an iteration count"))?;
         if let Expr::Num(v) = count.e {
             if v < 0.0 || v.fract() != 0.0 {
                 return Err(err(start, format!("iteration count must be a whole number ≥ 0, found {v}")));
@@ -619,7 +637,7 @@ impl<'a> Parser<'a> {
         let mut divisor = None;
         if self.is_punct('/') {
             self.bump();
-            divisor = Some(self.arg(Ctx::Plain, "an iteration divisor")?.e);
+            divisor = Some(self.arg(Ctx::Plain, What::Text("an iteration divisor"))?.e);
         }
         self.expect_punct('*', || "after the iteration count".to_string())?;
         let site = self.next_site(start)?;
@@ -659,20 +677,20 @@ impl<'a> Parser<'a> {
             let rot = |axis, angle: E| AdjustOp::Rotate { axis, angle: angle.e };
             match word {
                 "x" => {
-                    let a = self.arg(Ctx::Plain, "`x`")?;
+                    let a = self.arg(Ctx::Plain, What::After("x"))?;
                     let (mut b, mut c) = (num(0.0), num(0.0));
-                    if let Some(v) = self.opt_arg(Ctx::Plain, "`x`")? {
+                    if let Some(v) = self.opt_arg(Ctx::Plain, What::After("x"))? {
                         b = v;
-                        c = self.opt_arg(Ctx::Plain, "`x`")?.unwrap_or_else(|| num(0.0));
+                        c = self.opt_arg(Ctx::Plain, What::After("x"))?.unwrap_or_else(|| num(0.0));
                     }
                     push(AdjustOp::Translate([a.e, b.e, c.e]));
                 }
                 "y" => {
-                    let a = self.arg(Ctx::Plain, "`y`")?;
+                    let a = self.arg(Ctx::Plain, What::After("y"))?;
                     push(AdjustOp::Translate([Expr::Num(0.0), a.e, Expr::Num(0.0)]));
                 }
                 "z" => {
-                    let a = self.arg(Ctx::Plain, "`z`")?;
+                    let a = self.arg(Ctx::Plain, What::After("z"))?;
                     push(AdjustOp::Translate([Expr::Num(0.0), Expr::Num(0.0), a.e]));
                 }
                 "r" | "rotate" => {
@@ -709,16 +727,16 @@ impl<'a> Parser<'a> {
                     push(AdjustOp::Rotate { axis, angle });
                 }
                 "s" => {
-                    let k = self.arg(Ctx::Plain, "`s`")?;
+                    let k = self.arg(Ctx::Plain, What::After("s"))?;
                     if self.starts_arg() {
                         return Err(err(self.peek().span, "not supported yet: non-uniform scale `s x y z`"));
                     }
                     push(AdjustOp::Scale(k.e));
                 }
                 "f" => {
-                    let a = self.arg(Ctx::Plain, "`f`")?;
-                    let b = self.arg(Ctx::Plain, "`f`")?;
-                    let c = self.arg(Ctx::Plain, "`f`")?;
+                    let a = self.arg(Ctx::Plain, What::After("f"))?;
+                    let b = self.arg(Ctx::Plain, What::After("f"))?;
+                    let c = self.arg(Ctx::Plain, What::After("f"))?;
                     push(AdjustOp::Reflect([a.e, b.e, c.e]));
                 }
                 "fx" | "fy" | "fz" => {
@@ -736,11 +754,11 @@ impl<'a> Parser<'a> {
                         "B" => 2,
                         _ => 3,
                     };
-                    let d = self.arg(Ctx::Plain, &format!("`{word}`"))?;
+                    let d = self.arg(Ctx::Plain, What::After(word))?;
                     push(AdjustOp::Colour { channel, delta: d.e });
                 }
                 "u" | "v" | "w" | "q" | "fps" => {
-                    self.arg(Ctx::Plain, &format!("`{word}`"))?;
+                    self.arg(Ctx::Plain, What::After(word))?;
                     self.warnings.push(Diagnostic::warning(span, format!("adjustment `{word}` ignored: not supported yet")));
                 }
                 other => return Err(err(span, format!("unknown adjustment `{other}`"))),
@@ -766,7 +784,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn opt_arg(&mut self, ctx: Ctx, what: &str) -> PResult<Option<E>> {
+    fn opt_arg(&mut self, ctx: Ctx, what: What) -> PResult<Option<E>> {
         if self.starts_arg() {
             Ok(Some(self.arg(ctx, what)?))
         } else {
@@ -785,7 +803,7 @@ impl<'a> Parser<'a> {
     /// An angle argument, converted to radians.
     fn angle_arg(&mut self, word: &str) -> PResult<E> {
         let span = self.peek().span;
-        let a = self.arg(Ctx::Angle, &format!("`{word}`"))?;
+        let a = self.arg(Ctx::Angle, What::After(word))?;
         let f = self.angle_factor();
         if f == 1.0 {
             return Ok(a);
@@ -794,7 +812,7 @@ impl<'a> Parser<'a> {
     }
 
     /// An argument outside parentheses: `-`* then a primary (no binary operators).
-    fn arg(&mut self, ctx: Ctx, what: &str) -> PResult<E> {
+    fn arg(&mut self, ctx: Ctx, what: What) -> PResult<E> {
         let t = self.peek();
         match t.tok {
             Tok::Punct('-') => {
@@ -806,7 +824,7 @@ impl<'a> Parser<'a> {
             }
             Tok::Num { .. } | Tok::Punct('(') => self.primary(ctx),
             Tok::Ident(w) if !ADJUST_WORDS.contains(&w) || self.is_value_name(w) => self.primary(ctx),
-            other => Err(err(t.span, format!("expected a number after {what}, found {other}"))),
+            other => Err(err(t.span, format!("expected a number {what}, found {other}"))),
         }
     }
 
@@ -971,11 +989,11 @@ impl<'a> Parser<'a> {
 }
 
 /// Fills in resolved call targets (recursion bounded by the nesting limit).
-fn set_targets(items: &mut [Item], targets: &HashMap<u32, Target>) {
+fn set_targets(items: &mut [Item], targets: &[Option<Target>]) {
     for item in items {
         match item {
             Item::Call(c) => {
-                if let Some(t) = targets.get(&c.site) {
+                if let Some(Some(t)) = targets.get(c.site as usize) {
                     c.target = *t;
                 }
             }
