@@ -450,3 +450,15 @@ fn every_example_in_the_docs_parses() {
     }
     assert!(count >= 12, "{count}");
 }
+
+#[test]
+fn thesis_listing_4_1_with_the_missing_brace_restored() {
+    let p = ok("selector A frequency\nrule A 0.01 {}\nrule A 0.1 {\n  A{z 1}\n  A{rz 0.3 rx 0.35}\n}\nrule A 0.9 {\n  SPHERE{}\n  A{z 1 ry 0.01}\n}");
+    assert_eq!(p.groups.len(), 1);
+    let w: Vec<f64> = p.groups[0].rules.iter().map(|r| r.weight).collect();
+    assert_eq!(w, [0.01, 0.1, 0.9]);
+    assert_eq!(p.site_count, 4);
+    // As printed (the `}` missing), the error points at the nested `rule`.
+    let (l, c, m) = fail("rule A 0.1 {\n  A{z 1}\nrule A 0.9 {\n  SPHERE{}\n}");
+    assert_eq!((l, c, m.as_str()), (3, 6, "expected `{` after rule name `rule`, found `A`"));
+}
