@@ -4,6 +4,7 @@
 
 mod common;
 
+mod cli;
 mod counts;
 mod determinism;
 mod docs;
