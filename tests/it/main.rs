@@ -10,3 +10,4 @@ mod determinism;
 mod docs;
 mod grammars;
 mod hostile;
+mod selectors;
