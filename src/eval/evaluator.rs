@@ -9,11 +9,11 @@
 use super::budget::{Budget, OnLimit};
 use super::frame::Frame;
 use super::rng::StreamKey;
-use super::scene::{Instance, Scene, INSTANCE_BYTES};
+use super::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
 use super::EvalError;
 use crate::geom::primitives;
 use crate::lang::expr::{Expr, ExprEnv};
-use crate::lang::ir::{Adjust, AdjustOp, Axis, GroupId, Item, Iterate, Program, Rule, RuleGroup, Selector, Target};
+use crate::lang::ir::{Adjust, AdjustOp, Axis, GroupId, Item, Iterate, LineOp, Program, Rule, RuleGroup, Selector, Target};
 use crate::lang::Span;
 use glam::{DQuat, DVec3};
 
@@ -148,6 +148,10 @@ struct Evaluator<'p> {
     /// Triangles per primitive kind at the requested detail.
     tris: [u64; 9],
     downstream: [u64; 9],
+    /// Upper bound of the triangles one line point adds.
+    line_triangles: u64,
+    /// Bytes later stages need per line point.
+    line_downstream: u64,
     maxiter: u64,
 }
 
@@ -185,6 +189,8 @@ impl<'p> Evaluator<'p> {
             cumulative,
             tris,
             downstream: options.downstream_bytes,
+            line_triangles: crate::geom::sweep::per_point_bound(detail).1,
+            line_downstream: options.line_point_bytes,
             maxiter: program.directives.maxiter.unwrap_or(u64::MAX),
         })
     }
@@ -229,6 +235,24 @@ fn adjust_is_deterministic(op: &AdjustOp) -> bool {
     }
 }
 
+/// Turns `point`'s profile orthogonal to the segment from the line's last point
+/// (SLINETO, with the shortest-arc rotation of eq 3.29 as corrected in the
+/// seed notes). A line's first point is turned too, so its first segment is straight.
+fn orient_along_segment(line: &mut Polyline, point: &mut LinePoint) {
+    let Some(prev) = line.points.last_mut() else { return };
+    let Some(dir) = (point.frame.translation - prev.frame.translation).try_normalize() else { return };
+    let turn = |f: &mut Frame| {
+        let axis = (f.rotation * DVec3::Z).normalize();
+        f.rotation = (DQuat::from_rotation_arc(axis, dir) * f.rotation).normalize();
+    };
+    turn(&mut point.frame);
+    if line.points.len() == 1 {
+        if let Some(first) = line.points.first_mut() {
+            turn(&mut first.frame);
+        }
+    }
+}
+
 /// Options for one evaluation that do not come from the source.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EvalOptions {
@@ -245,19 +269,23 @@ pub struct EvalOptions {
     /// after a scene too big to mesh has been built. The caller releases the
     /// promise with [`promised_bytes`] before meshing.
     pub downstream_bytes: [u64; 9],
+    /// Like `downstream_bytes`, per point of a swept line.
+    pub line_point_bytes: u64,
 }
 
 /// The memory promised for later stages by `scene`'s instances under `options`.
 pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
+    let points: u64 = scene.lines.iter().map(|l| l.points.len() as u64).sum();
     scene
         .instances
         .iter()
         .fold(0u64, |acc, i| acc.saturating_add(options.downstream_bytes[i.kind as usize]))
+        .saturating_add(points.saturating_mul(options.line_point_bytes))
 }
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream_bytes: [0; 9] }
+        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream_bytes: [0; 9], line_point_bytes: 0 }
     }
 }
 
@@ -278,6 +306,7 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
         scene,
         budget,
         last_terminal: None,
+        pen: Pen { start: Frame::IDENTITY, lifted: false, moveto: Frame::IDENTITY, open: None },
     };
     let result = m.run(root);
     m.budget.release_memory(m.charged_slots * TASK_BYTES);
@@ -305,6 +334,22 @@ struct Machine<'p, 'b> {
     sequence: Vec<u64>,
     /// Frame of the last terminal drawn, where a continued call (`\`) starts.
     last_terminal: Option<Frame>,
+    /// The swept-line pen.
+    pen: Pen,
+}
+
+/// Where the pen of swept lines is (one pen: namespaces come later).
+#[derive(Debug, Clone, Copy)]
+struct Pen {
+    /// Where the next segment starts when no line is open. The pen starts
+    /// down at the root frame, so a first `LINETO` draws from the origin.
+    start: Frame,
+    /// After `NEWLINE`: the next `LINETO` only puts the pen down.
+    lifted: bool,
+    /// The last `MOVETO`, for `RESET`.
+    moveto: Frame,
+    /// Index in `scene.lines` of the line being drawn.
+    open: Option<usize>,
 }
 
 impl<'p> Machine<'p, '_> {
@@ -422,6 +467,10 @@ impl<'p> Machine<'p, '_> {
                 self.last_terminal = Some(ctx.frame);
                 Ok(())
             }
+            Target::Line(op) => {
+                self.budget.charge_step()?;
+                self.draw_line(op, &ctx)
+            }
             Target::Group(g) => {
                 let dirs = &self.ev.program.directives;
                 if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
@@ -437,6 +486,63 @@ impl<'p> Machine<'p, '_> {
                 Ok(())
             }
         }
+    }
+
+    /// Moves the pen (seed 000 §4.3): every operation is a terminal for continuation.
+    fn draw_line(&mut self, op: LineOp, ctx: &Ctx) -> Result<(), EvalError> {
+        let frame = ctx.frame;
+        match op {
+            LineOp::MoveTo => {
+                self.pen = Pen { start: frame, lifted: false, moveto: frame, open: None };
+            }
+            LineOp::NewLine => {
+                self.pen.open = None;
+                self.pen.lifted = true;
+            }
+            LineOp::Reset => {
+                self.pen.open = None;
+                self.pen.lifted = false;
+                self.pen.start = self.pen.moveto;
+                self.last_terminal = Some(self.pen.moveto);
+                return Ok(());
+            }
+            LineOp::LineTo | LineOp::SLineTo if self.pen.lifted => {
+                self.pen.lifted = false;
+                self.pen.start = frame;
+            }
+            LineOp::LineTo | LineOp::SLineTo => {
+                let mut colour = ctx.colour;
+                colour[3] += 1.0;
+                let colour = colour.map(|c| c.clamp(0.0, 1.0) as f32);
+                let open = match self.pen.open {
+                    Some(i) => i,
+                    None => {
+                        let start = LinePoint { frame: self.pen.start, colour };
+                        self.charge_line_point()?;
+                        self.scene.lines.push(Polyline { points: vec![start] });
+                        let i = self.scene.lines.len() - 1;
+                        self.pen.open = Some(i);
+                        i
+                    }
+                };
+                self.charge_line_point()?;
+                let Some(line) = self.scene.lines.get_mut(open) else { return Ok(()) };
+                let mut point = LinePoint { frame, colour };
+                if op == LineOp::SLineTo {
+                    orient_along_segment(line, &mut point);
+                }
+                line.points.push(point);
+            }
+        }
+        self.last_terminal = Some(frame);
+        Ok(())
+    }
+
+    /// Charges one more line point: its storage, and the mesh and output it will become.
+    fn charge_line_point(&mut self) -> Result<(), EvalError> {
+        self.budget.charge_triangles(self.ev.line_triangles)?;
+        self.budget.reserve_memory(LINE_POINT_BYTES.saturating_add(self.ev.line_downstream))?;
+        Ok(())
     }
 
     /// Picks the alternative of `group` that a call in `ctx` runs, if any.

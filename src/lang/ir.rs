@@ -78,6 +78,25 @@ pub enum Target {
     Group(GroupId),
     /// A built-in drawable.
     Primitive(PrimitiveKind),
+    /// A line drawable (seed 000 §4.3, Table B.6).
+    Line(LineOp),
+}
+
+/// The pen operations of swept lines. Each is a terminal: it updates the
+/// frame that a continued call (`\`) starts from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LineOp {
+    /// `MOVETO`: ends the current line and puts the pen down here.
+    MoveTo,
+    /// `LINETO` (and `ALINETO`): draws a segment from the pen to here; if the
+    /// pen is lifted (after `NEWLINE`), only puts it down.
+    LineTo,
+    /// `SLINETO`: like `LINETO`, with the profile turned orthogonal to the segment.
+    SLineTo,
+    /// `NEWLINE`: ends the current line and lifts the pen.
+    NewLine,
+    /// `RESET`: ends the current line and puts the pen back at the last `MOVETO`.
+    Reset,
 }
 
 /// The built-in drawables. Each is unit-sized and centred at the origin (see `docs/mdg.md`).

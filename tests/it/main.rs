@@ -10,4 +10,5 @@ mod determinism;
 mod docs;
 mod grammars;
 mod hostile;
+mod lines;
 mod selectors;

@@ -3,7 +3,7 @@
 
 use super::lexer::{Tok, Token};
 use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
-use crate::lang::ir::Selector;
+use crate::lang::ir::{LineOp, Selector};
 use crate::lang::ir::{
     Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
     Program, Rule, RuleGroup, Target,
@@ -689,15 +689,32 @@ impl<'a> Parser<'a> {
         let Tok::Ident(name) = t.tok else {
             return Err(err(t.span, format!("expected a rule call, found {}", t.tok)));
         };
+        let line_op = match name.to_ascii_uppercase().as_str() {
+            "MOVETO" => Some(LineOp::MoveTo),
+            "LINETO" | "ALINETO" => Some(LineOp::LineTo),
+            "SLINETO" => Some(LineOp::SLineTo),
+            "NEWLINE" => Some(LineOp::NewLine),
+            "RESET" => Some(LineOp::Reset),
+            _ => None,
+        };
         let base = name.rsplit('.').next().unwrap_or(name);
-        if LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
+        if line_op.is_none() && LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
             return Err(err(t.span, format!("not supported yet: drawable `{name}`")));
+        }
+        if line_op.is_some() && matches!(self.peek().tok, Tok::Ident(_)) {
+            return Err(err(self.peek().span, format!("not supported yet: a profile rule after `{name}`")));
         }
         self.expect_punct('{', || format!("after rule name `{name}`"))?;
         let site = self.next_site(t.span)?;
         let adjust = self.adjustments('}')?;
-        self.call_names.push((site, name, t.span));
-        Ok(Item::Call(Call { target: Target::Primitive(PrimitiveKind::Box), adjust, site, continues: false, span: t.span }))
+        let target = match line_op {
+            Some(op) => Target::Line(op),
+            None => {
+                self.call_names.push((site, name, t.span));
+                Target::Primitive(PrimitiveKind::Box)
+            }
+        };
+        Ok(Item::Call(Call { target, adjust, site, continues: false, span: t.span }))
     }
 
     fn iterator(&mut self) -> PResult<Item> {

@@ -342,7 +342,8 @@ fn error_positions() {
     assert_eq!(fail("rule A {\n\tFOO {}\n}"), (2, 2, "unknown rule or primitive `FOO`".into()));
     assert_eq!(fail("startshape Q\nrule A {}"), (1, 12, "unknown rule or primitive `Q`".into()));
     assert_eq!(fail("rule A { é {} # }"), (1, 15, "unexpected character `#`".into()));
-    assert_eq!(fail("rule A { MOVETO {} }"), (1, 10, "not supported yet: drawable `MOVETO`".into()));
+    assert_eq!(fail("rule A { BLENDTO {} }"), (1, 10, "not supported yet: drawable `BLENDTO`".into()));
+    assert_eq!(fail("rule A { LINETO P {} }\nrule P {}"), (1, 17, "not supported yet: a profile rule after `LINETO`".into()));
     assert_eq!(fail("rule A { B {} \\ \\ B {} }\nrule B {}"), (1, 17, "expected a call after `\\`, found another `\\`".into()));
     assert_eq!(fail(""), (1, 1, "empty source: expected `startshape` or `rule`".into()));
     assert_eq!(fail("  // only a comment\n"), (1, 1, "empty source: expected `startshape` or `rule`".into()));
