@@ -5,8 +5,8 @@
 
 use crate::eval::{self, bind_params, Budget, EvalError, EvalOptions, LimitExceeded, Limits, OnLimit, ParamValue};
 use crate::export::{self, ExportError, ExportMeta, Format};
-use crate::geom::{self, primitives, MeshLayout};
-use crate::lang::{self, ir::PrimitiveKind, Diagnostic, Language, ParseError};
+use crate::geom::{self, MeshLayout};
+use crate::lang::{self, Diagnostic, Language, ParseError};
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
@@ -163,11 +163,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         seed: req.seed,
         detail: req.detail,
         on_limit: req.on_limit,
-        downstream_bytes: downstream_bytes(req),
-        line_point_bytes: {
-            let (v, t) = geom::sweep::per_point_bound(req.detail);
-            geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
-        },
+        downstream: downstream(req, overhead),
     };
     let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
     lap(&mut phases.eval);
@@ -202,11 +198,12 @@ fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene
     }
 }
 
-/// Bytes the mesh buffers and the encoded output need per primitive of each kind.
-fn downstream_bytes(req: &RenderRequest) -> [u64; 9] {
-    let overhead = export::estimated_size(req.format, 0, 0);
-    PrimitiveKind::ALL.map(|k| {
-        let (v, t) = (primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail));
-        crate::geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
-    })
+/// Bytes the mesh buffers and the encoded output need per vertex and per
+/// triangle (both are linear in the counts beyond a fixed overhead).
+fn downstream(req: &RenderRequest, overhead: u64) -> eval::Downstream {
+    let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
+    eval::Downstream {
+        per_vertex: crate::geom::meshing::mesh_bytes(1, 0).saturating_add(est(1, 0)),
+        per_triangle: crate::geom::meshing::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+    }
 }
