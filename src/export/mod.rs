@@ -209,7 +209,9 @@ mod tests {
         let mut gltf_files = Vec::new();
         for (name, meshes, meta) in samples() {
             let (v, t) = counts(&meshes);
-            for (format, ext) in [(Format::Glb, "glb"), (Format::Gltf, "gltf"), (Format::Stl, "stl"), (Format::StlAscii, "ascii.stl")] {
+            for (format, ext) in
+                [(Format::Glb, "glb"), (Format::Gltf, "gltf"), (Format::Stl, "stl"), (Format::StlAscii, "ascii.stl"), (Format::Strips, "strips")]
+            {
                 let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
                 assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());
                 let path = dir.join(format!("{name}.{ext}"));
