@@ -4,7 +4,7 @@
 //! request gives the same bytes whichever front door it came through.
 
 use crate::eval::{self, bind_params, Budget, EvalError, EvalOptions, LimitExceeded, Limits, OnLimit, ParamValue};
-use crate::export::{self, ExportError, ExportMeta, Format};
+use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format};
 use crate::geom::{self, MeshLayout};
 use crate::lang::{self, Diagnostic, Language, ParseError};
 use std::collections::BTreeMap;
@@ -29,6 +29,9 @@ pub struct RenderRequest {
     pub detail: u32,
     /// One merged mesh or one per primitive kind.
     pub layout: MeshLayout,
+    /// Encoding options of the output format (e.g. strips precision); they
+    /// reach the exporter only.
+    pub export_options: ExportOptions,
 }
 
 impl Default for RenderRequest {
@@ -42,6 +45,7 @@ impl Default for RenderRequest {
             on_limit: OnLimit::Error,
             detail: geom::DEFAULT_DETAIL,
             layout: MeshLayout::Merged,
+            export_options: ExportOptions::default(),
         }
     }
 }
@@ -145,6 +149,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
             req.detail
         )));
     }
+    if req.format == Format::Strips {
+        req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
+    }
     let mut budget = Budget::new(req.limits);
     let mut phases = PhaseTimes::default();
     let mut mark = Instant::now();
@@ -173,7 +180,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
     lap(&mut phases.mesh);
     let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
-    let bytes = export::export(req.format, &meshes, &meta, &mut budget)?;
+    let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
     lap(&mut phases.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     Ok(RenderOutput {

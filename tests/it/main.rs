@@ -12,3 +12,4 @@ mod grammars;
 mod hostile;
 mod lines;
 mod selectors;
+mod strips;
