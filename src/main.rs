@@ -33,6 +33,17 @@ enum Command {
     Render(RenderArgs),
     /// Parse a grammar and print diagnostics as `file:line:col: message`, without evaluating.
     Check(CheckArgs),
+    /// Run the HTTP and gRPC service (options also from `RULEMESH_*` variables).
+    Serve(ServeArgs),
+}
+
+#[derive(Args)]
+struct ServeArgs {
+    #[command(flatten)]
+    config: rulemesh::service::ServeConfig,
+    /// Log level: error, warn, info, debug or trace.
+    #[arg(long, env = "RULEMESH_LOG", default_value = "info")]
+    log: tracing_subscriber::filter::LevelFilter,
 }
 
 #[derive(Args)]
@@ -112,6 +123,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Render(args) => run_render(args),
         Command::Check(args) => run_check(args),
+        Command::Serve(args) => run_serve(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -247,4 +259,19 @@ fn run_check(args: CheckArgs) -> Result<(), Failure> {
         }
         Err(e) => Err(render_failure(&args.file, e)),
     }
+}
+
+fn run_serve(args: ServeArgs) -> Result<(), Failure> {
+    tracing_subscriber::fmt().with_max_level(args.log).with_target(false).init();
+    let config = args.config;
+    // The blocking pool only runs renders, which the engine already limits to
+    // `concurrency`; a few spare threads cover moka and file work.
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .max_blocking_threads(config.concurrency() + 4)
+        .build()
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("cannot start the runtime: {e}")))?;
+    runtime
+        .block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()))
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
 }
