@@ -6,7 +6,7 @@
 use crate::eval::{self, bind_params, Budget, EvalError, EvalOptions, LimitExceeded, Limits, OnLimit, ParamValue};
 use crate::export::{self, ExportError, ExportMeta, Format};
 use crate::geom::{self, primitives, MeshLayout};
-use crate::lang::{self, Diagnostic, Language, ParseError};
+use crate::lang::{self, ir::PrimitiveKind, Diagnostic, Language, ParseError};
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
@@ -155,24 +155,20 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let (language, program) = parse_source(source, req.language, &req.limits)?;
     let params = bind_params(&program, &req.params)?;
     lap(&mut phases.parse);
-    let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit };
+    // Promise the memory that meshing and export will need while evaluating,
+    // so the memory limit binds (or truncates) as primitives are made.
+    let overhead = export::estimated_size(req.format, 0, 0);
+    budget.reserve_memory(overhead)?;
+    let options = EvalOptions {
+        seed: req.seed,
+        detail: req.detail,
+        on_limit: req.on_limit,
+        downstream_bytes: downstream_bytes(req),
+    };
     let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
     lap(&mut phases.eval);
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut scene))?;
-
-    // Check the mesh and output buffers against the memory budget before
-    // building them; under `truncate`, keep the longest prefix that fits.
-    let fit = fitting_prefix(&scene, req, &budget);
-    if fit < scene.instances.len() {
-        let need = projected_bytes(&scene.instances, req);
-        let e = LimitExceeded {
-            limit: eval::Limit::Memory,
-            configured: req.limits.max_memory,
-            reached: budget.memory().saturating_add(need),
-        };
-        truncate_or_fail(req.on_limit, e, &mut scene)?;
-        scene.instances.truncate(fit);
-    }
+    budget.release_memory(eval::promised_bytes(&scene, &options).saturating_add(overhead));
 
     let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
     lap(&mut phases.mesh);
@@ -202,32 +198,11 @@ fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene
     }
 }
 
-/// Bytes the mesh buffers and the encoded output of `instances` will need.
-fn projected_bytes(instances: &[eval::Instance], req: &RenderRequest) -> u64 {
-    let (v, t) = instances.iter().fold((0u64, 0u64), |(v, t), i| {
-        (v + primitives::vertex_count(i.kind, req.detail), t + primitives::triangle_count(i.kind, req.detail))
-    });
-    crate::geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t))
-}
-
-/// How many leading instances fit in the memory left.
-fn fitting_prefix(scene: &eval::Scene, req: &RenderRequest, budget: &Budget) -> usize {
-    let left = req.limits.max_memory.saturating_sub(budget.memory());
-    if projected_bytes(&scene.instances, req) <= left {
-        return scene.instances.len();
-    }
-    let mut used = 0u64;
-    for (n, i) in scene.instances.iter().enumerate() {
-        let v = primitives::vertex_count(i.kind, req.detail);
-        let t = primitives::triangle_count(i.kind, req.detail);
-        let overhead = export::estimated_size(req.format, 0, 0);
-        used = used
-            .saturating_add(crate::geom::meshing::mesh_bytes(v, t))
-            .saturating_add(export::estimated_size(req.format, v, t).saturating_sub(overhead));
-        // Fixed per-file overhead of the output format.
-        if used.saturating_add(export::estimated_size(req.format, 0, 0)) > left {
-            return n;
-        }
-    }
-    scene.instances.len()
+/// Bytes the mesh buffers and the encoded output need per primitive of each kind.
+fn downstream_bytes(req: &RenderRequest) -> [u64; 9] {
+    let overhead = export::estimated_size(req.format, 0, 0);
+    PrimitiveKind::ALL.map(|k| {
+        let (v, t) = (primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail));
+        crate::geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
+    })
 }

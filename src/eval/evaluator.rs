@@ -142,6 +142,7 @@ struct Evaluator<'p> {
     cumulative: Vec<Vec<f64>>,
     /// Triangles per primitive kind at the requested detail.
     tris: [u64; 9],
+    downstream: [u64; 9],
     maxiter: u64,
 }
 
@@ -149,7 +150,8 @@ struct Evaluator<'p> {
 const SELECT_SLOT: u32 = u32::MAX;
 
 impl<'p> Evaluator<'p> {
-    fn new(program: &'p Program, params: &'p [f64], detail: u32) -> Result<Self, EvalError> {
+    fn new(program: &'p Program, params: &'p [f64], options: &EvalOptions) -> Result<Self, EvalError> {
+        let detail = options.detail;
         let mut fixed = vec![None; program.site_count as usize];
         for g in &program.groups {
             for r in &g.rules {
@@ -177,6 +179,7 @@ impl<'p> Evaluator<'p> {
             fixed,
             cumulative,
             tris,
+            downstream: options.downstream_bytes,
             maxiter: program.directives.maxiter.unwrap_or(u64::MAX),
         })
     }
@@ -230,17 +233,32 @@ pub struct EvalOptions {
     pub detail: u32,
     /// Fail or truncate when a limit runs out.
     pub on_limit: OnLimit,
+    /// Bytes that later stages (mesh buffers, encoded output) will need per
+    /// primitive of each kind, indexed by `PrimitiveKind as usize`. Charged to
+    /// the memory budget as each primitive is made, so memory binds during
+    /// evaluation (and truncation keeps a prefix that will fit) instead of
+    /// after a scene too big to mesh has been built. The caller releases the
+    /// promise with [`promised_bytes`] before meshing.
+    pub downstream_bytes: [u64; 9],
+}
+
+/// The memory promised for later stages by `scene`'s instances under `options`.
+pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
+    scene
+        .instances
+        .iter()
+        .fold(0u64, |acc, i| acc.saturating_add(options.downstream_bytes[i.kind as usize]))
 }
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error }
+        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream_bytes: [0; 9] }
     }
 }
 
 /// Evaluates `program` with bound `params` into a scene, under `budget`.
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
-    let ev = Evaluator::new(program, params, options.detail)?;
+    let ev = Evaluator::new(program, params, options)?;
     let seed = options.seed.or(program.directives.randseed).unwrap_or(0);
     let mut scene = Scene {
         background: program.directives.background.map(|c| c.map(|v| v.clamp(0.0, 1.0) as f32)),
@@ -379,6 +397,7 @@ fn expand<'p>(
         Target::Primitive(kind) => {
             budget.charge_step()?;
             budget.charge_primitive(ev.tris[kind as usize])?;
+            budget.reserve_memory(ev.downstream[kind as usize])?;
             if scene.instances.len() == scene.instances.capacity() {
                 let grow = scene.instances.capacity().max(64);
                 budget.reserve_memory(grow as u64 * INSTANCE_BYTES)?;

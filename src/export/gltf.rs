@@ -304,6 +304,29 @@ fn base64_len(n: u64) -> u64 {
     n.div_ceil(3).saturating_mul(4)
 }
 
+/// Writes f32s little-endian. On little-endian machines the memory already has
+/// that layout, so the whole slice goes out in one copy.
+fn put_f32s(sink: &mut impl Sink, values: &[f32]) {
+    if cfg!(target_endian = "little") {
+        sink.put(bytemuck::cast_slice(values));
+    } else {
+        for v in values {
+            sink.put(&v.to_le_bytes());
+        }
+    }
+}
+
+/// Writes u32s little-endian (one copy on little-endian machines).
+fn put_u32s(sink: &mut impl Sink, values: &[u32]) {
+    if cfg!(target_endian = "little") {
+        sink.put(bytemuck::cast_slice(values));
+    } else {
+        for v in values {
+            sink.put(&v.to_le_bytes());
+        }
+    }
+}
+
 /// Writes the binary buffer (exactly `buffer_len` bytes, zero padding between meshes).
 fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
     let mut at = 0u64;
@@ -312,26 +335,17 @@ fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
             sink.put(&[0]);
             at += 1;
         }
-        for v in &m.mesh.positions {
-            for c in v {
-                sink.put(&c.to_le_bytes());
-            }
-        }
-        for v in &m.mesh.normals {
-            for c in v {
-                sink.put(&c.to_le_bytes());
-            }
-        }
-        for c in &m.mesh.colours {
-            sink.put(c);
+        put_f32s(sink, bytemuck::cast_slice(&m.mesh.positions));
+        put_f32s(sink, bytemuck::cast_slice(&m.mesh.normals));
+        sink.put(bytemuck::cast_slice(&m.mesh.colours));
+        if !p.short {
+            put_u32s(sink, &m.mesh.indices);
+            at = p.end();
+            continue;
         }
         for &i in &m.mesh.indices {
-            if p.short {
-                // Fits: `short` means every index is below 65535.
-                sink.put(&(i as u16).to_le_bytes());
-            } else {
-                sink.put(&i.to_le_bytes());
-            }
+            // Fits: `short` means every index is below 65535.
+            sink.put(&(i as u16).to_le_bytes());
         }
         at = p.end();
     }

@@ -6,5 +6,6 @@ mod common;
 
 mod counts;
 mod determinism;
+mod docs;
 mod grammars;
 mod hostile;

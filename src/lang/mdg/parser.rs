@@ -1,0 +1,1032 @@
+//! The MDG parser: tokens → IR. Recursive descent whose recursion is bounded
+//! by [`MAX_NESTING`], so hostile input gets an error, never a stack overflow.
+
+use super::lexer::{Tok, Token};
+use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
+use crate::lang::ir::{
+    Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
+    Program, Rule, RuleGroup, Target,
+};
+use crate::lang::{Diagnostic, ParseError, Span};
+use std::collections::HashMap;
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// Maximum nesting of blocks, iterator chains, parentheses and expression trees.
+pub const MAX_NESTING: u32 = 256;
+
+/// Drawables that belong to later issues.
+const LATER_DRAWABLES: [&str; 11] =
+    ["VERTEX", "MOVETO", "LINETO", "SLINETO", "BLENDTO", "ALINETO", "NEWLINE", "RESET", "FACENORMALS", "FRAME", "DEBUG"];
+
+/// Top-level directives that are skipped (to the end of their line) with a warning.
+const SKIPPED_DIRECTIVES: [&str; 16] = [
+    "uniform",
+    "linerule",
+    "camerarule",
+    "duration",
+    "fps",
+    "normal",
+    "color",
+    "weight",
+    "stacksize",
+    "camerafov",
+    "cameranearplane",
+    "camerafarplane",
+    "buffer",
+    "invalidateskipframes",
+    "cameramode",
+    "render",
+];
+
+/// Adjustment keywords (case-sensitive); a bare name equal to one of these is never an argument.
+const ADJUST_WORDS: &[&str] = &[
+    "x", "y", "z", "r", "rotate", "rx", "pitch", "ry", "yaw", "rz", "roll", "up", "down", "left", "right",
+    "rolleft", "rollleft", "rollright", "s", "f", "fx", "fy", "fz", "R", "G", "B", "A", "u", "v", "w", "q",
+    "fps",
+];
+
+type PResult<T> = Result<T, ParseError>;
+
+/// An expression with its tree depth.
+#[derive(Clone)]
+struct E {
+    e: Expr,
+    depth: u32,
+    nodes: usize,
+}
+
+struct Define {
+    expr: E,
+}
+
+/// Which angle unit literals are interpreted in.
+#[derive(Clone, Copy, PartialEq)]
+enum Ctx {
+    /// A plain number: `d`/`t` literals become radians.
+    Plain,
+    /// An angle argument: literals are in the mode's unit, `d`/`t` converted into it.
+    Angle,
+}
+
+/// What an argument belongs to, for error messages (formatted only on error).
+#[derive(Clone, Copy)]
+enum What<'s> {
+    /// After an adjustment or directive keyword.
+    After(&'s str),
+    /// A description such as "an iteration count".
+    Text(&'s str),
+}
+
+impl std::fmt::Display for What<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            What::After(w) => write!(f, "after `{w}`"),
+            What::Text(t) => write!(f, "for {t}"),
+        }
+    }
+}
+
+struct NaNEnv;
+impl ExprEnv for NaNEnv {
+    fn param(&self, _: u32) -> f64 {
+        f64::NAN
+    }
+    fn rand(&mut self, _: u32) -> f64 {
+        f64::NAN
+    }
+}
+
+pub(crate) struct Parser<'a> {
+    toks: Vec<Token<'a>>,
+    pos: usize,
+    /// Tokens at or beyond this index read as end of input (used for line-bounded constructs).
+    end: usize,
+    mode: AngleMode,
+    depth: u32,
+    groups: Vec<RuleGroup>,
+    group_index: HashMap<String, u32>,
+    defines: HashMap<&'a str, Define>,
+    params: Vec<ParamDecl>,
+    param_index: HashMap<&'a str, u32>,
+    site: u32,
+    /// Unresolved call names with their sites, in increasing site order.
+    call_names: Vec<(u32, &'a str, Span)>,
+    directives: Directives,
+    startshape: Option<(&'a str, Span)>,
+    warnings: Vec<Diagnostic>,
+    /// Budget of expression nodes copied by `@define` substitution.
+    subst_budget: usize,
+}
+
+fn err(span: Span, msg: impl Into<String>) -> ParseError {
+    ParseError::single(span, msg)
+}
+
+fn num(v: f64) -> E {
+    E { e: Expr::Num(v), depth: 1, nodes: 1 }
+}
+
+fn is_const(e: &Expr) -> bool {
+    match e {
+        Expr::Num(_) => true,
+        Expr::Param(_) | Expr::Rand(_) => false,
+        Expr::Neg(a) => is_const(a),
+        Expr::Binary(_, a, b) => is_const(a) && is_const(b),
+        Expr::Func(_, args) => args.iter().all(is_const),
+    }
+}
+
+impl<'a> Parser<'a> {
+    pub(crate) fn new(toks: Vec<Token<'a>>, source_len: usize) -> Parser<'a> {
+        let end = toks.len().saturating_sub(1);
+        let mode = prescan_angle(&toks);
+        Parser {
+            toks,
+            pos: 0,
+            end,
+            mode,
+            depth: 0,
+            groups: Vec::new(),
+            group_index: HashMap::new(),
+            defines: HashMap::new(),
+            params: Vec::new(),
+            param_index: HashMap::new(),
+            site: 0,
+            call_names: Vec::new(),
+            directives: Directives { angle: mode, ..Directives::default() },
+            startshape: None,
+            warnings: Vec::new(),
+            subst_budget: source_len.saturating_mul(4).saturating_add(64 * 1024),
+        }
+    }
+
+    // ----- token helpers -----
+
+    fn tok_at(&self, i: usize) -> Token<'a> {
+        let last = self.toks.len().saturating_sub(1);
+        if i >= self.end {
+            // End of a bounded region: report at the next real token (or the end).
+            let t = self.toks.get(i.min(last)).or(self.toks.last()).copied();
+            let span = t.map_or(Span::new(1, 1), |t| t.span);
+            return Token { tok: Tok::Eof, span, line: t.map_or(0, |t| t.line) };
+        }
+        self.toks.get(i).copied().unwrap_or(Token { tok: Tok::Eof, span: Span::new(1, 1), line: 0 })
+    }
+
+    fn peek(&self) -> Token<'a> {
+        self.tok_at(self.pos)
+    }
+
+    fn peek2(&self) -> Token<'a> {
+        self.tok_at(self.pos + 1)
+    }
+
+    fn bump(&mut self) -> Token<'a> {
+        let t = self.peek();
+        if self.pos < self.end {
+            self.pos += 1;
+        }
+        t
+    }
+
+    fn is_punct(&self, c: char) -> bool {
+        self.peek().tok == Tok::Punct(c)
+    }
+
+    fn expect_punct(&mut self, c: char, context: impl FnOnce() -> String) -> PResult<Token<'a>> {
+        let t = self.peek();
+        if t.tok == Tok::Punct(c) {
+            Ok(self.bump())
+        } else {
+            Err(err(t.span, format!("expected `{c}` {}, found {}", context(), t.tok)))
+        }
+    }
+
+    fn enter(&mut self, span: Span) -> PResult<()> {
+        self.depth += 1;
+        if self.depth > MAX_NESTING {
+            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
+        }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
+        self.depth = self.depth.saturating_sub(1);
+    }
+
+    fn next_site(&mut self, span: Span) -> PResult<u32> {
+        let s = self.site;
+        self.site = self.site.checked_add(1).ok_or_else(|| err(span, "too many call sites"))?;
+        Ok(s)
+    }
+
+    // ----- top level -----
+
+    pub(crate) fn parse_program(mut self) -> PResult<Program> {
+        if self.peek().tok == Tok::Eof {
+            return Err(err(Span::new(1, 1), "empty source: expected `startshape` or `rule`"));
+        }
+        loop {
+            let t = self.peek();
+            match t.tok {
+                Tok::Eof => break,
+                Tok::At(w) => self.preprocessor_line(w, t)?,
+                Tok::Ident(w) => self.directive(w, t)?,
+                other => {
+                    return Err(err(t.span, format!("expected `rule`, `startshape` or a directive, found {other}")))
+                }
+            }
+        }
+        self.finish()
+    }
+
+    fn finish(mut self) -> PResult<Program> {
+        let start = match self.startshape {
+            Some((name, span)) => self.resolve(name, span)?,
+            None if !self.groups.is_empty() => Target::Group(0),
+            None => {
+                let span = self.peek().span;
+                return Err(err(span, "no rules: expected at least one `rule` or a `startshape`"));
+            }
+        };
+        // Resolve call targets, in site order for a stable first error.
+        let mut targets: Vec<Option<Target>> = vec![None; self.site as usize];
+        for &(site, name, span) in &self.call_names {
+            if let Some(slot) = targets.get_mut(site as usize) {
+                *slot = Some(self.resolve(name, span)?);
+            }
+        }
+        let mut groups = std::mem::take(&mut self.groups);
+        for g in &mut groups {
+            for r in &mut g.rules {
+                set_targets(&mut r.body, &targets);
+            }
+        }
+        Ok(Program {
+            start,
+            groups,
+            directives: self.directives,
+            params: self.params,
+            site_count: self.site,
+            warnings: self.warnings,
+        })
+    }
+
+    fn resolve(&self, name: &str, span: Span) -> PResult<Target> {
+        if let Some(&g) = self.group_index.get(name) {
+            return Ok(Target::Group(g));
+        }
+        if let Some(k) = PrimitiveKind::from_keyword(name) {
+            return Ok(Target::Primitive(k));
+        }
+        Err(err(span, format!("unknown rule or primitive `{name}`")))
+    }
+
+    /// Index just past the last token on the same (preprocessed) line as token `from`.
+    fn line_end(&self, from: usize) -> usize {
+        let line = self.tok_at(from).line;
+        let mut i = from;
+        while i < self.end && self.toks.get(i).is_some_and(|t| t.line == line) {
+            i += 1;
+        }
+        i
+    }
+
+    fn preprocessor_line(&mut self, word: &str, t: Token<'a>) -> PResult<()> {
+        let stop = self.line_end(self.pos);
+        let saved_end = self.end;
+        self.end = stop;
+        self.bump();
+        let r = match word.to_ascii_lowercase().as_str() {
+            "define" => self.define(t.span),
+            "param" => self.param(t.span),
+            _ => Err(err(t.span, format!("unexpected `@{word}`"))),
+        };
+        r?;
+        if self.pos < stop {
+            let u = self.peek();
+            return Err(err(u.span, format!("unexpected {} at the end of `@{word}`", u.tok)));
+        }
+        self.end = saved_end;
+        Ok(())
+    }
+
+    fn name_after(&mut self, what: &str) -> PResult<(&'a str, Span)> {
+        let t = self.bump();
+        match t.tok {
+            Tok::Ident(n) => Ok((n, t.span)),
+            other => Err(err(t.span, format!("expected a name after `{what}`, found {other}"))),
+        }
+    }
+
+    fn define(&mut self, span: Span) -> PResult<()> {
+        let (name, nspan) = self.name_after("@define")?;
+        if self.param_index.contains_key(name) {
+            return Err(err(nspan, format!("`{name}` is already a @param")));
+        }
+        if self.peek().tok == Tok::Eof {
+            return Err(err(self.peek().span, format!("expected a value after `@define {name}`")));
+        }
+        let e = self.expr(Ctx::Plain)?;
+        if self.defines.contains_key(name) {
+            self.warnings.push(Diagnostic::warning(span, format!("`@define {name}` redefines `{name}`")));
+        }
+        self.defines.insert(name, Define { expr: e });
+        Ok(())
+    }
+
+    fn signed_literal(&mut self, what: &str) -> PResult<(f64, Span)> {
+        let t = self.peek();
+        let neg = t.tok == Tok::Punct('-');
+        if neg {
+            self.bump();
+        }
+        let u = self.bump();
+        match u.tok {
+            Tok::Num { value, suffix: None, .. } => Ok((if neg { -value } else { value }, t.span)),
+            other => Err(err(u.span, format!("expected a number for {what}, found {other}"))),
+        }
+    }
+
+    fn param(&mut self, span: Span) -> PResult<()> {
+        let kt = self.bump();
+        let kind = match kt.tok {
+            Tok::Ident("int") => ParamKind::Int,
+            Tok::Ident("float") => ParamKind::Float,
+            Tok::Ident("bool") => ParamKind::Bool,
+            other => return Err(err(kt.span, format!("expected `int`, `float` or `bool` after `@param`, found {other}"))),
+        };
+        let (name, nspan) = self.name_after("@param type")?;
+        if self.param_index.contains_key(name) || self.defines.contains_key(name) {
+            return Err(err(nspan, format!("`{name}` is already defined")));
+        }
+        let (default, dspan) = if kind == ParamKind::Bool {
+            let t = self.bump();
+            let v = match t.tok {
+                Tok::Ident("true") => 1.0,
+                Tok::Ident("false") => 0.0,
+                Tok::Num { value, suffix: None, .. } if value == 0.0 || value == 1.0 => value,
+                other => return Err(err(t.span, format!("expected `true`, `false`, 0 or 1 for bool `{name}`, found {other}"))),
+            };
+            (v, t.span)
+        } else {
+            self.signed_literal(&format!("the default of `{name}`"))?
+        };
+        let whole = |v: f64| v.fract() == 0.0;
+        if kind == ParamKind::Int && !whole(default) {
+            return Err(err(dspan, format!("default of int `{name}` must be a whole number, found {default}")));
+        }
+        let mut range = None;
+        if self.peek().tok != Tok::Eof {
+            let (lo, lspan) = self.signed_literal(&format!("the minimum of `{name}`"))?;
+            let (hi, hspan) = self.signed_literal(&format!("the maximum of `{name}`"))?;
+            if kind == ParamKind::Int && !whole(lo) {
+                return Err(err(lspan, format!("minimum of int `{name}` must be a whole number")));
+            }
+            if kind == ParamKind::Int && !whole(hi) {
+                return Err(err(hspan, format!("maximum of int `{name}` must be a whole number")));
+            }
+            if !(lo <= default && default <= hi) {
+                return Err(err(dspan, format!("default {default} of `{name}` is outside [{lo}, {hi}]")));
+            }
+            range = Some((lo, hi));
+        }
+        let index = u32::try_from(self.params.len()).map_err(|_| err(span, "too many @params"))?;
+        self.params.push(ParamDecl { name: name.to_string(), kind, default, range, span });
+        self.param_index.insert(name, index);
+        Ok(())
+    }
+
+    fn const_value(&mut self, what: &str) -> PResult<(f64, Span)> {
+        let span = self.peek().span;
+        let e = self.arg(Ctx::Plain, What::Text(what))?;
+        if !is_const(&e.e) {
+            return Err(err(span, format!("{what} must be a constant (no @param or rand())")));
+        }
+        let v = e.e.eval(&mut NaNEnv);
+        if !v.is_finite() {
+            return Err(err(span, format!("{what} is not a finite number")));
+        }
+        Ok((v, span))
+    }
+
+    fn whole_value(&mut self, what: &str, max: f64) -> PResult<f64> {
+        let (v, span) = self.const_value(what)?;
+        if v < 0.0 || v.fract() != 0.0 || v > max {
+            return Err(err(span, format!("{what} must be a whole number ≥ 0, found {v}")));
+        }
+        Ok(v)
+    }
+
+    fn directive(&mut self, word: &'a str, t: Token<'a>) -> PResult<()> {
+        let lower = word.to_ascii_lowercase();
+        match lower.as_str() {
+            "rule" => {
+                self.bump();
+                return self.rule(t.span);
+            }
+            "startshape" => {
+                self.bump();
+                let (name, span) = self.name_after("startshape")?;
+                if self.startshape.is_some() {
+                    self.warnings.push(Diagnostic::warning(t.span, "second `startshape` replaces the first"));
+                }
+                self.startshape = Some((name, span));
+                return Ok(());
+            }
+            _ => {}
+        }
+        self.bump();
+        match lower.as_str() {
+            "maxdepth" => {
+                let v = self.whole_value("maxdepth", f64::from(u32::MAX))?;
+                self.directives.maxdepth = Some(v as u32);
+            }
+            "maxiter" => self.directives.maxiter = Some(self.whole_value("maxiter", u64::MAX as f64)? as u64),
+            "randseed" => self.directives.randseed = Some(self.whole_value("randseed", u64::MAX as f64)? as u64),
+            "minsize" => {
+                let (v, span) = self.const_value("minsize")?;
+                if v < 0.0 {
+                    return Err(err(span, format!("minsize must be ≥ 0, found {v}")));
+                }
+                self.directives.minsize = Some(v);
+            }
+            "background" => {
+                let mut c = [0.0, 0.0, 0.0, 1.0];
+                for v in c.iter_mut().take(3) {
+                    *v = self.const_value("a background component")?.0;
+                }
+                if self.starts_arg() {
+                    c[3] = self.const_value("a background component")?.0;
+                }
+                self.directives.background = Some(c);
+            }
+            "angle" => {
+                let m = self.bump();
+                let mode = match m.tok {
+                    Tok::Ident(w) => match w.to_ascii_lowercase().as_str() {
+                        "degrees" => AngleMode::Degrees,
+                        "radians" => AngleMode::Radians,
+                        "orbits" => AngleMode::Orbits,
+                        "arcdegrees" | "frequency" => return Err(err(m.span, format!("not supported yet: angle mode `{w}`"))),
+                        _ => return Err(err(m.span, format!("unknown angle mode `{w}` (expected degrees, radians or orbits)"))),
+                    },
+                    other => return Err(err(m.span, format!("expected an angle mode after `angle`, found {other}"))),
+                };
+                if mode != self.mode {
+                    self.warnings.push(Diagnostic::warning(m.span, "conflicting `angle` directives: the first applies to the whole file"));
+                }
+            }
+            "selector" => {
+                self.name_after("selector")?;
+                while self.is_punct(',') {
+                    self.bump();
+                    self.name_after("`,` in selector")?;
+                }
+                let m = self.bump();
+                match m.tok {
+                    Tok::Ident(w) if w.eq_ignore_ascii_case("random") || w.eq_ignore_ascii_case("frequency") => {}
+                    Tok::Ident(w) => return Err(err(m.span, format!("not supported yet: selector mode `{w}`"))),
+                    other => return Err(err(m.span, format!("expected a selector mode, found {other}"))),
+                }
+            }
+            "program" | "function" => {
+                if lower == "function" {
+                    self.name_after("function")?;
+                }
+                self.skip_block(&format!("`{word}`"))?;
+                self.warnings.push(Diagnostic::warning(t.span, format!("`{word}` ignored: not supported yet")));
+            }
+            "namespace" | "isosurface" => return Err(err(t.span, format!("not supported yet: `{word}`"))),
+            w if SKIPPED_DIRECTIVES.contains(&w) => {
+                let stop = self.line_end(self.pos.saturating_sub(1));
+                while self.pos < stop && !self.is_punct('{') {
+                    self.bump();
+                }
+                if self.is_punct('{') {
+                    self.skip_block(&format!("`{word}`"))?;
+                }
+                self.warnings.push(Diagnostic::warning(t.span, format!("`{word}` ignored: not supported yet")));
+            }
+            _ => {
+                return Err(err(t.span, format!("expected `rule`, `startshape` or a directive, found `{word}`")));
+            }
+        }
+        Ok(())
+    }
+
+    /// Skips `{ … }` with balanced braces (no recursion).
+    fn skip_block(&mut self, what: &str) -> PResult<()> {
+        let open = self.expect_punct('{', || format!("after {what}"))?;
+        let mut level = 1usize;
+        while level > 0 {
+            let t = self.bump();
+            match t.tok {
+                Tok::Punct('{') => level += 1,
+                Tok::Punct('}') => level -= 1,
+                Tok::Eof => return Err(err(open.span, format!("`{{` of {what} is not closed"))),
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn rule(&mut self, span: Span) -> PResult<()> {
+        let (name, _) = self.name_after("rule")?;
+        let mut weight = 1.0;
+        let t = self.peek();
+        match t.tok {
+            Tok::Punct(':') | Tok::Punct('*') => {
+                return Err(err(t.span, format!("not supported yet: transform rules (`{}` after `rule {name}`)", t.tok.to_string().trim_matches('`'))))
+            }
+            Tok::Punct('{') => {}
+            _ if self.starts_arg() => {
+                let (w, wspan) = self.const_value(&format!("the weight of rule `{name}`"))?;
+                if w < 0.0 {
+                    return Err(err(wspan, format!("the weight of rule `{name}` must be ≥ 0, found {w}")));
+                }
+                weight = w;
+            }
+            _ => {}
+        }
+        self.expect_punct('{', || format!("after rule name `{name}`"))?;
+        self.enter(span)?;
+        let body = self.items(&format!("rule `{name}`"))?;
+        self.leave();
+        let id = match self.group_index.get(name) {
+            Some(&g) => g,
+            None => {
+                let g = u32::try_from(self.groups.len()).map_err(|_| err(span, "too many rules"))?;
+                self.groups.push(RuleGroup { name: name.to_string(), rules: Vec::new() });
+                self.group_index.insert(name.to_string(), g);
+                g
+            }
+        };
+        if let Some(g) = self.groups.get_mut(id as usize) {
+            g.rules.push(Rule { weight, body, span });
+        }
+        Ok(())
+    }
+
+    // ----- bodies -----
+
+    /// Items up to and including the closing `}`.
+    fn items(&mut self, what: &str) -> PResult<Vec<Item>> {
+        let mut items = Vec::new();
+        loop {
+            let t = self.peek();
+            match t.tok {
+                Tok::Punct('}') => {
+                    self.bump();
+                    return Ok(items);
+                }
+                Tok::Eof => return Err(err(t.span, format!("expected `}}` to close {what}, found end of input"))),
+                _ => items.push(self.item()?),
+            }
+        }
+    }
+
+    fn item(&mut self) -> PResult<Item> {
+        let t = self.peek();
+        match t.tok {
+            Tok::Punct('{') => {
+                self.bump();
+                self.enter(t.span)?;
+                let items = self.items("block")?;
+                self.leave();
+                Ok(Item::Block(items))
+            }
+            Tok::Punct('\\') => Err(err(t.span, "not supported yet: continuation `\\`")),
+            Tok::Num { .. } | Tok::Punct('(') | Tok::Punct('-') => self.iterator(),
+            Tok::Ident(name) => {
+                let next = self.peek2().tok;
+                if (next == Tok::Punct('*') || next == Tok::Punct('/')) && self.is_value_name(name) {
+                    return self.iterator();
+                }
+                self.call()
+            }
+            other => Err(err(t.span, format!("expected a rule call, block or iterator, found {other}"))),
+        }
+    }
+
+    fn call(&mut self) -> PResult<Item> {
+        let t = self.bump();
+        let Tok::Ident(name) = t.tok else {
+            return Err(err(t.span, format!("expected a rule call, found {}", t.tok)));
+        };
+        let base = name.rsplit('.').next().unwrap_or(name);
+        if LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
+            return Err(err(t.span, format!("not supported yet: drawable `{name}`")));
+        }
+        self.expect_punct('{', || format!("after rule name `{name}`"))?;
+        let site = self.next_site(t.span)?;
+        let adjust = self.adjustments('}')?;
+        self.call_names.push((site, name, t.span));
+        Ok(Item::Call(Call { target: Target::Primitive(PrimitiveKind::Box), adjust, site, span: t.span }))
+    }
+
+    fn iterator(&mut self) -> PResult<Item> {
+        let start = self.peek().span;
+        self.enter(start)?;
+        let count = self.arg(Ctx::Plain, What::Text("an iteration count"))?;
+        if let Expr::Num(v) = count.e {
+            if v < 0.0 || v.fract() != 0.0 {
+                return Err(err(start, format!("iteration count must be a whole number ≥ 0, found {v}")));
+            }
+        }
+        let mut divisor = None;
+        if self.is_punct('/') {
+            self.bump();
+            divisor = Some(self.arg(Ctx::Plain, What::Text("an iteration divisor"))?.e);
+        }
+        self.expect_punct('*', || "after the iteration count".to_string())?;
+        let site = self.next_site(start)?;
+        let t = self.peek();
+        let close = match t.tok {
+            Tok::Punct('{') => '}',
+            Tok::Punct('[') => ']',
+            other => return Err(err(t.span, format!("expected `{{` or `[` after `*`, found {other}"))),
+        };
+        self.bump();
+        let step = self.adjustments(close)?;
+        let body = match self.peek().tok {
+            Tok::Punct('\\') => return Err(err(self.peek().span, "not supported yet: continuation `\\`")),
+            Tok::Punct('{') | Tok::Num { .. } | Tok::Punct('(') | Tok::Punct('-') | Tok::Ident(_) => self.item()?,
+            other => {
+                return Err(err(self.peek().span, format!("expected a rule call, block or iterator after the iterator step, found {other}")))
+            }
+        };
+        self.leave();
+        Ok(Item::Iterate(Iterate { count: count.e, divisor, step, body: Box::new(body), site, span: start }))
+    }
+
+    // ----- adjustments -----
+
+    fn adjustments(&mut self, close: char) -> PResult<Vec<Adjust>> {
+        let mut out = Vec::new();
+        loop {
+            let t = self.bump();
+            let word = match t.tok {
+                Tok::Punct(c) if c == close => return Ok(out),
+                Tok::Ident(w) => w,
+                Tok::Eof => return Err(err(t.span, format!("expected `{close}` to close the adjustments, found end of input"))),
+                other => return Err(err(t.span, format!("expected an adjustment or `{close}`, found {other}"))),
+            };
+            let span = t.span;
+            let mut push = |op: AdjustOp| out.push(Adjust { op, span });
+            let rot = |axis, angle: E| AdjustOp::Rotate { axis, angle: angle.e };
+            match word {
+                "x" => {
+                    let a = self.arg(Ctx::Plain, What::After("x"))?;
+                    let (mut b, mut c) = (num(0.0), num(0.0));
+                    if let Some(v) = self.opt_arg(Ctx::Plain, What::After("x"))? {
+                        b = v;
+                        c = self.opt_arg(Ctx::Plain, What::After("x"))?.unwrap_or_else(|| num(0.0));
+                    }
+                    push(AdjustOp::Translate([a.e, b.e, c.e]));
+                }
+                "y" => {
+                    let a = self.arg(Ctx::Plain, What::After("y"))?;
+                    push(AdjustOp::Translate([Expr::Num(0.0), a.e, Expr::Num(0.0)]));
+                }
+                "z" => {
+                    let a = self.arg(Ctx::Plain, What::After("z"))?;
+                    push(AdjustOp::Translate([Expr::Num(0.0), Expr::Num(0.0), a.e]));
+                }
+                "r" | "rotate" => {
+                    push(rot(Axis::X, self.angle_arg(word)?));
+                    if self.starts_arg() {
+                        push(rot(Axis::Y, self.angle_arg(word)?));
+                        if self.starts_arg() {
+                            push(rot(Axis::Z, self.angle_arg(word)?));
+                        }
+                    }
+                }
+                "rx" | "pitch" => push(rot(Axis::X, self.angle_arg(word)?)),
+                "ry" | "yaw" => push(rot(Axis::Y, self.angle_arg(word)?)),
+                "rz" | "roll" => push(rot(Axis::Z, self.angle_arg(word)?)),
+                "up" | "down" | "left" | "right" | "rolleft" | "rollleft" | "rollright" => {
+                    let (axis, negative) = match word {
+                        "up" => (Axis::X, false),
+                        "down" => (Axis::X, true),
+                        "left" => (Axis::Y, true),
+                        "right" => (Axis::Y, false),
+                        "rollright" => (Axis::Z, false),
+                        _ => (Axis::Z, true),
+                    };
+                    let angle = if self.starts_arg() {
+                        let a = self.angle_arg(word)?;
+                        if negative {
+                            Expr::Neg(Box::new(a.e))
+                        } else {
+                            a.e
+                        }
+                    } else {
+                        Expr::Num(if negative { -FRAC_PI_2 } else { FRAC_PI_2 })
+                    };
+                    push(AdjustOp::Rotate { axis, angle });
+                }
+                "s" => {
+                    let k = self.arg(Ctx::Plain, What::After("s"))?;
+                    if self.starts_arg() {
+                        return Err(err(self.peek().span, "not supported yet: non-uniform scale `s x y z`"));
+                    }
+                    push(AdjustOp::Scale(k.e));
+                }
+                "f" => {
+                    let a = self.arg(Ctx::Plain, What::After("f"))?;
+                    let b = self.arg(Ctx::Plain, What::After("f"))?;
+                    let c = self.arg(Ctx::Plain, What::After("f"))?;
+                    push(AdjustOp::Reflect([a.e, b.e, c.e]));
+                }
+                "fx" | "fy" | "fz" => {
+                    let n = match word {
+                        "fx" => [1.0, 0.0, 0.0],
+                        "fy" => [0.0, 1.0, 0.0],
+                        _ => [0.0, 0.0, 1.0],
+                    };
+                    push(AdjustOp::Reflect(n.map(Expr::Num)));
+                }
+                "R" | "G" | "B" | "A" => {
+                    let channel = match word {
+                        "R" => 0,
+                        "G" => 1,
+                        "B" => 2,
+                        _ => 3,
+                    };
+                    let d = self.arg(Ctx::Plain, What::After(word))?;
+                    push(AdjustOp::Colour { channel, delta: d.e });
+                }
+                "u" | "v" | "w" | "q" | "fps" => {
+                    self.arg(Ctx::Plain, What::After(word))?;
+                    self.warnings.push(Diagnostic::warning(span, format!("adjustment `{word}` ignored: not supported yet")));
+                }
+                other => return Err(err(span, format!("unknown adjustment `{other}`"))),
+            }
+        }
+    }
+
+    // ----- numbers and expressions -----
+
+    fn is_value_name(&self, name: &str) -> bool {
+        self.defines.contains_key(name) || self.param_index.contains_key(name)
+    }
+
+    /// Whether the next token can start an (optional) argument.
+    fn starts_arg(&self) -> bool {
+        match self.peek().tok {
+            Tok::Num { .. } | Tok::Punct('(') | Tok::Punct('-') => true,
+            Tok::Ident(w) => {
+                !ADJUST_WORDS.contains(&w)
+                    && (self.is_value_name(w) || (w == "rand" || Func::from_name(w).is_some()) && self.peek2().tok == Tok::Punct('('))
+            }
+            _ => false,
+        }
+    }
+
+    fn opt_arg(&mut self, ctx: Ctx, what: What) -> PResult<Option<E>> {
+        if self.starts_arg() {
+            Ok(Some(self.arg(ctx, what)?))
+        } else {
+            Ok(None)
+        }
+    }
+
+    fn angle_factor(&self) -> f64 {
+        match self.mode {
+            AngleMode::Degrees => PI / 180.0,
+            AngleMode::Radians => 1.0,
+            AngleMode::Orbits => 2.0 * PI,
+        }
+    }
+
+    /// An angle argument, converted to radians.
+    fn angle_arg(&mut self, word: &str) -> PResult<E> {
+        let span = self.peek().span;
+        let a = self.arg(Ctx::Angle, What::After(word))?;
+        let f = self.angle_factor();
+        if f == 1.0 {
+            return Ok(a);
+        }
+        self.bin(BinOp::Mul, a, num(f), span)
+    }
+
+    /// An argument outside parentheses: `-`* then a primary (no binary operators).
+    fn arg(&mut self, ctx: Ctx, what: What) -> PResult<E> {
+        let t = self.peek();
+        match t.tok {
+            Tok::Punct('-') => {
+                self.bump();
+                self.enter(t.span)?;
+                let inner = self.arg(ctx, what)?;
+                self.leave();
+                self.neg(inner, t.span)
+            }
+            Tok::Num { .. } | Tok::Punct('(') => self.primary(ctx),
+            Tok::Ident(w) if !ADJUST_WORDS.contains(&w) || self.is_value_name(w) => self.primary(ctx),
+            other => Err(err(t.span, format!("expected a number {what}, found {other}"))),
+        }
+    }
+
+    fn neg(&self, a: E, span: Span) -> PResult<E> {
+        if let Expr::Num(v) = a.e {
+            return Ok(num(-v));
+        }
+        let depth = a.depth + 1;
+        if depth > MAX_NESTING {
+            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
+        }
+        Ok(E { e: Expr::Neg(Box::new(a.e)), depth, nodes: a.nodes + 1 })
+    }
+
+    fn bin(&self, op: BinOp, a: E, b: E, span: Span) -> PResult<E> {
+        let depth = a.depth.max(b.depth) + 1;
+        if depth > MAX_NESTING {
+            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
+        }
+        Ok(E { e: Expr::Binary(op, Box::new(a.e), Box::new(b.e)), depth, nodes: a.nodes + b.nodes + 1 })
+    }
+
+    /// A full expression (inside parentheses or a `@define` value).
+    fn expr(&mut self, ctx: Ctx) -> PResult<E> {
+        let mut lhs = self.term(ctx)?;
+        loop {
+            let t = self.peek();
+            let op = match t.tok {
+                Tok::Punct('+') => BinOp::Add,
+                Tok::Punct('-') => BinOp::Sub,
+                _ => return Ok(lhs),
+            };
+            self.bump();
+            let rhs = self.term(ctx)?;
+            lhs = self.bin(op, lhs, rhs, t.span)?;
+        }
+    }
+
+    fn term(&mut self, ctx: Ctx) -> PResult<E> {
+        let mut lhs = self.unary(ctx)?;
+        loop {
+            let t = self.peek();
+            let op = match t.tok {
+                Tok::Punct('*') => BinOp::Mul,
+                Tok::Punct('/') => BinOp::Div,
+                _ => return Ok(lhs),
+            };
+            self.bump();
+            let rhs = self.unary(ctx)?;
+            lhs = self.bin(op, lhs, rhs, t.span)?;
+        }
+    }
+
+    fn unary(&mut self, ctx: Ctx) -> PResult<E> {
+        let t = self.peek();
+        if t.tok == Tok::Punct('-') {
+            self.bump();
+            self.enter(t.span)?;
+            let inner = self.unary(ctx)?;
+            self.leave();
+            return self.neg(inner, t.span);
+        }
+        let base = self.primary(ctx)?;
+        let t = self.peek();
+        if t.tok == Tok::Punct('^') {
+            self.bump();
+            self.enter(t.span)?;
+            let exp = self.unary(ctx)?;
+            self.leave();
+            return self.bin(BinOp::Pow, base, exp, t.span);
+        }
+        Ok(base)
+    }
+
+    fn literal(&self, value: f64, suffix: Option<char>, ctx: Ctx) -> f64 {
+        let radians = match suffix {
+            None => return value,
+            Some('d') if ctx == Ctx::Angle && self.mode == AngleMode::Degrees => return value,
+            Some('d') => value.to_radians(),
+            Some(_) => value.atan(),
+        };
+        match ctx {
+            Ctx::Plain => radians,
+            Ctx::Angle => radians / self.angle_factor(),
+        }
+    }
+
+    fn primary(&mut self, ctx: Ctx) -> PResult<E> {
+        let t = self.bump();
+        match t.tok {
+            Tok::Num { value, suffix, .. } => Ok(num(self.literal(value, suffix, ctx))),
+            Tok::Punct('(') => {
+                self.enter(t.span)?;
+                let e = self.expr(ctx)?;
+                self.leave();
+                self.expect_punct(')', || "to close `(`".to_string())?;
+                Ok(e)
+            }
+            Tok::Ident(name) => {
+                if self.is_punct('(') {
+                    return self.func_call(name, t.span, ctx);
+                }
+                if let Some(&i) = self.param_index.get(name) {
+                    return Ok(E { e: Expr::Param(i), depth: 1, nodes: 1 });
+                }
+                if let Some(d) = self.defines.get(name) {
+                    let e = d.expr.clone();
+                    if e.nodes > self.subst_budget {
+                        return Err(err(t.span, "@define substitution too large"));
+                    }
+                    self.subst_budget -= e.nodes;
+                    return Ok(e);
+                }
+                Err(err(t.span, format!("unknown name `{name}`")))
+            }
+            other => Err(err(t.span, format!("expected a number, found {other}"))),
+        }
+    }
+
+    fn func_call(&mut self, name: &'a str, span: Span, ctx: Ctx) -> PResult<E> {
+        self.bump(); // `(`
+        self.enter(span)?;
+        let mut args: Vec<E> = Vec::new();
+        if !self.is_punct(')') {
+            loop {
+                // Function arguments are plain numbers: trig works in radians.
+                let _ = ctx;
+                args.push(self.expr(Ctx::Plain)?);
+                if self.is_punct(',') {
+                    self.bump();
+                    continue;
+                }
+                break;
+            }
+        }
+        self.expect_punct(')', || format!("to close the arguments of `{name}`"))?;
+        self.leave();
+        if name == "rand" {
+            if !args.is_empty() {
+                return Err(err(span, format!("`rand` takes no arguments, {} given", args.len())));
+            }
+            let site = self.next_site(span)?;
+            return Ok(E { e: Expr::Rand(site), depth: 1, nodes: 1 });
+        }
+        let f = Func::from_name(name).ok_or_else(|| err(span, format!("unknown function `{name}`")))?;
+        let (lo, hi) = f.arity();
+        if args.len() < lo || hi.is_some_and(|h| args.len() > h) {
+            let want = match hi {
+                Some(h) if h == lo => format!("{lo}"),
+                Some(h) => format!("{lo} to {h}"),
+                None => format!("at least {lo}"),
+            };
+            return Err(err(span, format!("`{name}` takes {want} argument(s), {} given", args.len())));
+        }
+        let depth = args.iter().map(|a| a.depth).max().unwrap_or(0) + 1;
+        if depth > MAX_NESTING {
+            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
+        }
+        let nodes = args.iter().map(|a| a.nodes).sum::<usize>() + 1;
+        Ok(E { e: Expr::Func(f, args.into_iter().map(|a| a.e).collect()), depth, nodes })
+    }
+}
+
+/// Fills in resolved call targets (recursion bounded by the nesting limit).
+fn set_targets(items: &mut [Item], targets: &[Option<Target>]) {
+    for item in items {
+        match item {
+            Item::Call(c) => {
+                if let Some(Some(t)) = targets.get(c.site as usize) {
+                    c.target = *t;
+                }
+            }
+            Item::Block(b) => set_targets(b, targets),
+            Item::Iterate(it) => set_targets(std::slice::from_mut(&mut *it.body), targets),
+        }
+    }
+}
+
+/// Finds the first top-level `angle MODE` so that it applies to the whole file.
+fn prescan_angle(toks: &[Token]) -> AngleMode {
+    let mut level = 0i64;
+    let mut prev: Option<Tok> = None;
+    for (i, t) in toks.iter().enumerate() {
+        match t.tok {
+            Tok::Punct('{' | '[' | '(') => level += 1,
+            Tok::Punct('}' | ']' | ')') => level -= 1,
+            Tok::Ident(w) if level == 0 && w.eq_ignore_ascii_case("angle") => {
+                let after_name = matches!(prev, Some(Tok::Ident(p)) if p.eq_ignore_ascii_case("rule") || p.eq_ignore_ascii_case("startshape"));
+                if !after_name {
+                    if let Some(Tok::Ident(m)) = toks.get(i + 1).map(|t| t.tok) {
+                        match m.to_ascii_lowercase().as_str() {
+                            "radians" => return AngleMode::Radians,
+                            "orbits" => return AngleMode::Orbits,
+                            "degrees" => return AngleMode::Degrees,
+                            _ => {}
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+        prev = Some(t.tok);
+    }
+    AngleMode::Degrees
+}
