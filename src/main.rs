@@ -262,7 +262,13 @@ fn run_check(args: CheckArgs) -> Result<(), Failure> {
 }
 
 fn run_serve(args: ServeArgs) -> Result<(), Failure> {
-    tracing_subscriber::fmt().with_max_level(args.log).with_target(false).init();
+    use std::io::IsTerminal;
+    tracing_subscriber::fmt()
+        .with_max_level(args.log)
+        .with_target(false)
+        .with_ansi(std::io::stderr().is_terminal())
+        .with_writer(std::io::stderr)
+        .init();
     let config = args.config;
     // The blocking pool only runs renders, which the engine already limits to
     // `concurrency`; a few spare threads cover moka and file work.

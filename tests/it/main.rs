@@ -9,3 +9,4 @@ mod determinism;
 mod docs;
 mod grammars;
 mod hostile;
+mod service;
