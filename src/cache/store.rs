@@ -14,7 +14,7 @@ use std::sync::Arc;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rendered {
     /// The model bytes.
-    pub bytes: Arc<[u8]>,
+    pub bytes: bytes::Bytes,
     /// The content hash of `bytes` (hex BLAKE3, 32 characters), used as the ETag.
     pub etag: String,
     /// The MIME type of the format.
@@ -34,7 +34,7 @@ impl Rendered {
     pub fn from_output(out: crate::RenderOutput, content_type: &'static str) -> Rendered {
         let etag = blake3::hash(&out.bytes).to_hex()[..32].to_string();
         Rendered {
-            bytes: out.bytes.into(),
+            bytes: bytes::Bytes::from(out.bytes),
             etag,
             content_type,
             language: out.language,

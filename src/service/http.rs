@@ -96,7 +96,7 @@ fn header_value(s: &str) -> HeaderValue {
 /// A model response with its ETag, cache and count headers.
 fn model_response(served: &Served, cache_control: Option<&'static str>) -> Response {
     let m = &served.model;
-    let mut resp = Response::new(Body::from(Bytes::copy_from_slice(&m.bytes)));
+    let mut resp = Response::new(Body::from(m.bytes.clone()));
     let h = resp.headers_mut();
     h.insert(header::CONTENT_TYPE, HeaderValue::from_static(m.content_type));
     model_headers(h, served, cache_control);
