@@ -164,6 +164,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         detail: req.detail,
         on_limit: req.on_limit,
         downstream_bytes: downstream_bytes(req),
+        line_point_bytes: {
+            let (v, t) = geom::sweep::per_point_bound(req.detail);
+            geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
+        },
     };
     let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
     lap(&mut phases.eval);

@@ -9,11 +9,11 @@
 use super::budget::{Budget, OnLimit};
 use super::frame::Frame;
 use super::rng::StreamKey;
-use super::scene::{Instance, Scene, INSTANCE_BYTES};
+use super::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
 use super::EvalError;
 use crate::geom::primitives;
 use crate::lang::expr::{Expr, ExprEnv};
-use crate::lang::ir::{Adjust, AdjustOp, Axis, Item, Iterate, Program, Target};
+use crate::lang::ir::{Adjust, AdjustOp, Axis, GroupId, Item, Iterate, LineOp, Program, Rule, RuleGroup, Selector, Target};
 use crate::lang::Span;
 use glam::{DQuat, DVec3};
 
@@ -63,6 +63,8 @@ const TASK_BYTES: u64 = std::mem::size_of::<Task<'static>>() as u64;
 struct Env<'a> {
     params: &'a [f64],
     key: StreamKey,
+    /// Position of the current frame, for functions of x, y, z.
+    pos: DVec3,
 }
 
 impl ExprEnv for Env<'_> {
@@ -71,6 +73,9 @@ impl ExprEnv for Env<'_> {
     }
     fn rand(&mut self, site: u32) -> f64 {
         self.key.uniform(site)
+    }
+    fn coord(&self, axis: u8) -> f64 {
+        self.pos.to_array().get(usize::from(axis)).copied().unwrap_or(f64::NAN)
     }
 }
 
@@ -143,6 +148,10 @@ struct Evaluator<'p> {
     /// Triangles per primitive kind at the requested detail.
     tris: [u64; 9],
     downstream: [u64; 9],
+    /// Upper bound of the triangles one line point adds.
+    line_triangles: u64,
+    /// Bytes later stages need per line point.
+    line_downstream: u64,
     maxiter: u64,
 }
 
@@ -180,6 +189,8 @@ impl<'p> Evaluator<'p> {
             cumulative,
             tris,
             downstream: options.downstream_bytes,
+            line_triangles: crate::geom::sweep::per_point_bound(detail).1,
+            line_downstream: options.line_point_bytes,
             maxiter: program.directives.maxiter.unwrap_or(u64::MAX),
         })
     }
@@ -188,7 +199,7 @@ impl<'p> Evaluator<'p> {
         if let Some(Some(d)) = self.fixed.get(site as usize) {
             return Ok(*d);
         }
-        eval_adjust(adjust, &mut Env { params: self.params, key }, 1.0)
+        eval_adjust(adjust, &mut Env { params: self.params, key, pos: DVec3::ZERO }, 1.0)
     }
 }
 
@@ -201,7 +212,7 @@ fn collect_fixed(items: &[Item], params: &[f64], fixed: &mut [Option<Delta>]) ->
             match item {
                 Item::Call(c) => {
                     if c.adjust.iter().all(|a| adjust_is_deterministic(&a.op)) {
-                        let d = eval_adjust(&c.adjust, &mut Env { params, key: StreamKey(0) }, 1.0)?;
+                        let d = eval_adjust(&c.adjust, &mut Env { params, key: StreamKey(0), pos: DVec3::ZERO }, 1.0)?;
                         if let Some(slot) = fixed.get_mut(c.site as usize) {
                             *slot = Some(d);
                         }
@@ -224,6 +235,24 @@ fn adjust_is_deterministic(op: &AdjustOp) -> bool {
     }
 }
 
+/// Turns `point`'s profile orthogonal to the segment from the line's last point
+/// (SLINETO, with the shortest-arc rotation of eq 3.29 as corrected in the
+/// seed notes). A line's first point is turned too, so its first segment is straight.
+fn orient_along_segment(line: &mut Polyline, point: &mut LinePoint) {
+    let Some(prev) = line.points.last_mut() else { return };
+    let Some(dir) = (point.frame.translation - prev.frame.translation).try_normalize() else { return };
+    let turn = |f: &mut Frame| {
+        let axis = (f.rotation * DVec3::Z).normalize();
+        f.rotation = (DQuat::from_rotation_arc(axis, dir) * f.rotation).normalize();
+    };
+    turn(&mut point.frame);
+    if line.points.len() == 1 {
+        if let Some(first) = line.points.first_mut() {
+            turn(&mut first.frame);
+        }
+    }
+}
+
 /// Options for one evaluation that do not come from the source.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EvalOptions {
@@ -240,19 +269,23 @@ pub struct EvalOptions {
     /// after a scene too big to mesh has been built. The caller releases the
     /// promise with [`promised_bytes`] before meshing.
     pub downstream_bytes: [u64; 9],
+    /// Like `downstream_bytes`, per point of a swept line.
+    pub line_point_bytes: u64,
 }
 
 /// The memory promised for later stages by `scene`'s instances under `options`.
 pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
+    let points: u64 = scene.lines.iter().map(|l| l.points.len() as u64).sum();
     scene
         .instances
         .iter()
         .fold(0u64, |acc, i| acc.saturating_add(options.downstream_bytes[i.kind as usize]))
+        .saturating_add(points.saturating_mul(options.line_point_bytes))
 }
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream_bytes: [0; 9] }
+        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream_bytes: [0; 9], line_point_bytes: 0 }
     }
 }
 
@@ -260,15 +293,24 @@ impl Default for EvalOptions {
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
     let ev = Evaluator::new(program, params, options)?;
     let seed = options.seed.or(program.directives.randseed).unwrap_or(0);
-    let mut scene = Scene {
+    let scene = Scene {
         background: program.directives.background.map(|c| c.map(|v| v.clamp(0.0, 1.0) as f32)),
         ..Scene::default()
     };
     let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed) };
-    let mut stack: Vec<Task> = Vec::new();
-    let mut charged_slots: u64 = 0;
-    let result = run(&ev, root, &mut stack, &mut charged_slots, &mut scene, budget);
-    budget.release_memory(charged_slots * TASK_BYTES);
+    let mut m = Machine {
+        sequence: vec![0; program.groups.len()],
+        ev,
+        stack: Vec::new(),
+        charged_slots: 0,
+        scene,
+        budget,
+        last_terminal: None,
+        pen: Pen { start: Frame::IDENTITY, lifted: false, moveto: Frame::IDENTITY, open: None },
+    };
+    let result = m.run(root);
+    m.budget.release_memory(m.charged_slots * TASK_BYTES);
+    let mut scene = m.scene;
     match result {
         Ok(()) => Ok(scene),
         Err(EvalError::Limit(e)) if options.on_limit == OnLimit::Truncate => {
@@ -279,157 +321,275 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
     }
 }
 
-fn run<'p>(
-    ev: &Evaluator<'p>,
-    root: Ctx,
-    stack: &mut Vec<Task<'p>>,
-    charged_slots: &mut u64,
-    scene: &mut Scene,
-    budget: &mut Budget,
-) -> Result<(), EvalError> {
-    expand(ev, ev.program.start, root, stack, scene, budget)?;
-    loop {
-        // Charge the stack's peak size before it can grow further.
-        let needed = stack.len() as u64 + 2;
-        if needed > *charged_slots {
-            budget.reserve_memory((needed - *charged_slots) * TASK_BYTES)?;
-            *charged_slots = needed;
-        }
-        let Some(task) = stack.pop() else { return Ok(()) };
-        match task {
-            Task::Items { items, next, ctx } => {
-                let Some(item) = items.get(next) else { continue };
-                if next + 1 < items.len() {
-                    stack.push(Task::Items { items, next: next + 1, ctx });
-                }
-                run_item(ev, item, ctx, stack, scene, budget)?;
-            }
-            Task::Copies { it, k, count, step, current, base_key } => {
-                budget.charge_step()?;
-                if k < count {
-                    let (frame, colour) = current.apply(&step);
-                    stack.push(Task::Copies {
-                        it,
-                        k: k + 1,
-                        count,
-                        step,
-                        current: Ctx { frame, colour, ..current },
-                        base_key,
-                    });
-                }
-                let ctx = Ctx { key: base_key.child(it.site, k), ..current };
-                run_item(ev, &it.body, ctx, stack, scene, budget)?;
-            }
-        }
-    }
+/// The mutable state of one evaluation.
+struct Machine<'p, 'b> {
+    ev: Evaluator<'p>,
+    /// Pending work, depth-first (last pushed runs first).
+    stack: Vec<Task<'p>>,
+    /// Stack slots already charged to the memory budget (the peak so far).
+    charged_slots: u64,
+    scene: Scene,
+    budget: &'b mut Budget,
+    /// Calls so far per group, for sequential selection.
+    sequence: Vec<u64>,
+    /// Frame of the last terminal drawn, where a continued call (`\`) starts.
+    last_terminal: Option<Frame>,
+    /// The swept-line pen.
+    pen: Pen,
 }
 
-/// Starts one item in `ctx`: calls resolve now, blocks and iterators push work.
-fn run_item<'p>(
-    ev: &Evaluator<'p>,
-    item: &'p Item,
-    ctx: Ctx,
-    stack: &mut Vec<Task<'p>>,
-    scene: &mut Scene,
-    budget: &mut Budget,
-) -> Result<(), EvalError> {
-    match item {
-        Item::Call(call) => {
-            let key = ctx.key.child(call.site, 0);
-            let d = ev.delta(&call.adjust, call.site, key)?;
-            let (frame, colour) = ctx.apply(&d);
-            let child = Ctx { frame, colour, depth: ctx.depth + 1, key };
-            expand(ev, call.target, child, stack, scene, budget)
-        }
-        Item::Block(items) => {
-            if !items.is_empty() {
-                stack.push(Task::Items { items, next: 0, ctx });
+/// Where the pen of swept lines is (one pen: namespaces come later).
+#[derive(Debug, Clone, Copy)]
+struct Pen {
+    /// Where the next segment starts when no line is open. The pen starts
+    /// down at the root frame, so a first `LINETO` draws from the origin.
+    start: Frame,
+    /// After `NEWLINE`: the next `LINETO` only puts the pen down.
+    lifted: bool,
+    /// The last `MOVETO`, for `RESET`.
+    moveto: Frame,
+    /// Index in `scene.lines` of the line being drawn.
+    open: Option<usize>,
+}
+
+impl<'p> Machine<'p, '_> {
+    fn run(&mut self, root: Ctx) -> Result<(), EvalError> {
+        self.expand(self.ev.program.start, root)?;
+        loop {
+            // Charge the stack's peak size before it can grow further.
+            let needed = self.stack.len() as u64 + 2;
+            if needed > self.charged_slots {
+                self.budget.reserve_memory((needed - self.charged_slots) * TASK_BYTES)?;
+                self.charged_slots = needed;
             }
-            Ok(())
-        }
-        Item::Iterate(it) => {
-            let mut env = Env { params: ev.params, key: ctx.key.child(it.site, 0) };
-            let count = finite(&it.count, &mut env, it.span, "iteration count")?;
-            if count < 0.0 || count.fract() != 0.0 {
-                return Err(EvalError::BadIteration { span: it.span, value: count.to_string() });
-            }
-            let divisor = match &it.divisor {
-                Some(e) => {
-                    let n = finite(e, &mut env, it.span, "iteration divisor")?;
-                    if n <= 0.0 {
-                        return Err(EvalError::BadIteration { span: it.span, value: format!("divisor {n}") });
+            let Some(task) = self.stack.pop() else { return Ok(()) };
+            match task {
+                Task::Items { items, next, ctx } => {
+                    let Some(item) = items.get(next) else { continue };
+                    if next + 1 < items.len() {
+                        self.stack.push(Task::Items { items, next: next + 1, ctx });
                     }
-                    n
+                    self.run_item(item, ctx)?;
                 }
-                None => 1.0,
-            };
-            // `count` is a finite non-negative whole number; saturate absurd values, the
-            // step budget stops them long before they matter.
-            let count = (count.min(u64::MAX as f64) as u64).min(ev.maxiter);
-            if count == 0 {
-                return Ok(());
+                Task::Copies { it, k, count, step, current, base_key } => {
+                    self.budget.charge_step()?;
+                    if k < count {
+                        let (frame, colour) = current.apply(&step);
+                        self.stack.push(Task::Copies {
+                            it,
+                            k: k + 1,
+                            count,
+                            step,
+                            current: Ctx { frame, colour, ..current },
+                            base_key,
+                        });
+                    }
+                    let ctx = Ctx { key: base_key.child(it.site, k), ..current };
+                    self.run_item(&it.body, ctx)?;
+                }
             }
-            let step = eval_adjust(&it.step, &mut env, divisor)?;
-            let (frame, colour) = ctx.apply(&step);
-            stack.push(Task::Copies {
-                it,
-                k: 1,
-                count,
-                step,
-                current: Ctx { frame, colour, ..ctx },
-                base_key: ctx.key,
-            });
-            Ok(())
         }
     }
-}
 
-/// Runs a call's target in `ctx` (already adjusted, depth already increased).
-fn expand<'p>(
-    ev: &Evaluator<'p>,
-    target: Target,
-    ctx: Ctx,
-    stack: &mut Vec<Task<'p>>,
-    scene: &mut Scene,
-    budget: &mut Budget,
-) -> Result<(), EvalError> {
-    match target {
-        Target::Primitive(kind) => {
-            budget.charge_step()?;
-            budget.charge_primitive(ev.tris[kind as usize])?;
-            budget.reserve_memory(ev.downstream[kind as usize])?;
-            if scene.instances.len() == scene.instances.capacity() {
-                let grow = scene.instances.capacity().max(64);
-                budget.reserve_memory(grow as u64 * INSTANCE_BYTES)?;
-                scene.instances.reserve_exact(grow);
+    /// Starts one item in `ctx`: calls resolve now, blocks and iterators push work.
+    fn run_item(&mut self, item: &'p Item, ctx: Ctx) -> Result<(), EvalError> {
+        match item {
+            Item::Call(call) => {
+                let key = ctx.key.child(call.site, 0);
+                let d = self.ev.delta(&call.adjust, call.site, key)?;
+                let base = match (call.continues, self.last_terminal) {
+                    (true, Some(frame)) => Ctx { frame, ..ctx },
+                    _ => ctx,
+                };
+                let (frame, colour) = base.apply(&d);
+                let child = Ctx { frame, colour, depth: ctx.depth + 1, key };
+                self.expand(call.target, child)
             }
-            let mut colour = ctx.colour;
-            colour[3] += 1.0;
-            scene.instances.push(Instance::new(kind, &ctx.frame, colour));
-            Ok(())
+            Item::Block(items) => {
+                if !items.is_empty() {
+                    self.stack.push(Task::Items { items, next: 0, ctx });
+                }
+                Ok(())
+            }
+            Item::Iterate(it) => {
+                let mut env = Env { params: self.ev.params, key: ctx.key.child(it.site, 0), pos: ctx.frame.translation };
+                let count = finite(&it.count, &mut env, it.span, "iteration count")?;
+                if count < 0.0 || count.fract() != 0.0 {
+                    return Err(EvalError::BadIteration { span: it.span, value: count.to_string() });
+                }
+                let divisor = match &it.divisor {
+                    Some(e) => {
+                        let n = finite(e, &mut env, it.span, "iteration divisor")?;
+                        if n <= 0.0 {
+                            return Err(EvalError::BadIteration { span: it.span, value: format!("divisor {n}") });
+                        }
+                        n
+                    }
+                    None => 1.0,
+                };
+                // `count` is a finite non-negative whole number; saturate absurd values, the
+                // step budget stops them long before they matter.
+                let count = (count.min(u64::MAX as f64) as u64).min(self.ev.maxiter);
+                if count == 0 {
+                    return Ok(());
+                }
+                let step = eval_adjust(&it.step, &mut env, divisor)?;
+                let (frame, colour) = ctx.apply(&step);
+                self.stack.push(Task::Copies {
+                    it,
+                    k: 1,
+                    count,
+                    step,
+                    current: Ctx { frame, colour, ..ctx },
+                    base_key: ctx.key,
+                });
+                Ok(())
+            }
         }
-        Target::Group(g) => {
-            let dirs = &ev.program.directives;
-            if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
+    }
+
+    /// Runs a call's target in `ctx` (already adjusted, depth already increased).
+    fn expand(&mut self, target: Target, ctx: Ctx) -> Result<(), EvalError> {
+        match target {
+            Target::Primitive(kind) => {
+                self.budget.charge_step()?;
+                self.budget.charge_primitive(self.ev.tris[kind as usize])?;
+                self.budget.reserve_memory(self.ev.downstream[kind as usize])?;
+                let instances = &mut self.scene.instances;
+                if instances.len() == instances.capacity() {
+                    let grow = instances.capacity().max(64);
+                    self.budget.reserve_memory(grow as u64 * INSTANCE_BYTES)?;
+                    instances.reserve_exact(grow);
+                }
+                let mut colour = ctx.colour;
+                colour[3] += 1.0;
+                instances.push(Instance::new(kind, &ctx.frame, colour));
+                self.last_terminal = Some(ctx.frame);
+                Ok(())
+            }
+            Target::Line(op) => {
+                self.budget.charge_step()?;
+                self.draw_line(op, &ctx)
+            }
+            Target::Group(g) => {
+                let dirs = &self.ev.program.directives;
+                if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
+                    return Ok(());
+                }
+                self.budget.check_depth(ctx.depth)?;
+                self.budget.charge_step()?;
+                let Some(group) = self.ev.program.groups.get(g as usize) else { return Ok(()) };
+                let Some(rule) = self.select(g, group, &ctx)? else { return Ok(()) };
+                if !rule.body.is_empty() {
+                    self.stack.push(Task::Items { items: &rule.body, next: 0, ctx });
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// Moves the pen (seed 000 §4.3): every operation is a terminal for continuation.
+    fn draw_line(&mut self, op: LineOp, ctx: &Ctx) -> Result<(), EvalError> {
+        let frame = ctx.frame;
+        match op {
+            LineOp::MoveTo => {
+                self.pen = Pen { start: frame, lifted: false, moveto: frame, open: None };
+            }
+            LineOp::NewLine => {
+                self.pen.open = None;
+                self.pen.lifted = true;
+            }
+            LineOp::Reset => {
+                self.pen.open = None;
+                self.pen.lifted = false;
+                self.pen.start = self.pen.moveto;
+                self.last_terminal = Some(self.pen.moveto);
                 return Ok(());
             }
-            budget.check_depth(ctx.depth)?;
-            budget.charge_step()?;
-            let Some(group) = ev.program.groups.get(g as usize) else { return Ok(()) };
-            let rule = if group.rules.len() == 1 {
-                &group.rules[0]
-            } else {
-                let cum = &ev.cumulative[g as usize];
+            LineOp::LineTo | LineOp::SLineTo if self.pen.lifted => {
+                self.pen.lifted = false;
+                self.pen.start = frame;
+            }
+            LineOp::LineTo | LineOp::SLineTo => {
+                let mut colour = ctx.colour;
+                colour[3] += 1.0;
+                let colour = colour.map(|c| c.clamp(0.0, 1.0) as f32);
+                let open = match self.pen.open {
+                    Some(i) => i,
+                    None => {
+                        let start = LinePoint { frame: self.pen.start, colour };
+                        self.charge_line_point()?;
+                        self.scene.lines.push(Polyline { points: vec![start] });
+                        let i = self.scene.lines.len() - 1;
+                        self.pen.open = Some(i);
+                        i
+                    }
+                };
+                self.charge_line_point()?;
+                let Some(line) = self.scene.lines.get_mut(open) else { return Ok(()) };
+                let mut point = LinePoint { frame, colour };
+                if op == LineOp::SLineTo {
+                    orient_along_segment(line, &mut point);
+                }
+                line.points.push(point);
+            }
+        }
+        self.last_terminal = Some(frame);
+        Ok(())
+    }
+
+    /// Charges one more line point: its storage, and the mesh and output it will become.
+    fn charge_line_point(&mut self) -> Result<(), EvalError> {
+        self.budget.charge_triangles(self.ev.line_triangles)?;
+        self.budget.reserve_memory(LINE_POINT_BYTES.saturating_add(self.ev.line_downstream))?;
+        Ok(())
+    }
+
+    /// Picks the alternative of `group` that a call in `ctx` runs, if any.
+    fn select(&mut self, g: GroupId, group: &'p RuleGroup, ctx: &Ctx) -> Result<Option<&'p Rule>, EvalError> {
+        let rules = &group.rules;
+        let threshold = |value: f64| {
+            rules
+                .iter()
+                .filter(|r| r.weight >= value)
+                .min_by(|a, b| a.weight.total_cmp(&b.weight))
+        };
+        Ok(match &group.selector {
+            Selector::Random if rules.len() == 1 => rules.first(),
+            Selector::Random => {
+                let cum = &self.ev.cumulative[g as usize];
                 let total = cum.last().copied().unwrap_or(0.0);
                 let target = ctx.key.uniform(SELECT_SLOT) * total;
-                let i = cum.iter().position(|&c| c > target).unwrap_or(0);
-                &group.rules[i]
-            };
-            if !rule.body.is_empty() {
-                stack.push(Task::Items { items: &rule.body, next: 0, ctx });
+                cum.iter().position(|&c| c > target).and_then(|i| rules.get(i))
             }
-            Ok(())
-        }
+            Selector::Depth => threshold(f64::from(ctx.depth)),
+            Selector::Scale => threshold(ctx.frame.scale),
+            Selector::Function(f) => {
+                let mut env = Env { params: self.ev.params, key: ctx.key, pos: ctx.frame.translation };
+                let span = rules.first().map_or_else(Span::default, |r| r.span);
+                threshold(finite(f, &mut env, span, "selector function")?)
+            }
+            Selector::Sequential => {
+                // Each rule runs round(weight) times in order; the cycle repeats.
+                let runs = |r: &Rule| r.weight.round().max(0.0) as u64;
+                let cycle: u64 = rules.iter().map(runs).sum();
+                if cycle == 0 {
+                    return Ok(None);
+                }
+                let n = &mut self.sequence[g as usize];
+                let mut at = *n % cycle;
+                *n += 1;
+                rules.iter().find(|r| {
+                    let k = runs(r);
+                    if at < k {
+                        true
+                    } else {
+                        at -= k;
+                        false
+                    }
+                })
+            }
+        })
     }
 }
 
@@ -448,7 +608,7 @@ mod tests {
     }
 
     fn call(target: Target, adjust: Vec<Adjust>, site: u32) -> Item {
-        Item::Call(Call { target, adjust, site, span: Span::new(1, 1) })
+        Item::Call(Call { target, adjust, site, continues: false, span: Span::new(1, 1) })
     }
 
     fn iterate(count: f64, divisor: Option<f64>, step: Vec<Adjust>, body: Item, site: u32) -> Item {
@@ -474,7 +634,7 @@ mod tests {
     }
 
     fn single(body: Vec<Item>) -> RuleGroup {
-        RuleGroup { name: "A".into(), rules: vec![Rule { weight: 1.0, body, span: Span::new(1, 1) }] }
+        RuleGroup { name: "A".into(), rules: vec![Rule { weight: 1.0, body, span: Span::new(1, 1) }], selector: Selector::Random }
     }
 
     fn run(p: &Program, limits: Limits, on_limit: OnLimit) -> Result<Scene, EvalError> {
@@ -538,6 +698,7 @@ mod tests {
                 Rule { weight: 1.0, body: vec![call(BOX, vec![], 2)], span: Span::new(1, 1) },
                 Rule { weight: 3.0, body: vec![call(Target::Primitive(PrimitiveKind::Sphere), vec![], 3)], span: Span::new(1, 1) },
             ],
+            selector: Selector::Random,
         };
         let p = program(vec![a, b], 4);
         let kinds = |seed| {

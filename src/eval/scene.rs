@@ -52,11 +52,32 @@ impl Instance {
     }
 }
 
+/// One pen position of a swept line: the frame the profile is placed in, and its colour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinePoint {
+    /// The profile's frame (the profile lies in the frame's local XY plane).
+    pub frame: Frame,
+    /// Linear RGBA, each clamped to [0, 1].
+    pub colour: [f32; 4],
+}
+
+/// A swept line: consecutive points joined by tubes (seed 000 §4.3).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Polyline {
+    /// The pen positions in drawing order; n points make n − 1 segments.
+    pub points: Vec<LinePoint>,
+}
+
+/// Bytes accounted per stored line point (for the memory budget).
+pub const LINE_POINT_BYTES: u64 = std::mem::size_of::<LinePoint>() as u64;
+
 /// Everything an evaluation produced.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Scene {
     /// Primitive instances in evaluation (depth-first) order.
     pub instances: Vec<Instance>,
+    /// Swept lines from MOVETO/LINETO/SLINETO, in drawing order.
+    pub lines: Vec<Polyline>,
     /// Clear colour from `background`, if the grammar set one.
     pub background: Option<[f32; 4]>,
     /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.

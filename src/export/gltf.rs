@@ -304,25 +304,14 @@ fn base64_len(n: u64) -> u64 {
     n.div_ceil(3).saturating_mul(4)
 }
 
-/// Writes f32s little-endian. On little-endian machines the memory already has
-/// that layout, so the whole slice goes out in one copy.
-fn put_f32s(sink: &mut impl Sink, values: &[f32]) {
+/// Writes 4-byte words little-endian. On little-endian machines memory
+/// already has that layout, so the whole slice goes out in one copy.
+fn put_words<T: bytemuck::Pod>(sink: &mut impl Sink, values: &[T], to_le: fn(T) -> [u8; 4]) {
     if cfg!(target_endian = "little") {
         sink.put(bytemuck::cast_slice(values));
     } else {
-        for v in values {
-            sink.put(&v.to_le_bytes());
-        }
-    }
-}
-
-/// Writes u32s little-endian (one copy on little-endian machines).
-fn put_u32s(sink: &mut impl Sink, values: &[u32]) {
-    if cfg!(target_endian = "little") {
-        sink.put(bytemuck::cast_slice(values));
-    } else {
-        for v in values {
-            sink.put(&v.to_le_bytes());
+        for &v in values {
+            sink.put(&to_le(v));
         }
     }
 }
@@ -335,11 +324,11 @@ fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
             sink.put(&[0]);
             at += 1;
         }
-        put_f32s(sink, bytemuck::cast_slice(&m.mesh.positions));
-        put_f32s(sink, bytemuck::cast_slice(&m.mesh.normals));
+        put_words::<f32>(sink, bytemuck::cast_slice(&m.mesh.positions), f32::to_le_bytes);
+        put_words::<f32>(sink, bytemuck::cast_slice(&m.mesh.normals), f32::to_le_bytes);
         sink.put(bytemuck::cast_slice(&m.mesh.colours));
         if !p.short {
-            put_u32s(sink, &m.mesh.indices);
+            put_words(sink, &m.mesh.indices, u32::to_le_bytes);
             at = p.end();
             continue;
         }

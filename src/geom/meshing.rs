@@ -57,9 +57,26 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
     for i in scene.instances.iter().filter(drawable) {
         present[i.kind as usize] = true;
     }
-    if !present.iter().any(|&p| p) {
-        return Ok(Vec::new());
+    let mut meshes = Vec::new();
+    if present.iter().any(|&p| p) {
+        build_instance_meshes(scene, detail, layout, &present, budget, &mut meshes)?;
     }
+    // Swept lines are their own mesh in either layout.
+    if let Some(mesh) = super::sweep::sweep_lines(&scene.lines, detail, budget)? {
+        meshes.push(NamedMesh { name: "lines".to_string(), mesh });
+    }
+    Ok(meshes)
+}
+
+fn build_instance_meshes(
+    scene: &Scene,
+    detail: u32,
+    layout: MeshLayout,
+    present: &[bool; PrimitiveKind::ALL.len()],
+    budget: &mut Budget,
+    meshes: &mut Vec<NamedMesh>,
+) -> Result<(), LimitExceeded> {
+    let drawable = |i: &&Instance| is_drawable(i);
     let mut protos: [Option<Prototype>; PrimitiveKind::ALL.len()] = Default::default();
     let groups: Vec<(String, Option<PrimitiveKind>)> = match layout {
         MeshLayout::Merged => vec![("model".to_string(), None)],
@@ -69,7 +86,6 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
             .map(|k| (k.name().to_ascii_lowercase(), Some(k)))
             .collect(),
     };
-    let mut meshes = Vec::with_capacity(groups.len());
     for (name, only) in groups {
         let members = || scene.instances.iter().filter(drawable).filter(move |i| only.map_or(true, |k| i.kind == k));
         let (v, t) = members().fold((0u64, 0u64), |(v, t), i| {
@@ -97,7 +113,7 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
         debug_assert_eq!(mesh.byte_size(), bytes);
         meshes.push(NamedMesh { name, mesh });
     }
-    Ok(meshes)
+    Ok(())
 }
 
 /// Appends `proto` transformed by `inst` to `mesh`.
@@ -148,7 +164,7 @@ pub(crate) mod tests {
     }
 
     pub(crate) fn scene(instances: Vec<Instance>) -> Scene {
-        Scene { instances, background: None, truncated: None }
+        Scene { instances, ..Scene::default() }
     }
 
     #[test]

@@ -277,15 +277,21 @@ fn cylinder(d: usize) -> Prototype {
     for j in 0..d {
         b.tri(c, c + 1 + (j % d) as u32, c + 1 + ((j + 1) % d) as u32);
     }
-    // Bottom cap.
+    bottom_cap(&mut b, &bottom);
+    b.p
+}
+
+/// A flat cap at y = −0.5 facing −Y: a centre vertex fanned to `ring`
+/// (its own vertices, so the cap's normals stay flat).
+fn bottom_cap(b: &mut Builder, ring: &[[f32; 3]]) {
+    let d = ring.len();
     let c = b.vertex([0.0, -0.5, 0.0], [0.0, -1.0, 0.0]);
-    for p in &bottom {
+    for p in ring {
         b.vertex(*p, [0.0, -1.0, 0.0]);
     }
     for j in 0..d {
         b.tri(c, c + 1 + ((j + 1) % d) as u32, c + 1 + (j % d) as u32);
     }
-    b.p
 }
 
 /// Cone: base ring (d, smooth side normals), one apex per side segment (d,
@@ -305,13 +311,7 @@ fn cone(d: usize) -> Prototype {
     for j in 0..d {
         b.tri((d + j) as u32, j as u32, ((j + 1) % d) as u32);
     }
-    let c = b.vertex([0.0, -0.5, 0.0], [0.0, -1.0, 0.0]);
-    for p in &base {
-        b.vertex(*p, [0.0, -1.0, 0.0]);
-    }
-    for j in 0..d {
-        b.tri(c, c + 1 + ((j + 1) % d) as u32, c + 1 + (j % d) as u32);
-    }
+    bottom_cap(&mut b, &base);
     b.p
 }
 

@@ -110,6 +110,9 @@ pub enum Expr {
     Func(Func, Vec<Expr>),
     /// `rand()`: uniform in [0, 1) from the stream of this site within the current call.
     Rand(u32),
+    /// A coordinate of the current frame's origin: 0 = x, 1 = y, 2 = z
+    /// (only where the language allows it, e.g. function selectors).
+    Coord(u8),
 }
 
 /// What an expression needs from its surroundings.
@@ -118,6 +121,10 @@ pub trait ExprEnv {
     fn param(&self, index: u32) -> f64;
     /// A uniform number in [0, 1) for `rand()` site `site`, deterministic per invocation.
     fn rand(&mut self, site: u32) -> f64;
+    /// Coordinate `axis` (0 = x, 1 = y, 2 = z) of the current position; NaN where there is none.
+    fn coord(&self, _axis: u8) -> f64 {
+        f64::NAN
+    }
 }
 
 impl Expr {
@@ -172,6 +179,7 @@ impl Expr {
                 }
             }
             Expr::Rand(site) => env.rand(*site),
+            Expr::Coord(axis) => env.coord(*axis),
         }
     }
 
@@ -179,7 +187,7 @@ impl Expr {
     pub fn is_deterministic(&self) -> bool {
         match self {
             Expr::Num(_) | Expr::Param(_) => true,
-            Expr::Rand(_) => false,
+            Expr::Rand(_) | Expr::Coord(_) => false,
             Expr::Neg(e) => e.is_deterministic(),
             Expr::Binary(_, a, b) => a.is_deterministic() && b.is_deterministic(),
             Expr::Func(_, args) => args.iter().all(Expr::is_deterministic),

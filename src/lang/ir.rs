@@ -30,13 +30,34 @@ pub struct Program {
     pub warnings: Vec<super::Diagnostic>,
 }
 
-/// All rules that share one name; a call picks one of them by weight.
+/// All rules that share one name; a call picks one of them with the group's selector.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RuleGroup {
     /// The rule name as written in the source.
     pub name: String,
     /// The alternatives, in source order.
     pub rules: Vec<Rule>,
+    /// How a call picks one alternative (seed 000 §4.2.2; `selector` directive).
+    pub selector: Selector,
+}
+
+/// Rule selection modes (seed 000 §4.2.2). Threshold modes read each rule's
+/// weight as a threshold and pick the rule with the smallest weight that is
+/// ≥ the measured value; when no rule qualifies the call draws nothing.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Selector {
+    /// Weighted random choice (weights normalised per name). `frequency` is an alias.
+    #[default]
+    Random,
+    /// Threshold on the call's recursion depth (the start rule is depth 0).
+    Depth,
+    /// Threshold on the frame's uniform length scale.
+    Scale,
+    /// Each rule runs `weight` times (rounded) in source order, counted per name
+    /// in depth-first order; the cycle then repeats.
+    Sequential,
+    /// Threshold on a function of the frame's position (`x`, `y`, `z` in the expression).
+    Function(Expr),
 }
 
 /// One `rule NAME [weight] { body }` definition.
@@ -57,6 +78,25 @@ pub enum Target {
     Group(GroupId),
     /// A built-in drawable.
     Primitive(PrimitiveKind),
+    /// A line drawable (seed 000 §4.3, Table B.6).
+    Line(LineOp),
+}
+
+/// The pen operations of swept lines. Each is a terminal: it updates the
+/// frame that a continued call (`\`) starts from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LineOp {
+    /// `MOVETO`: ends the current line and puts the pen down here.
+    MoveTo,
+    /// `LINETO` (and `ALINETO`): draws a segment from the pen to here; if the
+    /// pen is lifted (after `NEWLINE`), only puts it down.
+    LineTo,
+    /// `SLINETO`: like `LINETO`, with the profile turned orthogonal to the segment.
+    SLineTo,
+    /// `NEWLINE`: ends the current line and lifts the pen.
+    NewLine,
+    /// `RESET`: ends the current line and puts the pen back at the last `MOVETO`.
+    Reset,
 }
 
 /// The built-in drawables. Each is unit-sized and centred at the origin (see `docs/mdg.md`).
@@ -140,6 +180,9 @@ pub struct Call {
     pub adjust: Vec<Adjust>,
     /// Unique per call site; seeds the random stream of this call.
     pub site: u32,
+    /// Preceded by `\`: the call starts from the frame where the last terminal
+    /// (primitive or line drawable) left off, not from the caller's frame.
+    pub continues: bool,
     /// Where the call is written.
     pub span: Span,
 }

@@ -133,3 +133,14 @@ fn a_ten_megabyte_source_is_refused() {
     assert!(src.len() > 10_000_000);
     expect("10MB", &src, &[], 3, "limit exceeded: source_bytes (configured 1048576");
 }
+
+#[test]
+fn the_wall_clock_deadline_stops_a_long_evaluation() {
+    expect(
+        "deadline",
+        b"startshape A\nmaxdepth 60\nrule A { A {} A {} }",
+        &["--max-steps", "2000000000", "--timeout", "50"],
+        3,
+        "limit exceeded: deadline (configured 50,",
+    );
+}

@@ -4,9 +4,12 @@
 
 mod common;
 
+mod cli;
 mod counts;
 mod determinism;
 mod docs;
 mod grammars;
 mod hostile;
+mod lines;
+mod selectors;
 mod service;

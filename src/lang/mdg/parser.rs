@@ -3,6 +3,7 @@
 
 use super::lexer::{Tok, Token};
 use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
+use crate::lang::ir::{LineOp, Selector};
 use crate::lang::ir::{
     Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
     Program, Rule, RuleGroup, Target,
@@ -116,6 +117,19 @@ pub(crate) struct Parser<'a> {
     warnings: Vec<Diagnostic>,
     /// Budget of expression nodes copied by `@define` substitution.
     subst_budget: usize,
+    /// `selector` directives, applied to their groups once every rule is known.
+    selectors: Vec<(&'a str, Span, PendingSelector<'a>)>,
+    /// `function NAME { expr }` definitions of x, y, z.
+    functions: HashMap<&'a str, Expr>,
+    /// True while parsing a function of position, where `x`, `y`, `z` name coordinates.
+    coords: bool,
+}
+
+/// A selector mode as written; a named function is looked up at the end.
+#[derive(Clone)]
+enum PendingSelector<'a> {
+    Ready(Selector),
+    Named(&'a str, Span),
 }
 
 fn err(span: Span, msg: impl Into<String>) -> ParseError {
@@ -129,7 +143,7 @@ fn num(v: f64) -> E {
 fn is_const(e: &Expr) -> bool {
     match e {
         Expr::Num(_) => true,
-        Expr::Param(_) | Expr::Rand(_) => false,
+        Expr::Param(_) | Expr::Rand(_) | Expr::Coord(_) => false,
         Expr::Neg(a) => is_const(a),
         Expr::Binary(_, a, b) => is_const(a) && is_const(b),
         Expr::Func(_, args) => args.iter().all(is_const),
@@ -157,6 +171,9 @@ impl<'a> Parser<'a> {
             startshape: None,
             warnings: Vec::new(),
             subst_budget: source_len.saturating_mul(4).saturating_add(64 * 1024),
+            selectors: Vec::new(),
+            functions: HashMap::new(),
+            coords: false,
         }
     }
 
@@ -257,6 +274,19 @@ impl<'a> Parser<'a> {
             }
         }
         let mut groups = std::mem::take(&mut self.groups);
+        for (name, span, pending) in std::mem::take(&mut self.selectors) {
+            let selector = match pending {
+                PendingSelector::Ready(s) => s,
+                PendingSelector::Named(f, fspan) => match self.functions.get(f) {
+                    Some(e) => Selector::Function(e.clone()),
+                    None => return Err(err(fspan, format!("unknown function `{f}`"))),
+                },
+            };
+            match self.group_index.get(name).and_then(|&g| groups.get_mut(g as usize)) {
+                Some(g) => g.selector = selector,
+                None => return Err(err(span, format!("selector names `{name}`, which has no rules"))),
+            }
+        }
         for g in &mut groups {
             for r in &mut g.rules {
                 set_targets(&mut r.body, &targets);
@@ -478,22 +508,43 @@ impl<'a> Parser<'a> {
                 }
             }
             "selector" => {
-                self.name_after("selector")?;
+                let mut names = vec![self.name_after("selector")?];
                 while self.is_punct(',') {
                     self.bump();
-                    self.name_after("`,` in selector")?;
+                    names.push(self.name_after("`,` in selector")?);
                 }
                 let m = self.bump();
-                match m.tok {
-                    Tok::Ident(w) if w.eq_ignore_ascii_case("random") || w.eq_ignore_ascii_case("frequency") => {}
-                    Tok::Ident(w) => return Err(err(m.span, format!("not supported yet: selector mode `{w}`"))),
+                let mode = match m.tok {
+                    Tok::Ident(w) => w.to_ascii_lowercase(),
                     other => return Err(err(m.span, format!("expected a selector mode, found {other}"))),
+                };
+                let pending = match mode.as_str() {
+                    "random" | "frequency" => PendingSelector::Ready(Selector::Random),
+                    "depth" => PendingSelector::Ready(Selector::Depth),
+                    "scale" => PendingSelector::Ready(Selector::Scale),
+                    "sequential" => PendingSelector::Ready(Selector::Sequential),
+                    "function" if self.is_punct('{') => PendingSelector::Ready(Selector::Function(self.position_function()?)),
+                    "function" => {
+                        let (f, fspan) = self.name_after("selector function")?;
+                        PendingSelector::Named(f, fspan)
+                    }
+                    _ => {
+                        return Err(err(
+                            m.span,
+                            format!("unknown selector mode `{mode}` (random, frequency, depth, scale, sequential, function)"),
+                        ))
+                    }
+                };
+                for (name, span) in names {
+                    self.selectors.push((name, span, pending.clone()));
                 }
             }
-            "program" | "function" => {
-                if lower == "function" {
-                    self.name_after("function")?;
-                }
+            "function" => {
+                let (name, _) = self.name_after("function")?;
+                let e = self.position_function()?;
+                self.functions.insert(name, e);
+            }
+            "program" => {
                 self.skip_block(&format!("`{word}`"))?;
                 self.warnings.push(Diagnostic::warning(t.span, format!("`{word}` ignored: not supported yet")));
             }
@@ -513,6 +564,17 @@ impl<'a> Parser<'a> {
             }
         }
         Ok(())
+    }
+
+    /// `{ expr }` where `x`, `y`, `z` are the current position's coordinates.
+    fn position_function(&mut self) -> PResult<Expr> {
+        self.expect_punct('{', || "before a function body".to_string())?;
+        self.coords = true;
+        let e = self.expr(Ctx::Plain);
+        self.coords = false;
+        let e = e?;
+        self.expect_punct('}', || "to close the function body".to_string())?;
+        Ok(e.e)
     }
 
     /// Skips `{ … }` with balanced braces (no recursion).
@@ -557,7 +619,7 @@ impl<'a> Parser<'a> {
             Some(&g) => g,
             None => {
                 let g = u32::try_from(self.groups.len()).map_err(|_| err(span, "too many rules"))?;
-                self.groups.push(RuleGroup { name: name.to_string(), rules: Vec::new() });
+                self.groups.push(RuleGroup { name: name.to_string(), rules: Vec::new(), selector: Selector::Random });
                 self.group_index.insert(name.to_string(), g);
                 g
             }
@@ -581,6 +643,10 @@ impl<'a> Parser<'a> {
                     return Ok(items);
                 }
                 Tok::Eof => return Err(err(t.span, format!("expected `}}` to close {what}, found end of input"))),
+                // A trailing `\\` has nothing to continue: it is a no-op.
+                Tok::Punct('\\') if self.peek2().tok == Tok::Punct('}') => {
+                    self.bump();
+                }
                 _ => items.push(self.item()?),
             }
         }
@@ -596,7 +662,16 @@ impl<'a> Parser<'a> {
                 self.leave();
                 Ok(Item::Block(items))
             }
-            Tok::Punct('\\') => Err(err(t.span, "not supported yet: continuation `\\`")),
+            Tok::Punct('\\') => {
+                // `\ item`: the next call continues from the last terminal's frame.
+                self.bump();
+                if self.is_punct('\\') {
+                    return Err(err(self.peek().span, "expected a call after `\\`, found another `\\`"));
+                }
+                let mut item = self.item()?;
+                mark_continuation(&mut item);
+                Ok(item)
+            }
             Tok::Num { .. } | Tok::Punct('(') | Tok::Punct('-') => self.iterator(),
             Tok::Ident(name) => {
                 let next = self.peek2().tok;
@@ -614,15 +689,32 @@ impl<'a> Parser<'a> {
         let Tok::Ident(name) = t.tok else {
             return Err(err(t.span, format!("expected a rule call, found {}", t.tok)));
         };
+        let line_op = match name.to_ascii_uppercase().as_str() {
+            "MOVETO" => Some(LineOp::MoveTo),
+            "LINETO" | "ALINETO" => Some(LineOp::LineTo),
+            "SLINETO" => Some(LineOp::SLineTo),
+            "NEWLINE" => Some(LineOp::NewLine),
+            "RESET" => Some(LineOp::Reset),
+            _ => None,
+        };
         let base = name.rsplit('.').next().unwrap_or(name);
-        if LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
+        if line_op.is_none() && LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
             return Err(err(t.span, format!("not supported yet: drawable `{name}`")));
+        }
+        if line_op.is_some() && matches!(self.peek().tok, Tok::Ident(_)) {
+            return Err(err(self.peek().span, format!("not supported yet: a profile rule after `{name}`")));
         }
         self.expect_punct('{', || format!("after rule name `{name}`"))?;
         let site = self.next_site(t.span)?;
         let adjust = self.adjustments('}')?;
-        self.call_names.push((site, name, t.span));
-        Ok(Item::Call(Call { target: Target::Primitive(PrimitiveKind::Box), adjust, site, span: t.span }))
+        let target = match line_op {
+            Some(op) => Target::Line(op),
+            None => {
+                self.call_names.push((site, name, t.span));
+                Target::Primitive(PrimitiveKind::Box)
+            }
+        };
+        Ok(Item::Call(Call { target, adjust, site, continues: false, span: t.span }))
     }
 
     fn iterator(&mut self) -> PResult<Item> {
@@ -650,7 +742,7 @@ impl<'a> Parser<'a> {
         self.bump();
         let step = self.adjustments(close)?;
         let body = match self.peek().tok {
-            Tok::Punct('\\') => return Err(err(self.peek().span, "not supported yet: continuation `\\`")),
+            Tok::Punct('\\') => self.item()?,
             Tok::Punct('{') | Tok::Num { .. } | Tok::Punct('(') | Tok::Punct('-') | Tok::Ident(_) => self.item()?,
             other => {
                 return Err(err(self.peek().span, format!("expected a rule call, block or iterator after the iterator step, found {other}")))
@@ -927,6 +1019,11 @@ impl<'a> Parser<'a> {
                 if self.is_punct('(') {
                     return self.func_call(name, t.span, ctx);
                 }
+                if self.coords {
+                    if let Some(axis) = ["x", "y", "z"].iter().position(|c| *c == name) {
+                        return Ok(E { e: Expr::Coord(axis as u8), depth: 1, nodes: 1 });
+                    }
+                }
                 if let Some(&i) = self.param_index.get(name) {
                     return Ok(E { e: Expr::Param(i), depth: 1, nodes: 1 });
                 }
@@ -985,6 +1082,24 @@ impl<'a> Parser<'a> {
         }
         let nodes = args.iter().map(|a| a.nodes).sum::<usize>() + 1;
         Ok(E { e: Expr::Func(f, args.into_iter().map(|a| a.e).collect()), depth, nodes })
+    }
+}
+
+/// Marks the first call an item reaches (through iterators) as continuing.
+fn mark_continuation(item: &mut Item) {
+    let mut cur = item;
+    loop {
+        match cur {
+            Item::Call(c) => {
+                c.continues = true;
+                return;
+            }
+            Item::Iterate(it) => cur = &mut it.body,
+            Item::Block(b) => match b.first_mut() {
+                Some(first) => cur = first,
+                None => return,
+            },
+        }
     }
 }
 

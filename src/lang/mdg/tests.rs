@@ -86,6 +86,7 @@ fn parses_the_basic_example_into_exact_ir() {
                         target: Target::Primitive(PrimitiveKind::Box),
                         adjust: vec![],
                         site: 1,
+                        continues: false,
                         span: Span::new(1, 34),
                     })),
                     site: 0,
@@ -93,6 +94,7 @@ fn parses_the_basic_example_into_exact_ir() {
                 })],
                 span: Span::new(1, 14),
             }],
+            selector: Selector::Random,
         }],
         directives: Directives::default(),
         params: vec![],
@@ -286,7 +288,9 @@ fn directives() {
     assert!(matches!(&body(&p, 0, 0)[0], Item::Call(c) if c.target == Target::Group(1)));
     assert_eq!(fail("maxdepth 1.5"), (1, 10, "maxdepth must be a whole number ≥ 0, found 1.5".into()));
     assert_eq!(fail("rule A {}\nfoo 1"), (2, 1, "expected `rule`, `startshape` or a directive, found `foo`".into()));
-    assert_eq!(fail("selector A depth rule A {}"), (1, 12, "not supported yet: selector mode `depth`".into()));
+    assert_eq!(fail("selector A pattern rule A {}"), (1, 12, "unknown selector mode `pattern` (random, frequency, depth, scale, sequential, function)".into()));
+    assert_eq!(fail("selector B depth rule A {}"), (1, 10, "selector names `B`, which has no rules".into()));
+    assert_eq!(fail("selector A function f rule A {}"), (1, 21, "unknown function `f`".into()));
 }
 
 #[test]
@@ -338,8 +342,9 @@ fn error_positions() {
     assert_eq!(fail("rule A {\n\tFOO {}\n}"), (2, 2, "unknown rule or primitive `FOO`".into()));
     assert_eq!(fail("startshape Q\nrule A {}"), (1, 12, "unknown rule or primitive `Q`".into()));
     assert_eq!(fail("rule A { é {} # }"), (1, 15, "unexpected character `#`".into()));
-    assert_eq!(fail("rule A { MOVETO {} }"), (1, 10, "not supported yet: drawable `MOVETO`".into()));
-    assert_eq!(fail("rule A { B {} \\ }\nrule B {}"), (1, 15, "not supported yet: continuation `\\`".into()));
+    assert_eq!(fail("rule A { BLENDTO {} }"), (1, 10, "not supported yet: drawable `BLENDTO`".into()));
+    assert_eq!(fail("rule A { LINETO P {} }\nrule P {}"), (1, 17, "not supported yet: a profile rule after `LINETO`".into()));
+    assert_eq!(fail("rule A { B {} \\ \\ B {} }\nrule B {}"), (1, 17, "expected a call after `\\`, found another `\\`".into()));
     assert_eq!(fail(""), (1, 1, "empty source: expected `startshape` or `rule`".into()));
     assert_eq!(fail("  // only a comment\n"), (1, 1, "empty source: expected `startshape` or `rule`".into()));
     assert_eq!(fail("maxdepth 3\n"), (2, 1, "no rules: expected at least one `rule` or a `startshape`".into()));
@@ -461,4 +466,27 @@ fn thesis_listing_4_1_with_the_missing_brace_restored() {
     // As printed (the `}` missing), the error points at the nested `rule`.
     let (l, c, m) = fail("rule A 0.1 {\n  A{z 1}\nrule A 0.9 {\n  SPHERE{}\n}");
     assert_eq!((l, c, m.as_str()), (3, 6, "expected `{` after rule name `rule`, found `A`"));
+}
+
+#[test]
+fn selectors_and_continuation() {
+    let p = ok("selector A, B depth\nselector C function { x + 2*y }\nfunction f { z }\nselector D function f\nselector E sequential\nrule A {} rule B {} rule C {} rule D {} rule E {}");
+    let modes: Vec<&Selector> = p.groups.iter().map(|g| &g.selector).collect();
+    assert_eq!(modes[0], &Selector::Depth);
+    assert_eq!(modes[1], &Selector::Depth);
+    assert!(matches!(modes[2], Selector::Function(Expr::Binary(BinOp::Add, _, _))));
+    assert_eq!(modes[3], &Selector::Function(Expr::Coord(2)));
+    assert_eq!(modes[4], &Selector::Sequential);
+    // `x` outside a function is not a coordinate.
+    assert_eq!(fail("rule A { BOX { s (x) } }").2, "unknown name `x`");
+    // `\` marks the next call (through iterators) as continuing; a trailing one is a no-op.
+    let p = ok("rule A { BOX {} \\ BOX {} 2 * {} \\ BOX {} \\ }");
+    let body = &p.groups[0].rules[0].body;
+    assert_eq!(body.len(), 3);
+    let continues = |i: &Item| match i {
+        Item::Call(c) => c.continues,
+        Item::Iterate(it) => matches!(&*it.body, Item::Call(c) if c.continues),
+        Item::Block(_) => false,
+    };
+    assert_eq!(body.iter().map(continues).collect::<Vec<_>>(), [false, true, true]);
 }

@@ -1,0 +1,190 @@
+//! Swept lines (seed 000 §4.3): a profile ring placed at every pen position,
+//! consecutive rings joined by quad strips, open ends capped so each line is
+//! a closed solid. A line whose last point returns to its first is joined
+//! into a loop instead of capped, so a lathe or a knot closes with no gap.
+//!
+//! The profile is a regular polygon of radius [`PROFILE_RADIUS`] in each
+//! frame's local XY plane (so a pen moving along local +Z draws a tube).
+//! Orientation is decided from the geometry of each segment, so mirrored
+//! frames and pens moving backwards still give outward-facing faces.
+
+use super::meshing::mesh_bytes;
+use super::Mesh;
+use crate::eval::budget::{Budget, LimitExceeded};
+use crate::eval::scene::{LinePoint, Polyline};
+use glam::DVec3;
+use std::f64::consts::TAU;
+
+/// Radius of the default line profile, in the local units of each pen frame.
+pub const PROFILE_RADIUS: f64 = 0.05;
+
+/// Sides of the profile polygon at `detail`: half the detail, at least 4.
+pub fn profile_sides(detail: u32) -> u64 {
+    u64::from((detail / 2).max(4))
+}
+
+/// Upper bounds on the vertices and triangles one more point can add to a
+/// line (its ring and strip, plus the two caps counted on every point), so the
+/// evaluator can charge the budget as points are drawn.
+pub fn per_point_bound(detail: u32) -> (u64, u64) {
+    let n = profile_sides(detail);
+    (n + 2 * (n + 1), 2 * n + 2 * n)
+}
+
+/// A ring of `n` profile points and radial normals placed in `p`'s frame.
+fn ring(p: &LinePoint, n: u64) -> (Vec<DVec3>, Vec<DVec3>) {
+    (0..n)
+        .map(|i| {
+            let a = TAU * i as f64 / n as f64;
+            let local = DVec3::new(libm::cos(a), libm::sin(a), 0.0);
+            (p.frame.transform_point(local * PROFILE_RADIUS), p.frame.transform_normal(local).normalize_or_zero())
+        })
+        .unzip()
+}
+
+fn centre(points: &[DVec3]) -> DVec3 {
+    points.iter().copied().sum::<DVec3>() / points.len().max(1) as f64
+}
+
+fn colour8(c: [f32; 4]) -> [u8; 4] {
+    c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+}
+
+fn push(mesh: &mut Mesh, p: DVec3, n: DVec3, c: [u8; 4]) -> u32 {
+    // Fits: the caller bounds the vertex count below u32::MAX.
+    let i = mesh.positions.len() as u32;
+    mesh.positions.push(p.as_vec3().to_array());
+    mesh.normals.push(n.as_vec3().to_array());
+    mesh.colours.push(c);
+    i
+}
+
+/// True when two rings are the same place (a segment between them has no area).
+fn same_ring(a: &[DVec3], b: &[DVec3]) -> bool {
+    let scale = a.iter().chain(b).fold(0.0f64, |m, p| m.max(p.abs().max_element())).max(1.0);
+    a.iter().zip(b).all(|(p, q)| (*p - *q).length() <= 1e-9 * scale)
+}
+
+/// Appends a strip between two rings (vertex index bases `ia`, `ib`), wound outward.
+fn strip(mesh: &mut Mesh, ia: u32, ib: u32, n: u32) {
+    let at = |i: u32| DVec3::from_array(mesh.positions[i as usize].map(f64::from));
+    // Decide the winding from the first quad: its normal must agree with the radial direction.
+    let (a0, a1, b1) = (at(ia), at(ia + 1), at(ib + 1));
+    let ring_a: Vec<DVec3> = (0..n).map(|i| at(ia + i)).collect();
+    let radial = a0 - centre(&ring_a);
+    let flip = (a1 - a0).cross(b1 - a0).dot(radial) < 0.0;
+    for i in 0..n {
+        let j = (i + 1) % n;
+        let (p, q, r, s) = (ia + i, ia + j, ib + j, ib + i);
+        if flip {
+            mesh.indices.extend_from_slice(&[p, r, q, p, s, r]);
+        } else {
+            mesh.indices.extend_from_slice(&[p, q, r, p, r, s]);
+        }
+    }
+}
+
+/// Appends a flat cap over `ring`, facing away from `inward` (a point on the line's other side).
+fn cap(mesh: &mut Mesh, ring: &[DVec3], inward: DVec3, colour: [u8; 4]) {
+    let c = centre(ring);
+    let normal = {
+        let n = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]).normalize_or_zero();
+        if n.dot(c - inward) < 0.0 {
+            -n
+        } else {
+            n
+        }
+    };
+    let base = push(mesh, c, normal, colour);
+    for p in ring {
+        push(mesh, *p, normal, colour);
+    }
+    let n = ring.len() as u32;
+    // Winding of (centre, i, i+1) agrees with the ring order's normal; flip to face `normal`.
+    let ring_normal = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]);
+    let flip = ring_normal.dot(normal) < 0.0;
+    for i in 0..n {
+        let (a, b) = (base + 1 + i, base + 1 + (i + 1) % n);
+        if flip {
+            mesh.indices.extend_from_slice(&[base, b, a]);
+        } else {
+            mesh.indices.extend_from_slice(&[base, a, b]);
+        }
+    }
+}
+
+/// Sweeps every line into one mesh, reserving its bytes in `budget` first.
+/// Lines with fewer than two distinct rings draw nothing.
+pub fn sweep_lines(lines: &[Polyline], detail: u32, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+    let n = profile_sides(detail);
+    let (pv, pt) = per_point_bound(detail);
+    let points: u64 = lines.iter().map(|l| l.points.len() as u64).sum();
+    if points == 0 {
+        return Ok(None);
+    }
+    let (vmax, tmax) = (points.saturating_mul(pv), points.saturating_mul(pt));
+    if vmax > u64::from(u32::MAX) {
+        return Err(LimitExceeded {
+            limit: crate::eval::Limit::Memory,
+            configured: budget.limits().max_memory,
+            reached: budget.memory().saturating_add(mesh_bytes(vmax, tmax)),
+        });
+    }
+    budget.reserve_memory(mesh_bytes(vmax, tmax))?;
+    let mut mesh = Mesh {
+        positions: Vec::with_capacity(vmax as usize),
+        normals: Vec::with_capacity(vmax as usize),
+        colours: Vec::with_capacity(vmax as usize),
+        indices: Vec::with_capacity((tmax as usize).saturating_mul(3)),
+    };
+    let n32 = n as u32;
+    for line in lines {
+        // Rings, dropping any that repeat the previous one (zero-length, pure turns).
+        let mut rings: Vec<(Vec<DVec3>, Vec<DVec3>, [u8; 4])> = Vec::new();
+        for p in &line.points {
+            let (pos, nrm) = ring(p, n);
+            if rings.last().is_some_and(|(prev, _, _)| same_ring(prev, &pos)) {
+                continue;
+            }
+            rings.push((pos, nrm, colour8(p.colour)));
+        }
+        if rings.len() < 2 {
+            continue;
+        }
+        let closed = rings.len() > 2 && rings.first().zip(rings.last()).is_some_and(|(a, b)| same_ring(&a.0, &b.0));
+        if closed {
+            rings.pop();
+        }
+        let bases: Vec<u32> = rings
+            .iter()
+            .map(|(pos, nrm, c)| {
+                let base = mesh.positions.len() as u32;
+                for (p, q) in pos.iter().zip(nrm) {
+                    push(&mut mesh, *p, *q, *c);
+                }
+                base
+            })
+            .collect();
+        for w in bases.windows(2) {
+            strip(&mut mesh, w[0], w[1], n32);
+        }
+        if closed {
+            if let (Some(&last), Some(&first)) = (bases.last(), bases.first()) {
+                strip(&mut mesh, last, first, n32);
+            }
+        } else if let (Some(first), Some(second), Some(last), Some(before)) =
+            (rings.first(), rings.get(1), rings.last(), rings.get(rings.len() - 2))
+        {
+            cap(&mut mesh, &first.0, centre(&second.0), first.2);
+            cap(&mut mesh, &last.0, centre(&before.0), last.2);
+        }
+    }
+    // Give back what the upper bound over-reserved.
+    let used = mesh_bytes(mesh.positions.len() as u64, mesh.triangle_count() as u64);
+    budget.release_memory(mesh_bytes(vmax, tmax).saturating_sub(used));
+    mesh.positions.shrink_to_fit();
+    mesh.normals.shrink_to_fit();
+    mesh.colours.shrink_to_fit();
+    mesh.indices.shrink_to_fit();
+    Ok(if mesh.indices.is_empty() { None } else { Some(mesh) })
+}

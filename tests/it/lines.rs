@@ -1,0 +1,88 @@
+//! Swept lines (seed 000 §4.3): segment counts, continuation along a line,
+//! closed loops and capped ends that admesh finds watertight.
+
+use crate::common::{admesh, decode_stl, repo, run, signed_volume, tempdir};
+use glam::DVec3;
+use rulemesh::eval::{bind_params, evaluate, Budget, EvalOptions, Limits, Scene};
+use rulemesh::lang::{parse, Language};
+use std::collections::BTreeMap;
+
+fn scene_of(source: &str) -> Scene {
+    let program = parse(Language::Mdg, source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
+    let params = bind_params(&program, &BTreeMap::new()).expect("params");
+    evaluate(&program, &params, &EvalOptions::default(), &mut Budget::new(Limits::default())).expect("evaluate")
+}
+
+fn segments(scene: &Scene) -> usize {
+    scene.lines.iter().map(|l| l.points.len().saturating_sub(1)).sum()
+}
+
+#[test]
+fn listing_5_1_draws_the_arrowhead_with_2187_segments() {
+    let src = std::fs::read_to_string(repo().join("grammars/arrowhead.mdg")).expect("arrowhead.mdg");
+    let scene = scene_of(&src);
+    assert_eq!(scene.lines.len(), 1, "one continuous line");
+    assert_eq!(segments(&scene), 2187);
+    let pts: Vec<DVec3> = scene.lines[0].points.iter().map(|p| p.frame.translation).collect();
+    // Every segment has unit length and lies in the plane x = 0.
+    for w in pts.windows(2) {
+        assert!(((w[1] - w[0]).length() - 1.0).abs() < 1e-9);
+        assert!(w[1].x.abs() < 1e-9);
+    }
+    // A simple path: 2188 distinct vertices (seed notes, worked example 4).
+    let mut keys: Vec<(i64, i64)> = pts.iter().map(|p| ((p.y * 1e6).round() as i64, (p.z * 1e6).round() as i64)).collect();
+    keys.sort();
+    keys.dedup();
+    assert_eq!(keys.len(), 2188);
+    // It ends 128 units from its start, at (0, 64√3, 64) or its mirror image.
+    let end = *pts.last().expect("points");
+    assert!((end.length() - 128.0).abs() < 1e-6, "{end}");
+    assert!((end.y.abs() - 64.0 * 3f64.sqrt()).abs() < 1e-6 && (end.z - 64.0).abs() < 1e-6, "{end}");
+}
+
+#[test]
+fn pen_operations_start_lift_and_reset_lines() {
+    // Pen starts down at the origin: a first LINETO draws a segment.
+    assert_eq!(segments(&scene_of("rule A { LINETO { z 1 } LINETO { z 2 } }")), 2);
+    // MOVETO places the pen without drawing.
+    let s = scene_of("rule A { MOVETO { x 5 } LINETO { x 6 } }");
+    assert_eq!((s.lines.len(), segments(&s)), (1, 1));
+    // NEWLINE lifts the pen: the next LINETO only puts it down (seed notes, example 6).
+    let s = scene_of("rule A { LINETO { z 1 } NEWLINE {} LINETO { x 3 } LINETO { x 4 } LINETO { x 5 } }");
+    assert_eq!((s.lines.len(), segments(&s)), (2, 3));
+    // RESET returns to the last MOVETO and starts a new line there.
+    let s = scene_of("rule A { MOVETO { y 1 } LINETO { y 2 } RESET {} LINETO { x 1 y 1 } }");
+    assert_eq!(s.lines.len(), 2);
+    assert!((s.lines[1].points[0].frame.translation - DVec3::Y).length() < 1e-12);
+    // Continuation starts from the pen.
+    let s = scene_of("rule A { LINETO { z 1 } \\ LINETO { z 1 } \\ LINETO { z 1 } }");
+    let z: Vec<f64> = s.lines[0].points.iter().map(|p| p.frame.translation.z).collect();
+    assert_eq!(z, [0.0, 1.0, 2.0, 3.0]);
+}
+
+fn render_stl(src: &str, name: &str) -> (std::path::PathBuf, tempfile::TempDir) {
+    let dir = tempdir();
+    let path = dir.path().join(format!("{name}.stl"));
+    let out = run(&["render", "-", "--language", "mdg", "-o", path.to_str().expect("utf-8")], Some(src.as_bytes()));
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    (path, dir)
+}
+
+#[test]
+fn a_lathe_closes_with_no_gap_and_open_lines_are_capped() {
+    for (name, src) in [
+        ("lathe", "rule A { MOVETO { x 1 } 30/30 * [ry 360] LINETO { x 1 } }"),
+        ("open", "rule A { MOVETO {} 5 * { z 1 rx 20 } LINETO {} }"),
+        ("mirrored", "rule A { B { fx } } rule B { MOVETO {} 5 * { z 1 rx 20 } LINETO {} }"),
+        ("backwards", "rule A { MOVETO {} 5 * { z -1 ry 10 } SLINETO {} }"),
+    ] {
+        let (path, _dir) = render_stl(src, name);
+        let r = admesh(&path);
+        assert_eq!(r.open_edges, 0, "{name}: {}", r.raw);
+        assert_eq!(r.parts, 1, "{name}: {}", r.raw);
+        assert_eq!(r.reversed, 0, "{name}: {}", r.raw);
+        assert_eq!(r.degenerate, 0, "{name}: {}", r.raw);
+        let v = signed_volume(&decode_stl(&std::fs::read(&path).expect("stl")));
+        assert!(v > 0.0, "{name}: volume {v}");
+    }
+}
