@@ -6,11 +6,13 @@
 
 #![warn(missing_docs)]
 
+pub mod cache;
 pub mod export;
 pub mod eval;
 pub mod geom;
 pub mod lang;
 pub mod pipeline;
+pub mod service;
 
 pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
 

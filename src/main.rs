@@ -35,6 +35,17 @@ enum Command {
     Check(CheckArgs),
     /// Decode a `.strips` file (the reference decoder) and write it as glTF or STL.
     Decode(DecodeArgs),
+    /// Run the HTTP and gRPC service (options also from `RULEMESH_*` variables).
+    Serve(ServeArgs),
+}
+
+#[derive(Args)]
+struct ServeArgs {
+    #[command(flatten)]
+    config: rulemesh::service::ServeConfig,
+    /// Log level: error, warn, info, debug or trace.
+    #[arg(long, env = "RULEMESH_LOG", default_value = "info")]
+    log: tracing_subscriber::filter::LevelFilter,
 }
 
 #[derive(Args)]
@@ -136,6 +147,7 @@ fn main() -> ExitCode {
         Command::Render(args) => run_render(args),
         Command::Check(args) => run_check(args),
         Command::Decode(args) => run_decode(args),
+        Command::Serve(args) => run_serve(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -297,4 +309,25 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
     write_output(&args.output, &out)?;
     eprintln!("{}: {} triangles, {} bytes ({:?})", args.file, triangles, out.len(), format);
     Ok(())
+}
+
+fn run_serve(args: ServeArgs) -> Result<(), Failure> {
+    use std::io::IsTerminal;
+    tracing_subscriber::fmt()
+        .with_max_level(args.log)
+        .with_target(false)
+        .with_ansi(std::io::stderr().is_terminal())
+        .with_writer(std::io::stderr)
+        .init();
+    let config = args.config;
+    // The blocking pool only runs renders, which the engine already limits to
+    // `concurrency`; a few spare threads cover moka and file work.
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .max_blocking_threads(config.concurrency() + 4)
+        .build()
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("cannot start the runtime: {e}")))?;
+    runtime
+        .block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()))
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
 }

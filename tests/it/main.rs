@@ -13,3 +13,4 @@ mod hostile;
 mod lines;
 mod selectors;
 mod strips;
+mod service;
