@@ -1,6 +1,7 @@
 //! Geometry: tessellation of the built-in primitives and turning a
 //! [`Scene`](crate::eval::scene::Scene) of instances into indexed meshes.
 
+pub mod isosurface;
 pub mod mesh;
 pub mod meshing;
 pub mod primitives;

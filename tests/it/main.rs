@@ -8,6 +8,7 @@ mod cli;
 mod counts;
 mod determinism;
 mod docs;
+mod gallery;
 mod grammars;
 mod hostile;
 mod lines;
