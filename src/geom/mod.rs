@@ -3,6 +3,7 @@
 
 pub mod mesh;
 pub mod meshing;
+pub mod normalize;
 pub mod primitives;
 pub mod strip;
 pub mod sweep;
