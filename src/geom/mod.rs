@@ -4,6 +4,7 @@
 pub mod isosurface;
 pub mod mesh;
 pub mod meshing;
+pub mod normalize;
 pub mod primitives;
 pub mod strip;
 pub mod sweep;
