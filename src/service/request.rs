@@ -11,11 +11,12 @@ use crate::geom::{MeshLayout, DEFAULT_DETAIL};
 use crate::lang::Language;
 use crate::RenderRequest;
 use serde::Deserialize;
+use utoipa::ToSchema;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// Client-supplied limits: every field optional, missing ones take the defaults.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LimitsBody {
     /// [`Limits::max_depth`]
@@ -52,7 +53,7 @@ impl LimitsBody {
 }
 
 /// `POST /v1/render` as sent (and the gRPC `RenderRequest`, converted).
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RenderBody {
     /// Grammar source.
@@ -61,8 +62,9 @@ pub struct RenderBody {
     pub language: Option<String>,
     /// Random seed.
     pub seed: Option<u64>,
-    /// Grammar parameters.
+    /// Grammar parameters (numbers, booleans, or text read as either).
     #[serde(default)]
+    #[schema(value_type = std::collections::BTreeMap<String, serde_json::Value>)]
     pub params: BTreeMap<String, ParamValue>,
     /// `"glb"` (default), `"gltf"`, `"stl"` or `"stl-ascii"`.
     pub format: Option<String>,
@@ -83,7 +85,7 @@ pub struct RenderBody {
 }
 
 /// `POST /v1/check` as sent.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CheckBody {
     /// Grammar source.
