@@ -73,14 +73,12 @@ impl Engine {
         let key = plan.key;
         let fresh = plan.no_cache;
         let span = tracing::Span::current();
-        span.record("key", key.hex().as_str());
-        if let Some(l) = plan.request.language.or_else(|| Language::detect(&plan.source)) {
-            span.record("language", l.name());
-        }
+        span.record("key", tracing::field::display(key.hex()));
+        let language = plan.request.language.or_else(|| Language::detect(&plan.source));
+        span.record("language", tracing::field::display(language.map_or("unknown", Language::name)));
         let (model, cache) = self.cache.get_or_render(key, fresh, || self.run(plan)).await?;
         self.metrics.cache(cache == CacheOutcome::Hit);
-        span.record("language", model.language.name());
-        span.record("cache", if cache == CacheOutcome::Hit { "hit" } else { "miss" });
+        span.record("cache", tracing::field::display(if cache == CacheOutcome::Hit { "hit" } else { "miss" }));
         Ok(Served { model, cache })
     }
 

@@ -52,6 +52,20 @@ impl LimitsBody {
     }
 }
 
+/// The JSON shape of a grammar parameter's value (for the OpenAPI document;
+/// requests are read as [`ParamValue`]).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, ToSchema)]
+#[serde(untagged)]
+#[schema(as = ParamValue)]
+pub enum ParamValueSchema {
+    /// A number.
+    Number(f64),
+    /// A boolean.
+    Bool(bool),
+    /// Text read as a number or `true`/`false`.
+    Text(String),
+}
+
 /// `POST /v1/render` as sent (and the gRPC `RenderRequest`, converted).
 #[derive(Debug, Clone, Default, PartialEq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -64,7 +78,7 @@ pub struct RenderBody {
     pub seed: Option<u64>,
     /// Grammar parameters (numbers, booleans, or text read as either).
     #[serde(default)]
-    #[schema(value_type = std::collections::BTreeMap<String, serde_json::Value>)]
+    #[schema(value_type = BTreeMap<String, ParamValueSchema>)]
     pub params: BTreeMap<String, ParamValue>,
     /// `"glb"` (default), `"gltf"`, `"stl"` or `"stl-ascii"`.
     pub format: Option<String>,
