@@ -647,6 +647,14 @@ fn serve_config_precedence_flag_env_file_default() {
     let c = run(&json_file, &[], &[]);
     assert_eq!((c["queue"].as_u64(), c["cache_bytes"].as_u64()), (Some(7), Some(4096)));
 
+    // The example in docs/service.md is a valid settings file.
+    let doc = std::fs::read_to_string(common::repo().join("docs/service.md")).expect("docs/service.md");
+    let example = doc.split("```toml\n").nth(1).and_then(|s| s.split("```").next()).expect("a TOML example");
+    let doc_file = dir.path().join("doc.toml");
+    std::fs::write(&doc_file, example).expect("write");
+    let c = run(&doc_file, &[], &[]);
+    assert_eq!((c["http"].as_str(), c["cache_dir"].as_str()), (Some("0.0.0.0:8080"), Some("/var/cache/rulemesh")));
+
     // Bad files are usage errors naming the file.
     let bad = dir.path().join("bad.toml");
     for text in ["queue = \"many\"\n", "colour = 1\n", "queue = \n"] {
