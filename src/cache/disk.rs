@@ -190,7 +190,7 @@ impl DiskTier {
     }
 }
 
-fn encode(model: &Rendered) -> Option<Vec<u8>> {
+pub(super) fn encode(model: &Rendered) -> Option<Vec<u8>> {
     let header = serde_json::to_vec(&Header {
         content_type: model.content_type.to_string(),
         language: model.language.name().to_string(),
@@ -212,7 +212,7 @@ fn static_content_type(s: &str) -> Option<&'static str> {
     [Format::Glb, Format::Gltf, Format::Stl, Format::StlAscii, Format::Strips].into_iter().map(Format::content_type).find(|c| *c == s)
 }
 
-fn decode(data: &[u8]) -> Option<Rendered> {
+pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
     let rest = data.strip_prefix(MAGIC)?;
     let (len, rest) = rest.split_first_chunk::<4>()?;
     let len = u32::from_le_bytes(*len);

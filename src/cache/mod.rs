@@ -1,11 +1,14 @@
 //! The content-hash model cache: canonical request keys ([`key`]) and an
 //! in-process, byte-budgeted, single-flight store ([`store`]), optionally
-//! backed by files on disk ([`disk`]).
+//! backed by files on disk ([`disk`]) and by a Redis shared between workers
+//! ([`redis`]).
 
 pub mod disk;
 pub mod key;
+pub mod redis;
 pub mod store;
 
 pub use disk::{DiskError, DiskTier};
 pub use key::{normalize_source, CacheKey};
+pub use self::redis::{RedisError, RedisSettings, RedisTier};
 pub use store::{CacheOutcome, ModelCache, Rendered};

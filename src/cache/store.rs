@@ -1,8 +1,10 @@
 //! The in-process model store: a moka cache weighted by model bytes, with
-//! single-flight fills, optionally backed by a [`DiskTier`]. Failed and
-//! truncated renders are handed to every waiting caller but never stored.
+//! single-flight fills, optionally backed by a [`DiskTier`] and a shared
+//! [`RedisTier`]. Failed and truncated renders are handed to every waiting
+//! caller but never stored.
 
 use super::disk::DiskTier;
+use super::redis::RedisTier;
 use super::CacheKey;
 use crate::eval::LimitExceeded;
 use crate::lang::Language;
@@ -75,6 +77,7 @@ pub struct ModelCache {
     inner: Cache<CacheKey, Arc<Rendered>>,
     evictions: Arc<AtomicU64>,
     disk: Option<Arc<DiskTier>>,
+    redis: Option<Arc<RedisTier>>,
 }
 
 /// Bytes charged per entry besides the model itself (key, metadata, moka's bookkeeping).
@@ -96,7 +99,7 @@ impl ModelCache {
                 }
             })
             .build();
-        ModelCache { inner, evictions, disk: None }
+        ModelCache { inner, evictions, disk: None, redis: None }
     }
 
     /// The same store, reading from and writing complete models to `disk`
@@ -104,6 +107,18 @@ impl ModelCache {
     pub fn with_disk(mut self, disk: DiskTier) -> ModelCache {
         self.disk = Some(Arc::new(disk));
         self
+    }
+
+    /// The same store, reading from and writing complete models to a Redis
+    /// shared with other workers, after the disk tier (if any).
+    pub fn with_redis(mut self, redis: RedisTier) -> ModelCache {
+        self.redis = Some(Arc::new(redis));
+        self
+    }
+
+    /// The Redis tier, if configured.
+    pub fn redis(&self) -> Option<&RedisTier> {
+        self.redis.as_deref()
     }
 
     /// The disk tier, if configured.
@@ -115,7 +130,9 @@ impl ModelCache {
     /// misses on one key share a single call. With `fresh`, the store is not
     /// read (but a complete result still refreshes it). On an in-process
     /// miss the disk tier (if any) is read before rendering, and a complete
-    /// render is written to it; a model read from disk counts as a hit.
+    /// render is written to it; then Redis (if any) is read the same way,
+    /// under its distributed lock when enabled. A model read from disk or
+    /// Redis counts as a hit; a model read from Redis is also written to disk.
     pub async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, CacheOutcome), E>
     where
         E: Clone + Send + Sync + 'static,
@@ -129,18 +146,30 @@ impl ModelCache {
                 if let Some(d) = &self.disk {
                     d.write(key, r.clone()).await;
                 }
+                if let Some(t) = &self.redis {
+                    t.write(key, &r).await;
+                }
             }
             return Ok((r, CacheOutcome::Miss));
         }
-        let from_disk = std::sync::atomic::AtomicBool::new(false);
+        let from_tier = std::sync::atomic::AtomicBool::new(false);
         let init = async {
             if let Some(d) = &self.disk {
                 if let Some(r) = d.read(key).await {
-                    from_disk.store(true, Ordering::Relaxed);
+                    from_tier.store(true, Ordering::Relaxed);
                     return Ok(Arc::new(r));
                 }
             }
-            match render().await {
+            let rendered = match &self.redis {
+                Some(t) => t.read_or_render(key, render).await.map(|(r, shared)| {
+                    if shared {
+                        from_tier.store(true, Ordering::Relaxed);
+                    }
+                    r
+                }),
+                None => render().await,
+            };
+            match rendered {
                 Ok(r) if r.cacheable() => {
                     let r = Arc::new(r);
                     if let Some(d) = &self.disk {
@@ -154,7 +183,7 @@ impl ModelCache {
         };
         match self.inner.entry(key).or_try_insert_with(init).await {
             Ok(entry) => {
-                let rendered = entry.is_fresh() && !from_disk.load(Ordering::Relaxed);
+                let rendered = entry.is_fresh() && !from_tier.load(Ordering::Relaxed);
                 let outcome = if rendered { CacheOutcome::Miss } else { CacheOutcome::Hit };
                 Ok((entry.into_value(), outcome))
             }

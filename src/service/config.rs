@@ -58,6 +58,36 @@ pub struct ServeConfig {
     /// Byte budget of the disk cache tier; no more files are written past it.
     #[arg(long, env = "RULEMESH_CACHE_DIR_BYTES", default_value_t = 1024 * 1024 * 1024)]
     pub cache_dir_bytes: u64,
+    /// Redis shared by every worker as a second cache level (`redis://host:6379/0`). None: no shared tier.
+    #[arg(long, env = "RULEMESH_CACHE_REDIS")]
+    #[serde(serialize_with = "redacted_url")]
+    pub cache_redis: Option<String>,
+    /// Lifetime of a model stored in Redis, in seconds.
+    #[arg(long, env = "RULEMESH_CACHE_REDIS_TTL_SECS", default_value_t = 24 * 60 * 60)]
+    pub cache_redis_ttl_secs: u64,
+    /// Largest model stored in Redis, in bytes; larger ones stay local.
+    #[arg(long, env = "RULEMESH_CACHE_REDIS_MAX_BYTES", default_value_t = 32 * 1024 * 1024)]
+    pub cache_redis_max_bytes: u64,
+    /// Longest any Redis command may take, in milliseconds, before the request goes on without it.
+    #[arg(long, env = "RULEMESH_CACHE_REDIS_TIMEOUT_MS", default_value_t = 250)]
+    pub cache_redis_timeout_ms: u64,
+    /// Lifetime of the distributed single-flight lock in Redis, in milliseconds (0: no lock).
+    #[arg(long, env = "RULEMESH_CACHE_REDIS_LOCK_MS", default_value_t = 0)]
+    pub cache_redis_lock_ms: u64,
+    /// This worker's name, added as a `worker` label to every metric. None: no label.
+    #[arg(long, env = "RULEMESH_WORKER_ID")]
+    pub worker_id: Option<String>,
+    /// After SIGTERM/SIGINT, time /readyz answers 503 while requests are still served (so load balancers stop sending), in milliseconds.
+    #[arg(long, env = "RULEMESH_DRAIN_MS", default_value_t = 0)]
+    pub drain_ms: u64,
+}
+
+/// Serialises a Redis URL with its password hidden.
+fn redacted_url<S: serde::Serializer>(url: &Option<String>, s: S) -> Result<S::Ok, S::Error> {
+    match url {
+        Some(u) => s.serialize_some(&crate::cache::redis::redact_url(u)),
+        None => s.serialize_none(),
+    }
 }
 
 /// Why a configuration file could not be used.
@@ -120,6 +150,20 @@ pub struct ConfigFile {
     pub cache_dir: Option<PathBuf>,
     /// [`ServeConfig::cache_dir_bytes`]
     pub cache_dir_bytes: Option<u64>,
+    /// [`ServeConfig::cache_redis`]
+    pub cache_redis: Option<String>,
+    /// [`ServeConfig::cache_redis_ttl_secs`]
+    pub cache_redis_ttl_secs: Option<u64>,
+    /// [`ServeConfig::cache_redis_max_bytes`]
+    pub cache_redis_max_bytes: Option<u64>,
+    /// [`ServeConfig::cache_redis_timeout_ms`]
+    pub cache_redis_timeout_ms: Option<u64>,
+    /// [`ServeConfig::cache_redis_lock_ms`]
+    pub cache_redis_lock_ms: Option<u64>,
+    /// [`ServeConfig::worker_id`]
+    pub worker_id: Option<String>,
+    /// [`ServeConfig::drain_ms`]
+    pub drain_ms: Option<u64>,
 }
 
 impl ConfigFile {
@@ -159,6 +203,13 @@ impl Default for ServeConfig {
             ceiling_timeout_ms: 60_000,
             cache_dir: None,
             cache_dir_bytes: 1024 * 1024 * 1024,
+            cache_redis: None,
+            cache_redis_ttl_secs: 24 * 60 * 60,
+            cache_redis_max_bytes: 32 * 1024 * 1024,
+            cache_redis_timeout_ms: 250,
+            cache_redis_lock_ms: 0,
+            worker_id: None,
+            drain_ms: 0,
         }
     }
 }
@@ -192,7 +243,14 @@ impl ServeConfig {
             ceiling_memory,
             ceiling_timeout_ms,
             cache_dir,
-            cache_dir_bytes
+            cache_dir_bytes,
+            cache_redis,
+            cache_redis_ttl_secs,
+            cache_redis_max_bytes,
+            cache_redis_timeout_ms,
+            cache_redis_lock_ms,
+            worker_id,
+            drain_ms
         );
         self
     }
@@ -223,6 +281,23 @@ impl ServeConfig {
     /// The longest wait for a render slot.
     pub fn queue_timeout(&self) -> Duration {
         Duration::from_millis(self.queue_timeout_ms)
+    }
+
+    /// The Redis tier's settings, if a Redis URL is configured.
+    pub fn redis(&self) -> Option<crate::cache::RedisSettings> {
+        let url = self.cache_redis.as_ref().filter(|u| !u.is_empty())?;
+        Some(crate::cache::RedisSettings {
+            url: url.clone(),
+            ttl: Duration::from_secs(self.cache_redis_ttl_secs.max(1)),
+            max_value_bytes: self.cache_redis_max_bytes,
+            timeout: Duration::from_millis(self.cache_redis_timeout_ms.max(1)),
+            lock: (self.cache_redis_lock_ms > 0).then(|| Duration::from_millis(self.cache_redis_lock_ms)),
+        })
+    }
+
+    /// How long readiness is false before the listeners close on shutdown.
+    pub fn drain(&self) -> Duration {
+        Duration::from_millis(self.drain_ms)
     }
 
     /// The shutdown grace period.

@@ -3,7 +3,7 @@
 //! bounded wait queue.
 
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
-use crate::cache::{CacheOutcome, DiskError, DiskTier, ModelCache, Rendered};
+use crate::cache::{CacheOutcome, DiskTier, ModelCache, RedisTier, Rendered};
 use crate::lang::Language;
 use crate::RenderRequest;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -43,12 +43,17 @@ impl Drop for Waiting<'_> {
 
 impl Engine {
     /// An engine configured by `config`, reporting to `metrics`; fails if the
-    /// disk cache directory cannot be opened.
-    pub fn new(config: &ServeConfig, metrics: Arc<Metrics>) -> Result<Engine, DiskError> {
+    /// disk cache directory cannot be opened or the Redis URL is invalid
+    /// (Redis itself need not be up).
+    pub fn new(config: &ServeConfig, metrics: Arc<Metrics>) -> Result<Engine, super::ServeError> {
         let slot_count = config.concurrency();
         let mut cache = ModelCache::new(config.cache_bytes);
         if let Some(dir) = &config.cache_dir {
             cache = cache.with_disk(DiskTier::open(dir, config.cache_dir_bytes)?);
+        }
+        if let Some(settings) = config.redis() {
+            tracing::info!(redis = %settings.redacted(), lock = ?settings.lock, "shared Redis cache tier");
+            cache = cache.with_redis(RedisTier::new(settings)?);
         }
         Ok(Engine {
             cache,

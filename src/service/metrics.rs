@@ -25,9 +25,15 @@ pub struct Metrics {
     in_flight: AtomicI64,
     queued: AtomicI64,
     shed: AtomicU64,
+    worker: Option<String>,
 }
 
 impl Metrics {
+    /// Metrics whose every sample carries `worker="<id>"` (none when `None`).
+    pub fn for_worker(worker: Option<String>) -> Metrics {
+        Metrics { worker: worker.filter(|w| !w.is_empty()), ..Metrics::default() }
+    }
+
     /// Counts one finished request (`protocol` is `http` or `grpc`).
     pub fn request(&self, protocol: &str, route: &str, status: u16) {
         if let Ok(mut m) = self.requests.lock() {
@@ -91,7 +97,10 @@ impl Metrics {
     pub fn render_text(&self, cache: &ModelCache) -> String {
         let mut s = String::new();
         let _ = self.write_text(&mut s, cache);
-        s
+        match &self.worker {
+            Some(w) => with_label(&s, "worker", w),
+            None => s,
+        }
     }
 
     fn write_text(&self, s: &mut String, cache: &ModelCache) -> std::fmt::Result {
@@ -143,6 +152,49 @@ impl Metrics {
         }
         gauge(s, "rulemesh_renders_in_flight", "Renders running now.", self.in_flight.load(Ordering::Relaxed))?;
         gauge(s, "rulemesh_render_queue_depth", "Renders waiting for a slot.", self.queued.load(Ordering::Relaxed))?;
-        counter(s, "rulemesh_shed_total", "Requests refused for overload.", self.shed.load(Ordering::Relaxed))
+        counter(s, "rulemesh_shed_total", "Requests refused for overload.", self.shed.load(Ordering::Relaxed))?;
+        if let Some(r) = cache.redis() {
+            counter(s, "rulemesh_redis_hits_total", "Models read from the shared Redis tier.", r.hits())?;
+            counter(s, "rulemesh_redis_misses_total", "Redis lookups without a model.", r.misses())?;
+            counter(s, "rulemesh_redis_writes_total", "Models written to Redis.", r.writes())?;
+            counter(s, "rulemesh_redis_skipped_total", "Models not written to Redis (too large, or Redis failing).", r.skipped())?;
+            counter(s, "rulemesh_redis_errors_total", "Redis commands that failed or timed out (served from local caching instead).", r.errors())?;
+            counter(s, "rulemesh_redis_lock_waits_total", "Renders that waited for another worker's lock.", r.lock_waits())?;
+            gauge(s, "rulemesh_redis_up", "1 while Redis answers, 0 while it is skipped after a failure.", i64::from(!r.is_degraded()))?;
+        }
+        Ok(())
+    }
+}
+
+/// Adds `name="value"` to every sample line of a text exposition.
+fn with_label(text: &str, name: &str, value: &str) -> String {
+    let escaped = value.replace('\\', "\\\\").replace('"', "\\\"").replace('\n', "\\n");
+    let label = format!("{name}=\"{escaped}\"");
+    let mut out = String::with_capacity(text.len() + text.lines().count() * (label.len() + 2));
+    for line in text.lines() {
+        if line.starts_with('#') || line.is_empty() {
+            out.push_str(line);
+        } else if let Some(brace) = line.find('{') {
+            let (head, tail) = line.split_at(brace + 1);
+            out.push_str(head);
+            out.push_str(&label);
+            out.push(',');
+            out.push_str(tail);
+        } else if let Some((metric, value)) = line.split_once(' ') {
+            let _ = write!(out, "{metric}{{{label}}} {value}");
+        } else {
+            out.push_str(line);
+        }
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn worker_label_on_every_sample() {
+        let text = "# HELP a A.\n# TYPE a counter\na 1\nb{le=\"0.1\"} 2\n";
+        assert_eq!(super::with_label(text, "worker", "w\"1"), "# HELP a A.\n# TYPE a counter\na{worker=\"w\\\"1\"} 1\nb{worker=\"w\\\"1\",le=\"0.1\"} 2\n");
     }
 }

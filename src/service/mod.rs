@@ -42,9 +42,10 @@ pub struct AppState {
 }
 
 impl AppState {
-    /// State for `config`; fails if the disk cache directory cannot be opened.
-    pub fn new(config: ServeConfig) -> Result<AppState, crate::cache::DiskError> {
-        let metrics = Arc::new(Metrics::default());
+    /// State for `config`; fails if the disk cache directory cannot be
+    /// opened or the Redis URL is invalid.
+    pub fn new(config: ServeConfig) -> Result<AppState, ServeError> {
+        let metrics = Arc::new(Metrics::for_worker(config.worker_id.clone()));
         Ok(AppState {
             engine: Engine::new(&config, metrics.clone())?,
             metrics,
@@ -77,6 +78,9 @@ pub enum ServeError {
     /// The disk cache directory could not be opened.
     #[error(transparent)]
     Cache(#[from] crate::cache::DiskError),
+    /// The Redis URL is invalid.
+    #[error(transparent)]
+    Redis(#[from] crate::cache::RedisError),
     /// The gRPC reflection service could not be built.
     #[error("gRPC reflection: {0}")]
     Reflection(#[from] tonic_reflection::server::Error),
@@ -105,6 +109,12 @@ pub struct Running {
 }
 
 impl Running {
+    /// Marks the worker not ready (`/readyz` answers 503) while it still
+    /// serves, so load balancers stop sending it work.
+    pub fn drain(&self) {
+        self.state.ready.store(false, Ordering::Release);
+    }
+
     /// Begins a graceful shutdown: stop accepting, let in-flight requests finish.
     pub fn shutdown(&self) {
         self.state.ready.store(false, Ordering::Release);
@@ -182,6 +192,12 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
 pub async fn serve(config: ServeConfig, signal: impl Future<Output = ()>) -> Result<(), ServeError> {
     let running = start(config).await?;
     signal.await;
+    let drain = running.state.config.drain();
+    if !drain.is_zero() {
+        tracing::info!(?drain, "draining: not ready, still serving");
+        running.drain();
+        tokio::time::sleep(drain).await;
+    }
     tracing::info!("shutting down: finishing in-flight requests");
     running.shutdown();
     running.wait().await
