@@ -15,4 +15,5 @@ mod hostile;
 mod lines;
 mod selectors;
 mod strips;
+mod scaleout;
 mod service;
