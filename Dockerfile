@@ -1,0 +1,42 @@
+# syntax=docker/dockerfile:1
+# rulemesh serve as a container: build with cargo (dependencies compiled in a
+# layer of their own, so editing src/ does not rebuild them), then copy the one
+# binary into a slim Debian runtime that runs as a non-root user. The grammar
+# library is embedded in the binary; nothing else is needed at run time.
+#   docker build -t rulemesh .
+#   docker run -p 8080:8080 -p 50051:50051 rulemesh
+# See docs/deploy.md.
+
+FROM rust:1-slim-bookworm AS build
+WORKDIR /src
+# Dependencies first: a stub crate with the real manifests builds every
+# dependency into this layer, reused until Cargo.toml or Cargo.lock change.
+COPY Cargo.toml Cargo.lock build.rs ./
+COPY proto ./proto
+COPY grammars ./grammars
+RUN mkdir -p src bench tests/it \
+    && echo 'fn main() {}' > src/main.rs \
+    && touch src/lib.rs bench/decode_strips.rs tests/it/main.rs \
+    && cargo build --release --locked --bin rulemesh \
+    && rm -rf src
+# Then the crate itself.
+COPY src ./src
+RUN touch src/main.rs src/lib.rs \
+    && cargo build --release --locked --bin rulemesh \
+    && cp target/release/rulemesh /usr/local/bin/rulemesh
+
+FROM debian:bookworm-slim AS runtime
+RUN useradd --system --uid 10001 --no-create-home --shell /usr/sbin/nologin rulemesh
+COPY --from=build /usr/local/bin/rulemesh /usr/local/bin/rulemesh
+# Listen on every interface inside the container (the binary's defaults are loopback).
+ENV RULEMESH_HTTP=0.0.0.0:8080 \
+    RULEMESH_GRPC=0.0.0.0:50051 \
+    RULEMESH_LOG=info
+EXPOSE 8080 50051
+USER 10001
+# /healthz over bash's /dev/tcp: the slim image has no curl.
+HEALTHCHECK --interval=10s --timeout=3s --start-period=5s --retries=3 \
+    CMD ["bash", "-c", "exec 3<>/dev/tcp/127.0.0.1/8080 && printf 'GET /healthz HTTP/1.0\\r\\n\\r\\n' >&3 && head -n 1 <&3 | grep -q ' 200 '"]
+STOPSIGNAL SIGTERM
+ENTRYPOINT ["/usr/local/bin/rulemesh"]
+CMD ["serve"]
