@@ -1,6 +1,9 @@
 //! Scale-out end to end: a real `redis-server` and two real `rulemesh serve`
 //! processes on loopback sharing it. `scripts/test` installs redis-server
-//! and sets `REDIS_REQUIRED=1`, so there this test never skips.
+//! and sets `REDIS_REQUIRED=1`, so there this test never skips. The
+//! container image and deployment files are checked in [`deploy`].
+
+mod deploy;
 
 use crate::common;
 use serde_json::json;
