@@ -1,4 +1,4 @@
--- Cache-busting renders: the same 400-sphere grammar as strips (about 19 ms
+-- Cache-busting renders: the same 400-sphere grammar as strips (about 17 ms
 -- of CPU each on this machine), every request with a seed never used
 -- before, so every one is a cache miss and a full pipeline run.
 dofile(os.getenv("LOAD_DIR") .. "/common.lua")
