@@ -39,6 +39,25 @@ pub fn weld<T: bytemuck::Pod>(vertices: &[T], indices: &[u32]) -> (Vec<T>, Vec<u
     (out, indices)
 }
 
+/// New vertex numbers in order of first use in `list` (`u32::MAX` for unused
+/// vertices) and the number used. Written out because the `meshopt` crate's
+/// `optimize_vertex_fetch_remap` truncates its table to the used count, which
+/// breaks lookups when an unused vertex precedes a used one.
+pub fn first_use_remap(list: &[u32], vertex_count: usize) -> (Vec<u32>, usize) {
+    let mut remap = vec![u32::MAX; vertex_count];
+    let mut used = 0usize;
+    for &i in list {
+        if let Some(r) = remap.get_mut(i as usize) {
+            if *r == u32::MAX {
+                // Fits: callers have fewer than u32::MAX vertices.
+                *r = used as u32;
+                used += 1;
+            }
+        }
+    }
+    (remap, used)
+}
+
 /// Orders a triangle list for the post-transform vertex cache and for
 /// stripification (`meshopt_optimizeVertexCacheStrip`), turns it into one
 /// strip index sequence with [`RESTART`] between strips (`meshopt_stripify`),
@@ -59,18 +78,16 @@ pub fn stripify<T: Copy + Default>(vertices: &[T], indices: &[u32]) -> (Vec<T>, 
     // would lose the model, so fall back to one strip per triangle.
     let strip = meshopt::stripify(&list, vertices.len(), RESTART)
         .unwrap_or_else(|_| list.chunks_exact(3).flat_map(|t| [t[0], t[1], t[2], RESTART]).collect());
-    // Vertex order = first use in the strip; unused vertices are dropped.
-    let mut remap = vec![RESTART; vertices.len()];
-    let mut out = Vec::new();
-    for &i in &strip {
-        if let Some(r) = remap.get_mut(i as usize) {
-            if *r == RESTART {
-                *r = out.len() as u32;
-                out.push(vertices[i as usize]);
-            }
+    // Vertex order = first use in the strip; unused vertices are dropped
+    // (the restart index is no vertex, so it stays unmapped).
+    let (remap, used) = first_use_remap(&strip, vertices.len());
+    let mut out = vec![T::default(); used];
+    for (v, &r) in vertices.iter().zip(&remap) {
+        if let Some(slot) = out.get_mut(r as usize) {
+            *slot = *v;
         }
     }
-    let strip = strip.iter().map(|&i| if i == RESTART { RESTART } else { remap[i as usize] }).collect();
+    let strip = strip.iter().map(|&i| if i == RESTART { RESTART } else { remap.get(i as usize).copied().unwrap_or(0) }).collect();
     (out, strip)
 }
 
