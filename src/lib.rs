@@ -10,6 +10,7 @@ pub mod export;
 pub mod eval;
 pub mod geom;
 pub mod lang;
+pub mod lsystem;
 pub mod pipeline;
 
 pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
