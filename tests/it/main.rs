@@ -11,4 +11,5 @@ mod docs;
 mod grammars;
 mod hostile;
 mod lines;
+mod lsystem;
 mod selectors;

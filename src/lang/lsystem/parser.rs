@@ -57,17 +57,22 @@ fn blank_comments(text: &str) -> Result<Vec<(char, Span)>, ParseError> {
             col += 1;
         }
     }
+    // `/` is also the roll symbol, so `//` and `/*` open a comment only at the
+    // start of a line or after whitespace, and `//` only before whitespace or
+    // the end of the line: `F//F` rolls twice, `F // note` is a comment.
     let mut i = 0;
     while i < out.len() {
         let next = out.get(i + 1).map(|c| c.0);
+        let after_space = i == 0 || out[i - 1].0.is_whitespace();
+        let before_space = !out.get(i + 2).is_some_and(|c| !c.0.is_whitespace());
         match (out[i].0, next) {
-            ('/', Some('/')) => {
+            ('/', Some('/')) if after_space && before_space => {
                 while i < out.len() && out[i].0 != '\n' {
                     out[i].0 = ' ';
                     i += 1;
                 }
             }
-            ('/', Some('*')) => {
+            ('/', Some('*')) if after_space => {
                 let start = out[i].1;
                 out[i].0 = ' ';
                 out[i + 1].0 = ' ';
@@ -94,13 +99,22 @@ fn blank_comments(text: &str) -> Result<Vec<(char, Span)>, ParseError> {
     Ok(out)
 }
 
-/// Splits into statements: a line, plus the indented lines that follow it.
+/// True when a line (already trimmed at the start) starts a statement of its own.
+fn starts_statement(line: &Chars) -> bool {
+    let word_len = line.iter().take_while(|c| is_ident(c.0)).count();
+    let word = text_of(&line[..word_len]);
+    let setting = SETTINGS.contains(&word.as_str()) && trim(&line[word_len..]).first().is_some_and(|c| c.0 == ':');
+    setting || line.first().is_some_and(|c| c.0 == '#') || find_top(line, "->").is_some()
+}
+
+/// Splits into statements: a line, plus the indented lines that follow it
+/// (an indented line that is itself a setting, directive or production starts a new one).
 fn split_statements(chars: &Chars) -> Result<Vec<Vec<(char, Span)>>, ParseError> {
     let mut out: Vec<Vec<(char, Span)>> = Vec::new();
     for line in chars.split(|c| c.0 == '\n') {
         let line: Vec<(char, Span)> = line.iter().copied().filter(|c| c.0 != '\r').collect();
         let Some(first) = line.iter().position(|c| !c.0.is_whitespace()) else { continue };
-        if first > 0 {
+        if first > 0 && !starts_statement(&line[first..]) {
             if let Some(prev) = out.last_mut() {
                 prev.push((' ', line[0].1));
                 prev.extend_from_slice(&line[first..]);
@@ -911,8 +925,8 @@ mod tests {
 
     #[test]
     fn comments_and_continuation_lines() {
-        let s = p("axiom: A // start\n/* block\n comment */ A -> F\n   [+A]\n");
-        assert_eq!(s.productions[0].successor.len(), 5);
+        let s = p("axiom: A // start\n/* block\n comment */ A -> F//F\n   [+A]\n");
+        assert_eq!(s.productions[0].successor.len(), 8);
     }
 
     #[test]
@@ -920,7 +934,7 @@ mod tests {
         assert!(e("axiom: F\nF -> F(1+)\n").starts_with("2:"), "{}", e("axiom: F\nF -> F(1+)\n"));
         assert!(e("axiom: F\nfoo: 3\n").contains("unknown setting"));
         assert!(e("F -> FF\n").contains("no `axiom:`"));
-        assert!(e("axiom: F\n  F(q) -> F(w)\n").contains("unknown name `w`"));
+        assert!(e("axiom: F\nF(q) -> F(w)\n").contains("unknown name `w`"));
         assert!(e("axiom: F\nA(x,x) -> F\n").contains("bound twice"));
         assert!(e("axiom: F\n/* open\n").contains("unterminated comment"));
         assert!(e("axiom: F(\n").contains("no matching"));
