@@ -291,3 +291,35 @@ fn primitive_shape_places_one_primitive_per_segment() {
     assert_eq!(out.primitives, 9);
     assert!(out.triangles > 0);
 }
+
+#[test]
+fn every_lsystem_example_in_the_docs_renders() {
+    let doc = std::fs::read_to_string(crate::common::repo().join("docs/lsystem.md")).expect("docs/lsystem.md");
+    let mut examples = Vec::new();
+    let mut current: Option<String> = None;
+    for line in doc.lines() {
+        match (&mut current, line.trim_end()) {
+            (None, "```ls") => current = Some(String::new()),
+            (Some(_), "```") => examples.extend(current.take()),
+            (Some(buf), l) => {
+                buf.push_str(l);
+                buf.push('\n');
+            }
+            (None, _) => {}
+        }
+    }
+    assert!(examples.len() >= 12, "only {} examples", examples.len());
+    let dir = tempdir();
+    let mut files = Vec::new();
+    for (i, src) in examples.iter().enumerate() {
+        let path = dir.path().join(format!("example-{i}.glb"));
+        let out = run(&["render", "-", "--language", "lsystem", "-o", path.to_str().expect("utf-8")], Some(src.as_bytes()));
+        assert!(out.status.success(), "example {i}:\n{src}\n{}", String::from_utf8_lossy(&out.stderr));
+        let summary = String::from_utf8_lossy(&out.stderr);
+        assert!(!summary.contains(" 0 primitives"), "example {i} draws something: {summary}");
+        files.push(path);
+    }
+    for (i, (errors, _, report)) in validate_gltf(&files).into_iter().enumerate() {
+        assert_eq!(errors, 0, "example {i}: {report}");
+    }
+}
