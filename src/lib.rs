@@ -6,12 +6,14 @@
 
 #![warn(missing_docs)]
 
+pub mod cache;
 pub mod export;
 pub mod eval;
 pub mod geom;
 pub mod lang;
 pub mod lsystem;
 pub mod pipeline;
+pub mod service;
 
 pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
 

@@ -4,7 +4,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use rulemesh::eval::{Limits, OnLimit, ParamValue};
-use rulemesh::export::Format;
+use rulemesh::export::{ExportOptions, Format, StripsOptions};
 use rulemesh::geom::{MeshLayout, DEFAULT_DETAIL};
 use rulemesh::lang::{Diagnostic, Language};
 use rulemesh::{render, RenderError, RenderRequest};
@@ -33,6 +33,31 @@ enum Command {
     Render(RenderArgs),
     /// Parse a grammar and print diagnostics as `file:line:col: message`, without evaluating.
     Check(CheckArgs),
+    /// Decode a `.strips` file (the reference decoder) and write it as glTF or STL.
+    Decode(DecodeArgs),
+    /// Run the HTTP and gRPC service (options also from `RULEMESH_*` variables).
+    Serve(ServeArgs),
+}
+
+#[derive(Args)]
+struct ServeArgs {
+    #[command(flatten)]
+    config: rulemesh::service::ServeConfig,
+    /// Log level: error, warn, info, debug or trace.
+    #[arg(long, env = "RULEMESH_LOG", default_value = "info")]
+    log: tracing_subscriber::filter::LevelFilter,
+}
+
+#[derive(Args)]
+struct DecodeArgs {
+    /// The `.strips` file, or `-` for standard input.
+    file: String,
+    /// Output file (format from its extension: .glb, .gltf, .stl), or `-` for standard output.
+    #[arg(short, long)]
+    output: String,
+    /// Output format (default: from the output extension, else glb).
+    #[arg(long, value_enum)]
+    format: Option<Format>,
 }
 
 #[derive(Args)]
@@ -84,6 +109,15 @@ struct RenderArgs {
     /// One merged mesh or one mesh per primitive kind.
     #[arg(long, value_enum, default_value = "merged")]
     layout: MeshLayout,
+    /// strips format: bits per position axis (8, 10, 12 or 16).
+    #[arg(long, default_value_t = StripsOptions::default().position_bits)]
+    position_bits: u8,
+    /// strips format: bits per octahedral normal component (8 or 16).
+    #[arg(long, default_value_t = StripsOptions::default().normal_bits)]
+    normal_bits: u8,
+    /// strips format: wrap the body in zstd (the JavaScript decoder cannot read it).
+    #[arg(long)]
+    zstd: bool,
 }
 
 #[derive(Args)]
@@ -112,6 +146,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Render(args) => run_render(args),
         Command::Check(args) => run_check(args),
+        Command::Decode(args) => run_decode(args),
+        Command::Serve(args) => run_serve(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -183,6 +219,9 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
         on_limit: args.on_limit,
         detail: args.detail,
         layout: args.layout,
+        export_options: ExportOptions {
+            strips: StripsOptions { position_bits: args.position_bits, normal_bits: args.normal_bits, zstd: args.zstd },
+        },
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;
     let out = render(&source, &req).map_err(|e| render_failure(&args.file, e))?;
@@ -247,4 +286,48 @@ fn run_check(args: CheckArgs) -> Result<(), Failure> {
         }
         Err(e) => Err(render_failure(&args.file, e)),
     }
+}
+
+/// Largest `.strips` file `decode` reads (a phone icon is a few kilobytes).
+const MAX_STRIPS_BYTES: u64 = 1 << 30;
+
+fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
+    let format = args
+        .format
+        .or_else(|| (args.output != "-").then(|| Format::from_extension(Path::new(&args.output))).flatten())
+        .unwrap_or(Format::Glb);
+    let bytes = read_source(&args.file, MAX_STRIPS_BYTES)?;
+    if bytes.len() as u64 > MAX_STRIPS_BYTES {
+        return Err(Failure::new(EXIT_USAGE, format!("{}: larger than {MAX_STRIPS_BYTES} bytes", args.file)));
+    }
+    let mesh = rulemesh::export::decode_strips(&bytes).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
+    let triangles = mesh.triangle_count();
+    let meshes = [rulemesh::geom::NamedMesh { name: "model".into(), mesh }];
+    let limits = Limits::ceiling();
+    let out = rulemesh::export::export(format, &meshes, &Default::default(), &mut rulemesh::eval::Budget::new(limits))
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
+    write_output(&args.output, &out)?;
+    eprintln!("{}: {} triangles, {} bytes ({:?})", args.file, triangles, out.len(), format);
+    Ok(())
+}
+
+fn run_serve(args: ServeArgs) -> Result<(), Failure> {
+    use std::io::IsTerminal;
+    tracing_subscriber::fmt()
+        .with_max_level(args.log)
+        .with_target(false)
+        .with_ansi(std::io::stderr().is_terminal())
+        .with_writer(std::io::stderr)
+        .init();
+    let config = args.config;
+    // The blocking pool only runs renders, which the engine already limits to
+    // `concurrency`; a few spare threads cover moka and file work.
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .max_blocking_threads(config.concurrency() + 4)
+        .build()
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("cannot start the runtime: {e}")))?;
+    runtime
+        .block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()))
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
 }

@@ -4,9 +4,9 @@
 //! request gives the same bytes whichever front door it came through.
 
 use crate::eval::{self, bind_params, Budget, EvalError, EvalOptions, LimitExceeded, Limits, OnLimit, ParamValue};
-use crate::export::{self, ExportError, ExportMeta, Format};
-use crate::geom::{self, primitives, MeshLayout};
-use crate::lang::{self, ir::PrimitiveKind, Diagnostic, Language, ParseError};
+use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format};
+use crate::geom::{self, MeshLayout};
+use crate::lang::{self, Diagnostic, Language, ParseError};
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
@@ -29,6 +29,9 @@ pub struct RenderRequest {
     pub detail: u32,
     /// One merged mesh or one per primitive kind.
     pub layout: MeshLayout,
+    /// Encoding options of the output format (e.g. strips precision); they
+    /// reach the exporter only.
+    pub export_options: ExportOptions,
 }
 
 impl Default for RenderRequest {
@@ -42,6 +45,7 @@ impl Default for RenderRequest {
             on_limit: OnLimit::Error,
             detail: geom::DEFAULT_DETAIL,
             layout: MeshLayout::Merged,
+            export_options: ExportOptions::default(),
         }
     }
 }
@@ -155,6 +159,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
             req.detail
         )));
     }
+    if req.format == Format::Strips {
+        req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
+    }
     if req.language.or_else(|| Language::detect(source)) == Some(Language::Lsystem) {
         return crate::lsystem::render(source, req);
     }
@@ -176,11 +183,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         seed: req.seed,
         detail: req.detail,
         on_limit: req.on_limit,
-        downstream_bytes: downstream_bytes(req),
-        line_point_bytes: {
-            let (v, t) = geom::sweep::per_point_bound(req.detail);
-            geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
-        },
+        downstream: downstream(req, overhead),
     };
     let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
     lap(&mut phases.eval);
@@ -190,7 +193,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
     lap(&mut phases.mesh);
     let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
-    let bytes = export::export(req.format, &meshes, &meta, &mut budget)?;
+    let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
     lap(&mut phases.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     Ok(RenderOutput {
@@ -215,11 +218,12 @@ fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene
     }
 }
 
-/// Bytes the mesh buffers and the encoded output need per primitive of each kind.
-fn downstream_bytes(req: &RenderRequest) -> [u64; 9] {
-    let overhead = export::estimated_size(req.format, 0, 0);
-    PrimitiveKind::ALL.map(|k| {
-        let (v, t) = (primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail));
-        crate::geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
-    })
+/// Bytes the mesh buffers and the encoded output need per vertex and per
+/// triangle (both are linear in the counts beyond a fixed overhead).
+fn downstream(req: &RenderRequest, overhead: u64) -> eval::Downstream {
+    let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
+    eval::Downstream {
+        per_vertex: crate::geom::meshing::mesh_bytes(1, 0).saturating_add(est(1, 0)),
+        per_triangle: crate::geom::meshing::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+    }
 }

@@ -9,11 +9,15 @@
 use super::budget::{Budget, OnLimit};
 use super::frame::Frame;
 use super::rng::StreamKey;
-use super::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
+use super::scene::{FreeVertex, Instance, LinePoint, Polyline, Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES};
 use super::EvalError;
-use crate::geom::primitives;
+use crate::geom::{primitives, sweep};
 use crate::lang::expr::{Expr, ExprEnv};
-use crate::lang::ir::{Adjust, AdjustOp, Axis, GroupId, Item, Iterate, LineOp, Program, Rule, RuleGroup, Selector, Target};
+use crate::lang::ir::{
+    Adjust, AdjustOp, Axis, GroupId, Item, Iterate, LineOp, PrimitiveKind, Program, Rule, RuleGroup, RuleTransform, Selector, Target,
+};
+use std::collections::HashMap;
+use std::rc::Rc;
 use crate::lang::Span;
 use glam::{DQuat, DVec3};
 
@@ -54,6 +58,8 @@ enum Task<'p> {
     Items { items: &'p [Item], next: usize, ctx: Ctx },
     /// Produce copies `k..=count` of an iterator body; `current` is copy k's frame and colour.
     Copies { it: &'p Iterate, k: u64, count: u64, step: Delta, current: Ctx, base_key: StreamKey },
+    /// Run a convolved rule's body once per path frame, from `frames[i..]`.
+    Convolve { body: &'p [Item], frames: Rc<Vec<Frame>>, i: usize, ctx: Ctx },
 }
 
 /// Bytes charged per stack slot (the task enum is at most this big).
@@ -147,16 +153,19 @@ struct Evaluator<'p> {
     cumulative: Vec<Vec<f64>>,
     /// Triangles per primitive kind at the requested detail.
     tris: [u64; 9],
+    /// Bytes later stages need per primitive of each kind.
     downstream: [u64; 9],
-    /// Upper bound of the triangles one line point adds.
-    line_triangles: u64,
-    /// Bytes later stages need per line point.
-    line_downstream: u64,
+    cost: Downstream,
+    detail: u32,
     maxiter: u64,
 }
 
 /// Evaluation slot reserved for rule selection (never a `rand()` site).
 const SELECT_SLOT: u32 = u32::MAX;
+/// Stream slot for the copies of a convolved rule.
+const CONVOLVE_SLOT: u32 = u32::MAX - 1;
+/// Stream slot for path and profile rules.
+const CAPTURE_SLOT: u32 = u32::MAX - 2;
 
 impl<'p> Evaluator<'p> {
     fn new(program: &'p Program, params: &'p [f64], options: &EvalOptions) -> Result<Self, EvalError> {
@@ -179,7 +188,7 @@ impl<'p> Evaluator<'p> {
             })
             .collect();
         let mut tris = [0u64; 9];
-        for k in crate::lang::ir::PrimitiveKind::ALL {
+        for k in PrimitiveKind::ALL {
             tris[k as usize] = primitives::triangle_count(k, detail);
         }
         Ok(Evaluator {
@@ -188,9 +197,11 @@ impl<'p> Evaluator<'p> {
             fixed,
             cumulative,
             tris,
-            downstream: options.downstream_bytes,
-            line_triangles: crate::geom::sweep::per_point_bound(detail).1,
-            line_downstream: options.line_point_bytes,
+            downstream: PrimitiveKind::ALL.map(|k| {
+                options.downstream.bytes(primitives::vertex_count(k, detail), primitives::triangle_count(k, detail))
+            }),
+            cost: options.downstream,
+            detail,
             maxiter: program.directives.maxiter.unwrap_or(u64::MAX),
         })
     }
@@ -263,29 +274,55 @@ pub struct EvalOptions {
     /// Fail or truncate when a limit runs out.
     pub on_limit: OnLimit,
     /// Bytes that later stages (mesh buffers, encoded output) will need per
-    /// primitive of each kind, indexed by `PrimitiveKind as usize`. Charged to
-    /// the memory budget as each primitive is made, so memory binds during
-    /// evaluation (and truncation keeps a prefix that will fit) instead of
-    /// after a scene too big to mesh has been built. The caller releases the
-    /// promise with [`promised_bytes`] before meshing.
-    pub downstream_bytes: [u64; 9],
-    /// Like `downstream_bytes`, per point of a swept line.
-    pub line_point_bytes: u64,
+    /// output vertex and per output triangle. Charged to the memory budget as
+    /// geometry is made, so memory binds during evaluation (and truncation
+    /// keeps a prefix that will fit) instead of after a scene too big to mesh
+    /// has been built. The caller releases the promise with
+    /// [`promised_bytes`] before meshing.
+    pub downstream: Downstream,
+}
+
+/// The cost of one output vertex and one output triangle in later stages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Downstream {
+    /// Bytes per vertex.
+    pub per_vertex: u64,
+    /// Bytes per triangle.
+    pub per_triangle: u64,
+}
+
+impl Downstream {
+    /// Bytes for `v` vertices and `t` triangles.
+    pub fn bytes(&self, v: u64, t: u64) -> u64 {
+        v.saturating_mul(self.per_vertex).saturating_add(t.saturating_mul(self.per_triangle))
+    }
 }
 
 /// The memory promised for later stages by `scene`'s instances under `options`.
 pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
-    let points: u64 = scene.lines.iter().map(|l| l.points.len() as u64).sum();
-    scene
-        .instances
-        .iter()
-        .fold(0u64, |acc, i| acc.saturating_add(options.downstream_bytes[i.kind as usize]))
-        .saturating_add(points.saturating_mul(options.line_point_bytes))
+    let d = &options.downstream;
+    let instances = scene.instances.iter().fold(0u64, |acc, i| {
+        acc.saturating_add(d.bytes(primitives::vertex_count(i.kind, options.detail), primitives::triangle_count(i.kind, options.detail)))
+    });
+    let lines = scene.lines.iter().fold(0u64, |acc, l| {
+        let n = line_sides(scene, l.profile, options.detail);
+        let (v, t) = sweep::per_point_bound(n);
+        acc.saturating_add(d.bytes(v, t).saturating_mul(l.points.len() as u64))
+    });
+    let vertices = d.bytes(1, 1).saturating_mul(scene.vertices.len() as u64);
+    instances.saturating_add(lines).saturating_add(vertices)
+}
+
+/// Sides of a line's cross-section: its profile's point count, or the default tube's.
+fn line_sides(scene: &Scene, profile: Option<u32>, detail: u32) -> u64 {
+    profile
+        .and_then(|p| scene.profiles.get(p as usize))
+        .map_or_else(|| sweep::profile_sides(detail), |p| p.len() as u64)
 }
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream_bytes: [0; 9], line_point_bytes: 0 }
+        EvalOptions { seed: None, detail: crate::geom::DEFAULT_DETAIL, on_limit: OnLimit::Error, downstream: Downstream::default() }
     }
 }
 
@@ -298,18 +335,9 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
         ..Scene::default()
     };
     let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed) };
-    let mut m = Machine {
-        sequence: vec![0; program.groups.len()],
-        ev,
-        stack: Vec::new(),
-        charged_slots: 0,
-        scene,
-        budget,
-        last_terminal: None,
-        pen: Pen { start: Frame::IDENTITY, lifted: false, moveto: Frame::IDENTITY, open: None },
-    };
-    let result = m.run(root);
-    m.budget.release_memory(m.charged_slots * TASK_BYTES);
+    let mut m = Machine::new(&ev, budget, scene, None, root.key);
+    let result = m.run(ev.program.start, root);
+    m.release();
     let mut scene = m.scene;
     match result {
         Ok(()) => Ok(scene),
@@ -323,7 +351,7 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
 
 /// The mutable state of one evaluation.
 struct Machine<'p, 'b> {
-    ev: Evaluator<'p>,
+    ev: &'b Evaluator<'p>,
     /// Pending work, depth-first (last pushed runs first).
     stack: Vec<Task<'p>>,
     /// Stack slots already charged to the memory budget (the peak so far).
@@ -336,6 +364,26 @@ struct Machine<'p, 'b> {
     last_terminal: Option<Frame>,
     /// The swept-line pen.
     pen: Pen,
+    /// Set while evaluating a path or profile rule: `FRAME` and `VERTEX` are collected here.
+    capture: Option<Capture>,
+    /// Paths and profiles already evaluated, by group.
+    captured: HashMap<GroupId, Rc<Capture>>,
+    /// Scene profile index of each profile group (`None`: it made no usable profile).
+    profile_index: HashMap<GroupId, Option<u32>>,
+    /// The evaluation's root stream key (paths derive their own from it).
+    root_key: StreamKey,
+}
+
+/// What a path or profile rule emitted.
+#[derive(Debug, Default)]
+struct Capture {
+    /// Stop once this many frames are captured (animation paths may recurse
+    /// forever; only their first frames are needed).
+    frame_limit: Option<usize>,
+    /// `FRAME {}` frames, in order.
+    frames: Vec<Frame>,
+    /// `VERTEX {}` positions, in order.
+    vertices: Vec<DVec3>,
 }
 
 /// Where the pen of swept lines is (one pen: namespaces come later).
@@ -352,15 +400,41 @@ struct Pen {
     open: Option<usize>,
 }
 
-impl<'p> Machine<'p, '_> {
-    fn run(&mut self, root: Ctx) -> Result<(), EvalError> {
-        self.expand(self.ev.program.start, root)?;
+impl<'p, 'b> Machine<'p, 'b> {
+    fn new(ev: &'b Evaluator<'p>, budget: &'b mut Budget, scene: Scene, capture: Option<Capture>, root_key: StreamKey) -> Self {
+        Machine {
+            sequence: vec![0; ev.program.groups.len()],
+            ev,
+            stack: Vec::new(),
+            charged_slots: 0,
+            scene,
+            budget,
+            last_terminal: None,
+            pen: Pen { start: Frame::IDENTITY, lifted: false, moveto: Frame::IDENTITY, open: None },
+            capture,
+            captured: HashMap::new(),
+            profile_index: HashMap::new(),
+            root_key,
+        }
+    }
+
+    /// Returns the stack's memory to the budget.
+    fn release(&mut self) {
+        self.budget.release_memory(self.charged_slots * TASK_BYTES);
+        self.charged_slots = 0;
+    }
+
+    fn run(&mut self, start: Target, root: Ctx) -> Result<(), EvalError> {
+        self.expand(start, root)?;
         loop {
             // Charge the stack's peak size before it can grow further.
             let needed = self.stack.len() as u64 + 2;
             if needed > self.charged_slots {
                 self.budget.reserve_memory((needed - self.charged_slots) * TASK_BYTES)?;
                 self.charged_slots = needed;
+            }
+            if self.capture.as_ref().is_some_and(|c| c.frame_limit.is_some_and(|l| c.frames.len() >= l)) {
+                return Ok(());
             }
             let Some(task) = self.stack.pop() else { return Ok(()) };
             match task {
@@ -386,6 +460,15 @@ impl<'p> Machine<'p, '_> {
                     }
                     let ctx = Ctx { key: base_key.child(it.site, k), ..current };
                     self.run_item(&it.body, ctx)?;
+                }
+                Task::Convolve { body, frames, i, ctx } => {
+                    self.budget.charge_step()?;
+                    let Some(f) = frames.get(i) else { continue };
+                    let here = Ctx { frame: ctx.frame.then(f), key: ctx.key.child(CONVOLVE_SLOT, i as u64), ..ctx };
+                    if i + 1 < frames.len() {
+                        self.stack.push(Task::Convolve { body, frames, i: i + 1, ctx });
+                    }
+                    self.stack.push(Task::Items { items: body, next: 0, ctx: here });
                 }
             }
         }
@@ -451,6 +534,15 @@ impl<'p> Machine<'p, '_> {
     /// Runs a call's target in `ctx` (already adjusted, depth already increased).
     fn expand(&mut self, target: Target, ctx: Ctx) -> Result<(), EvalError> {
         match target {
+            Target::Primitive(_) | Target::Line(..) if self.capture.is_some() => {
+                // Path and profile rules emit frames and vertices only.
+                self.budget.charge_step()?;
+                Ok(())
+            }
+            Target::Vertex | Target::Frame | Target::FaceNormals => {
+                self.budget.charge_step()?;
+                self.special(target, &ctx)
+            }
             Target::Primitive(kind) => {
                 self.budget.charge_step()?;
                 self.budget.charge_primitive(self.ev.tris[kind as usize])?;
@@ -467,9 +559,9 @@ impl<'p> Machine<'p, '_> {
                 self.last_terminal = Some(ctx.frame);
                 Ok(())
             }
-            Target::Line(op) => {
+            Target::Line(op, profile) => {
                 self.budget.charge_step()?;
-                self.draw_line(op, &ctx)
+                self.draw_line(op, profile, &ctx)
             }
             Target::Group(g) => {
                 let dirs = &self.ev.program.directives;
@@ -480,8 +572,27 @@ impl<'p> Machine<'p, '_> {
                 self.budget.charge_step()?;
                 let Some(group) = self.ev.program.groups.get(g as usize) else { return Ok(()) };
                 let Some(rule) = self.select(g, group, &ctx)? else { return Ok(()) };
-                if !rule.body.is_empty() {
-                    self.stack.push(Task::Items { items: &rule.body, next: 0, ctx });
+                if rule.body.is_empty() {
+                    return Ok(());
+                }
+                match &rule.transform {
+                    RuleTransform::None => self.stack.push(Task::Items { items: &rule.body, next: 0, ctx }),
+                    RuleTransform::Convolve(paths) => {
+                        let frames = self.convolved(paths)?;
+                        if !frames.is_empty() {
+                            self.stack.push(Task::Convolve { body: &rule.body, frames, i: 0, ctx });
+                        }
+                    }
+                    RuleTransform::Animate(paths) => {
+                        // Static output: the animation at time 0.
+                        let mut frame = ctx.frame;
+                        for &p in paths {
+                            if let Some(f) = self.capture_group(p, Some(1))?.frames.first() {
+                                frame = frame.then(f);
+                            }
+                        }
+                        self.stack.push(Task::Items { items: &rule.body, next: 0, ctx: Ctx { frame, ..ctx } });
+                    }
                 }
                 Ok(())
             }
@@ -489,7 +600,7 @@ impl<'p> Machine<'p, '_> {
     }
 
     /// Moves the pen (seed 000 §4.3): every operation is a terminal for continuation.
-    fn draw_line(&mut self, op: LineOp, ctx: &Ctx) -> Result<(), EvalError> {
+    fn draw_line(&mut self, op: LineOp, profile: Option<GroupId>, ctx: &Ctx) -> Result<(), EvalError> {
         let frame = ctx.frame;
         match op {
             LineOp::MoveTo => {
@@ -517,15 +628,20 @@ impl<'p> Machine<'p, '_> {
                 let open = match self.pen.open {
                     Some(i) => i,
                     None => {
+                        let profile = match profile.or(self.ev.program.directives.linerule) {
+                            Some(g) => self.profile(g)?,
+                            None => None,
+                        };
                         let start = LinePoint { frame: self.pen.start, colour };
-                        self.charge_line_point()?;
-                        self.scene.lines.push(Polyline { points: vec![start] });
+                        self.charge_line_point(profile)?;
+                        self.scene.lines.push(Polyline { points: vec![start], profile });
                         let i = self.scene.lines.len() - 1;
                         self.pen.open = Some(i);
                         i
                     }
                 };
-                self.charge_line_point()?;
+                let line_profile = self.scene.lines.get(open).and_then(|l| l.profile);
+                self.charge_line_point(line_profile)?;
                 let Some(line) = self.scene.lines.get_mut(open) else { return Ok(()) };
                 let mut point = LinePoint { frame, colour };
                 if op == LineOp::SLineTo {
@@ -539,10 +655,108 @@ impl<'p> Machine<'p, '_> {
     }
 
     /// Charges one more line point: its storage, and the mesh and output it will become.
-    fn charge_line_point(&mut self) -> Result<(), EvalError> {
-        self.budget.charge_triangles(self.ev.line_triangles)?;
-        self.budget.reserve_memory(LINE_POINT_BYTES.saturating_add(self.ev.line_downstream))?;
+    fn charge_line_point(&mut self, profile: Option<u32>) -> Result<(), EvalError> {
+        let (v, t) = sweep::per_point_bound(line_sides(&self.scene, profile, self.ev.detail));
+        self.budget.charge_triangles(t)?;
+        self.budget.reserve_memory(LINE_POINT_BYTES.saturating_add(self.ev.cost.bytes(v, t)))?;
         Ok(())
+    }
+
+    /// `VERTEX`, `FACENORMALS` and `FRAME`.
+    fn special(&mut self, target: Target, ctx: &Ctx) -> Result<(), EvalError> {
+        let frame_bytes = std::mem::size_of::<Frame>() as u64;
+        if let Some(capture) = &mut self.capture {
+            match target {
+                Target::Vertex => {
+                    self.budget.reserve_memory(24)?;
+                    capture.vertices.push(ctx.frame.translation);
+                }
+                Target::Frame => {
+                    self.budget.reserve_memory(frame_bytes)?;
+                    capture.frames.push(ctx.frame);
+                }
+                _ => {}
+            }
+            return Ok(());
+        }
+        match target {
+            Target::Vertex => {
+                let vertices = self.scene.vertices.len() as u64 + 1;
+                if vertices % 3 == 0 {
+                    self.budget.charge_triangles(1)?;
+                }
+                self.budget.reserve_memory(FREE_VERTEX_BYTES.saturating_add(self.ev.cost.bytes(1, 1)))?;
+                let local = self.ev.program.directives.normal.map_or(DVec3::Z, DVec3::from_array);
+                let mut colour = ctx.colour;
+                colour[3] += 1.0;
+                self.scene.vertices.push(FreeVertex {
+                    position: ctx.frame.translation,
+                    normal: ctx.frame.transform_normal(local).normalize_or_zero(),
+                    colour: colour.map(|c| c.clamp(0.0, 1.0) as f32),
+                });
+                self.last_terminal = Some(ctx.frame);
+            }
+            Target::FaceNormals => {
+                let n = self.scene.vertices.len();
+                if n >= 3 {
+                    let v = &mut self.scene.vertices[n - 3..];
+                    // A degenerate triangle has no face normal: keep the vertex normals.
+                    if let Some(face) = (v[1].position - v[0].position).cross(v[2].position - v[0].position).try_normalize() {
+                        for x in v {
+                            x.normal = face;
+                        }
+                    }
+                }
+            }
+            // A FRAME outside a path (animation, cameras) does not draw.
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// Evaluates a path or profile rule from the identity frame, once per evaluation.
+    fn capture_group(&mut self, g: GroupId, frame_limit: Option<usize>) -> Result<Rc<Capture>, EvalError> {
+        if let Some(c) = self.captured.get(&g).filter(|c| c.frame_limit.is_none() || c.frame_limit == frame_limit) {
+            return Ok(Rc::clone(c));
+        }
+        let key = self.root_key.child(CAPTURE_SLOT, u64::from(g));
+        let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key };
+        let capture = Capture { frame_limit, ..Capture::default() };
+        let mut sub = Machine::new(self.ev, &mut *self.budget, Scene::default(), Some(capture), self.root_key);
+        let result = sub.run(Target::Group(g), root);
+        sub.release();
+        result?;
+        let c = Rc::new(sub.capture.take().unwrap_or_default());
+        self.captured.insert(g, Rc::clone(&c));
+        Ok(c)
+    }
+
+    /// The frames of a convolved rule: frame i of the first path composed with
+    /// frame i of each further path, as many as the shortest path has.
+    fn convolved(&mut self, paths: &[GroupId]) -> Result<Rc<Vec<Frame>>, EvalError> {
+        let captures = paths.iter().map(|&p| self.capture_group(p, None)).collect::<Result<Vec<_>, _>>()?;
+        let n = captures.iter().map(|c| c.frames.len()).min().unwrap_or(0);
+        self.budget.reserve_memory((n as u64).saturating_mul(std::mem::size_of::<Frame>() as u64))?;
+        let frames = (0..n)
+            .map(|i| captures.iter().skip(1).fold(captures[0].frames[i], |f, c| f.then(&c.frames[i])))
+            .collect();
+        Ok(Rc::new(frames))
+    }
+
+    /// The scene profile made by profile rule `g` (its `VERTEX` points), if it made one.
+    fn profile(&mut self, g: GroupId) -> Result<Option<u32>, EvalError> {
+        if let Some(p) = self.profile_index.get(&g) {
+            return Ok(*p);
+        }
+        let points = self.capture_group(g, None)?.vertices.clone();
+        let index = if points.len() >= 3 {
+            self.scene.profiles.push(points);
+            Some((self.scene.profiles.len() - 1) as u32)
+        } else {
+            None
+        };
+        self.profile_index.insert(g, index);
+        Ok(index)
     }
 
     /// Picks the alternative of `group` that a call in `ctx` runs, if any.
@@ -634,7 +848,7 @@ mod tests {
     }
 
     fn single(body: Vec<Item>) -> RuleGroup {
-        RuleGroup { name: "A".into(), rules: vec![Rule { weight: 1.0, body, span: Span::new(1, 1) }], selector: Selector::Random }
+        RuleGroup { name: "A".into(), rules: vec![Rule { weight: 1.0, transform: RuleTransform::None, body, span: Span::new(1, 1) }], selector: Selector::Random }
     }
 
     fn run(p: &Program, limits: Limits, on_limit: OnLimit) -> Result<Scene, EvalError> {
@@ -695,8 +909,8 @@ mod tests {
         let b = RuleGroup {
             name: "B".into(),
             rules: vec![
-                Rule { weight: 1.0, body: vec![call(BOX, vec![], 2)], span: Span::new(1, 1) },
-                Rule { weight: 3.0, body: vec![call(Target::Primitive(PrimitiveKind::Sphere), vec![], 3)], span: Span::new(1, 1) },
+                Rule { weight: 1.0, transform: RuleTransform::None, body: vec![call(BOX, vec![], 2)], span: Span::new(1, 1) },
+                Rule { weight: 3.0, transform: RuleTransform::None, body: vec![call(Target::Primitive(PrimitiveKind::Sphere), vec![], 3)], span: Span::new(1, 1) },
             ],
             selector: Selector::Random,
         };

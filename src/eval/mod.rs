@@ -9,7 +9,7 @@ pub mod rng;
 pub mod scene;
 
 pub use budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
-pub use evaluator::{evaluate, promised_bytes, EvalOptions};
+pub use evaluator::{evaluate, promised_bytes, Downstream, EvalOptions};
 pub use frame::Frame;
 pub use params::{bind_params, ParamValue};
 pub use scene::{Instance, Scene};

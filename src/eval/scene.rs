@@ -66,7 +66,23 @@ pub struct LinePoint {
 pub struct Polyline {
     /// The pen positions in drawing order; n points make n − 1 segments.
     pub points: Vec<LinePoint>,
+    /// Index into [`Scene::profiles`] of the cross-section; `None` is the default round tube.
+    pub profile: Option<u32>,
 }
+
+/// A free vertex from `VERTEX {}`: every three consecutive ones make a triangle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FreeVertex {
+    /// World position.
+    pub position: glam::DVec3,
+    /// World unit normal.
+    pub normal: glam::DVec3,
+    /// Linear RGBA, each clamped to [0, 1].
+    pub colour: [f32; 4],
+}
+
+/// Bytes accounted per stored free vertex.
+pub const FREE_VERTEX_BYTES: u64 = std::mem::size_of::<FreeVertex>() as u64;
 
 /// Bytes accounted per stored line point (for the memory budget).
 pub const LINE_POINT_BYTES: u64 = std::mem::size_of::<LinePoint>() as u64;
@@ -78,6 +94,10 @@ pub struct Scene {
     pub instances: Vec<Instance>,
     /// Swept lines from MOVETO/LINETO/SLINETO, in drawing order.
     pub lines: Vec<Polyline>,
+    /// Line cross-sections from profile rules: points in the profile's local frame.
+    pub profiles: Vec<Vec<glam::DVec3>>,
+    /// Free vertices from `VERTEX {}` outside profile rules.
+    pub vertices: Vec<FreeVertex>,
     /// Clear colour from `background`, if the grammar set one.
     pub background: Option<[f32; 4]>,
     /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.

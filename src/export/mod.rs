@@ -2,6 +2,9 @@
 
 pub mod gltf;
 pub mod stl;
+pub mod strips;
+
+pub use strips::{decode_strips, StripsError, StripsOptions};
 
 use crate::eval::budget::{Budget, LimitExceeded};
 use crate::geom::NamedMesh;
@@ -18,6 +21,9 @@ pub enum Format {
     Stl,
     /// ASCII STL.
     StlAscii,
+    /// rulemesh's compact triangle-strip format for phone clients
+    /// (`docs/strips-format.md`): quantised, stripified and compressed.
+    Strips,
 }
 
 impl Format {
@@ -27,6 +33,7 @@ impl Format {
             "glb" => Some(Format::Glb),
             "gltf" => Some(Format::Gltf),
             "stl" => Some(Format::Stl),
+            "strips" => Some(Format::Strips),
             _ => None,
         }
     }
@@ -37,6 +44,18 @@ impl Format {
             Format::Glb => "model/gltf-binary",
             Format::Gltf => "model/gltf+json",
             Format::Stl | Format::StlAscii => "model/stl",
+            Format::Strips => "application/vnd.rulemesh.strips",
+        }
+    }
+
+    /// The usual file extension (without the dot), so front ends can name outputs.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Glb => "glb",
+            Format::Gltf => "gltf",
+            Format::Stl => "stl",
+            Format::StlAscii => "stl",
+            Format::Strips => "strips",
         }
     }
 }
@@ -75,14 +94,44 @@ pub enum ExportError {
         /// What is wrong with it.
         detail: String,
     },
+    /// The format options of the request are out of range (e.g. 7-bit positions).
+    #[error("invalid {format} options: {detail}")]
+    InvalidOptions {
+        /// The format's name.
+        format: &'static str,
+        /// What is wrong.
+        detail: String,
+    },
     /// JSON serialisation failed.
     #[error("serialising glTF JSON: {0}")]
     Json(#[from] serde_json::Error),
 }
 
-/// Writes `meshes` in `format`, reserving the output size in `budget` first.
+/// Per-format encoding options of a request. They travel with the request
+/// to the exporter only: the parser and evaluator never see them, so they
+/// cannot change the model, only its encoding.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub struct ExportOptions {
+    /// Precision and compression of the `strips` format.
+    pub strips: StripsOptions,
+}
+
+/// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
 pub fn export(format: Format, meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    export_with(format, meshes, meta, &ExportOptions::default(), budget)
+}
+
+/// Writes `meshes` in `format` with the request's format options, reserving
+/// the output size in `budget` first.
+pub fn export_with(
+    format: Format,
+    meshes: &[NamedMesh],
+    meta: &ExportMeta,
+    options: &ExportOptions,
+    budget: &mut Budget,
+) -> Result<Vec<u8>, ExportError> {
     match format {
+        Format::Strips => strips::write_strips(meshes, &options.strips, budget),
         Format::Glb => gltf::write_glb(meshes, meta, budget),
         Format::Gltf => gltf::write_gltf(meshes, meta, budget),
         Format::Stl => stl::write_binary(meshes, budget),
@@ -100,6 +149,11 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
         Format::Gltf => (64 * 1024, 38, 16),
         Format::Stl => (84, 0, 50),
         Format::StlAscii => (1024, 0, 300),
+        // Header, CRC and palette, plus meshoptimizer's worst cases: a vertex
+        // block costs at most 4164 bytes per 256 16-byte vertices (and one
+        // partial block), a strip at most 5 indices per triangle at 5 bytes
+        // each; zstd's worst-case growth fits in the per-vertex slack.
+        Format::Strips => (16 * 1024, 20, 25),
     };
     vertices
         .saturating_mul(per_vertex)
@@ -155,7 +209,9 @@ mod tests {
         let mut gltf_files = Vec::new();
         for (name, meshes, meta) in samples() {
             let (v, t) = counts(&meshes);
-            for (format, ext) in [(Format::Glb, "glb"), (Format::Gltf, "gltf"), (Format::Stl, "stl"), (Format::StlAscii, "ascii.stl")] {
+            for (format, ext) in
+                [(Format::Glb, "glb"), (Format::Gltf, "gltf"), (Format::Stl, "stl"), (Format::StlAscii, "ascii.stl"), (Format::Strips, "strips")]
+            {
                 let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
                 assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());
                 let path = dir.join(format!("{name}.{ext}"));

@@ -12,7 +12,7 @@
 use super::primitives::{self, Prototype};
 use super::{Mesh, NamedMesh};
 use crate::eval::budget::{Budget, Limit, LimitExceeded};
-use crate::eval::scene::{Instance, Scene};
+use crate::eval::scene::{FreeVertex, Instance, Scene};
 use crate::lang::ir::PrimitiveKind;
 use glam::Vec3;
 
@@ -62,10 +62,32 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
         build_instance_meshes(scene, detail, layout, &present, budget, &mut meshes)?;
     }
     // Swept lines are their own mesh in either layout.
-    if let Some(mesh) = super::sweep::sweep_lines(&scene.lines, detail, budget)? {
+    if let Some(mesh) = super::sweep::sweep_lines(&scene.lines, &scene.profiles, detail, budget)? {
         meshes.push(NamedMesh { name: "lines".to_string(), mesh });
     }
+    if let Some(mesh) = free_triangles(&scene.vertices, budget)? {
+        meshes.push(NamedMesh { name: "vertices".to_string(), mesh });
+    }
     Ok(meshes)
+}
+
+/// Triangles from free `VERTEX` calls: every three consecutive vertices, in
+/// the order and winding the grammar gave (a trailing one or two are dropped).
+fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+    let t = vertices.len() / 3;
+    if t == 0 {
+        return Ok(None);
+    }
+    budget.reserve_memory(mesh_bytes(3 * t as u64, t as u64))?;
+    let used = &vertices[..3 * t];
+    let mesh = Mesh {
+        positions: used.iter().map(|v| v.position.as_vec3().to_array()).collect(),
+        normals: used.iter().map(|v| v.normal.as_vec3().to_array()).collect(),
+        colours: used.iter().map(|v| v.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8)).collect(),
+        // Fits: the vertex budget keeps counts far below u32::MAX.
+        indices: (0..3 * t as u32).collect(),
+    };
+    Ok(Some(mesh))
 }
 
 fn build_instance_meshes(

@@ -4,6 +4,7 @@
 pub mod mesh;
 pub mod meshing;
 pub mod primitives;
+pub mod strip;
 pub mod sweep;
 
 pub use mesh::{Mesh, NamedMesh};

@@ -24,21 +24,39 @@ pub fn profile_sides(detail: u32) -> u64 {
 }
 
 /// Upper bounds on the vertices and triangles one more point can add to a
-/// line (its ring and strip, plus the two caps counted on every point), so the
-/// evaluator can charge the budget as points are drawn.
-pub fn per_point_bound(detail: u32) -> (u64, u64) {
-    let n = profile_sides(detail);
+/// line with an `n`-sided profile (its ring and strip, plus the two caps
+/// counted on every point), so the evaluator can charge the budget as points
+/// are drawn.
+pub fn per_point_bound(n: u64) -> (u64, u64) {
     (n + 2 * (n + 1), 2 * n + 2 * n)
 }
 
-/// A ring of `n` profile points and radial normals placed in `p`'s frame.
-fn ring(p: &LinePoint, n: u64) -> (Vec<DVec3>, Vec<DVec3>) {
-    (0..n)
-        .map(|i| {
-            let a = TAU * i as f64 / n as f64;
-            let local = DVec3::new(libm::cos(a), libm::sin(a), 0.0);
-            (p.frame.transform_point(local * PROFILE_RADIUS), p.frame.transform_normal(local).normalize_or_zero())
-        })
+/// A line's cross-section in its local frame: `n` points and their outward directions.
+fn profile_points(profile: Option<&[DVec3]>, detail: u32) -> Vec<(DVec3, DVec3)> {
+    match profile {
+        Some(points) if points.len() >= 3 => {
+            // Normals point away from the profile's centroid.
+            let c = centre(points);
+            points.iter().map(|p| (*p, (*p - c).normalize_or_zero())).collect()
+        }
+        _ => {
+            let n = profile_sides(detail);
+            (0..n)
+                .map(|i| {
+                    let a = TAU * i as f64 / n as f64;
+                    let dir = DVec3::new(libm::cos(a), libm::sin(a), 0.0);
+                    (dir * PROFILE_RADIUS, dir)
+                })
+                .collect()
+        }
+    }
+}
+
+/// The profile placed in `p`'s frame: positions and unit normals.
+fn ring(p: &LinePoint, profile: &[(DVec3, DVec3)]) -> (Vec<DVec3>, Vec<DVec3>) {
+    profile
+        .iter()
+        .map(|(q, d)| (p.frame.transform_point(*q), p.frame.transform_normal(*d).normalize_or_zero()))
         .unzip()
 }
 
@@ -65,47 +83,32 @@ fn same_ring(a: &[DVec3], b: &[DVec3]) -> bool {
     a.iter().zip(b).all(|(p, q)| (*p - *q).length() <= 1e-9 * scale)
 }
 
-/// Appends a strip between two rings (vertex index bases `ia`, `ib`), wound outward.
+/// Appends a strip between two rings (vertex index bases `ia`, `ib`). Ring
+/// edges run a_i → a_{i+1} in the strip's triangles; caps use the opposite
+/// direction, so a whole line is consistently wound (its outward side is
+/// chosen afterwards from its signed volume).
 fn strip(mesh: &mut Mesh, ia: u32, ib: u32, n: u32) {
-    let at = |i: u32| DVec3::from_array(mesh.positions[i as usize].map(f64::from));
-    // Decide the winding from the first quad: its normal must agree with the radial direction.
-    let (a0, a1, b1) = (at(ia), at(ia + 1), at(ib + 1));
-    let ring_a: Vec<DVec3> = (0..n).map(|i| at(ia + i)).collect();
-    let radial = a0 - centre(&ring_a);
-    let flip = (a1 - a0).cross(b1 - a0).dot(radial) < 0.0;
     for i in 0..n {
         let j = (i + 1) % n;
-        let (p, q, r, s) = (ia + i, ia + j, ib + j, ib + i);
-        if flip {
-            mesh.indices.extend_from_slice(&[p, r, q, p, s, r]);
-        } else {
-            mesh.indices.extend_from_slice(&[p, q, r, p, r, s]);
-        }
+        mesh.indices.extend_from_slice(&[ia + i, ia + j, ib + j, ia + i, ib + j, ib + i]);
     }
 }
 
-/// Appends a flat cap over `ring`, facing away from `inward` (a point on the line's other side).
-fn cap(mesh: &mut Mesh, ring: &[DVec3], inward: DVec3, colour: [u8; 4]) {
+/// Appends a flat cap over `ring` with its normal facing away from `inward`
+/// (a point on the line's other side). `at_start` picks the edge direction
+/// that matches the strip next to it.
+fn cap(mesh: &mut Mesh, ring: &[DVec3], inward: DVec3, colour: [u8; 4], at_start: bool) {
     let c = centre(ring);
-    let normal = {
-        let n = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]).normalize_or_zero();
-        if n.dot(c - inward) < 0.0 {
-            -n
-        } else {
-            n
-        }
-    };
+    let face = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]).normalize_or_zero();
+    let normal = if face.dot(c - inward) < 0.0 { -face } else { face };
     let base = push(mesh, c, normal, colour);
     for p in ring {
         push(mesh, *p, normal, colour);
     }
     let n = ring.len() as u32;
-    // Winding of (centre, i, i+1) agrees with the ring order's normal; flip to face `normal`.
-    let ring_normal = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]);
-    let flip = ring_normal.dot(normal) < 0.0;
     for i in 0..n {
         let (a, b) = (base + 1 + i, base + 1 + (i + 1) % n);
-        if flip {
+        if at_start {
             mesh.indices.extend_from_slice(&[base, b, a]);
         } else {
             mesh.indices.extend_from_slice(&[base, a, b]);
@@ -113,16 +116,26 @@ fn cap(mesh: &mut Mesh, ring: &[DVec3], inward: DVec3, colour: [u8; 4]) {
     }
 }
 
+/// Six times the signed volume enclosed by the triangles in `indices`.
+fn signed_volume6(mesh: &Mesh, indices: &[u32]) -> f64 {
+    let at = |i: u32| DVec3::from_array(mesh.positions[i as usize].map(f64::from));
+    indices.chunks_exact(3).map(|t| at(t[0]).dot(at(t[1]).cross(at(t[2])))).sum()
+}
+
 /// Sweeps every line into one mesh, reserving its bytes in `budget` first.
+/// `profiles` are the scene's cross-sections that lines refer to by index.
 /// Lines with fewer than two distinct rings draw nothing.
-pub fn sweep_lines(lines: &[Polyline], detail: u32, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
-    let n = profile_sides(detail);
-    let (pv, pt) = per_point_bound(detail);
-    let points: u64 = lines.iter().map(|l| l.points.len() as u64).sum();
-    if points == 0 {
+pub fn sweep_lines(lines: &[Polyline], profiles: &[Vec<DVec3>], detail: u32, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+    let profile_of = |l: &Polyline| profile_points(l.profile.and_then(|i| profiles.get(i as usize)).map(Vec::as_slice), detail);
+    let (mut vmax, mut tmax) = (0u64, 0u64);
+    for l in lines {
+        let (pv, pt) = per_point_bound(profile_of(l).len() as u64);
+        vmax = vmax.saturating_add(pv.saturating_mul(l.points.len() as u64));
+        tmax = tmax.saturating_add(pt.saturating_mul(l.points.len() as u64));
+    }
+    if vmax == 0 {
         return Ok(None);
     }
-    let (vmax, tmax) = (points.saturating_mul(pv), points.saturating_mul(pt));
     if vmax > u64::from(u32::MAX) {
         return Err(LimitExceeded {
             limit: crate::eval::Limit::Memory,
@@ -137,12 +150,14 @@ pub fn sweep_lines(lines: &[Polyline], detail: u32, budget: &mut Budget) -> Resu
         colours: Vec::with_capacity(vmax as usize),
         indices: Vec::with_capacity((tmax as usize).saturating_mul(3)),
     };
-    let n32 = n as u32;
     for line in lines {
+        let profile = profile_of(line);
+        // Fits: profiles come from a bounded number of VERTEX calls.
+        let n32 = profile.len() as u32;
         // Rings, dropping any that repeat the previous one (zero-length, pure turns).
         let mut rings: Vec<(Vec<DVec3>, Vec<DVec3>, [u8; 4])> = Vec::new();
         for p in &line.points {
-            let (pos, nrm) = ring(p, n);
+            let (pos, nrm) = ring(p, &profile);
             if rings.last().is_some_and(|(prev, _, _)| same_ring(prev, &pos)) {
                 continue;
             }
@@ -168,6 +183,7 @@ pub fn sweep_lines(lines: &[Polyline], detail: u32, budget: &mut Budget) -> Resu
         for w in bases.windows(2) {
             strip(&mut mesh, w[0], w[1], n32);
         }
+        let line_start = mesh.indices.len() - 6 * (bases.len() - 1) * n32 as usize;
         if closed {
             if let (Some(&last), Some(&first)) = (bases.last(), bases.first()) {
                 strip(&mut mesh, last, first, n32);
@@ -175,8 +191,14 @@ pub fn sweep_lines(lines: &[Polyline], detail: u32, budget: &mut Budget) -> Resu
         } else if let (Some(first), Some(second), Some(last), Some(before)) =
             (rings.first(), rings.get(1), rings.last(), rings.get(rings.len() - 2))
         {
-            cap(&mut mesh, &first.0, centre(&second.0), first.2);
-            cap(&mut mesh, &last.0, centre(&before.0), last.2);
+            cap(&mut mesh, &first.0, centre(&second.0), first.2, true);
+            cap(&mut mesh, &last.0, centre(&before.0), last.2, false);
+        }
+        // Consistent winding throughout; turn the whole line outward if it is inside out.
+        if signed_volume6(&mesh, &mesh.indices[line_start..]) < 0.0 {
+            for t in mesh.indices[line_start..].chunks_exact_mut(3) {
+                t.swap(1, 2);
+            }
         }
     }
     // Give back what the upper bound over-reserved.

@@ -65,10 +65,28 @@ pub enum Selector {
 pub struct Rule {
     /// Relative weight; weights are normalised per group at selection time. Default 1.
     pub weight: f64,
+    /// A transform-rule header (`* path : t1 …` or `: x1 : x2 …`), if any.
+    pub transform: RuleTransform,
     /// The body items, run in order, each from the rule's own frame.
     pub body: Vec<Item>,
     /// Where the rule header is.
     pub span: Span,
+}
+
+/// Transform-rule headers (seed 000 §4.4–4.5). The named rules are *paths*:
+/// evaluated once from the identity frame, their `FRAME {}` calls give a list
+/// of frames.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum RuleTransform {
+    /// A plain rule.
+    #[default]
+    None,
+    /// `rule R * path : t1 : t2 { body }`: the body runs once per frame of `path`,
+    /// in that frame composed (parent first) with the same-index frames of t1, t2, ….
+    Convolve(Vec<GroupId>),
+    /// `rule R : x1 : x2 { body }`: an animated rule. Static output shows it at
+    /// time 0, i.e. in the composition of each path's first frame.
+    Animate(Vec<GroupId>),
 }
 
 /// What a call refers to, resolved at parse time.
@@ -78,8 +96,16 @@ pub enum Target {
     Group(GroupId),
     /// A built-in drawable.
     Primitive(PrimitiveKind),
-    /// A line drawable (seed 000 §4.3, Table B.6).
-    Line(LineOp),
+    /// A line drawable (seed 000 §4.3, Table B.6), with an optional profile
+    /// rule whose `VERTEX` calls give the cross-section (else `linerule`, else a round tube).
+    Line(LineOp, Option<GroupId>),
+    /// `VERTEX {}`: a free vertex (every three make a triangle), or a profile
+    /// point inside a profile rule.
+    Vertex,
+    /// `FACENORMALS {}`: the last three vertices get their triangle's face normal.
+    FaceNormals,
+    /// `FRAME {}`: emits a frame into the path of a transform rule.
+    Frame,
 }
 
 /// The pen operations of swept lines. Each is a terminal: it updates the
@@ -277,6 +303,10 @@ pub struct Directives {
     pub background: Option<[f64; 4]>,
     /// `angle …`: informational; angles in the IR are already radians.
     pub angle: AngleMode,
+    /// `linerule NAME`: the default profile rule of swept lines.
+    pub linerule: Option<GroupId>,
+    /// `normal x y z`: the local normal given to `VERTEX` (default 0 0 1).
+    pub normal: Option<[f64; 3]>,
 }
 
 /// The type of an `@param`.

@@ -52,7 +52,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         detail: req.detail,
         on_limit: req.on_limit,
         line_point_bytes: {
-            let (v, t) = geom::sweep::per_point_bound(req.detail);
+            let (v, t) = geom::sweep::per_point_bound(geom::sweep::profile_sides(req.detail));
             geom::meshing::mesh_bytes(v, t).saturating_add(export::estimated_size(req.format, v, t) - overhead)
         },
         downstream_bytes: PrimitiveKind::ALL.map(|k| {
@@ -80,7 +80,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
     lap(&mut phases.mesh);
     let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
-    let bytes = export::export(req.format, &meshes, &meta, &mut budget)?;
+    let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
     lap(&mut phases.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     Ok(RenderOutput {

@@ -118,7 +118,7 @@ pub fn interpret(sys: &LSystem, s: &ModuleString, opts: &TurtleOptions, budget: 
         drawing: Drawing::default(),
         stack: Vec::new(),
         state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width: sys.width, colour: DEFAULT_COLOUR, line: None },
-        point_tris: sweep::per_point_bound(opts.detail).1,
+        point_tris: sweep::per_point_bound(sweep::profile_sides(opts.detail)).1,
     };
     let result = t.run(s, budget);
     budget.release_memory((t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
@@ -273,7 +273,7 @@ impl Turtle<'_> {
                 if self.state.line.is_none() {
                     let first = self.point(budget)?;
                     self.drawing.promised = self.drawing.promised.saturating_add(self.opts.line_point_bytes);
-                    self.drawing.scene.lines.push(Polyline { points: vec![first] });
+                    self.drawing.scene.lines.push(Polyline { points: vec![first], profile: None });
                     self.state.line = Some(self.drawing.scene.lines.len() - 1);
                 }
                 self.advance(len)?;

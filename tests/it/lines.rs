@@ -86,3 +86,54 @@ fn a_lathe_closes_with_no_gap_and_open_lines_are_capped() {
         assert!(v > 0.0, "{name}: volume {v}");
     }
 }
+
+#[test]
+fn the_c2_knot_convolves_three_paths_into_one_closed_line() {
+    let src = std::fs::read_to_string(repo().join("grammars/knot.mdg")).expect("knot.mdg");
+    let scene = scene_of(&src);
+    // NEWLINE lifts the pen, so the first of 4000 ALINETOs only places it.
+    assert_eq!(scene.lines.len(), 1);
+    assert_eq!(segments(&scene), 3999);
+    // Point i sits in frame zpath_i ∘ ypath_i ∘ xpath_i (parent first), inside
+    // `ring {s 2}` and moved by `z 0.2`: hand-computed with quaternions.
+    let turn = std::f64::consts::TAU;
+    for i in [1usize, 2, 1000, 2345, 4000] {
+        let t = i as f64 / 4000.0;
+        let q = glam::DQuat::from_rotation_z(9.0 * turn * t)
+            * glam::DQuat::from_rotation_y(81.0 * turn * t)
+            * glam::DQuat::from_rotation_x(16.0 * turn * t);
+        let expected = 2.0 * (q * DVec3::new(0.0, 0.0, 0.2));
+        let got = scene.lines[0].points[i - 1].frame.translation;
+        assert!((got - expected).length() < 1e-9, "point {i}: {got} vs {expected}");
+        assert!((scene.lines[0].points[i - 1].frame.scale - 0.6).abs() < 1e-12);
+    }
+    // The 12-point line rule is the profile.
+    assert_eq!(scene.profiles.len(), 1);
+    assert_eq!(scene.profiles[0].len(), 12);
+    let (path, _dir) = render_stl(&src, "knot");
+    let r = admesh(&path);
+    assert_eq!((r.open_edges, r.parts, r.reversed, r.degenerate), (0, 1, 0, 0), "{}", r.raw);
+}
+
+#[test]
+fn animated_rules_render_their_first_frame_and_recursive_paths_stop() {
+    // `transform` recurses forever; only its first frame is needed for static output.
+    let src = "startshape S\nrule S : T { BOX {} }\nrule T { FRAME { x 3 } T { ry 1 } }";
+    let scene = scene_of(src);
+    assert_eq!(scene.instances.len(), 1);
+    assert!((scene.instances[0].translation.x - 3.0).abs() < 1e-6);
+}
+
+#[test]
+fn free_vertices_make_triangles_and_facenormals_sets_their_normals() {
+    let src = "rule A { VERTEX {} VERTEX { x 1 } VERTEX { y 1 } FACENORMALS {} VERTEX { z 1 } }";
+    let scene = scene_of(src);
+    assert_eq!(scene.vertices.len(), 4);
+    for v in &scene.vertices[..3] {
+        assert!((v.normal - DVec3::Z).length() < 1e-12);
+    }
+    let out = run(&["render", "-", "--language", "mdg", "--format", "stl"], Some(src.as_bytes()));
+    assert!(out.status.success());
+    let tris = decode_stl(&out.stdout);
+    assert_eq!(tris.len(), 1, "the fourth vertex makes no triangle");
+}

@@ -13,3 +13,5 @@ mod hostile;
 mod lines;
 mod lsystem;
 mod selectors;
+mod strips;
+mod service;

@@ -3,7 +3,7 @@
 
 use super::lexer::{Tok, Token};
 use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
-use crate::lang::ir::{LineOp, Selector};
+use crate::lang::ir::{GroupId, LineOp, RuleTransform, Selector};
 use crate::lang::ir::{
     Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
     Program, Rule, RuleGroup, Target,
@@ -16,17 +16,14 @@ use std::f64::consts::{FRAC_PI_2, PI};
 pub const MAX_NESTING: u32 = 256;
 
 /// Drawables that belong to later issues.
-const LATER_DRAWABLES: [&str; 11] =
-    ["VERTEX", "MOVETO", "LINETO", "SLINETO", "BLENDTO", "ALINETO", "NEWLINE", "RESET", "FACENORMALS", "FRAME", "DEBUG"];
+const LATER_DRAWABLES: [&str; 2] = ["BLENDTO", "DEBUG"];
 
 /// Top-level directives that are skipped (to the end of their line) with a warning.
-const SKIPPED_DIRECTIVES: [&str; 16] = [
+const SKIPPED_DIRECTIVES: [&str; 14] = [
     "uniform",
-    "linerule",
     "camerarule",
     "duration",
     "fps",
-    "normal",
     "color",
     "weight",
     "stacksize",
@@ -123,6 +120,19 @@ pub(crate) struct Parser<'a> {
     functions: HashMap<&'a str, Expr>,
     /// True while parsing a function of position, where `x`, `y`, `z` name coordinates.
     coords: bool,
+    /// Names to resolve to groups at the end: transform-rule paths and line profiles.
+    group_refs: Vec<(GroupRef, &'a str, Span)>,
+    /// `linerule NAME`, resolved at the end.
+    linerule: Option<(&'a str, Span)>,
+}
+
+/// Where a group name that must be resolved at the end belongs.
+#[derive(Debug, Clone, Copy)]
+enum GroupRef {
+    /// Path `index` of rule `rule` of group `group`.
+    Path { group: u32, rule: usize, index: usize },
+    /// The profile of the line drawable at call site `site`.
+    Profile { site: u32 },
 }
 
 /// A selector mode as written; a named function is looked up at the end.
@@ -174,6 +184,8 @@ impl<'a> Parser<'a> {
             selectors: Vec::new(),
             functions: HashMap::new(),
             coords: false,
+            group_refs: Vec::new(),
+            linerule: None,
         }
     }
 
@@ -274,6 +286,36 @@ impl<'a> Parser<'a> {
             }
         }
         let mut groups = std::mem::take(&mut self.groups);
+        let group_of = |name: &str, span: Span| match self.group_index.get(name) {
+            Some(&g) => Ok(g),
+            None => Err(err(span, format!("unknown rule `{name}`"))),
+        };
+        let mut profiles: Vec<Option<GroupId>> = vec![None; self.site as usize];
+        for &(r, name, span) in &self.group_refs {
+            let g = group_of(name, span)?;
+            match r {
+                GroupRef::Path { group, rule, index } => {
+                    let slot = groups
+                        .get_mut(group as usize)
+                        .and_then(|gr| gr.rules.get_mut(rule))
+                        .and_then(|ru| match &mut ru.transform {
+                            RuleTransform::Convolve(v) | RuleTransform::Animate(v) => v.get_mut(index),
+                            RuleTransform::None => None,
+                        });
+                    if let Some(slot) = slot {
+                        *slot = g;
+                    }
+                }
+                GroupRef::Profile { site } => {
+                    if let Some(slot) = profiles.get_mut(site as usize) {
+                        *slot = Some(g);
+                    }
+                }
+            }
+        }
+        if let Some((name, span)) = self.linerule {
+            self.directives.linerule = Some(group_of(name, span)?);
+        }
         for (name, span, pending) in std::mem::take(&mut self.selectors) {
             let selector = match pending {
                 PendingSelector::Ready(s) => s,
@@ -289,7 +331,7 @@ impl<'a> Parser<'a> {
         }
         for g in &mut groups {
             for r in &mut g.rules {
-                set_targets(&mut r.body, &targets);
+                set_targets(&mut r.body, &targets, &profiles);
             }
         }
         Ok(Program {
@@ -507,6 +549,16 @@ impl<'a> Parser<'a> {
                     self.warnings.push(Diagnostic::warning(m.span, "conflicting `angle` directives: the first applies to the whole file"));
                 }
             }
+            "linerule" => {
+                self.linerule = Some(self.name_after("linerule")?);
+            }
+            "normal" => {
+                let mut n = [0.0; 3];
+                for (i, c) in n.iter_mut().enumerate() {
+                    *c = self.const_value(&format!("component {} of `normal`", i + 1))?.0;
+                }
+                self.directives.normal = Some(n);
+            }
             "selector" => {
                 let mut names = vec![self.name_after("selector")?];
                 while self.is_punct(',') {
@@ -596,10 +648,19 @@ impl<'a> Parser<'a> {
     fn rule(&mut self, span: Span) -> PResult<()> {
         let (name, _) = self.name_after("rule")?;
         let mut weight = 1.0;
+        let mut paths: Vec<(&'a str, Span)> = Vec::new();
+        let mut convolve = false;
         let t = self.peek();
         match t.tok {
             Tok::Punct(':') | Tok::Punct('*') => {
-                return Err(err(t.span, format!("not supported yet: transform rules (`{}` after `rule {name}`)", t.tok.to_string().trim_matches('`'))))
+                // `* path : t1 : t2` (convolve) or `: x1 : x2` (animate).
+                convolve = t.tok == Tok::Punct('*');
+                self.bump();
+                paths.push(self.name_after("a transform rule")?);
+                while self.is_punct(':') {
+                    self.bump();
+                    paths.push(self.name_after("`:` in a transform rule")?);
+                }
             }
             Tok::Punct('{') => {}
             _ if self.starts_arg() => {
@@ -624,8 +685,17 @@ impl<'a> Parser<'a> {
                 g
             }
         };
+        let transform = match (paths.is_empty(), convolve) {
+            (true, _) => RuleTransform::None,
+            (false, true) => RuleTransform::Convolve(vec![0; paths.len()]),
+            (false, false) => RuleTransform::Animate(vec![0; paths.len()]),
+        };
         if let Some(g) = self.groups.get_mut(id as usize) {
-            g.rules.push(Rule { weight, body, span });
+            let rule = g.rules.len();
+            for (index, (p, pspan)) in paths.into_iter().enumerate() {
+                self.group_refs.push((GroupRef::Path { group: id, rule, index }, p, pspan));
+            }
+            g.rules.push(Rule { weight, transform, body, span });
         }
         Ok(())
     }
@@ -701,15 +771,30 @@ impl<'a> Parser<'a> {
         if line_op.is_none() && LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
             return Err(err(t.span, format!("not supported yet: drawable `{name}`")));
         }
-        if line_op.is_some() && matches!(self.peek().tok, Tok::Ident(_)) {
-            return Err(err(self.peek().span, format!("not supported yet: a profile rule after `{name}`")));
+        let mut profile = None;
+        if line_op.is_some() {
+            if let Tok::Ident(p) = self.peek().tok {
+                profile = Some((p, self.bump().span));
+            }
         }
         self.expect_punct('{', || format!("after rule name `{name}`"))?;
         let site = self.next_site(t.span)?;
         let adjust = self.adjustments('}')?;
-        let target = match line_op {
-            Some(op) => Target::Line(op),
-            None => {
+        let special = match name.to_ascii_uppercase().as_str() {
+            "VERTEX" => Some(Target::Vertex),
+            "FACENORMALS" => Some(Target::FaceNormals),
+            "FRAME" => Some(Target::Frame),
+            _ => None,
+        };
+        let target = match (line_op, special) {
+            (Some(op), _) => {
+                if let Some((p, pspan)) = profile {
+                    self.group_refs.push((GroupRef::Profile { site }, p, pspan));
+                }
+                Target::Line(op, None)
+            }
+            (None, Some(t)) => t,
+            (None, None) => {
                 self.call_names.push((site, name, t.span));
                 Target::Primitive(PrimitiveKind::Box)
             }
@@ -1104,16 +1189,19 @@ fn mark_continuation(item: &mut Item) {
 }
 
 /// Fills in resolved call targets (recursion bounded by the nesting limit).
-fn set_targets(items: &mut [Item], targets: &[Option<Target>]) {
+fn set_targets(items: &mut [Item], targets: &[Option<Target>], profiles: &[Option<GroupId>]) {
     for item in items {
         match item {
             Item::Call(c) => {
                 if let Some(Some(t)) = targets.get(c.site as usize) {
                     c.target = *t;
                 }
+                if let (Target::Line(op, _), Some(Some(g))) = (c.target, profiles.get(c.site as usize)) {
+                    c.target = Target::Line(op, Some(*g));
+                }
             }
-            Item::Block(b) => set_targets(b, targets),
-            Item::Iterate(it) => set_targets(std::slice::from_mut(&mut *it.body), targets),
+            Item::Block(b) => set_targets(b, targets, profiles),
+            Item::Iterate(it) => set_targets(std::slice::from_mut(&mut *it.body), targets, profiles),
         }
     }
 }

@@ -75,6 +75,7 @@ fn parses_the_basic_example_into_exact_ir() {
             name: "A".into(),
             rules: vec![Rule {
                 weight: 1.0,
+                transform: RuleTransform::None,
                 body: vec![Item::Iterate(Iterate {
                     count: Expr::Num(10.0),
                     divisor: None,
@@ -343,12 +344,14 @@ fn error_positions() {
     assert_eq!(fail("startshape Q\nrule A {}"), (1, 12, "unknown rule or primitive `Q`".into()));
     assert_eq!(fail("rule A { é {} # }"), (1, 15, "unexpected character `#`".into()));
     assert_eq!(fail("rule A { BLENDTO {} }"), (1, 10, "not supported yet: drawable `BLENDTO`".into()));
-    assert_eq!(fail("rule A { LINETO P {} }\nrule P {}"), (1, 17, "not supported yet: a profile rule after `LINETO`".into()));
+    assert_eq!(fail("rule A { LINETO P {} }"), (1, 17, "unknown rule `P`".into()));
+    assert_eq!(fail("rule A * B { }"), (1, 10, "unknown rule `B`".into()));
+    assert_eq!(fail("linerule L\nrule A { }"), (1, 10, "unknown rule `L`".into()));
     assert_eq!(fail("rule A { B {} \\ \\ B {} }\nrule B {}"), (1, 17, "expected a call after `\\`, found another `\\`".into()));
     assert_eq!(fail(""), (1, 1, "empty source: expected `startshape` or `rule`".into()));
     assert_eq!(fail("  // only a comment\n"), (1, 1, "empty source: expected `startshape` or `rule`".into()));
     assert_eq!(fail("maxdepth 3\n"), (2, 1, "no rules: expected at least one `rule` or a `startshape`".into()));
-    assert_eq!(fail("rule A : B {}"), (1, 8, "not supported yet: transform rules (`:` after `rule A`)".into()));
+    assert_eq!(fail("rule A : B : C {}\nrule B {}"), (1, 14, "unknown rule `C`".into()));
 }
 
 #[test]

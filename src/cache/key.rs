@@ -1,0 +1,160 @@
+//! Cache keys: BLAKE3 of a canonical, length-prefixed encoding of everything
+//! that determines a model's bytes.
+
+use crate::eval::{Limits, ParamValue};
+use crate::export::Format;
+use crate::geom::MeshLayout;
+use crate::lang::Language;
+use crate::RenderRequest;
+use std::borrow::Cow;
+
+/// A 32-byte BLAKE3 digest identifying one model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct CacheKey(pub [u8; 32]);
+
+impl CacheKey {
+    /// The key as lowercase hex.
+    pub fn hex(&self) -> String {
+        blake3::Hash::from_bytes(self.0).to_hex().to_string()
+    }
+}
+
+/// Replaces every CRLF with LF, so the same grammar saved on Windows and on
+/// Unix shares a key (and renders from identical bytes).
+pub fn normalize_source(source: &[u8]) -> Cow<'_, [u8]> {
+    if !source.windows(2).any(|w| w == b"\r\n") {
+        return Cow::Borrowed(source);
+    }
+    let mut out = Vec::with_capacity(source.len());
+    let mut i = 0;
+    while i < source.len() {
+        if source[i] == b'\r' && source.get(i + 1) == Some(&b'\n') {
+            i += 1;
+            continue;
+        }
+        out.push(source[i]);
+        i += 1;
+    }
+    Cow::Owned(out)
+}
+
+/// A canonical encoder: every field is tagged and length-prefixed, so no two
+/// different requests encode to the same bytes.
+struct Encoder(blake3::Hasher);
+
+impl Encoder {
+    fn field(&mut self, tag: &str, bytes: &[u8]) {
+        self.0.update(&(tag.len() as u64).to_le_bytes());
+        self.0.update(tag.as_bytes());
+        self.0.update(&(bytes.len() as u64).to_le_bytes());
+        self.0.update(bytes);
+    }
+
+    fn u64(&mut self, tag: &str, v: u64) {
+        self.field(tag, &v.to_le_bytes());
+    }
+}
+
+fn format_name(f: Format) -> &'static str {
+    match f {
+        Format::Glb => "glb",
+        Format::Gltf => "gltf",
+        Format::Stl => "stl",
+        Format::StlAscii => "stl-ascii",
+        Format::Strips => "strips",
+    }
+}
+
+fn layout_name(l: MeshLayout) -> &'static str {
+    match l {
+        MeshLayout::Merged => "merged",
+        MeshLayout::PerKind => "per-kind",
+    }
+}
+
+/// The limits that can change a successful model or decide whether there is
+/// one. The wall-clock timeout is left out: a model that finished in time is
+/// the same model under any longer timeout, and deadline-truncated models are
+/// never cached.
+fn encode_limits(e: &mut Encoder, l: &Limits) {
+    e.u64("limits.max_depth", l.max_depth.into());
+    e.u64("limits.max_primitives", l.max_primitives);
+    e.u64("limits.max_triangles", l.max_triangles);
+    e.u64("limits.max_memory", l.max_memory);
+    e.u64("limits.max_source_bytes", l.max_source_bytes);
+    e.u64("limits.max_steps", l.max_steps);
+}
+
+/// The key of rendering `source` (already normalised with
+/// [`normalize_source`]) as `req` says, with this engine version.
+pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
+    let mut e = Encoder(blake3::Hasher::new());
+    e.field("engine", crate::ENGINE_VERSION.as_bytes());
+    let language = req.language.or_else(|| Language::detect(source));
+    e.field("language", language.map_or("unknown", Language::name).as_bytes());
+    e.field("source", source);
+    match req.seed {
+        Some(s) => e.u64("seed", s),
+        None => e.field("seed", b"grammar"),
+    }
+    e.u64("params", req.params.len() as u64);
+    // BTreeMap iterates in sorted key order.
+    for (k, v) in &req.params {
+        e.field("param.name", k.as_bytes());
+        match v {
+            ParamValue::Number(n) => e.field("param.number", &n.to_bits().to_le_bytes()),
+            ParamValue::Bool(b) => e.field("param.bool", &[u8::from(*b)]),
+            ParamValue::Text(t) => e.field("param.text", t.as_bytes()),
+        }
+    }
+    e.field("format", format_name(req.format).as_bytes());
+    if req.format == Format::Strips {
+        let o = &req.export_options.strips;
+        e.field("strips", &[o.position_bits, o.normal_bits, u8::from(o.zstd)]);
+    }
+    e.u64("detail", req.detail.into());
+    e.field("layout", layout_name(req.layout).as_bytes());
+    encode_limits(&mut e, &req.limits);
+    e.field("on_limit", if req.on_limit == crate::eval::OnLimit::Truncate { b"truncate" } else { b"error" });
+    CacheKey(*e.0.finalize().as_bytes())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crlf_is_normalised() {
+        assert_eq!(&*normalize_source(b"a\r\nb\rc\n"), b"a\nb\rc\n");
+        assert!(matches!(normalize_source(b"a\nb"), Cow::Borrowed(_)));
+    }
+
+    #[test]
+    fn every_field_changes_the_key() {
+        let src = b"startshape A\nrule A { BOX {} }\n";
+        let base = RenderRequest::default();
+        let k = cache_key(src, &base);
+        assert_eq!(k, cache_key(src, &base.clone()));
+        let variants: Vec<RenderRequest> = vec![
+            RenderRequest { seed: Some(1), ..base.clone() },
+            RenderRequest { format: Format::Stl, ..base.clone() },
+            RenderRequest { detail: 17, ..base.clone() },
+            RenderRequest { layout: MeshLayout::PerKind, ..base.clone() },
+            RenderRequest { on_limit: crate::eval::OnLimit::Truncate, ..base.clone() },
+            RenderRequest { limits: Limits { max_primitives: 5, ..Limits::default() }, ..base.clone() },
+            RenderRequest { params: [("n".to_string(), ParamValue::Number(1.0))].into(), ..base.clone() },
+        ];
+        for v in &variants {
+            assert_ne!(k, cache_key(src, v), "{v:?}");
+        }
+        assert_ne!(k, cache_key(b"startshape B\nrule B { BOX {} }\n", &base));
+        // Strips precision is part of a strips model's key.
+        let strips = RenderRequest { format: Format::Strips, ..base.clone() };
+        let mut coarse = strips.clone();
+        coarse.export_options.strips.position_bits = 12;
+        assert_ne!(cache_key(src, &strips), cache_key(src, &coarse));
+        // The timeout does not change a finished model.
+        let t = RenderRequest { limits: Limits { timeout_ms: 1, ..Limits::default() }, ..base.clone() };
+        assert_eq!(k, cache_key(src, &t));
+    }
+}

@@ -1,0 +1,8 @@
+//! The content-hash model cache: canonical request keys ([`key`]) and an
+//! in-process, byte-budgeted, single-flight store ([`store`]).
+
+pub mod key;
+pub mod store;
+
+pub use key::{normalize_source, CacheKey};
+pub use store::{CacheOutcome, ModelCache, Rendered};

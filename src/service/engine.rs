@@ -1,0 +1,126 @@
+//! The render engine shared by HTTP and gRPC: cache lookup with single-flight,
+//! then the pipeline on the blocking pool behind a concurrency limit with a
+//! bounded wait queue.
+
+use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
+use crate::cache::{CacheOutcome, ModelCache, Rendered};
+use crate::RenderRequest;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+use tokio::sync::Semaphore;
+
+/// A model and whether it came from the cache.
+#[derive(Debug, Clone)]
+pub struct Served {
+    /// The model.
+    pub model: Arc<Rendered>,
+    /// Hit or miss.
+    pub cache: CacheOutcome,
+}
+
+/// Renders through the cache under the concurrency limit.
+pub struct Engine {
+    cache: ModelCache,
+    slots: Arc<Semaphore>,
+    slot_count: usize,
+    queue_limit: usize,
+    waiting: AtomicUsize,
+    queue_timeout: Duration,
+    metrics: Arc<Metrics>,
+}
+
+/// Decrements the waiting count even if the waiting future is dropped.
+struct Waiting<'a>(&'a Engine);
+
+impl Drop for Waiting<'_> {
+    fn drop(&mut self) {
+        self.0.waiting.fetch_sub(1, Ordering::AcqRel);
+        self.0.metrics.queued(-1);
+    }
+}
+
+impl Engine {
+    /// An engine configured by `config`, reporting to `metrics`.
+    pub fn new(config: &ServeConfig, metrics: Arc<Metrics>) -> Engine {
+        let slot_count = config.concurrency();
+        Engine {
+            cache: ModelCache::new(config.cache_bytes),
+            slots: Arc::new(Semaphore::new(slot_count)),
+            slot_count,
+            queue_limit: config.queue,
+            waiting: AtomicUsize::new(0),
+            queue_timeout: config.queue_timeout(),
+            metrics,
+        }
+    }
+
+    /// The model cache.
+    pub fn cache(&self) -> &ModelCache {
+        &self.cache
+    }
+
+    /// Serves `plan` from the cache, or renders it (once for all concurrent identical requests).
+    pub async fn serve(&self, plan: RenderPlan) -> Result<Served, ServiceError> {
+        let key = plan.key;
+        let fresh = plan.no_cache;
+        let (model, cache) = self.cache.get_or_render(key, fresh, || self.run(plan)).await?;
+        self.metrics.cache(cache == CacheOutcome::Hit);
+        Ok(Served { model, cache })
+    }
+
+    /// Waits for a slot (or sheds), then runs the pipeline on the blocking pool.
+    async fn run(&self, plan: RenderPlan) -> Result<Rendered, ServiceError> {
+        let permit = match self.slots.clone().try_acquire_owned() {
+            Ok(p) => p,
+            Err(_) => {
+                let before = self.waiting.fetch_add(1, Ordering::AcqRel);
+                self.metrics.queued(1);
+                let guard = Waiting(self);
+                if before >= self.queue_limit {
+                    drop(guard);
+                    self.metrics.shed();
+                    return Err(ServiceError::Overloaded { running: self.slot_count, waiting: before, retry_after_secs: 1 });
+                }
+                let acquired = tokio::time::timeout(self.queue_timeout, self.slots.clone().acquire_owned()).await;
+                drop(guard);
+                match acquired {
+                    Ok(Ok(p)) => p,
+                    Ok(Err(_)) => return Err(ServiceError::ShuttingDown),
+                    Err(_) => {
+                        return Err(ServiceError::QueueTimeout { ms: u64::try_from(self.queue_timeout.as_millis()).unwrap_or(u64::MAX) })
+                    }
+                }
+            }
+        };
+        let metrics = self.metrics.clone();
+        metrics.in_flight(1);
+        let started = Instant::now();
+        let RenderPlan { source, request, .. } = plan;
+        let task = tokio::task::spawn_blocking(move || {
+            let result = render_blocking(&source, &request);
+            drop(permit);
+            result
+        });
+        let result = task.await;
+        metrics.in_flight(-1);
+        metrics.render_done(started.elapsed());
+        let result = result.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?;
+        match &result {
+            Err(ServiceError::Limit(l)) => metrics.rejected(l.limit.name()),
+            Ok(r) => {
+                if let Some(t) = &r.truncated {
+                    metrics.truncated(t.limit.name());
+                }
+            }
+            Err(_) => {}
+        }
+        result
+    }
+}
+
+/// The pipeline itself, exactly as the CLI runs it.
+fn render_blocking(source: &[u8], request: &RenderRequest) -> Result<Rendered, ServiceError> {
+    let out = crate::render(source, request)?;
+    Ok(Rendered::from_output(out, request.format.content_type()))
+}

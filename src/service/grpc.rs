@@ -1,0 +1,166 @@
+//! The gRPC API (tonic): the same requests, models and errors as HTTP.
+
+use super::request::{CheckBody, LimitsBody, RenderBody};
+use super::{library, AppState, Served, ServiceError};
+use crate::cache::CacheOutcome;
+use crate::eval::ParamValue;
+use std::pin::Pin;
+use std::sync::Arc;
+use tonic::{Request, Response, Status};
+
+/// Code generated from `proto/rulemesh/v1/rulemesh.proto`.
+#[allow(missing_docs, clippy::all, clippy::pedantic)]
+pub mod pb {
+    tonic::include_proto!("rulemesh.v1");
+}
+
+use pb::rulemesh_server::{Rulemesh, RulemeshServer};
+
+/// Bytes per `RenderStream` chunk.
+pub const CHUNK_BYTES: usize = 64 * 1024;
+
+/// The gRPC service over the shared engine.
+pub struct GrpcService {
+    state: Arc<AppState>,
+}
+
+/// The tonic server for `rulemesh.v1.Rulemesh`, with message limits from the config.
+pub fn server(state: Arc<AppState>) -> RulemeshServer<GrpcService> {
+    let limit = state.config.body_limit.saturating_add(64 * 1024);
+    RulemeshServer::new(GrpcService { state }).max_decoding_message_size(limit).max_encoding_message_size(usize::MAX)
+}
+
+impl From<pb::RenderRequest> for RenderBody {
+    fn from(r: pb::RenderRequest) -> Self {
+        let non_empty = |s: String| if s.is_empty() { None } else { Some(s) };
+        RenderBody {
+            source: r.source,
+            language: non_empty(r.language),
+            seed: r.seed,
+            params: r.params.into_iter().map(|(k, v)| (k, ParamValue::Text(v))).collect(),
+            format: non_empty(r.format),
+            limits: r.limits.map(|l| LimitsBody {
+                max_depth: l.max_depth,
+                max_primitives: l.max_primitives,
+                max_triangles: l.max_triangles,
+                max_memory: l.max_memory,
+                timeout_ms: l.timeout_ms,
+                max_source_bytes: l.max_source_bytes,
+                max_steps: l.max_steps,
+            }),
+            on_limit: non_empty(r.on_limit),
+            detail: r.detail,
+            layout: non_empty(r.layout),
+            // Out-of-range values become 0, which validation rejects with a message.
+            position_bits: r.position_bits.map(|b| u8::try_from(b).unwrap_or(0)),
+            normal_bits: r.normal_bits.map(|b| u8::try_from(b).unwrap_or(0)),
+            zstd: r.zstd,
+        }
+    }
+}
+
+fn meta(served: &Served) -> pb::RenderMeta {
+    let m = &served.model;
+    pb::RenderMeta {
+        content_type: m.content_type.to_string(),
+        etag: m.etag.clone(),
+        cache_hit: served.cache == CacheOutcome::Hit,
+        primitives: m.primitives,
+        triangles: m.triangles,
+        truncated: m.truncated.map(|t| pb::Truncation { limit: t.limit.name().to_string(), configured: t.configured, reached: t.reached }),
+        size: m.bytes.len() as u64,
+    }
+}
+
+impl GrpcService {
+    async fn serve(&self, method: &str, req: pb::RenderRequest) -> Result<Served, Status> {
+        let no_cache = req.no_cache;
+        let result = async { RenderBody::from(req).plan(&self.state.ceiling, no_cache)?.pipe_serve(&self.state).await }.await;
+        self.count(method, &result);
+        result.map_err(|e| e.to_status())
+    }
+
+    fn count<T>(&self, method: &str, result: &Result<T, ServiceError>) {
+        let code = match result {
+            Ok(_) => tonic::Code::Ok,
+            Err(e) => e.grpc_code(),
+        };
+        self.state.metrics.request("grpc", method, code as u16);
+    }
+}
+
+impl super::RenderPlan {
+    async fn pipe_serve(self, state: &AppState) -> Result<Served, ServiceError> {
+        state.engine.serve(self).await
+    }
+}
+
+type ChunkStream = Pin<Box<dyn tokio_stream::Stream<Item = Result<pb::RenderChunk, Status>> + Send>>;
+
+#[tonic::async_trait]
+impl Rulemesh for GrpcService {
+    async fn render(&self, request: Request<pb::RenderRequest>) -> Result<Response<pb::RenderReply>, Status> {
+        let served = self.serve("Render", request.into_inner()).await?;
+        Ok(Response::new(pb::RenderReply { meta: Some(meta(&served)), model: served.model.bytes.to_vec() }))
+    }
+
+    type RenderStreamStream = ChunkStream;
+
+    async fn render_stream(&self, request: Request<pb::RenderRequest>) -> Result<Response<ChunkStream>, Status> {
+        let served = self.serve("RenderStream", request.into_inner()).await?;
+        let bytes = served.model.bytes.clone();
+        let mut first = Some(meta(&served));
+        let count = bytes.len().div_ceil(CHUNK_BYTES).max(1);
+        let chunks = (0..count).map(move |i| {
+            let end = ((i + 1) * CHUNK_BYTES).min(bytes.len());
+            let data = bytes.get(i * CHUNK_BYTES..end).map(<[u8]>::to_vec).unwrap_or_default();
+            Ok(pb::RenderChunk { meta: first.take(), data })
+        });
+        Ok(Response::new(Box::pin(tokio_stream::iter(chunks))))
+    }
+
+    async fn check(&self, request: Request<pb::CheckRequest>) -> Result<Response<pb::CheckReply>, Status> {
+        let r = request.into_inner();
+        let body = CheckBody { source: r.source, language: if r.language.is_empty() { None } else { Some(r.language) } };
+        let result = super::http::check(body, &self.state.ceiling);
+        self.count("Check", &result);
+        let report = result.map_err(|e| e.to_status())?;
+        Ok(Response::new(pb::CheckReply {
+            ok: report.ok,
+            language: report.language.unwrap_or_default().to_string(),
+            diagnostics: report
+                .diagnostics
+                .into_iter()
+                .map(|d| pb::Diagnostic {
+                    severity: match d.severity {
+                        crate::lang::Severity::Error => "error".into(),
+                        crate::lang::Severity::Warning => "warning".into(),
+                    },
+                    line: d.span.line,
+                    column: d.span.column,
+                    message: d.message,
+                })
+                .collect(),
+        }))
+    }
+
+    async fn list_grammars(&self, _request: Request<pb::ListGrammarsRequest>) -> Result<Response<pb::ListGrammarsReply>, Status> {
+        self.state.metrics.request("grpc", "ListGrammars", 0);
+        let grammars = library::all()
+            .map(|b| {
+                let info = b.info();
+                pb::Grammar {
+                    name: info.name.to_string(),
+                    language: info.language.to_string(),
+                    description: info.description,
+                    params: info
+                        .params
+                        .into_iter()
+                        .map(|p| pb::Param { name: p.name, kind: p.kind.to_string(), default: p.default, min: p.min, max: p.max })
+                        .collect(),
+                }
+            })
+            .collect();
+        Ok(Response::new(pb::ListGrammarsReply { grammars }))
+    }
+}

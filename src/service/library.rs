@@ -1,0 +1,117 @@
+//! The built-in grammar library: every `grammars/*.mdg`, embedded at build
+//! time so the server needs no files.
+
+use crate::eval::Limits;
+use crate::lang::ir::ParamKind;
+use crate::lang::Language;
+use serde::Serialize;
+
+include!(concat!(env!("OUT_DIR"), "/grammars.rs"));
+
+/// One built-in grammar.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Builtin {
+    /// Its name (the file stem).
+    pub name: &'static str,
+    /// Its language.
+    pub language: Language,
+    /// Its source.
+    pub source: &'static str,
+}
+
+/// Every built-in grammar, sorted by name.
+pub fn all() -> impl Iterator<Item = Builtin> {
+    BUILTIN.iter().map(|&(name, _lang, source)| Builtin { name, language: Language::Mdg, source })
+}
+
+/// The built-in grammar called `name`, if any.
+pub fn find(name: &str) -> Option<Builtin> {
+    all().find(|b| b.name == name)
+}
+
+/// A declared parameter as listed by the API.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParamInfo {
+    /// Its name.
+    pub name: String,
+    /// `int`, `float` or `bool`.
+    pub kind: &'static str,
+    /// Its default value.
+    pub default: f64,
+    /// Lowest accepted value, if declared.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min: Option<f64>,
+    /// Highest accepted value, if declared.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max: Option<f64>,
+}
+
+/// A grammar as listed by `GET /v1/grammars`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GrammarInfo {
+    /// Its name.
+    pub name: &'static str,
+    /// Its language name.
+    pub language: &'static str,
+    /// The leading `//` comment lines, joined.
+    pub description: String,
+    /// Its parameters with defaults and ranges.
+    pub params: Vec<ParamInfo>,
+    /// A parse error, if the grammar does not parse with this engine.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+}
+
+/// The leading `//` comment lines of `source`, without the slashes, joined by spaces.
+pub fn description(source: &str) -> String {
+    source
+        .lines()
+        .map(str::trim)
+        .take_while(|l| l.starts_with("//"))
+        .map(|l| l.trim_start_matches('/').trim())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+impl Builtin {
+    /// Name, language, description and parameters (from the parsed program).
+    pub fn info(&self) -> GrammarInfo {
+        let parsed = crate::pipeline::parse_source(self.source.as_bytes(), Some(self.language), &Limits::default());
+        let (params, error) = match parsed {
+            Ok((_, program)) => (
+                program
+                    .params
+                    .iter()
+                    .map(|p| ParamInfo {
+                        name: p.name.clone(),
+                        kind: match p.kind {
+                            ParamKind::Int => "int",
+                            ParamKind::Float => "float",
+                            ParamKind::Bool => "bool",
+                        },
+                        default: p.default,
+                        min: p.range.map(|r| r.0),
+                        max: p.range.map(|r| r.1),
+                    })
+                    .collect(),
+                None,
+            ),
+            Err(e) => (Vec::new(), Some(e.to_string())),
+        };
+        GrammarInfo { name: self.name, language: self.language.name(), description: description(self.source), params, error }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn library_is_embedded() {
+        assert!(all().count() >= 8);
+        let gem = find("gem").expect("gem is built in");
+        assert!(gem.source.contains("startshape"));
+        assert!(description(gem.source).starts_with("An icon-sized gem"));
+        assert!(find("nope").is_none());
+    }
+}

@@ -1,0 +1,194 @@
+//! The headless service: HTTP ([`http`], axum) and gRPC ([`grpc`], tonic)
+//! front doors over one [`Engine`] (content-hash cache, single-flight,
+//! bounded concurrency) that calls the same [`crate::render`] as the CLI.
+//!
+//! Workers are stateless: any worker answers any request, and nothing but
+//! the cache outlives a request.
+
+pub mod config;
+pub mod engine;
+pub mod error;
+pub mod grpc;
+pub mod http;
+pub mod library;
+pub mod metrics;
+pub mod request;
+
+pub use config::ServeConfig;
+pub use engine::{Engine, Served};
+pub use error::ServiceError;
+pub use metrics::Metrics;
+pub use request::{RenderBody, RenderPlan};
+
+use crate::eval::Limits;
+use std::future::Future;
+use std::net::SocketAddr;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use tokio::sync::watch;
+use tokio::task::JoinHandle;
+
+/// What every handler shares.
+pub struct AppState {
+    /// The render engine (cache, limits, blocking pool).
+    pub engine: Engine,
+    /// Metrics.
+    pub metrics: Arc<Metrics>,
+    /// The configuration.
+    pub config: ServeConfig,
+    /// The server-side ceiling on client limits.
+    pub ceiling: Limits,
+    ready: AtomicBool,
+}
+
+impl AppState {
+    /// State for `config`.
+    pub fn new(config: ServeConfig) -> AppState {
+        let metrics = Arc::new(Metrics::default());
+        AppState {
+            engine: Engine::new(&config, metrics.clone()),
+            metrics,
+            ceiling: config.ceiling(),
+            config,
+            ready: AtomicBool::new(true),
+        }
+    }
+
+    /// False once shutdown has begun.
+    pub fn is_ready(&self) -> bool {
+        self.ready.load(Ordering::Acquire)
+    }
+}
+
+/// Why the server could not start or stopped with an error.
+#[derive(Debug, thiserror::Error)]
+pub enum ServeError {
+    /// A listener could not be bound.
+    #[error("cannot listen on {addr}: {source}")]
+    Bind {
+        /// The address.
+        addr: SocketAddr,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// The HTTP server failed.
+    #[error("HTTP server: {0}")]
+    Http(std::io::Error),
+    /// The gRPC server failed.
+    #[error("gRPC server: {0}")]
+    Grpc(#[from] tonic::transport::Error),
+    /// In-flight requests did not finish within the grace period.
+    #[error("in-flight requests did not finish within {0:?}; stopped anyway")]
+    GraceExpired(std::time::Duration),
+    /// A server task panicked.
+    #[error("server task failed: {0}")]
+    Join(#[from] tokio::task::JoinError),
+}
+
+/// A running server: its addresses, its state, and a handle to stop it.
+pub struct Running {
+    /// Where HTTP listens.
+    pub http_addr: SocketAddr,
+    /// Where gRPC listens.
+    pub grpc_addr: SocketAddr,
+    /// The shared state (metrics, cache).
+    pub state: Arc<AppState>,
+    stop: watch::Sender<bool>,
+    http: JoinHandle<Result<(), ServeError>>,
+    grpc: JoinHandle<Result<(), ServeError>>,
+}
+
+impl Running {
+    /// Begins a graceful shutdown: stop accepting, let in-flight requests finish.
+    pub fn shutdown(&self) {
+        self.state.ready.store(false, Ordering::Release);
+        let _ = self.stop.send(true);
+    }
+
+    /// Waits for both servers to stop, at most the configured grace period after [`Running::shutdown`].
+    pub async fn wait(self) -> Result<(), ServeError> {
+        let grace = self.state.config.grace();
+        let mut stop = self.stop.subscribe();
+        let _ = stop.wait_for(|v| *v).await;
+        let both = async {
+            let (h, g) = tokio::join!(self.http, self.grpc);
+            h??;
+            g??;
+            Ok(())
+        };
+        match tokio::time::timeout(grace, both).await {
+            Ok(r) => r,
+            Err(_) => Err(ServeError::GraceExpired(grace)),
+        }
+    }
+}
+
+async fn bind(addr: SocketAddr) -> Result<tokio::net::TcpListener, ServeError> {
+    tokio::net::TcpListener::bind(addr).await.map_err(|source| ServeError::Bind { addr, source })
+}
+
+/// Binds both listeners (port 0 picks a free port) and starts serving.
+pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
+    let http_listener = bind(config.http).await?;
+    let grpc_listener = bind(config.grpc).await?;
+    let http_addr = http_listener.local_addr().map_err(|source| ServeError::Bind { addr: config.http, source })?;
+    let grpc_addr = grpc_listener.local_addr().map_err(|source| ServeError::Bind { addr: config.grpc, source })?;
+    let state = Arc::new(AppState::new(config));
+    let (stop, _) = watch::channel(false);
+
+    let stopped = |mut rx: watch::Receiver<bool>| async move {
+        let _ = rx.wait_for(|v| *v).await;
+    };
+
+    let app = http::router(state.clone());
+    let http_stop = stopped(stop.subscribe());
+    let http = tokio::spawn(async move {
+        axum::serve(http_listener, app).with_graceful_shutdown(http_stop).await.map_err(ServeError::Http)
+    });
+
+    let (health, health_service) = tonic_health::server::health_reporter();
+    health.set_serving::<grpc::pb::rulemesh_server::RulemeshServer<grpc::GrpcService>>().await;
+    let grpc_service = grpc::server(state.clone());
+    let grpc_stop = stopped(stop.subscribe());
+    let grpc = tokio::spawn(async move {
+        tonic::transport::Server::builder()
+            .add_service(health_service)
+            .add_service(grpc_service)
+            .serve_with_incoming_shutdown(tonic::transport::server::TcpIncoming::from(grpc_listener), grpc_stop)
+            .await
+            .map_err(ServeError::Grpc)
+    });
+    tracing::info!(%http_addr, %grpc_addr, "rulemesh serving");
+    Ok(Running { http_addr, grpc_addr, state, stop, http, grpc })
+}
+
+/// Serves until `signal` resolves, then shuts down gracefully.
+pub async fn serve(config: ServeConfig, signal: impl Future<Output = ()>) -> Result<(), ServeError> {
+    let running = start(config).await?;
+    signal.await;
+    tracing::info!("shutting down: finishing in-flight requests");
+    running.shutdown();
+    running.wait().await
+}
+
+/// Resolves on SIGINT (Ctrl-C) or, on Unix, SIGTERM.
+pub async fn shutdown_signal() {
+    let ctrl_c = async {
+        let _ = tokio::signal::ctrl_c().await;
+    };
+    #[cfg(unix)]
+    let term = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut s) => {
+                s.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let term = std::future::pending::<()>();
+    tokio::select! {
+        () = ctrl_c => {},
+        () = term => {},
+    }
+}

@@ -1,0 +1,215 @@
+//! Requests in two stages, shared by HTTP and gRPC: a raw request exactly as
+//! the client sent it ([`RenderBody`]), and a validated [`RenderPlan`] with
+//! every default filled in, every limit clamped and the cache key computed.
+
+use super::ServiceError;
+use crate::cache::key::{cache_key, normalize_source};
+use crate::cache::CacheKey;
+use crate::eval::{Limits, OnLimit, ParamValue};
+use crate::export::{ExportOptions, Format, StripsOptions};
+use crate::geom::{MeshLayout, DEFAULT_DETAIL};
+use crate::lang::Language;
+use crate::RenderRequest;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+/// Client-supplied limits: every field optional, missing ones take the defaults.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LimitsBody {
+    /// [`Limits::max_depth`]
+    pub max_depth: Option<u32>,
+    /// [`Limits::max_primitives`]
+    pub max_primitives: Option<u64>,
+    /// [`Limits::max_triangles`]
+    pub max_triangles: Option<u64>,
+    /// [`Limits::max_memory`]
+    pub max_memory: Option<u64>,
+    /// [`Limits::timeout_ms`]
+    pub timeout_ms: Option<u64>,
+    /// [`Limits::max_source_bytes`]
+    pub max_source_bytes: Option<u64>,
+    /// [`Limits::max_steps`]
+    pub max_steps: Option<u64>,
+}
+
+impl LimitsBody {
+    /// The defaults overridden by the given fields, clamped to `ceiling`.
+    pub fn resolve(&self, ceiling: &Limits) -> Limits {
+        let d = Limits::default();
+        Limits {
+            max_depth: self.max_depth.unwrap_or(d.max_depth),
+            max_primitives: self.max_primitives.unwrap_or(d.max_primitives),
+            max_triangles: self.max_triangles.unwrap_or(d.max_triangles),
+            max_memory: self.max_memory.unwrap_or(d.max_memory),
+            timeout_ms: self.timeout_ms.unwrap_or(d.timeout_ms),
+            max_source_bytes: self.max_source_bytes.unwrap_or(d.max_source_bytes),
+            max_steps: self.max_steps.unwrap_or(d.max_steps),
+        }
+        .clamped_to(ceiling)
+    }
+}
+
+/// `POST /v1/render` as sent (and the gRPC `RenderRequest`, converted).
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RenderBody {
+    /// Grammar source.
+    pub source: String,
+    /// `"mdg"`; detected from the source when absent.
+    pub language: Option<String>,
+    /// Random seed.
+    pub seed: Option<u64>,
+    /// Grammar parameters.
+    #[serde(default)]
+    pub params: BTreeMap<String, ParamValue>,
+    /// `"glb"` (default), `"gltf"`, `"stl"` or `"stl-ascii"`.
+    pub format: Option<String>,
+    /// Limits, each clamped to the server's ceiling.
+    pub limits: Option<LimitsBody>,
+    /// `"error"` (default) or `"truncate"`.
+    pub on_limit: Option<String>,
+    /// Tessellation detail.
+    pub detail: Option<u32>,
+    /// `"merged"` (default) or `"per-kind"`.
+    pub layout: Option<String>,
+    /// `strips` only: bits per position axis (8, 10, 12 or 16; default 16).
+    pub position_bits: Option<u8>,
+    /// `strips` only: bits per normal component (8 or 16; default 8).
+    pub normal_bits: Option<u8>,
+    /// `strips` only: wrap the body in zstd (default false).
+    pub zstd: Option<bool>,
+}
+
+/// `POST /v1/check` as sent.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CheckBody {
+    /// Grammar source.
+    pub source: String,
+    /// `"mdg"`; detected from the source when absent.
+    pub language: Option<String>,
+}
+
+/// A validated render: what to render, how, and under which cache key.
+#[derive(Debug, Clone)]
+pub struct RenderPlan {
+    /// The source with line endings normalised.
+    pub source: Arc<[u8]>,
+    /// The pipeline request.
+    pub request: RenderRequest,
+    /// The cache key.
+    pub key: CacheKey,
+    /// Render afresh, ignoring the cache.
+    pub no_cache: bool,
+}
+
+/// Reads a language name.
+pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceError> {
+    match name.map(str::trim) {
+        None | Some("") => Ok(None),
+        Some(n) if n.eq_ignore_ascii_case("mdg") => Ok(Some(Language::Mdg)),
+        Some(n) if n.eq_ignore_ascii_case("lsystem") => Ok(Some(Language::Lsystem)),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem)"))),
+    }
+}
+
+/// Reads a format name (also a URL extension).
+pub fn parse_format(name: Option<&str>) -> Result<Format, ServiceError> {
+    match name.map(|s| s.trim().to_ascii_lowercase()).as_deref() {
+        None | Some("") | Some("glb") => Ok(Format::Glb),
+        Some("gltf") => Ok(Format::Gltf),
+        Some("stl") => Ok(Format::Stl),
+        Some("stl-ascii") => Ok(Format::StlAscii),
+        Some("strips") => Ok(Format::Strips),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: glb, gltf, stl, stl-ascii, strips)"))),
+    }
+}
+
+fn parse_on_limit(name: Option<&str>) -> Result<OnLimit, ServiceError> {
+    match name.map(str::trim) {
+        None | Some("") | Some("error") => Ok(OnLimit::Error),
+        Some("truncate") => Ok(OnLimit::Truncate),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown on_limit `{other}` (known: error, truncate)"))),
+    }
+}
+
+fn parse_layout(name: Option<&str>) -> Result<MeshLayout, ServiceError> {
+    match name.map(str::trim) {
+        None | Some("") | Some("merged") => Ok(MeshLayout::Merged),
+        Some("per-kind") => Ok(MeshLayout::PerKind),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown layout `{other}` (known: merged, per-kind)"))),
+    }
+}
+
+impl RenderBody {
+    /// Validates the request against the server's `ceiling`.
+    pub fn plan(self, ceiling: &Limits, no_cache: bool) -> Result<RenderPlan, ServiceError> {
+        let request = RenderRequest {
+            language: parse_language(self.language.as_deref())?,
+            seed: self.seed,
+            params: self.params,
+            format: parse_format(self.format.as_deref())?,
+            limits: self.limits.unwrap_or_default().resolve(ceiling),
+            on_limit: parse_on_limit(self.on_limit.as_deref())?,
+            detail: self.detail.unwrap_or(DEFAULT_DETAIL),
+            layout: parse_layout(self.layout.as_deref())?,
+            export_options: {
+                let d = StripsOptions::default();
+                let strips = StripsOptions {
+                    position_bits: self.position_bits.unwrap_or(d.position_bits),
+                    normal_bits: self.normal_bits.unwrap_or(d.normal_bits),
+                    zstd: self.zstd.unwrap_or(d.zstd),
+                };
+                strips.validate().map_err(ServiceError::BadRequest)?;
+                ExportOptions { strips }
+            },
+        };
+        let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
+        let key = cache_key(&source, &request);
+        Ok(RenderPlan { source, request, key, no_cache })
+    }
+}
+
+/// Reads a JSON body into `T`, with serde's message (and position) on failure.
+pub fn from_json<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, ServiceError> {
+    serde_json::from_slice(body).map_err(|e| ServiceError::BadRequest(format!("malformed JSON request: {e}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_and_clamping() {
+        let body: RenderBody = from_json(br#"{"source":"startshape A","limits":{"max_primitives":999999999999}}"#).expect("parses");
+        let plan = body.plan(&Limits { max_primitives: 1000, ..Limits::ceiling() }, false).expect("valid");
+        assert_eq!(plan.request.limits.max_primitives, 1000);
+        assert_eq!(plan.request.format, Format::Glb);
+        assert_eq!(plan.request.detail, DEFAULT_DETAIL);
+    }
+
+    #[test]
+    fn bad_fields_are_bad_requests() {
+        for bad in [
+            r#"{"source":"x","format":"obj"}"#,
+            r#"{"source":"x","language":"cfdg"}"#,
+            r#"{"source":"x","on_limit":"maybe"}"#,
+            r#"{"source":"x","layout":"spread"}"#,
+        ] {
+            let body: RenderBody = from_json(bad.as_bytes()).expect("json ok");
+            assert!(matches!(body.plan(&Limits::ceiling(), false), Err(ServiceError::BadRequest(_))), "{bad}");
+        }
+        for bad in [r#"{"source":1}"#, r#"{"src":"x"}"#, r#"{"source":"x","seed":-1}"#, "{", r#"{"source":"x","limits":{"max_foo":1}}"#] {
+            assert!(matches!(from_json::<RenderBody>(bad.as_bytes()), Err(ServiceError::BadRequest(_))), "{bad}");
+        }
+    }
+
+    #[test]
+    fn crlf_and_lf_share_a_key() {
+        let a: RenderBody = from_json(br#"{"source":"startshape A\r\nrule A { BOX {} }\r\n"}"#).expect("json");
+        let b: RenderBody = from_json(br#"{"source":"startshape A\nrule A { BOX {} }\n"}"#).expect("json");
+        assert_eq!(a.plan(&Limits::ceiling(), false).expect("a").key, b.plan(&Limits::ceiling(), false).expect("b").key);
+    }
+}
