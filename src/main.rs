@@ -4,7 +4,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use rulemesh::eval::{Limits, OnLimit, ParamValue};
-use rulemesh::export::{ExportOptions, Format, StripsOptions};
+use rulemesh::export::{Compression, ExportOptions, Format, GltfOptions, StripsOptions};
 use rulemesh::geom::{MeshLayout, DEFAULT_DETAIL};
 use rulemesh::lang::{Diagnostic, Language};
 use rulemesh::{render, RenderError, RenderRequest};
@@ -118,6 +118,18 @@ struct RenderArgs {
     /// strips format: wrap the body in zstd (the JavaScript decoder cannot read it).
     #[arg(long)]
     zstd: bool,
+    /// glb/gltf: weld identical vertices and drop degenerate triangles.
+    #[arg(long)]
+    weld: bool,
+    /// glb/gltf: KHR_mesh_quantization (16-bit positions, 8-bit normals; implies --weld).
+    #[arg(long)]
+    quantize: bool,
+    /// glb/gltf: buffer compression (meshopt = EXT_meshopt_compression; implies --weld).
+    #[arg(long, value_enum, default_value = "none")]
+    compress: Compression,
+    /// Scale and move the model into a unit box centred at the origin (every format).
+    #[arg(long)]
+    fit_unit_box: bool,
 }
 
 #[derive(Args)]
@@ -221,6 +233,8 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
         layout: args.layout,
         export_options: ExportOptions {
             strips: StripsOptions { position_bits: args.position_bits, normal_bits: args.normal_bits, zstd: args.zstd },
+            gltf: GltfOptions { weld: args.weld, quantize: args.quantize, compress: args.compress },
+            fit_unit_box: args.fit_unit_box,
         },
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;

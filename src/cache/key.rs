@@ -112,6 +112,13 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
         let o = &req.export_options.strips;
         e.field("strips", &[o.position_bits, o.normal_bits, u8::from(o.zstd)]);
     }
+    let g = &req.export_options.gltf;
+    if matches!(req.format, Format::Glb | Format::Gltf) && !g.is_plain() {
+        e.field("gltf", &[u8::from(g.weld), u8::from(g.quantize), g.compress as u8]);
+    }
+    if req.export_options.fit_unit_box {
+        e.field("fit", b"unit");
+    }
     e.u64("detail", req.detail.into());
     e.field("layout", layout_name(req.layout).as_bytes());
     encode_limits(&mut e, &req.limits);

@@ -208,6 +208,16 @@ impl Budget {
         Ok(())
     }
 
+    /// Counts `n` evaluation steps at once (work proportional to a known size,
+    /// such as an isosurface grid), checking the clock once.
+    pub fn charge_steps(&mut self, n: u64) -> Result<(), LimitExceeded> {
+        self.steps = self.steps.saturating_add(n);
+        if self.steps > self.limits.max_steps {
+            return Err(Self::exceeded(Limit::Steps, self.limits.max_steps, self.steps));
+        }
+        self.check_deadline()
+    }
+
     /// Counts one primitive with `triangles` triangles.
     #[inline]
     pub fn charge_primitive(&mut self, triangles: u64) -> Result<(), LimitExceeded> {

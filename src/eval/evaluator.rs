@@ -9,7 +9,9 @@
 use super::budget::{Budget, OnLimit};
 use super::frame::Frame;
 use super::rng::StreamKey;
-use super::scene::{FreeVertex, Instance, LinePoint, Polyline, Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES};
+use super::scene::{
+    FreeVertex, Instance, LinePoint, Polyline, Scene, ShapeInstance, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES, SHAPE_INSTANCE_BYTES,
+};
 use super::EvalError;
 use crate::geom::{primitives, sweep};
 use crate::lang::expr::{Expr, ExprEnv};
@@ -310,7 +312,11 @@ pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
         acc.saturating_add(d.bytes(v, t).saturating_mul(l.points.len() as u64))
     });
     let vertices = d.bytes(1, 1).saturating_mul(scene.vertices.len() as u64);
-    instances.saturating_add(lines).saturating_add(vertices)
+    let shapes = scene.shape_instances.iter().fold(0u64, |acc, s| {
+        let (v, t) = scene.shapes.get(s.shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, (p.indices.len() / 3) as u64));
+        acc.saturating_add(d.bytes(v, t))
+    });
+    instances.saturating_add(lines).saturating_add(vertices).saturating_add(shapes)
 }
 
 /// Sides of a line's cross-section: its profile's point count, or the default tube's.
@@ -372,6 +378,8 @@ struct Machine<'p, 'b> {
     profile_index: HashMap<GroupId, Option<u32>>,
     /// The evaluation's root stream key (paths derive their own from it).
     root_key: StreamKey,
+    /// Scene shape index of each isosurface meshed so far.
+    isosurface_shape: HashMap<u32, u32>,
 }
 
 /// What a path or profile rule emitted.
@@ -415,6 +423,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             captured: HashMap::new(),
             profile_index: HashMap::new(),
             root_key,
+            isosurface_shape: HashMap::new(),
         }
     }
 
@@ -542,6 +551,19 @@ impl<'p, 'b> Machine<'p, 'b> {
             Target::Vertex | Target::Frame | Target::FaceNormals => {
                 self.budget.charge_step()?;
                 self.special(target, &ctx)
+            }
+            Target::Isosurface(_) if self.capture.is_some() => Ok(()),
+            Target::Isosurface(i) => {
+                self.budget.charge_step()?;
+                let shape = self.isosurface(i)?;
+                let (v, t) = self.scene.shapes.get(shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, (p.indices.len() / 3) as u64));
+                self.budget.charge_triangles(t)?;
+                self.budget.reserve_memory(SHAPE_INSTANCE_BYTES.saturating_add(self.ev.cost.bytes(v, t)))?;
+                let mut colour = ctx.colour;
+                colour[3] += 1.0;
+                self.scene.shape_instances.push(ShapeInstance { shape, frame: ctx.frame, colour: colour.map(|c| c.clamp(0.0, 1.0) as f32) });
+                self.last_terminal = Some(ctx.frame);
+                Ok(())
             }
             Target::Primitive(kind) => {
                 self.budget.charge_step()?;
@@ -743,6 +765,31 @@ impl<'p, 'b> Machine<'p, 'b> {
         Ok(Rc::new(frames))
     }
 
+    /// The scene shape of isosurface `i`, meshed on first use. The grid's
+    /// samples are charged as steps and memory before any is computed.
+    fn isosurface(&mut self, i: u32) -> Result<u32, EvalError> {
+        if let Some(&s) = self.isosurface_shape.get(&i) {
+            return Ok(s);
+        }
+        let Some(iso) = self.ev.program.isosurfaces.get(i as usize) else { return Ok(0) };
+        let samples = crate::geom::isosurface::sample_count(&iso.axes);
+        self.budget.charge_steps(samples)?;
+        // The grid (an f32 field and a u32 vertex map per sample) is transient but large.
+        let grid_bytes = samples.saturating_mul(12);
+        self.budget.reserve_memory(grid_bytes)?;
+        let params = self.ev.params;
+        let key = self.root_key;
+        let proto = crate::geom::isosurface::mesh_isosurface(&iso.axes, |p| {
+            iso.field.eval(&mut Env { params, key, pos: DVec3::from_array(p) })
+        });
+        self.budget.release_memory(grid_bytes);
+        self.budget.reserve_memory(crate::geom::meshing::mesh_bytes(proto.positions.len() as u64, (proto.indices.len() / 3) as u64))?;
+        self.scene.shapes.push(proto);
+        let s = (self.scene.shapes.len() - 1) as u32;
+        self.isosurface_shape.insert(i, s);
+        Ok(s)
+    }
+
     /// The scene profile made by profile rule `g` (its `VERTEX` points), if it made one.
     fn profile(&mut self, g: GroupId) -> Result<Option<u32>, EvalError> {
         if let Some(p) = self.profile_index.get(&g) {
@@ -844,6 +891,7 @@ mod tests {
             params: vec![],
             site_count,
             warnings: vec![],
+            isosurfaces: vec![],
         }
     }
 

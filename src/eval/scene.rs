@@ -81,6 +81,20 @@ pub struct FreeVertex {
     pub colour: [f32; 4],
 }
 
+/// One placement of a scene shape (an isosurface).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapeInstance {
+    /// Index into [`Scene::shapes`].
+    pub shape: u32,
+    /// Where it is placed.
+    pub frame: Frame,
+    /// Linear RGBA, each clamped to [0, 1].
+    pub colour: [f32; 4],
+}
+
+/// Bytes accounted per stored shape placement.
+pub const SHAPE_INSTANCE_BYTES: u64 = std::mem::size_of::<ShapeInstance>() as u64;
+
 /// Bytes accounted per stored free vertex.
 pub const FREE_VERTEX_BYTES: u64 = std::mem::size_of::<FreeVertex>() as u64;
 
@@ -98,6 +112,10 @@ pub struct Scene {
     pub profiles: Vec<Vec<glam::DVec3>>,
     /// Free vertices from `VERTEX {}` outside profile rules.
     pub vertices: Vec<FreeVertex>,
+    /// Meshes made during evaluation (isosurfaces), placed by [`Scene::shape_instances`].
+    pub shapes: Vec<crate::geom::primitives::Prototype>,
+    /// Placements of [`Scene::shapes`].
+    pub shape_instances: Vec<ShapeInstance>,
     /// Clear colour from `background`, if the grammar set one.
     pub background: Option<[f32; 4]>,
     /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.

@@ -299,6 +299,15 @@ impl Sink for Base64<'_> {
     }
 }
 
+/// Standard base64 (with `=` padding) of `bytes`, for other glTF writers.
+pub(super) fn base64(bytes: &[u8]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(base64_len(bytes.len() as u64) as usize);
+    let mut b = Base64 { out: &mut out, carry: [0; 3], held: 0 };
+    b.put(bytes);
+    b.finish();
+    out
+}
+
 /// Length of the base64 encoding of `n` bytes.
 fn base64_len(n: u64) -> u64 {
     n.div_ceil(3).saturating_mul(4)

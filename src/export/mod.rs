@@ -1,9 +1,11 @@
 //! Exporters: meshes → bytes. They read meshes and scene metadata only; they never parse.
 
+pub mod compact;
 pub mod gltf;
 pub mod stl;
 pub mod strips;
 
+pub use compact::{Compression, GltfOptions};
 pub use strips::{decode_strips, StripsError, StripsOptions};
 
 use crate::eval::budget::{Budget, LimitExceeded};
@@ -114,6 +116,11 @@ pub enum ExportError {
 pub struct ExportOptions {
     /// Precision and compression of the `strips` format.
     pub strips: StripsOptions,
+    /// Welding, quantisation and compression of the `glb` and `gltf` formats.
+    pub gltf: GltfOptions,
+    /// Scale and move the model into a unit box centred at the origin (every
+    /// format): its longest side becomes 1, its bounding box centre the origin.
+    pub fit_unit_box: bool,
 }
 
 /// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
@@ -130,8 +137,18 @@ pub fn export_with(
     options: &ExportOptions,
     budget: &mut Budget,
 ) -> Result<Vec<u8>, ExportError> {
+    let fitted;
+    let meshes = if options.fit_unit_box {
+        fitted = crate::geom::normalize::fit_unit_box(meshes, budget)?;
+        &fitted[..]
+    } else {
+        meshes
+    };
+    let g = &options.gltf;
     match format {
         Format::Strips => strips::write_strips(meshes, &options.strips, budget),
+        Format::Glb if !g.is_plain() => compact::write_glb(meshes, meta, g, budget),
+        Format::Gltf if !g.is_plain() => compact::write_gltf(meshes, meta, g, budget),
         Format::Glb => gltf::write_glb(meshes, meta, budget),
         Format::Gltf => gltf::write_gltf(meshes, meta, budget),
         Format::Stl => stl::write_binary(meshes, budget),

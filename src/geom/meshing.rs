@@ -68,7 +68,39 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
     if let Some(mesh) = free_triangles(&scene.vertices, budget)? {
         meshes.push(NamedMesh { name: "vertices".to_string(), mesh });
     }
+    if let Some(mesh) = placed_shapes(scene, budget)? {
+        meshes.push(NamedMesh { name: "isosurfaces".to_string(), mesh });
+    }
     Ok(meshes)
+}
+
+/// The scene's own shapes (isosurfaces) at each placement, in one mesh.
+fn placed_shapes(scene: &Scene, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+    let sizes = |s: &crate::eval::scene::ShapeInstance| {
+        scene.shapes.get(s.shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, p.indices.len() as u64 / 3))
+    };
+    let (v, t) = scene.shape_instances.iter().map(sizes).fold((0u64, 0u64), |(a, b), (v, t)| (a.saturating_add(v), b.saturating_add(t)));
+    if t == 0 {
+        return Ok(None);
+    }
+    if v > u64::from(u32::MAX) {
+        return Err(LimitExceeded { limit: Limit::Memory, configured: budget.limits().max_memory, reached: budget.memory().saturating_add(mesh_bytes(v, t)) });
+    }
+    budget.reserve_memory(mesh_bytes(v, t))?;
+    let mut mesh = Mesh {
+        positions: Vec::with_capacity(v as usize),
+        normals: Vec::with_capacity(v as usize),
+        colours: Vec::with_capacity(v as usize),
+        indices: Vec::with_capacity(3 * t as usize),
+    };
+    for s in &scene.shape_instances {
+        let Some(proto) = scene.shapes.get(s.shape as usize) else { continue };
+        let placed = Instance::new(PrimitiveKind::Box, &s.frame, s.colour.map(f64::from));
+        if is_drawable(&placed) {
+            append_instance(&mut mesh, proto, &placed);
+        }
+    }
+    Ok(Some(mesh))
 }
 
 /// Triangles from free `VERTEX` calls: every three consecutive vertices, in

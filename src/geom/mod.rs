@@ -1,8 +1,10 @@
 //! Geometry: tessellation of the built-in primitives and turning a
 //! [`Scene`](crate::eval::scene::Scene) of instances into indexed meshes.
 
+pub mod isosurface;
 pub mod mesh;
 pub mod meshing;
+pub mod normalize;
 pub mod primitives;
 pub mod strip;
 pub mod sweep;

@@ -28,6 +28,8 @@ pub struct Program {
     pub site_count: u32,
     /// Non-fatal diagnostics found while parsing (ignored blocks, unknown directives).
     pub warnings: Vec<super::Diagnostic>,
+    /// `isosurface` declarations; [`Target::Isosurface`] indexes this.
+    pub isosurfaces: Vec<Isosurface>,
 }
 
 /// All rules that share one name; a call picks one of them with the group's selector.
@@ -106,6 +108,22 @@ pub enum Target {
     FaceNormals,
     /// `FRAME {}`: emits a frame into the path of a transform rule.
     Frame,
+    /// An `isosurface` drawable, by index in [`Program::isosurfaces`].
+    Isosurface(u32),
+}
+
+/// `isosurface NAME { … }`: the surface f(x, y, z) = 0 of a field sampled on a
+/// grid, with the inside where f > 0, closed against its bounding box.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Isosurface {
+    /// The drawable's name (it overrides a built-in primitive of that name).
+    pub name: String,
+    /// Per axis x, y, z: (min, max, cells). Samples per axis are cells + 1.
+    pub axes: [(f64, f64, u32); 3],
+    /// The field, a function of the coordinates (`Expr::Coord`).
+    pub field: Expr,
+    /// Where it is declared.
+    pub span: Span,
 }
 
 /// The pen operations of swept lines. Each is a terminal: it updates the

@@ -55,6 +55,10 @@ impl From<pb::RenderRequest> for RenderBody {
             position_bits: r.position_bits.map(|b| u8::try_from(b).unwrap_or(0)),
             normal_bits: r.normal_bits.map(|b| u8::try_from(b).unwrap_or(0)),
             zstd: r.zstd,
+            weld: r.weld,
+            quantize: r.quantize,
+            compress: non_empty(r.compress),
+            fit: non_empty(r.fit),
         }
     }
 }

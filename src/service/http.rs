@@ -165,11 +165,15 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
             match k.as_str() {
                 "seed" => body.seed = Some(v.parse().map_err(|_| bad("seed must be a whole number ≥ 0"))?),
                 "detail" => body.detail = Some(v.parse().map_err(|_| bad("detail must be a whole number"))?),
+                "quantize" => body.quantize = Some(v.parse().map_err(|_| bad("quantize must be true or false"))?),
+                "weld" => body.weld = Some(v.parse().map_err(|_| bad("weld must be true or false"))?),
+                "compress" => body.compress = Some(v.clone()),
+                "fit" => body.fit = Some(v.clone()),
                 _ => match k.strip_prefix("p.") {
                     Some(p) if !p.is_empty() => {
                         body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
                     }
-                    _ => return Err(bad("unknown query parameter (seed, detail, p.<name>)")),
+                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, p.<name>)")),
                 },
             }
         }

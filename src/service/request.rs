@@ -6,7 +6,7 @@ use super::ServiceError;
 use crate::cache::key::{cache_key, normalize_source};
 use crate::cache::CacheKey;
 use crate::eval::{Limits, OnLimit, ParamValue};
-use crate::export::{ExportOptions, Format, StripsOptions};
+use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptions, StripsOptions};
 use crate::geom::{MeshLayout, DEFAULT_DETAIL};
 use crate::lang::Language;
 use crate::RenderRequest;
@@ -80,6 +80,14 @@ pub struct RenderBody {
     pub normal_bits: Option<u8>,
     /// `strips` only: wrap the body in zstd (default false).
     pub zstd: Option<bool>,
+    /// `glb`/`gltf` only: weld identical vertices (default false).
+    pub weld: Option<bool>,
+    /// `glb`/`gltf` only: `KHR_mesh_quantization` (default false).
+    pub quantize: Option<bool>,
+    /// `glb`/`gltf` only: `"none"` (default) or `"meshopt"` (`EXT_meshopt_compression`).
+    pub compress: Option<String>,
+    /// `"unit"`: scale and move the model into a unit box centred at the origin; `"none"` (default) leaves it.
+    pub fit: Option<String>,
 }
 
 /// `POST /v1/check` as sent.
@@ -143,6 +151,15 @@ fn parse_layout(name: Option<&str>) -> Result<MeshLayout, ServiceError> {
     }
 }
 
+/// Reads a `fit` value: `"unit"` → fit the unit box; `"none"` or absent → leave the model as it is.
+pub fn parse_fit(name: Option<&str>) -> Result<bool, ServiceError> {
+    match name.map(str::trim) {
+        None | Some("") | Some("none") => Ok(false),
+        Some("unit") => Ok(true),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown fit `{other}` (known: none, unit)"))),
+    }
+}
+
 impl RenderBody {
     /// Validates the request against the server's `ceiling`.
     pub fn plan(self, ceiling: &Limits, no_cache: bool) -> Result<RenderPlan, ServiceError> {
@@ -163,7 +180,13 @@ impl RenderBody {
                     zstd: self.zstd.unwrap_or(d.zstd),
                 };
                 strips.validate().map_err(ServiceError::BadRequest)?;
-                ExportOptions { strips }
+                let gltf = GltfOptions {
+                    weld: self.weld.unwrap_or(false),
+                    quantize: self.quantize.unwrap_or(false),
+                    compress: parse_compression(self.compress.as_deref().unwrap_or("")).map_err(ServiceError::BadRequest)?,
+                };
+                let fit_unit_box = parse_fit(self.fit.as_deref())?;
+                ExportOptions { strips, gltf, fit_unit_box }
             },
         };
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();

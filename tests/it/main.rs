@@ -5,9 +5,11 @@
 mod common;
 
 mod cli;
+mod compact;
 mod counts;
 mod determinism;
 mod docs;
+mod gallery;
 mod grammars;
 mod hostile;
 mod lines;

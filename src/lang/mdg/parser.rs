@@ -3,7 +3,7 @@
 
 use super::lexer::{Tok, Token};
 use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
-use crate::lang::ir::{GroupId, LineOp, RuleTransform, Selector};
+use crate::lang::ir::{GroupId, Isosurface, LineOp, RuleTransform, Selector};
 use crate::lang::ir::{
     Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
     Program, Rule, RuleGroup, Target,
@@ -124,6 +124,9 @@ pub(crate) struct Parser<'a> {
     group_refs: Vec<(GroupRef, &'a str, Span)>,
     /// `linerule NAME`, resolved at the end.
     linerule: Option<(&'a str, Span)>,
+    /// `isosurface` declarations and their names.
+    isosurfaces: Vec<Isosurface>,
+    isosurface_index: HashMap<&'a str, u32>,
 }
 
 /// Where a group name that must be resolved at the end belongs.
@@ -186,6 +189,8 @@ impl<'a> Parser<'a> {
             coords: false,
             group_refs: Vec::new(),
             linerule: None,
+            isosurfaces: Vec::new(),
+            isosurface_index: HashMap::new(),
         }
     }
 
@@ -341,12 +346,16 @@ impl<'a> Parser<'a> {
             params: self.params,
             site_count: self.site,
             warnings: self.warnings,
+            isosurfaces: self.isosurfaces,
         })
     }
 
     fn resolve(&self, name: &str, span: Span) -> PResult<Target> {
         if let Some(&g) = self.group_index.get(name) {
             return Ok(Target::Group(g));
+        }
+        if let Some(&i) = self.isosurface_index.get(name) {
+            return Ok(Target::Isosurface(i));
         }
         if let Some(k) = PrimitiveKind::from_keyword(name) {
             return Ok(Target::Primitive(k));
@@ -600,7 +609,8 @@ impl<'a> Parser<'a> {
                 self.skip_block(&format!("`{word}`"))?;
                 self.warnings.push(Diagnostic::warning(t.span, format!("`{word}` ignored: not supported yet")));
             }
-            "namespace" | "isosurface" => return Err(err(t.span, format!("not supported yet: `{word}`"))),
+            "isosurface" => self.isosurface(t.span)?,
+            "namespace" => return Err(err(t.span, format!("not supported yet: `{word}`"))),
             w if SKIPPED_DIRECTIVES.contains(&w) => {
                 let stop = self.line_end(self.pos.saturating_sub(1));
                 while self.pos < stop && !self.is_punct('{') {
@@ -615,6 +625,62 @@ impl<'a> Parser<'a> {
                 return Err(err(t.span, format!("expected `rule`, `startshape` or a directive, found `{word}`")));
             }
         }
+        Ok(())
+    }
+
+    /// `isosurface NAME { xyz|x|y|z min max cells … function { expr } | function NAME }`.
+    fn isosurface(&mut self, span: Span) -> PResult<()> {
+        let (name, _) = self.name_after("isosurface")?;
+        self.expect_punct('{', || format!("after `isosurface {name}`"))?;
+        let mut axes: [Option<(f64, f64, u32)>; 3] = [None; 3];
+        let mut field: Option<Expr> = None;
+        loop {
+            let t = self.bump();
+            let word = match t.tok {
+                Tok::Punct('}') => break,
+                Tok::Ident(w) => w.to_ascii_lowercase(),
+                other => return Err(err(t.span, format!("expected `xyz`, `x`, `y`, `z`, `function` or `}}` in isosurface `{name}`, found {other}"))),
+            };
+            let which: &[usize] = match word.as_str() {
+                "xyz" => &[0, 1, 2],
+                "x" => &[0],
+                "y" => &[1],
+                "z" => &[2],
+                "function" => {
+                    field = Some(if self.is_punct('{') {
+                        self.position_function()?
+                    } else {
+                        let (f, fspan) = self.name_after("isosurface function")?;
+                        self.functions.get(f).cloned().ok_or_else(|| err(fspan, format!("unknown function `{f}`")))?
+                    });
+                    continue;
+                }
+                _ => return Err(err(t.span, format!("unknown isosurface setting `{word}` (xyz, x, y, z, function)"))),
+            };
+            let (lo, _) = self.const_value("the isosurface minimum")?;
+            let (hi, hspan) = self.const_value("the isosurface maximum")?;
+            if hi <= lo {
+                return Err(err(hspan, format!("isosurface maximum {hi} must be above the minimum {lo}")));
+            }
+            let cells = self.whole_value("the isosurface resolution", 1e9)?;
+            if cells < 1.0 {
+                return Err(err(hspan, "isosurface resolution must be at least 1"));
+            }
+            for &a in which {
+                axes[a] = Some((lo, hi, cells as u32));
+            }
+        }
+        let Some(field) = field else { return Err(err(span, format!("isosurface `{name}` has no `function`"))) };
+        let mut done = [(0.0, 0.0, 0); 3];
+        for (i, a) in axes.iter().enumerate() {
+            done[i] = a.ok_or_else(|| err(span, format!("isosurface `{name}` sets no range for {}", ["x", "y", "z"][i])))?;
+        }
+        if self.isosurface_index.contains_key(name) {
+            return Err(err(span, format!("isosurface `{name}` is declared twice")));
+        }
+        let i = u32::try_from(self.isosurfaces.len()).map_err(|_| err(span, "too many isosurfaces"))?;
+        self.isosurfaces.push(Isosurface { name: name.to_string(), axes: done, field, span });
+        self.isosurface_index.insert(name, i);
         Ok(())
     }
 

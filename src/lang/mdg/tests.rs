@@ -101,6 +101,7 @@ fn parses_the_basic_example_into_exact_ir() {
         params: vec![],
         site_count: 2,
         warnings: vec![],
+        isosurfaces: vec![],
     };
     assert_eq!(p, expected);
 }

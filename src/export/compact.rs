@@ -1,0 +1,601 @@
+//! Compact glTF 2.0 for phone clients: vertex welding, `KHR_mesh_quantization`
+//! and `EXT_meshopt_compression`, in .glb or .gltf.
+//!
+//! The plain writer ([`super::gltf`]) is used when every option is off; this
+//! module takes over as soon as one is on. Per mesh it
+//! 1. checks the mesh (same rules as the plain writer);
+//! 2. builds one record per vertex: float position, float normal and RGBA8
+//!    colour (28 bytes), or with `quantize` an unsigned 16-bit position on a
+//!    grid shared by all meshes, a normalised int8 normal and the colour
+//!    (16 bytes, every attribute padded to 4 bytes as glTF requires);
+//! 3. welds bitwise-identical records (meshoptimizer's vertex remap), drops
+//!    triangles that reuse a vertex or (quantised) a grid position, orders the
+//!    triangles for the post-transform vertex cache and the vertices by first
+//!    use;
+//! 4. writes one buffer view per attribute and one for the indices; with
+//!    `compress=meshopt` each view is also encoded with meshoptimizer's
+//!    vertex codec (version 0, mode `ATTRIBUTES`) or index codec (mode
+//!    `TRIANGLES`) into buffer 0, while the views themselves point into a
+//!    fallback buffer (buffer 1, no data, `"fallback": true`) that only
+//!    gives the decoded layout; the extension is then required.
+//!
+//! Quantised positions are dequantised by the mesh node's `translation`
+//! (the grid origin) and uniform `scale` (the grid step, the largest extent
+//! over 65535), so the model's world coordinates are the plain export's
+//! within half a grid step per axis. Normals are within 0.5/127 per
+//! component, so under 0.5° off. Output is deterministic.
+
+use super::{ExportError, ExportMeta};
+use crate::eval::budget::Budget;
+use crate::geom::NamedMesh;
+use serde_json::{json, Map, Value};
+
+/// Compression of the glTF buffer.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Compression {
+    /// No compression.
+    #[default]
+    None,
+    /// `EXT_meshopt_compression` (meshoptimizer's vertex and index codecs).
+    Meshopt,
+}
+
+/// Compact glTF options (request options of the `glb` and `gltf` formats).
+/// All off gives the plain export, byte for byte.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub struct GltfOptions {
+    /// Weld identical vertices and drop duplicate/degenerate ones (implied by
+    /// `quantize` and by compression).
+    pub weld: bool,
+    /// `KHR_mesh_quantization`: 16-bit positions, 8-bit normals.
+    pub quantize: bool,
+    /// Buffer compression.
+    pub compress: Compression,
+}
+
+impl GltfOptions {
+    /// Whether every option is off (the plain writer applies).
+    pub fn is_plain(&self) -> bool {
+        !self.weld && !self.quantize && self.compress == Compression::None
+    }
+}
+
+/// Reads a compression name (`none` or `meshopt`), as the CLI and the routes spell it.
+pub fn parse_compression(name: &str) -> Result<Compression, String> {
+    match name.trim().to_ascii_lowercase().as_str() {
+        "" | "none" => Ok(Compression::None),
+        "meshopt" => Ok(Compression::Meshopt),
+        other => Err(format!("unknown compression `{other}` (known: none, meshopt)")),
+    }
+}
+
+const QUANT_MAX: f64 = 65535.0;
+const ARRAY_BUFFER: u32 = 34962;
+const ELEMENT_ARRAY_BUFFER: u32 = 34963;
+const EXT_MESHOPT: &str = "EXT_meshopt_compression";
+const KHR_QUANT: &str = "KHR_mesh_quantization";
+
+/// One attribute or index stream of one mesh, uncompressed.
+struct Stream {
+    bytes: Vec<u8>,
+    /// Bytes per element (also the view's byteStride for attributes).
+    stride: usize,
+    count: usize,
+    component: u32,
+    type_: &'static str,
+    normalized: bool,
+    /// None for indices.
+    semantic: Option<&'static str>,
+    min: Option<Value>,
+    max: Option<Value>,
+}
+
+/// A mesh ready to be written.
+struct Prepared {
+    name: String,
+    streams: Vec<Stream>,
+    indices: Stream,
+}
+
+fn invalid(name: &str, detail: impl Into<String>) -> ExportError {
+    ExportError::InvalidMesh { name: name.to_string(), detail: detail.into() }
+}
+
+fn too_large(detail: impl Into<String>) -> ExportError {
+    ExportError::TooLarge { format: "glTF", detail: detail.into() }
+}
+
+fn check(m: &NamedMesh) -> Result<(), ExportError> {
+    let mesh = &m.mesh;
+    let n = mesh.positions.len();
+    if mesh.normals.len() != n || mesh.colours.len() != n {
+        return Err(invalid(&m.name, "normals and colours must have one entry per position"));
+    }
+    if mesh.indices.len() % 3 != 0 {
+        return Err(invalid(&m.name, "index count is not a multiple of 3"));
+    }
+    if mesh.indices.iter().any(|&i| i as usize >= n) {
+        return Err(invalid(&m.name, "index out of range"));
+    }
+    if mesh.positions.iter().flatten().any(|c| !c.is_finite()) {
+        return Err(invalid(&m.name, "non-finite position"));
+    }
+    Ok(())
+}
+
+/// The quantisation grid over all meshes: origin and uniform step.
+fn grid(meshes: &[NamedMesh]) -> ([f64; 3], f64) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for m in meshes {
+        for &i in &m.mesh.indices {
+            if let Some(p) = m.mesh.positions.get(i as usize) {
+                for a in 0..3 {
+                    lo[a] = lo[a].min(f64::from(p[a]));
+                    hi[a] = hi[a].max(f64::from(p[a]));
+                }
+            }
+        }
+    }
+    if !lo[0].is_finite() {
+        return ([0.0; 3], 1.0);
+    }
+    // The origin and step are stored as f32 in the JSON; quantise against
+    // those exact values so dequantisation reproduces the grid.
+    let lo = lo.map(|c| f64::from(c as f32));
+    let ext = (0..3).map(|a| hi[a] - lo[a]).fold(0.0f64, f64::max);
+    let step = if ext > 0.0 { f64::from((ext / QUANT_MAX) as f32) } else { 1.0 };
+    // Rounding the step to f32 may shrink it below ext/65535; widen by ulps until the grid covers.
+    let mut step = step;
+    while ext / step > QUANT_MAX {
+        step = f64::from(f32::from_bits((step as f32).to_bits() + 1));
+    }
+    (lo, step)
+}
+
+fn snorm8(v: f32) -> u8 {
+    (f64::from(v).clamp(-1.0, 1.0) * 127.0).round() as i8 as u8
+}
+
+/// Welds, drops degenerate triangles, optimises for the vertex cache and fetch.
+/// `pos_len` is the number of leading bytes of a record that hold the position.
+fn optimise<const N: usize>(records: &[[u8; N]], indices: &[u32], pos_len: usize) -> (Vec<[u8; N]>, Vec<u32>)
+where
+    [u8; N]: bytemuck::Pod,
+{
+    let (welded, indices) = crate::geom::strip::weld(records, indices);
+    let list: Vec<u32> = indices
+        .chunks_exact(3)
+        .filter(|t| {
+            let p = |k: usize| welded.get(t[k] as usize).map(|r| &r[..pos_len]);
+            t[0] != t[1] && t[1] != t[2] && t[0] != t[2] && p(0) != p(1) && p(1) != p(2) && p(0) != p(2)
+        })
+        .flatten()
+        .copied()
+        .collect();
+    if list.is_empty() {
+        return (Vec::new(), Vec::new());
+    }
+    let list = meshopt::optimize_vertex_cache(&list, welded.len());
+    let remap = meshopt::optimize_vertex_fetch_remap(&list, welded.len());
+    let used = remap.iter().filter(|&&r| r != u32::MAX).count();
+    let mut out = vec![[0u8; N]; used];
+    for (v, &r) in welded.iter().zip(&remap) {
+        if let Some(slot) = out.get_mut(r as usize) {
+            *slot = *v;
+        }
+    }
+    let list = list.iter().map(|&i| remap[i as usize]).collect();
+    (out, list)
+}
+
+/// Splits records into per-attribute byte streams at the given byte ranges.
+fn column<const N: usize>(records: &[[u8; N]], from: usize, to: usize) -> Vec<u8> {
+    records.iter().flat_map(|r| r[from..to].iter().copied()).collect()
+}
+
+fn int_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
+    let mut lo = [u16::MAX; 3];
+    let mut hi = [0u16; 3];
+    for r in records {
+        for a in 0..3 {
+            let q = u16::from_le_bytes([r[2 * a], r[2 * a + 1]]);
+            lo[a] = lo[a].min(q);
+            hi[a] = hi[a].max(q);
+        }
+    }
+    (json!(lo), json!(hi))
+}
+
+fn float_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
+    let mut lo = [f32::INFINITY; 3];
+    let mut hi = [f32::NEG_INFINITY; 3];
+    for r in records {
+        for a in 0..3 {
+            let c = f32::from_le_bytes([r[4 * a], r[4 * a + 1], r[4 * a + 2], r[4 * a + 3]]);
+            lo[a] = lo[a].min(c);
+            hi[a] = hi[a].max(c);
+        }
+    }
+    let v = |x: [f32; 3]| Value::Array(x.iter().map(|&c| Value::from(f64::from(c))).collect());
+    (v(lo), v(hi))
+}
+
+fn attribute(bytes: Vec<u8>, stride: usize, count: usize, component: u32, type_: &'static str, normalized: bool, semantic: &'static str) -> Stream {
+    Stream { bytes, stride, count, component, type_, normalized, semantic: Some(semantic), min: None, max: None }
+}
+
+fn index_stream(list: &[u32], vertices: usize) -> Stream {
+    let short = vertices <= 65535;
+    let bytes: Vec<u8> = if short {
+        // Fits: every index is below `vertices` ≤ 65535.
+        list.iter().flat_map(|&i| (i as u16).to_le_bytes()).collect()
+    } else {
+        list.iter().flat_map(|&i| i.to_le_bytes()).collect()
+    };
+    Stream {
+        bytes,
+        stride: if short { 2 } else { 4 },
+        count: list.len(),
+        component: if short { 5123 } else { 5125 },
+        type_: "SCALAR",
+        normalized: false,
+        semantic: None,
+        min: None,
+        max: None,
+    }
+}
+
+fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Prepared>, ExportError> {
+    check(m)?;
+    let mesh = &m.mesh;
+    if mesh.indices.is_empty() {
+        return Ok(None);
+    }
+    let (streams, indices) = match quantize {
+        Some((lo, step)) => {
+            let records: Vec<[u8; 16]> = (0..mesh.positions.len())
+                .map(|i| {
+                    let mut r = [0u8; 16];
+                    let p = mesh.positions[i];
+                    for a in 0..3 {
+                        let q = ((f64::from(p[a]) - lo[a]) / step).round().clamp(0.0, QUANT_MAX) as u16;
+                        r[2 * a..2 * a + 2].copy_from_slice(&q.to_le_bytes());
+                    }
+                    let n = mesh.normals[i];
+                    r[8..11].copy_from_slice(&n.map(snorm8));
+                    r[12..16].copy_from_slice(&mesh.colours[i]);
+                    r
+                })
+                .collect();
+            let (v, list) = optimise(&records, &mesh.indices, 6);
+            if list.is_empty() {
+                return Ok(None);
+            }
+            let (min, max) = int_bounds(&v);
+            let mut pos = attribute(column(&v, 0, 8), 8, v.len(), 5123, "VEC3", false, "POSITION");
+            (pos.min, pos.max) = (Some(min), Some(max));
+            let nrm = attribute(column(&v, 8, 12), 4, v.len(), 5120, "VEC3", true, "NORMAL");
+            let col = attribute(column(&v, 12, 16), 4, v.len(), 5121, "VEC4", true, "COLOR_0");
+            (vec![pos, nrm, col], index_stream(&list, v.len()))
+        }
+        None => {
+            let records: Vec<[u8; 28]> = (0..mesh.positions.len())
+                .map(|i| {
+                    let mut r = [0u8; 28];
+                    for a in 0..3 {
+                        r[4 * a..4 * a + 4].copy_from_slice(&mesh.positions[i][a].to_le_bytes());
+                        r[12 + 4 * a..16 + 4 * a].copy_from_slice(&mesh.normals[i][a].to_le_bytes());
+                    }
+                    r[24..28].copy_from_slice(&mesh.colours[i]);
+                    r
+                })
+                .collect();
+            let (v, list) = optimise(&records, &mesh.indices, 12);
+            if list.is_empty() {
+                return Ok(None);
+            }
+            let (min, max) = float_bounds(&v);
+            let mut pos = attribute(column(&v, 0, 12), 12, v.len(), 5126, "VEC3", false, "POSITION");
+            (pos.min, pos.max) = (Some(min), Some(max));
+            let nrm = attribute(column(&v, 12, 24), 12, v.len(), 5126, "VEC3", false, "NORMAL");
+            let col = attribute(column(&v, 24, 28), 4, v.len(), 5121, "VEC4", true, "COLOR_0");
+            (vec![pos, nrm, col], index_stream(&list, v.len()))
+        }
+    };
+    Ok(Some(Prepared { name: m.name.clone(), streams, indices }))
+}
+
+fn align4(v: &mut Vec<u8>) {
+    while v.len() % 4 != 0 {
+        v.push(0);
+    }
+}
+
+/// Where buffer views go: the uncompressed layout (the real buffer, or the
+/// meshopt fallback) and, with meshopt, the compressed bytes.
+struct Layout {
+    /// Uncompressed bytes (only kept without compression).
+    raw: Vec<u8>,
+    /// Length of the uncompressed layout.
+    raw_len: usize,
+    /// Compressed bytes (meshopt).
+    packed: Vec<u8>,
+    meshopt: bool,
+    views: Vec<Value>,
+}
+
+impl Layout {
+    /// Places a stream and returns its view index.
+    fn place(&mut self, s: &Stream, vertex: bool) -> Result<usize, ExportError> {
+        self.raw_len = self.raw_len.next_multiple_of(4);
+        let offset = self.raw_len;
+        self.raw_len += s.bytes.len();
+        let mut view = Map::new();
+        view.insert("buffer".into(), json!(if self.meshopt { 1 } else { 0 }));
+        view.insert("byteOffset".into(), json!(offset));
+        view.insert("byteLength".into(), json!(s.bytes.len()));
+        if vertex {
+            view.insert("byteStride".into(), json!(s.stride));
+        }
+        view.insert("target".into(), json!(if vertex { ARRAY_BUFFER } else { ELEMENT_ARRAY_BUFFER }));
+        if self.meshopt {
+            align4(&mut self.packed);
+            let encoded = if vertex {
+                encode_vertices(&s.bytes, s.stride)?
+            } else {
+                let list: Vec<u32> = if s.stride == 2 {
+                    s.bytes.chunks_exact(2).map(|c| u32::from(u16::from_le_bytes([c[0], c[1]]))).collect()
+                } else {
+                    s.bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()
+                };
+                let vertex_count = list.iter().max().map_or(0, |&m| m as usize + 1);
+                meshopt::encode_index_buffer(&list, vertex_count).map_err(|e| too_large(format!("meshopt index codec: {e:?}")))?
+            };
+            let ext = json!({
+                "buffer": 0,
+                "byteOffset": self.packed.len(),
+                "byteLength": encoded.len(),
+                "byteStride": s.stride,
+                "count": s.count,
+                "mode": if vertex { "ATTRIBUTES" } else { "TRIANGLES" },
+            });
+            self.packed.extend_from_slice(&encoded);
+            view.insert("extensions".into(), json!({ EXT_MESHOPT: ext }));
+        } else {
+            self.raw.resize(offset, 0);
+            self.raw.extend_from_slice(&s.bytes);
+        }
+        if self.raw_len > u32::MAX as usize || self.packed.len() > u32::MAX as usize {
+            return Err(too_large("buffer exceeds the 4 GiB limit"));
+        }
+        self.views.push(Value::Object(view));
+        Ok(self.views.len() - 1)
+    }
+}
+
+/// meshoptimizer's vertex codec, version 0 (the one `EXT_meshopt_compression` specifies).
+fn encode_vertices(bytes: &[u8], stride: usize) -> Result<Vec<u8>, ExportError> {
+    let err = |e: meshopt::Error| too_large(format!("meshopt vertex codec: {e:?}"));
+    match stride {
+        4 => meshopt::encode_vertex_buffer_level(bytemuck::cast_slice::<u8, [u8; 4]>(bytes), 2, Some(0)).map_err(err),
+        8 => meshopt::encode_vertex_buffer_level(bytemuck::cast_slice::<u8, [u8; 8]>(bytes), 2, Some(0)).map_err(err),
+        12 => meshopt::encode_vertex_buffer_level(bytemuck::cast_slice::<u8, [u8; 12]>(bytes), 2, Some(0)).map_err(err),
+        _ => Err(too_large(format!("unsupported vertex stride {stride}"))),
+    }
+}
+
+/// The finished document and its binary buffer.
+struct Built {
+    json: Value,
+    bin: Vec<u8>,
+}
+
+fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<Built, ExportError> {
+    let grid = opts.quantize.then(|| grid(meshes));
+    let meshopt = opts.compress == Compression::Meshopt;
+    let mut prepared = Vec::new();
+    for m in meshes {
+        if let Some(p) = prepare(m, grid)? {
+            prepared.push(p);
+        }
+    }
+    let mut layout = Layout { raw: Vec::new(), raw_len: 0, packed: Vec::new(), meshopt, views: Vec::new() };
+    let mut accessors = Vec::new();
+    let mut json_meshes = Vec::new();
+    let mut nodes = vec![json!({"name": "rulemesh"})];
+    let mut children = Vec::new();
+    for p in &prepared {
+        let mut attributes = Map::new();
+        for s in &p.streams {
+            let view = layout.place(s, true)?;
+            attributes.insert(s.semantic.unwrap_or("POSITION").to_string(), json!(accessors.len()));
+            accessors.push(accessor(view, s));
+        }
+        let view = layout.place(&p.indices, false)?;
+        let indices = accessors.len();
+        accessors.push(accessor(view, &p.indices));
+        json_meshes.push(json!({
+            "name": p.name,
+            "primitives": [{"attributes": attributes, "indices": indices, "material": 0, "mode": 4}],
+        }));
+        let mut node = Map::new();
+        node.insert("mesh".into(), json!(json_meshes.len() - 1));
+        node.insert("name".into(), json!(p.name));
+        if let Some((lo, step)) = grid {
+            node.insert("translation".into(), json!(lo.map(|c| c as f32)));
+            node.insert("scale".into(), json!([step as f32, step as f32, step as f32]));
+        }
+        children.push(nodes.len());
+        nodes.push(Value::Object(node));
+    }
+    let mut root = Map::new();
+    root.insert("asset".into(), json!({"generator": format!("rulemesh {}", crate::ENGINE_VERSION), "version": "2.0"}));
+    let mut used = Vec::new();
+    if !prepared.is_empty() {
+        nodes[0]["children"] = json!(children);
+        if meshopt {
+            used.push(EXT_MESHOPT);
+        }
+        if opts.quantize {
+            used.push(KHR_QUANT);
+        }
+        let bin = if meshopt { &layout.packed } else { &layout.raw };
+        let mut buffers = vec![json!({"byteLength": bin.len()})];
+        if meshopt {
+            buffers.push(json!({"byteLength": layout.raw_len, "extensions": {EXT_MESHOPT: {"fallback": true}}}));
+        }
+        root.insert("accessors".into(), Value::Array(accessors));
+        root.insert("bufferViews".into(), Value::Array(layout.views));
+        root.insert("buffers".into(), Value::Array(buffers));
+        root.insert(
+            "materials".into(),
+            json!([{"pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.8}}]),
+        );
+        root.insert("meshes".into(), Value::Array(json_meshes));
+    }
+    if !used.is_empty() {
+        root.insert("extensionsUsed".into(), json!(used));
+        root.insert("extensionsRequired".into(), json!(used));
+    }
+    root.insert("nodes".into(), Value::Array(nodes));
+    root.insert("scene".into(), json!(0));
+    let mut scene = Map::new();
+    scene.insert("nodes".into(), json!([0]));
+    let mut extras = Map::new();
+    if let Some(bg) = meta.background {
+        extras.insert("background".into(), json!(bg.map(f64::from)));
+    }
+    if meta.truncated {
+        extras.insert("truncated".into(), json!(true));
+    }
+    if !extras.is_empty() {
+        scene.insert("extras".into(), Value::Object(extras));
+    }
+    root.insert("scenes".into(), json!([scene]));
+    let bin = if meshopt { layout.packed } else { layout.raw };
+    Ok(Built { json: Value::Object(root), bin })
+}
+
+fn accessor(view: usize, s: &Stream) -> Value {
+    let mut a = Map::new();
+    a.insert("bufferView".into(), json!(view));
+    a.insert("componentType".into(), json!(s.component));
+    a.insert("count".into(), json!(s.count));
+    a.insert("type".into(), json!(s.type_));
+    if s.normalized {
+        a.insert("normalized".into(), json!(true));
+    }
+    if let (Some(lo), Some(hi)) = (&s.min, &s.max) {
+        a.insert("min".into(), lo.clone());
+        a.insert("max".into(), hi.clone());
+    }
+    Value::Object(a)
+}
+
+/// Writes a compact binary glTF (.glb) as `opts` say. Reserves the output
+/// size in `budget` before assembling it.
+pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    let built = build(meshes, meta, opts)?;
+    let json_bytes = serde_json::to_vec(&built.json)?;
+    let json_len = json_bytes.len().next_multiple_of(4);
+    let has_bin = built.json.get("buffers").is_some();
+    let bin_len = built.bin.len().next_multiple_of(4);
+    let total = 12 + 8 + json_len + if has_bin { 8 + bin_len } else { 0 };
+    let total32 = u32::try_from(total).map_err(|_| too_large(format!("file of {total} bytes exceeds the 4 GiB limit")))?;
+    budget.reserve_memory(total as u64)?;
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&total32.to_le_bytes());
+    // Both fit: each is below `total`.
+    out.extend_from_slice(&(json_len as u32).to_le_bytes());
+    out.extend_from_slice(&0x4E4F_534Au32.to_le_bytes());
+    out.extend_from_slice(&json_bytes);
+    out.resize(20 + json_len, b' ');
+    if has_bin {
+        out.extend_from_slice(&(bin_len as u32).to_le_bytes());
+        out.extend_from_slice(&0x004E_4942u32.to_le_bytes());
+        out.extend_from_slice(&built.bin);
+        out.resize(total, 0);
+    }
+    Ok(out)
+}
+
+/// Writes a compact JSON glTF with buffer 0 embedded as a base64 data URI.
+pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    let mut built = build(meshes, meta, opts)?;
+    if let Some(b0) = built.json.get_mut("buffers").and_then(|b| b.get_mut(0)) {
+        let mut uri = b"data:application/octet-stream;base64,".to_vec();
+        uri.extend_from_slice(&super::gltf::base64(&built.bin));
+        // Base64 text is ASCII.
+        b0["uri"] = Value::String(String::from_utf8_lossy(&uri).into_owned());
+    }
+    let out = serde_json::to_vec(&built.json)?;
+    budget.reserve_memory(out.len() as u64)?;
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::eval::budget::Limits;
+    use crate::export::gltf::tests::{all_nine, meshes_of};
+    use crate::geom::MeshLayout;
+
+    fn glb_json(b: &[u8]) -> Value {
+        let jl = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;
+        serde_json::from_slice(&b[20..20 + jl]).expect("json chunk")
+    }
+
+    #[test]
+    fn quantised_and_compressed_are_smaller_deterministic_and_declared() {
+        let meshes = meshes_of(&all_nine(), 16, MeshLayout::PerKind);
+        let meta = ExportMeta::default();
+        let plain = crate::export::gltf::write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).expect("plain");
+        let mut last = plain.len();
+        for opts in [
+            GltfOptions { weld: true, ..Default::default() },
+            GltfOptions { quantize: true, ..Default::default() },
+            GltfOptions { quantize: true, compress: Compression::Meshopt, weld: false },
+        ] {
+            let a = write_glb(&meshes, &meta, &opts, &mut Budget::new(Limits::default())).expect("a");
+            let b = write_glb(&meshes, &meta, &opts, &mut Budget::new(Limits::default())).expect("b");
+            assert_eq!(a, b, "{opts:?}");
+            // Welding meshes that share no identical vertices saves nothing
+            // and the JSON is a little longer; the others must shrink.
+            let slack = if opts.quantize { 0 } else { 1024 };
+            assert!(a.len() < last + slack, "{opts:?}: {} !< {last}", a.len());
+            last = a.len();
+            let j = glb_json(&a);
+            let used = j["extensionsUsed"].as_array().cloned().unwrap_or_default();
+            assert_eq!(used.contains(&json!(KHR_QUANT)), opts.quantize);
+            assert_eq!(used.contains(&json!(EXT_MESHOPT)), opts.compress == Compression::Meshopt);
+            assert_eq!(j["extensionsRequired"], j["extensionsUsed"]);
+        }
+    }
+
+    #[test]
+    fn quantised_positions_dequantise_within_half_a_step() {
+        let meshes = meshes_of(&all_nine(), 8, MeshLayout::Merged);
+        let (lo, step) = grid(&meshes);
+        let p = prepare(&meshes[0], Some((lo, step))).expect("ok").expect("mesh");
+        let pos = &p.streams[0].bytes;
+        let q: Vec<[f64; 3]> = pos
+            .chunks_exact(8)
+            .map(|c| [0, 1, 2].map(|a| lo[a] + f64::from(u16::from_le_bytes([c[2 * a], c[2 * a + 1]])) * step))
+            .collect();
+        // Every original position is within half a step (plus f32 slack) of some dequantised one.
+        for orig in &meshes[0].mesh.positions {
+            let best = q.iter().map(|d| (0..3).map(|a| (d[a] - f64::from(orig[a])).abs()).fold(0.0, f64::max)).fold(f64::INFINITY, f64::min);
+            assert!(best <= step * 0.5 + 1e-6, "{best} > {}", step * 0.5);
+        }
+    }
+
+    #[test]
+    fn compression_names() {
+        assert_eq!(parse_compression("meshopt"), Ok(Compression::Meshopt));
+        assert_eq!(parse_compression("none"), Ok(Compression::None));
+        assert!(parse_compression("draco").is_err());
+    }
+}
