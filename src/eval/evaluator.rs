@@ -266,6 +266,32 @@ fn orient_along_segment(line: &mut Polyline, point: &mut LinePoint) {
     }
 }
 
+/// Sub-segments of one `BLENDTO`.
+const BLEND_STEPS: u32 = 8;
+
+/// The tangent length factor λ of eq 4.15 (the thesis's Fig 4.2c value).
+const BLEND_LAMBDA: f64 = 0.75;
+
+/// The frame at `w` ∈ [0, 1] of a `BLENDTO` from `a` to `b` (seed 000 eqs
+/// 4.15–4.21, read as the seed notes correct them): positions follow a
+/// curve leaving `a` along its local +Z and arriving at `b` along its local
+/// +Z, with tangent length D = λ·|u₂ − u₁|; the rotation is a shortest-path
+/// slerp and the scale blends with smoothstep.
+fn blend(a: &Frame, b: &Frame, w: f64) -> Frame {
+    let s = w * w * (3.0 - 2.0 * w);
+    let d = (b.translation - a.translation).length() * BLEND_LAMBDA;
+    let v1 = a.translation + (a.rotation * DVec3::Z) * d;
+    let v2 = b.translation - (b.rotation * DVec3::Z) * d;
+    let p = a.translation.lerp(v1, s).lerp(v2.lerp(b.translation, s), w);
+    let rb = if a.rotation.dot(b.rotation) < 0.0 { -b.rotation } else { b.rotation };
+    Frame {
+        translation: p,
+        rotation: a.rotation.slerp(rb, w).normalize(),
+        scale: a.scale + (b.scale - a.scale) * s,
+        parity: if w < 1.0 { a.parity } else { b.parity },
+    }
+}
+
 /// Options for one evaluation that do not come from the source.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EvalOptions {
@@ -639,11 +665,11 @@ impl<'p, 'b> Machine<'p, 'b> {
                 self.last_terminal = Some(self.pen.moveto);
                 return Ok(());
             }
-            LineOp::LineTo | LineOp::SLineTo if self.pen.lifted => {
+            LineOp::LineTo | LineOp::SLineTo | LineOp::BlendTo if self.pen.lifted => {
                 self.pen.lifted = false;
                 self.pen.start = frame;
             }
-            LineOp::LineTo | LineOp::SLineTo => {
+            LineOp::LineTo | LineOp::SLineTo | LineOp::BlendTo => {
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
                 let colour = colour.map(|c| c.clamp(0.0, 1.0) as f32);
@@ -663,9 +689,20 @@ impl<'p, 'b> Machine<'p, 'b> {
                     }
                 };
                 let line_profile = self.scene.lines.get(open).and_then(|l| l.profile);
+                let mut point = LinePoint { frame, colour };
+                if op == LineOp::BlendTo {
+                    let from = self.scene.lines.get(open).and_then(|l| l.points.last()).map_or(frame, |p| p.frame);
+                    for k in 1..BLEND_STEPS {
+                        self.charge_line_point(line_profile)?;
+                        let w = k as f64 / BLEND_STEPS as f64;
+                        let blended = LinePoint { frame: blend(&from, &frame, w), colour };
+                        if let Some(line) = self.scene.lines.get_mut(open) {
+                            line.points.push(blended);
+                        }
+                    }
+                }
                 self.charge_line_point(line_profile)?;
                 let Some(line) = self.scene.lines.get_mut(open) else { return Ok(()) };
-                let mut point = LinePoint { frame, colour };
                 if op == LineOp::SLineTo {
                     orient_along_segment(line, &mut point);
                 }

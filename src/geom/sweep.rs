@@ -53,10 +53,15 @@ fn profile_points(profile: Option<&[DVec3]>, detail: u32) -> Vec<(DVec3, DVec3)>
 }
 
 /// The profile placed in `p`'s frame: positions and unit normals.
+/// Coordinates within rounding error of zero are snapped to zero, so points
+/// that are on an axis in exact arithmetic (the poles of a lathe) coincide
+/// exactly and the surface closes.
 fn ring(p: &LinePoint, profile: &[(DVec3, DVec3)]) -> (Vec<DVec3>, Vec<DVec3>) {
+    let tiny = 1e-12 * p.frame.scale.max(p.frame.translation.abs().max_element());
+    let snap = |v: DVec3| DVec3::from_array(v.to_array().map(|c| if c.abs() <= tiny { 0.0 } else { c }));
     profile
         .iter()
-        .map(|(q, d)| (p.frame.transform_point(*q), p.frame.transform_normal(*d).normalize_or_zero()))
+        .map(|(q, d)| (snap(p.frame.transform_point(*q)), p.frame.transform_normal(*d).normalize_or_zero()))
         .unzip()
 }
 
@@ -90,8 +95,22 @@ fn same_ring(a: &[DVec3], b: &[DVec3]) -> bool {
 fn strip(mesh: &mut Mesh, ia: u32, ib: u32, n: u32) {
     for i in 0..n {
         let j = (i + 1) % n;
-        mesh.indices.extend_from_slice(&[ia + i, ia + j, ib + j, ia + i, ib + j, ib + i]);
+        for t in [[ia + i, ia + j, ib + j], [ia + i, ib + j, ib + i]] {
+            // Rings that share a point (a lathe around its own axis) would give
+            // zero-area triangles; leaving them out keeps the surface closed.
+            if !degenerate(mesh, t) {
+                mesh.indices.extend_from_slice(&t);
+            }
+        }
     }
+}
+
+/// True when a triangle has (numerically) no area.
+fn degenerate(mesh: &Mesh, t: [u32; 3]) -> bool {
+    let at = |i: u32| DVec3::from_array(mesh.positions[i as usize].map(f64::from));
+    let (a, b, c) = (at(t[0]), at(t[1]), at(t[2]));
+    let scale = (b - a).length().max((c - a).length()).max(1e-30);
+    (b - a).cross(c - a).length() <= 1e-9 * scale * scale
 }
 
 /// Appends a flat cap over `ring` with its normal facing away from `inward`
@@ -108,10 +127,10 @@ fn cap(mesh: &mut Mesh, ring: &[DVec3], inward: DVec3, colour: [u8; 4], at_start
     let n = ring.len() as u32;
     for i in 0..n {
         let (a, b) = (base + 1 + i, base + 1 + (i + 1) % n);
-        if at_start {
-            mesh.indices.extend_from_slice(&[base, b, a]);
-        } else {
-            mesh.indices.extend_from_slice(&[base, a, b]);
+        let t = if at_start { [base, b, a] } else { [base, a, b] };
+        // A ring collapsed to a point (scale 0) needs no cap.
+        if !degenerate(mesh, t) {
+            mesh.indices.extend_from_slice(&t);
         }
     }
 }
@@ -170,6 +189,7 @@ pub fn sweep_lines(lines: &[Polyline], profiles: &[Vec<DVec3>], detail: u32, bud
         if closed {
             rings.pop();
         }
+        let line_start = mesh.indices.len();
         let bases: Vec<u32> = rings
             .iter()
             .map(|(pos, nrm, c)| {
@@ -183,7 +203,6 @@ pub fn sweep_lines(lines: &[Polyline], profiles: &[Vec<DVec3>], detail: u32, bud
         for w in bases.windows(2) {
             strip(&mut mesh, w[0], w[1], n32);
         }
-        let line_start = mesh.indices.len() - 6 * (bases.len() - 1) * n32 as usize;
         if closed {
             if let (Some(&last), Some(&first)) = (bases.last(), bases.first()) {
                 strip(&mut mesh, last, first, n32);

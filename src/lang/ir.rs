@@ -137,6 +137,9 @@ pub enum LineOp {
     LineTo,
     /// `SLINETO`: like `LINETO`, with the profile turned orthogonal to the segment.
     SLineTo,
+    /// `BLENDTO`: like `LINETO`, through interpolated sub-segments that blend
+    /// position, orientation and scale smoothly (seed 000 eqs 4.15–4.21).
+    BlendTo,
     /// `NEWLINE`: ends the current line and lifts the pen.
     NewLine,
     /// `RESET`: ends the current line and puts the pen back at the last `MOVETO`.

@@ -120,8 +120,17 @@ fn fit_unit_box_centres_and_scales() {
         let out = dir.path().join("fit.glb");
         render_to(&g, &out, &["--fit-unit-box"]);
         let j = glb_json(&std::fs::read(&out).expect("glb"));
-        let pos = &j["accessors"][j["meshes"][0]["primitives"][0]["attributes"]["POSITION"].as_u64().expect("pos") as usize];
-        let c = |k: &str, a: usize| pos[k][a].as_f64().expect("bound");
+        // The model's box is the union over every mesh (lines, vertices and
+        // isosurfaces are meshes of their own).
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for m in j["meshes"].as_array().expect("meshes") {
+            let pos = &j["accessors"][m["primitives"][0]["attributes"]["POSITION"].as_u64().expect("pos") as usize];
+            for a in 0..3 {
+                lo[a] = lo[a].min(pos["min"][a].as_f64().expect("min"));
+                hi[a] = hi[a].max(pos["max"][a].as_f64().expect("max"));
+            }
+        }
+        let c = |k: &str, a: usize| if k == "min" { lo[a] } else { hi[a] };
         let ext = (0..3).map(|a| c("max", a) - c("min", a)).fold(0.0f64, f64::max);
         assert!((ext - 1.0).abs() < 1e-5, "{}: longest side {ext}", g.display());
         for a in 0..3 {

@@ -16,7 +16,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 pub const MAX_NESTING: u32 = 256;
 
 /// Drawables that belong to later issues.
-const LATER_DRAWABLES: [&str; 2] = ["BLENDTO", "DEBUG"];
+const LATER_DRAWABLES: [&str; 1] = ["DEBUG"];
 
 /// Top-level directives that are skipped (to the end of their line) with a warning.
 const SKIPPED_DIRECTIVES: [&str; 14] = [
@@ -277,6 +277,8 @@ impl<'a> Parser<'a> {
     fn finish(mut self) -> PResult<Program> {
         let start = match self.startshape {
             Some((name, span)) => self.resolve(name, span)?,
+            // Thesis listings without `startshape` (C.4) start from `START`.
+            None if self.group_index.contains_key("START") => Target::Group(self.group_index["START"]),
             None if !self.groups.is_empty() => Target::Group(0),
             None => {
                 let span = self.peek().span;
@@ -829,6 +831,7 @@ impl<'a> Parser<'a> {
             "MOVETO" => Some(LineOp::MoveTo),
             "LINETO" | "ALINETO" => Some(LineOp::LineTo),
             "SLINETO" => Some(LineOp::SLineTo),
+            "BLENDTO" => Some(LineOp::BlendTo),
             "NEWLINE" => Some(LineOp::NewLine),
             "RESET" => Some(LineOp::Reset),
             _ => None,

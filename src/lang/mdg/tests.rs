@@ -344,7 +344,7 @@ fn error_positions() {
     assert_eq!(fail("rule A {\n\tFOO {}\n}"), (2, 2, "unknown rule or primitive `FOO`".into()));
     assert_eq!(fail("startshape Q\nrule A {}"), (1, 12, "unknown rule or primitive `Q`".into()));
     assert_eq!(fail("rule A { é {} # }"), (1, 15, "unexpected character `#`".into()));
-    assert_eq!(fail("rule A { BLENDTO {} }"), (1, 10, "not supported yet: drawable `BLENDTO`".into()));
+    assert_eq!(fail("rule A { DEBUG {} }"), (1, 10, "not supported yet: drawable `DEBUG`".into()));
     assert_eq!(fail("rule A { LINETO P {} }"), (1, 17, "unknown rule `P`".into()));
     assert_eq!(fail("rule A * B { }"), (1, 10, "unknown rule `B`".into()));
     assert_eq!(fail("linerule L\nrule A { }"), (1, 10, "unknown rule `L`".into()));
