@@ -2,7 +2,7 @@
 //!
 //! Exit codes: 0 ok, 2 parse or usage error, 3 limit exceeded, 1 any other failure.
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rulemesh::eval::{Limits, OnLimit, ParamValue};
 use rulemesh::export::{Compression, ExportOptions, Format, GltfOptions, StripsOptions};
 use rulemesh::geom::{MeshLayout, DEFAULT_DETAIL};
@@ -46,6 +46,12 @@ struct ServeArgs {
     /// Log level: error, warn, info, debug or trace.
     #[arg(long, env = "RULEMESH_LOG", default_value = "info")]
     log: tracing_subscriber::filter::LevelFilter,
+    /// Settings file (TOML, or JSON if named *.json); flags and RULEMESH_* variables override it.
+    #[arg(long = "config", env = "RULEMESH_CONFIG")]
+    config_file: Option<PathBuf>,
+    /// Print the resolved settings as JSON and exit.
+    #[arg(long)]
+    print_config: bool,
 }
 
 #[derive(Args)]
@@ -154,12 +160,16 @@ impl Failure {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     let result = match cli.command {
         Command::Render(args) => run_render(args),
         Command::Check(args) => run_check(args),
         Command::Decode(args) => run_decode(args),
-        Command::Serve(args) => run_serve(args),
+        Command::Serve(args) => match matches.subcommand_matches("serve") {
+            Some(m) => run_serve(args, m),
+            None => Err(Failure::new(EXIT_USAGE, "serve: no arguments".into())),
+        },
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -325,15 +335,26 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-fn run_serve(args: ServeArgs) -> Result<(), Failure> {
+fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure> {
     use std::io::IsTerminal;
+    let config = match &args.config_file {
+        Some(path) => {
+            let file = rulemesh::service::config::ConfigFile::read(path).map_err(|e| Failure::new(EXIT_USAGE, format!("serve: {e}")))?;
+            args.config.resolve(matches, file)
+        }
+        None => args.config,
+    };
+    if args.print_config {
+        let json = serde_json::to_string_pretty(&config).map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))?;
+        println!("{json}");
+        return Ok(());
+    }
     tracing_subscriber::fmt()
         .with_max_level(args.log)
         .with_target(false)
         .with_ansi(std::io::stderr().is_terminal())
         .with_writer(std::io::stderr)
         .init();
-    let config = args.config;
     // The blocking pool only runs renders, which the engine already limits to
     // `concurrency`; a few spare threads cover moka and file work.
     let runtime = tokio::runtime::Builder::new_multi_thread()

@@ -1,7 +1,8 @@
 //! The in-process model store: a moka cache weighted by model bytes, with
-//! single-flight fills. Failed and truncated renders are handed to every
-//! waiting caller but never stored.
+//! single-flight fills, optionally backed by a [`DiskTier`]. Failed and
+//! truncated renders are handed to every waiting caller but never stored.
 
+use super::disk::DiskTier;
 use super::CacheKey;
 use crate::eval::LimitExceeded;
 use crate::lang::Language;
@@ -73,6 +74,7 @@ enum Fill<E> {
 pub struct ModelCache {
     inner: Cache<CacheKey, Arc<Rendered>>,
     evictions: Arc<AtomicU64>,
+    disk: Option<Arc<DiskTier>>,
 }
 
 /// Bytes charged per entry besides the model itself (key, metadata, moka's bookkeeping).
@@ -94,12 +96,26 @@ impl ModelCache {
                 }
             })
             .build();
-        ModelCache { inner, evictions }
+        ModelCache { inner, evictions, disk: None }
+    }
+
+    /// The same store, reading from and writing complete models to `disk`
+    /// behind the in-process tier.
+    pub fn with_disk(mut self, disk: DiskTier) -> ModelCache {
+        self.disk = Some(Arc::new(disk));
+        self
+    }
+
+    /// The disk tier, if configured.
+    pub fn disk(&self) -> Option<&DiskTier> {
+        self.disk.as_deref()
     }
 
     /// Returns the model for `key`, calling `render` on a miss. Concurrent
     /// misses on one key share a single call. With `fresh`, the store is not
-    /// read (but a complete result still refreshes it).
+    /// read (but a complete result still refreshes it). On an in-process
+    /// miss the disk tier (if any) is read before rendering, and a complete
+    /// render is written to it; a model read from disk counts as a hit.
     pub async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, CacheOutcome), E>
     where
         E: Clone + Send + Sync + 'static,
@@ -110,19 +126,36 @@ impl ModelCache {
             let r = Arc::new(render().await?);
             if r.cacheable() {
                 self.inner.insert(key, r.clone()).await;
+                if let Some(d) = &self.disk {
+                    d.write(key, r.clone()).await;
+                }
             }
             return Ok((r, CacheOutcome::Miss));
         }
+        let from_disk = std::sync::atomic::AtomicBool::new(false);
         let init = async {
+            if let Some(d) = &self.disk {
+                if let Some(r) = d.read(key).await {
+                    from_disk.store(true, Ordering::Relaxed);
+                    return Ok(Arc::new(r));
+                }
+            }
             match render().await {
-                Ok(r) if r.cacheable() => Ok(Arc::new(r)),
+                Ok(r) if r.cacheable() => {
+                    let r = Arc::new(r);
+                    if let Some(d) = &self.disk {
+                        d.write(key, r.clone()).await;
+                    }
+                    Ok(r)
+                }
                 Ok(r) => Err(Fill::Uncacheable(Arc::new(r))),
                 Err(e) => Err(Fill::Failed(e)),
             }
         };
         match self.inner.entry(key).or_try_insert_with(init).await {
             Ok(entry) => {
-                let outcome = if entry.is_fresh() { CacheOutcome::Miss } else { CacheOutcome::Hit };
+                let rendered = entry.is_fresh() && !from_disk.load(Ordering::Relaxed);
+                let outcome = if rendered { CacheOutcome::Miss } else { CacheOutcome::Hit };
                 Ok((entry.into_value(), outcome))
             }
             Err(fill) => match &*fill {

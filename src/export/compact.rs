@@ -177,15 +177,14 @@ where
         return (Vec::new(), Vec::new());
     }
     let list = meshopt::optimize_vertex_cache(&list, welded.len());
-    let remap = meshopt::optimize_vertex_fetch_remap(&list, welded.len());
-    let used = remap.iter().filter(|&&r| r != u32::MAX).count();
+    let (remap, used) = crate::geom::strip::first_use_remap(&list, welded.len());
     let mut out = vec![[0u8; N]; used];
     for (v, &r) in welded.iter().zip(&remap) {
         if let Some(slot) = out.get_mut(r as usize) {
             *slot = *v;
         }
     }
-    let list = list.iter().map(|&i| remap[i as usize]).collect();
+    let list = list.iter().map(|&i| remap.get(i as usize).copied().unwrap_or(0)).collect();
     (out, list)
 }
 

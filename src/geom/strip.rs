@@ -39,6 +39,25 @@ pub fn weld<T: bytemuck::Pod>(vertices: &[T], indices: &[u32]) -> (Vec<T>, Vec<u
     (out, indices)
 }
 
+/// New vertex numbers in order of first use in `list` (`u32::MAX` for unused
+/// vertices) and the number used. Written out because the `meshopt` crate's
+/// `optimize_vertex_fetch_remap` truncates its table to the used count, which
+/// breaks lookups when an unused vertex precedes a used one.
+pub fn first_use_remap(list: &[u32], vertex_count: usize) -> (Vec<u32>, usize) {
+    let mut remap = vec![u32::MAX; vertex_count];
+    let mut used = 0usize;
+    for &i in list {
+        if let Some(r) = remap.get_mut(i as usize) {
+            if *r == u32::MAX {
+                // Fits: callers have fewer than u32::MAX vertices.
+                *r = used as u32;
+                used += 1;
+            }
+        }
+    }
+    (remap, used)
+}
+
 /// Orders a triangle list for the post-transform vertex cache, reorders the
 /// vertices by first use (so the vertex codec sees neighbours together), and
 /// turns the list into one strip index sequence with [`RESTART`] between
@@ -55,15 +74,14 @@ pub fn stripify<T: Copy + Default>(vertices: &[T], indices: &[u32]) -> (Vec<T>, 
     let list = meshopt::optimize_vertex_cache(&list, vertices.len());
     // Vertex order = first use in the cache-optimised list (the strip visits
     // them in nearly the same order); unused vertices are dropped.
-    let remap = meshopt::optimize_vertex_fetch_remap(&list, vertices.len());
-    let used = remap.iter().filter(|&&r| r != u32::MAX).count();
+    let (remap, used) = first_use_remap(&list, vertices.len());
     let mut out = vec![T::default(); used];
     for (v, &r) in vertices.iter().zip(&remap) {
         if let Some(slot) = out.get_mut(r as usize) {
             *slot = *v;
         }
     }
-    let list: Vec<u32> = list.iter().map(|&i| remap[i as usize]).collect();
+    let list: Vec<u32> = list.iter().map(|&i| remap.get(i as usize).copied().unwrap_or(0)).collect();
     // meshopt only fails on bad arguments (it has none here); an empty strip
     // would lose the model, so fall back to one strip per triangle.
     let strip = meshopt::stripify(&list, out.len(), RESTART)

@@ -77,7 +77,8 @@ fn push(mesh: &mut Mesh, p: DVec3, n: DVec3, c: [u8; 4]) -> u32 {
     // Fits: the caller bounds the vertex count below u32::MAX.
     let i = mesh.positions.len() as u32;
     mesh.positions.push(p.as_vec3().to_array());
-    mesh.normals.push(n.as_vec3().to_array());
+    // glTF requires unit normals; a point with no defined normal gets +Z.
+    mesh.normals.push(n.try_normalize().unwrap_or(DVec3::Z).as_vec3().to_array());
     mesh.colours.push(c);
     i
 }
@@ -118,7 +119,10 @@ fn degenerate(mesh: &Mesh, t: [u32; 3]) -> bool {
 /// that matches the strip next to it.
 fn cap(mesh: &mut Mesh, ring: &[DVec3], inward: DVec3, colour: [u8; 4], at_start: bool) {
     let c = centre(ring);
-    let face = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]).normalize_or_zero();
+    let Some(face) = (ring[1] - ring[0]).cross(ring[2 % ring.len()] - ring[0]).try_normalize() else {
+        // A ring collapsed to a point (scale 0) closes the line by itself.
+        return;
+    };
     let normal = if face.dot(c - inward) < 0.0 { -face } else { face };
     let base = push(mesh, c, normal, colour);
     for p in ring {

@@ -1,12 +1,20 @@
 //! Server configuration: command-line flags, each also read from a
-//! `RULEMESH_*` environment variable, with defaults that need nothing else.
+//! `RULEMESH_*` environment variable or a `--config` file (TOML or JSON),
+//! with defaults that need nothing else. Precedence: flag > environment
+//! variable > file > default ([`ServeConfig::resolve`]).
 
 use crate::eval::Limits;
+use clap::parser::ValueSource;
+use serde::{Deserialize, Serialize};
 use std::net::SocketAddr;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
+/// Largest configuration file read, in bytes.
+pub const MAX_CONFIG_BYTES: u64 = 1024 * 1024;
+
 /// `rulemesh serve` options.
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone, PartialEq, Serialize, clap::Args)]
 pub struct ServeConfig {
     /// HTTP listen address.
     #[arg(long, env = "RULEMESH_HTTP", default_value = "127.0.0.1:8080")]
@@ -44,6 +52,94 @@ pub struct ServeConfig {
     /// Server-side ceiling: longest render, in milliseconds.
     #[arg(long, env = "RULEMESH_CEILING_TIMEOUT_MS", default_value_t = 60_000)]
     pub ceiling_timeout_ms: u64,
+    /// Directory of the disk cache tier (content-addressed files; survives restarts). None: memory only.
+    #[arg(long, env = "RULEMESH_CACHE_DIR")]
+    pub cache_dir: Option<PathBuf>,
+    /// Byte budget of the disk cache tier; no more files are written past it.
+    #[arg(long, env = "RULEMESH_CACHE_DIR_BYTES", default_value_t = 1024 * 1024 * 1024)]
+    pub cache_dir_bytes: u64,
+}
+
+/// Why a configuration file could not be used.
+#[derive(Debug, thiserror::Error)]
+pub enum ConfigError {
+    /// The file could not be read.
+    #[error("{path}: {source}")]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// The file is larger than [`MAX_CONFIG_BYTES`].
+    #[error("{path}: larger than {MAX_CONFIG_BYTES} bytes")]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+    },
+    /// The file is not valid TOML or JSON for these settings.
+    #[error("{path}: {message}")]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong, with the parser's position.
+        message: String,
+    },
+}
+
+/// A configuration file: every [`ServeConfig`] setting, by the same
+/// snake_case name, each optional. Unknown keys are errors.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ConfigFile {
+    /// [`ServeConfig::http`]
+    pub http: Option<SocketAddr>,
+    /// [`ServeConfig::grpc`]
+    pub grpc: Option<SocketAddr>,
+    /// [`ServeConfig::cache_bytes`]
+    pub cache_bytes: Option<u64>,
+    /// [`ServeConfig::max_concurrency`]
+    pub max_concurrency: Option<usize>,
+    /// [`ServeConfig::queue`]
+    pub queue: Option<usize>,
+    /// [`ServeConfig::body_limit`]
+    pub body_limit: Option<usize>,
+    /// [`ServeConfig::queue_timeout_ms`]
+    pub queue_timeout_ms: Option<u64>,
+    /// [`ServeConfig::grace_ms`]
+    pub grace_ms: Option<u64>,
+    /// [`ServeConfig::ceiling_primitives`]
+    pub ceiling_primitives: Option<u64>,
+    /// [`ServeConfig::ceiling_triangles`]
+    pub ceiling_triangles: Option<u64>,
+    /// [`ServeConfig::ceiling_memory`]
+    pub ceiling_memory: Option<u64>,
+    /// [`ServeConfig::ceiling_timeout_ms`]
+    pub ceiling_timeout_ms: Option<u64>,
+    /// [`ServeConfig::cache_dir`]
+    pub cache_dir: Option<PathBuf>,
+    /// [`ServeConfig::cache_dir_bytes`]
+    pub cache_dir_bytes: Option<u64>,
+}
+
+impl ConfigFile {
+    /// Reads a TOML file, or JSON when the name ends in `.json`.
+    pub fn read(path: &Path) -> Result<ConfigFile, ConfigError> {
+        use std::io::Read as _;
+        let read_err = |source| ConfigError::Read { path: path.to_path_buf(), source };
+        let file = std::fs::File::open(path).map_err(read_err)?;
+        let mut text = String::new();
+        file.take(MAX_CONFIG_BYTES + 1).read_to_string(&mut text).map_err(read_err)?;
+        if text.len() as u64 > MAX_CONFIG_BYTES {
+            return Err(ConfigError::TooLarge { path: path.to_path_buf() });
+        }
+        let parse_err = |message: String| ConfigError::Parse { path: path.to_path_buf(), message };
+        if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) {
+            serde_json::from_str(&text).map_err(|e| parse_err(e.to_string()))
+        } else {
+            toml::from_str(&text).map_err(|e| parse_err(e.to_string()))
+        }
+    }
 }
 
 impl Default for ServeConfig {
@@ -61,11 +157,46 @@ impl Default for ServeConfig {
             ceiling_triangles: 50_000_000,
             ceiling_memory: 2 * 1024 * 1024 * 1024,
             ceiling_timeout_ms: 60_000,
+            cache_dir: None,
+            cache_dir_bytes: 1024 * 1024 * 1024,
         }
     }
 }
 
 impl ServeConfig {
+    /// Fills every setting that neither a flag nor an environment variable
+    /// gave (its value in `self` is clap's default, as `matches` tells) from
+    /// `file`. `matches` are the `serve` subcommand's.
+    pub fn resolve(mut self, matches: &clap::ArgMatches, file: ConfigFile) -> ServeConfig {
+        let unset = |id: &str| !matches!(matches.value_source(id), Some(ValueSource::CommandLine | ValueSource::EnvVariable));
+        macro_rules! layer {
+            ($($field:ident),*) => {$(
+                if let Some(v) = file.$field {
+                    if unset(stringify!($field)) {
+                        self.$field = v.into();
+                    }
+                }
+            )*};
+        }
+        layer!(
+            http,
+            grpc,
+            cache_bytes,
+            max_concurrency,
+            queue,
+            body_limit,
+            queue_timeout_ms,
+            grace_ms,
+            ceiling_primitives,
+            ceiling_triangles,
+            ceiling_memory,
+            ceiling_timeout_ms,
+            cache_dir,
+            cache_dir_bytes
+        );
+        self
+    }
+
     /// Renders running at once, resolving 0 to the number of cores.
     pub fn concurrency(&self) -> usize {
         if self.max_concurrency > 0 {

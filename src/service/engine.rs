@@ -3,7 +3,8 @@
 //! bounded wait queue.
 
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
-use crate::cache::{CacheOutcome, ModelCache, Rendered};
+use crate::cache::{CacheOutcome, DiskError, DiskTier, ModelCache, Rendered};
+use crate::lang::Language;
 use crate::RenderRequest;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
@@ -41,18 +42,23 @@ impl Drop for Waiting<'_> {
 }
 
 impl Engine {
-    /// An engine configured by `config`, reporting to `metrics`.
-    pub fn new(config: &ServeConfig, metrics: Arc<Metrics>) -> Engine {
+    /// An engine configured by `config`, reporting to `metrics`; fails if the
+    /// disk cache directory cannot be opened.
+    pub fn new(config: &ServeConfig, metrics: Arc<Metrics>) -> Result<Engine, DiskError> {
         let slot_count = config.concurrency();
-        Engine {
-            cache: ModelCache::new(config.cache_bytes),
+        let mut cache = ModelCache::new(config.cache_bytes);
+        if let Some(dir) = &config.cache_dir {
+            cache = cache.with_disk(DiskTier::open(dir, config.cache_dir_bytes)?);
+        }
+        Ok(Engine {
+            cache,
             slots: Arc::new(Semaphore::new(slot_count)),
             slot_count,
             queue_limit: config.queue,
             waiting: AtomicUsize::new(0),
             queue_timeout: config.queue_timeout(),
             metrics,
-        }
+        })
     }
 
     /// The model cache.
@@ -60,12 +66,19 @@ impl Engine {
         &self.cache
     }
 
-    /// Serves `plan` from the cache, or renders it (once for all concurrent identical requests).
+    /// Serves `plan` from the cache, or renders it (once for all concurrent
+    /// identical requests). Records the language, the cache key and the
+    /// cache result on the caller's span (fields `language`, `key`, `cache`).
     pub async fn serve(&self, plan: RenderPlan) -> Result<Served, ServiceError> {
         let key = plan.key;
         let fresh = plan.no_cache;
+        let span = tracing::Span::current();
+        span.record("key", tracing::field::display(key.hex()));
+        let language = plan.request.language.or_else(|| Language::detect(&plan.source));
+        span.record("language", tracing::field::display(language.map_or("unknown", Language::name)));
         let (model, cache) = self.cache.get_or_render(key, fresh, || self.run(plan)).await?;
         self.metrics.cache(cache == CacheOutcome::Hit);
+        span.record("cache", tracing::field::display(if cache == CacheOutcome::Hit { "hit" } else { "miss" }));
         Ok(Served { model, cache })
     }
 

@@ -6,7 +6,48 @@ use crate::lang::ParseError;
 use crate::RenderError;
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use serde_json::{json, Value};
+use crate::lang::Diagnostic;
+use serde::Serialize;
+use serde_json::Value;
+use utoipa::ToSchema;
+
+/// Every error response: `{"error": {...}}`.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ErrorBody {
+    /// What went wrong.
+    pub error: ErrorDetail,
+}
+
+/// The fields of an error response.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ErrorDetail {
+    /// A stable machine-readable code (`bad_request`, `parse_error`, `limit_exceeded`, ...).
+    pub code: &'static str,
+    /// A human message.
+    pub message: String,
+    /// 1-based line of a parse or evaluation error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub line: Option<u32>,
+    /// 1-based column of a parse or evaluation error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub column: Option<u32>,
+    /// Every parse diagnostic.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<Vec<super::http::DiagnosticSchema>>)]
+    pub diagnostics: Option<Vec<Diagnostic>>,
+    /// The limit that was exceeded.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub limit: Option<&'static str>,
+    /// The limit's configured value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub configured: Option<u64>,
+    /// How far the render got when the limit stopped it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reached: Option<u64>,
+    /// Seconds to wait before retrying (also the `Retry-After` header).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub retry_after: Option<u64>,
+}
 
 /// Why a service request failed.
 #[derive(Debug, Clone, thiserror::Error)]
@@ -123,30 +164,38 @@ impl ServiceError {
         }
     }
 
-    /// The JSON body `{"error": {"code", "message", "line"?, "column"?, "limit"?, "configured"?, "reached"?}}`.
-    pub fn body(&self) -> Value {
-        let mut e = json!({ "code": self.code(), "message": self.to_string() });
+    /// The typed error body.
+    pub fn detail(&self) -> ErrorBody {
         let span = match self {
             ServiceError::Parse(p) => p.diagnostics.first().map(|d| d.span),
             ServiceError::Eval(ev) => ev.span(),
             _ => None,
         };
-        if let Some(s) = span {
-            e["line"] = s.line.into();
-            e["column"] = s.column.into();
+        let limit = match self {
+            ServiceError::Limit(l) => Some(l),
+            _ => None,
+        };
+        ErrorBody {
+            error: ErrorDetail {
+                code: self.code(),
+                message: self.to_string(),
+                line: span.map(|s| s.line),
+                column: span.map(|s| s.column),
+                diagnostics: match self {
+                    ServiceError::Parse(p) => Some(p.diagnostics.clone()),
+                    _ => None,
+                },
+                limit: limit.map(|l| l.limit.name()),
+                configured: limit.map(|l| l.configured),
+                reached: limit.map(|l| l.reached),
+                retry_after: self.retry_after(),
+            },
         }
-        if let ServiceError::Parse(p) = self {
-            e["diagnostics"] = serde_json::to_value(&p.diagnostics).unwrap_or(Value::Null);
-        }
-        if let ServiceError::Limit(l) = self {
-            e["limit"] = l.limit.name().into();
-            e["configured"] = l.configured.into();
-            e["reached"] = l.reached.into();
-        }
-        if let Some(r) = self.retry_after() {
-            e["retry_after"] = r.into();
-        }
-        json!({ "error": e })
+    }
+
+    /// The JSON body `{"error": {"code", "message", "line"?, "column"?, "limit"?, "configured"?, "reached"?}}`.
+    pub fn body(&self) -> Value {
+        serde_json::to_value(self.detail()).unwrap_or(Value::Null)
     }
 
     /// The gRPC status: the message, with the JSON body as details and the

@@ -14,7 +14,12 @@ pub mod pb {
     tonic::include_proto!("rulemesh.v1");
 }
 
+/// The encoded protobuf descriptors of `rulemesh.v1`, served by gRPC reflection.
+pub const FILE_DESCRIPTOR_SET: &[u8] = tonic::include_file_descriptor_set!("rulemesh_descriptor");
+
 use pb::rulemesh_server::{Rulemesh, RulemeshServer};
+use std::time::Instant;
+use tracing::Instrument;
 
 /// Bytes per `RenderStream` chunk.
 pub const CHUNK_BYTES: usize = 64 * 1024;
@@ -79,8 +84,27 @@ fn meta(served: &Served) -> pb::RenderMeta {
 impl GrpcService {
     async fn serve(&self, method: &str, req: pb::RenderRequest) -> Result<Served, Status> {
         let no_cache = req.no_cache;
-        let result = async { RenderBody::from(req).plan(&self.state.ceiling, no_cache)?.pipe_serve(&self.state).await }.await;
+        let id = super::http::next_request_id();
+        let span = tracing::info_span!(
+            "grpc",
+            id,
+            method,
+            language = tracing::field::Empty,
+            key = tracing::field::Empty,
+            cache = tracing::field::Empty
+        );
+        let started = Instant::now();
+        let result = async { RenderBody::from(req).plan(&self.state.ceiling, no_cache)?.pipe_serve(&self.state).await }
+            .instrument(span.clone())
+            .await;
         self.count(method, &result);
+        span.in_scope(|| {
+            let code = match &result {
+                Ok(_) => "ok",
+                Err(e) => e.code(),
+            };
+            tracing::info!(code, ms = started.elapsed().as_secs_f64() * 1000.0, "request")
+        });
         result.map_err(|e| e.to_status())
     }
 

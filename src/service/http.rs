@@ -5,6 +5,7 @@ use super::request::{from_json, parse_format, CheckBody, RenderBody};
 use super::{AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::eval::{Limits, ParamValue};
+use crate::export::Format;
 use crate::lang::{Diagnostic, Severity};
 use axum::body::{Body, Bytes};
 use axum::extract::rejection::BytesRejection;
@@ -12,11 +13,16 @@ use axum::extract::{DefaultBodyLimit, MatchedPath, Path, RawQuery, Request, Stat
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
-use axum::routing::{get, post};
 use axum::{Json, Router};
 use serde::Serialize;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
+use super::error::{ErrorBody, ErrorDetail};
+use tower_http::compression::predicate::{Predicate, SizeAbove};
+use tower_http::compression::CompressionLayer;
+use utoipa::{OpenApi, ToSchema};
+use utoipa_axum::router::OpenApiRouter;
+use utoipa_axum::routes;
 use std::time::Instant;
 use tracing::Instrument;
 
@@ -25,44 +31,127 @@ pub const CACHE_IMMUTABLE: &str = "public, max-age=31536000, immutable";
 /// `Cache-Control` of a model whose seed is not pinned by its URL.
 pub const CACHE_SHORT: &str = "public, max-age=300";
 
-/// The HTTP router with every route, the body limit and request metrics.
+/// The HTTP router with every route, the body limit, response compression
+/// and request metrics.
 pub fn router(state: Arc<AppState>) -> Router {
-    Router::new()
-        .route("/v1/render", post(render_post))
-        .route("/v1/models/{file}", get(model_get))
-        .route("/v1/grammars", get(grammars_list))
-        .route("/v1/grammars/{name}", get(grammar_source))
-        .route("/v1/check", post(check_post))
-        .route("/healthz", get(|| async { "ok\n" }))
-        .route("/readyz", get(readyz))
-        .route("/metrics", get(metrics))
+    let (routes, _doc) = api_router().split_for_parts();
+    routes
         .fallback(|| async { ServiceError::NotFound("no such route".into()) })
         .layer(DefaultBodyLimit::max(state.config.body_limit))
+        .layer(CompressionLayer::new().compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(TextBodies)))
+        .layer(middleware::from_fn(etag_per_encoding))
         .layer(middleware::from_fn_with_state(state.clone(), observe))
         .with_state(state)
 }
 
+/// Every documented route: each handler registered once, for both the
+/// router and the OpenAPI document, so the two cannot drift apart.
+fn api_router() -> OpenApiRouter<Arc<AppState>> {
+    OpenApiRouter::with_openapi(ApiDoc::openapi())
+        .routes(routes!(render_post))
+        .routes(routes!(model_get))
+        .routes(routes!(grammars_list))
+        .routes(routes!(grammar_source))
+        .routes(routes!(check_post))
+        .routes(routes!(healthz))
+        .routes(routes!(readyz))
+        .routes(routes!(metrics))
+        .routes(routes!(openapi_json))
+}
+
+/// The document's title, version and shared schemas; paths come from the handlers.
+#[derive(OpenApi)]
+#[openapi(
+    info(title = "rulemesh", description = "Shape grammars to 3D models (glTF, STL, strips) under hard limits."),
+    components(schemas(ErrorBody, ErrorDetail, DiagnosticSchema))
+)]
+struct ApiDoc;
+
+/// The OpenAPI 3 document of the HTTP API, generated from the handlers' types.
+pub fn openapi() -> utoipa::openapi::OpenApi {
+    api_router().split_for_parts().1
+}
+
+/// [`openapi`] as JSON, built once.
+pub fn openapi_json_text() -> &'static str {
+    static DOC: OnceLock<String> = OnceLock::new();
+    DOC.get_or_init(|| openapi().to_json().unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}")))
+}
+
+/// `GET /openapi.json`.
+#[utoipa::path(get, path = "/openapi.json", tag = "meta",
+    responses((status = 200, description = "This API's OpenAPI 3 document", content_type = "application/json", body = Object)))]
+async fn openapi_json() -> Response {
+    ([(header::CONTENT_TYPE, "application/json")], openapi_json_text()).into_response()
+}
+
+/// Responses smaller than this are sent as they are.
+pub const COMPRESS_MIN_BYTES: u16 = 256;
+
+/// Marks a response whose body is text (glTF JSON, ASCII STL) so that it may
+/// be compressed although its type is `model/*`.
+#[derive(Debug, Clone, Copy)]
+pub struct TextModel;
+
+/// Compresses JSON and text bodies and models marked [`TextModel`]; binary
+/// models (GLB, binary STL, strips) go out as they are.
+#[derive(Debug, Clone, Copy)]
+pub struct TextBodies;
+
+impl Predicate for TextBodies {
+    fn should_compress<B>(&self, response: &axum::http::Response<B>) -> bool
+    where
+        B: axum::body::HttpBody,
+    {
+        if response.extensions().get::<TextModel>().is_some() {
+            return true;
+        }
+        let ctype = response.headers().get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("");
+        ctype.starts_with("text/") || ctype.starts_with("application/json")
+    }
+}
+
+/// Gives a compressed response its own strong ETag (`"HASH-gzip"`), as one
+/// entity tag must name one byte sequence; [`etag_matches`] accepts both.
+async fn etag_per_encoding(req: Request, next: Next) -> Response {
+    let mut resp = next.run(req).await;
+    let encoding = resp.headers().get(header::CONTENT_ENCODING).and_then(|v| v.to_str().ok()).map(str::to_string);
+    if let Some(enc) = encoding {
+        let tagged = resp.headers().get(header::ETAG).and_then(|v| v.to_str().ok()).and_then(|t| t.strip_suffix('"').map(|t| format!("{t}-{enc}\"")));
+        if let Some(t) = tagged {
+            resp.headers_mut().insert(header::ETAG, header_value(&t));
+        }
+    }
+    resp
+}
+
 static REQUEST_ID: AtomicU64 = AtomicU64::new(1);
 
-/// Counts every request by route and status and logs it in a span with a request id.
+/// A new request id, unique in this process (shared by HTTP and gRPC).
+pub fn next_request_id() -> u64 {
+    REQUEST_ID.fetch_add(1, Ordering::Relaxed)
+}
+
+/// Counts every request by route and status and logs it in a span with a
+/// request id, the language, the cache key and the cache result.
 async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -> Response {
     let route = req.extensions().get::<MatchedPath>().map_or_else(|| "unmatched".to_string(), |m| m.as_str().to_string());
-    let id = REQUEST_ID.fetch_add(1, Ordering::Relaxed);
-    let span = tracing::info_span!("http", id, method = %req.method(), route = %route);
+    let id = next_request_id();
+    let span = tracing::info_span!(
+        "http",
+        id,
+        method = %req.method(),
+        route = %route,
+        language = tracing::field::Empty,
+        key = tracing::field::Empty,
+        cache = tracing::field::Empty
+    );
     let started = Instant::now();
     let mut resp = next.run(req).instrument(span.clone()).await;
     let status = resp.status().as_u16();
     state.metrics.request("http", &route, status);
     let header = |name: &str| resp.headers().get(name).and_then(|v| v.to_str().ok()).unwrap_or("-").to_string();
-    span.in_scope(|| {
-        tracing::info!(
-            status,
-            cache = %header("x-rulemesh-cache"),
-            etag = %header("etag"),
-            ms = started.elapsed().as_secs_f64() * 1000.0,
-            "request"
-        )
-    });
+    span.in_scope(|| tracing::info!(status, etag = %header("etag"), ms = started.elapsed().as_secs_f64() * 1000.0, "request"));
     if let Ok(v) = HeaderValue::from_str(&id.to_string()) {
         resp.headers_mut().insert("x-request-id", v);
     }
@@ -93,10 +182,18 @@ fn header_value(s: &str) -> HeaderValue {
     HeaderValue::from_str(s).unwrap_or_else(|_| HeaderValue::from_static("invalid"))
 }
 
+/// Whether `format`'s bytes are text (and worth compressing).
+fn is_text(format: Format) -> bool {
+    matches!(format, Format::Gltf | Format::StlAscii)
+}
+
 /// A model response with its ETag, cache and count headers.
-fn model_response(served: &Served, cache_control: Option<&'static str>) -> Response {
+fn model_response(served: &Served, cache_control: Option<&'static str>, text: bool) -> Response {
     let m = &served.model;
     let mut resp = Response::new(Body::from(m.bytes.clone()));
+    if text {
+        resp.extensions_mut().insert(TextModel);
+    }
     let h = resp.headers_mut();
     h.insert(header::CONTENT_TYPE, HeaderValue::from_static(m.content_type));
     model_headers(h, served, cache_control);
@@ -122,15 +219,38 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
 }
 
 /// `POST /v1/render`.
+#[utoipa::path(post, path = "/v1/render", tag = "render",
+    request_body = RenderBody,
+    params(("Cache-Control" = Option<String>, Header, description = "`no-cache` renders afresh")),
+    responses(
+        (status = 200, description = "The model", content(
+            (Vec<u8> = "model/gltf-binary"),
+            (Vec<u8> = "model/gltf+json"),
+            (Vec<u8> = "model/stl"),
+            (Vec<u8> = "application/vnd.rulemesh.strips")
+        ), headers(
+            ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
+            ("X-Rulemesh-Cache" = String, description = "hit or miss"),
+            ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
+            ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
+            ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short")
+        )),
+        (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
+        (status = 413, description = "Request body too large", body = ErrorBody),
+        (status = 422, description = "A limit was exceeded", body = ErrorBody),
+        (status = 503, description = "Overloaded or shutting down (with Retry-After)", body = ErrorBody),
+        (status = 504, description = "Deadline exceeded", body = ErrorBody)
+    ))]
 async fn render_post(State(st): State<Arc<AppState>>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
-    let result = async {
+    let result: Result<(Served, bool), ServiceError> = async {
         let body = body_bytes(body, st.config.body_limit)?;
         let plan = from_json::<RenderBody>(&body)?.plan(&st.ceiling, wants_fresh(&headers))?;
-        st.engine.serve(plan).await
+        let text = is_text(plan.request.format);
+        Ok((st.engine.serve(plan).await?, text))
     }
     .await;
     match result {
-        Ok(served) => model_response(&served, None),
+        Ok((served, text)) => model_response(&served, None, text),
         Err(e) => e.into_response(),
     }
 }
@@ -138,11 +258,45 @@ async fn render_post(State(st): State<Arc<AppState>>, headers: HeaderMap, body: 
 /// Whether `If-None-Match` lists `etag` (or `*`).
 fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
     headers.get_all(header::IF_NONE_MATCH).iter().filter_map(|v| v.to_str().ok()).any(|v| {
-        v.split(',').map(str::trim).any(|t| t == "*" || t.trim_start_matches("W/").trim_matches('"') == etag)
+        v.split(',').map(str::trim).any(|t| {
+            let t = t.trim_start_matches("W/").trim_matches('"');
+            let base = ["-gzip", "-br", "-zstd"].iter().find_map(|s| t.strip_suffix(s)).unwrap_or(t);
+            t == "*" || base == etag
+        })
     })
 }
 
 /// `GET /v1/models/{name}.{glb|gltf|stl}?seed=N&p.<param>=V&detail=D`.
+#[utoipa::path(get, path = "/v1/models/{file}", tag = "render",
+    params(
+        ("file" = String, Path, description = "NAME.glb, NAME.gltf or NAME.stl, NAME a built-in grammar"),
+        ("seed" = Option<u64>, Query, description = "Random seed; pinning it makes the response immutable"),
+        ("detail" = Option<u32>, Query, description = "Tessellation detail"),
+        ("p.<param>" = Option<String>, Query, description = "A grammar parameter, e.g. p.size=3"),
+        ("If-None-Match" = Option<String>, Header, description = "ETags the client holds"),
+        ("Cache-Control" = Option<String>, Header, description = "`no-cache` renders afresh")
+    ),
+    responses(
+        (status = 200, description = "The model, with Cache-Control for CDNs", content(
+            (Vec<u8> = "model/gltf-binary"),
+            (Vec<u8> = "model/gltf+json"),
+            (Vec<u8> = "model/stl"),
+            (Vec<u8> = "application/vnd.rulemesh.strips")
+        ), headers(
+            ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
+            ("X-Rulemesh-Cache" = String, description = "hit or miss"),
+            ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
+            ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
+            ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short")
+        )),
+        (status = 304, description = "Not modified (If-None-Match matched)"),
+        (status = 404, description = "Unknown grammar or extension", body = ErrorBody),
+        (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
+        (status = 413, description = "Request body too large", body = ErrorBody),
+        (status = 422, description = "A limit was exceeded", body = ErrorBody),
+        (status = 503, description = "Overloaded or shutting down (with Retry-After)", body = ErrorBody),
+        (status = 504, description = "Deadline exceeded", body = ErrorBody)
+    ))]
 async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, RawQuery(query): RawQuery, headers: HeaderMap) -> Response {
     let result = async {
         let Some((name, ext)) = file.rsplit_once('.') else {
@@ -178,20 +332,21 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
             }
         }
         let pinned = body.seed.is_some();
+        let text = ext == "gltf";
         let plan = body.plan(&Limits::default().clamped_to(&st.ceiling), wants_fresh(&headers))?;
         let served = st.engine.serve(plan).await?;
-        Ok((served, pinned))
+        Ok((served, pinned, text))
     }
     .await;
     match result {
-        Ok((served, pinned)) => {
+        Ok((served, pinned, text)) => {
             let cc = if pinned { CACHE_IMMUTABLE } else { CACHE_SHORT };
             if etag_matches(&headers, &served.model.etag) {
                 let mut resp = StatusCode::NOT_MODIFIED.into_response();
                 model_headers(resp.headers_mut(), &served, Some(cc));
                 return resp;
             }
-            model_response(&served, Some(cc))
+            model_response(&served, Some(cc), text)
         }
         Err(e) => e.into_response(),
     }
@@ -207,18 +362,26 @@ fn serde_urlencoded_pairs(query: &str) -> Result<Vec<(String, String)>, ServiceE
 }
 
 /// `GET /v1/grammars`.
+#[utoipa::path(get, path = "/v1/grammars", tag = "grammars",
+    responses((status = 200, description = "Every built-in grammar", body = GrammarList)))]
 async fn grammars_list() -> Json<GrammarList> {
     Json(GrammarList { grammars: library::all().map(|b| b.info()).collect() })
 }
 
 /// The body of `GET /v1/grammars`.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, ToSchema)]
 pub struct GrammarList {
     /// Every built-in grammar.
     pub grammars: Vec<GrammarInfo>,
 }
 
 /// `GET /v1/grammars/{name}`: the source as text.
+#[utoipa::path(get, path = "/v1/grammars/{name}", tag = "grammars",
+    params(("name" = String, Path, description = "A built-in grammar's name (optionally with .mdg)")),
+    responses(
+        (status = 200, description = "The grammar's source", content_type = "text/plain", body = String),
+        (status = 404, description = "No such grammar", body = ErrorBody)
+    ))]
 async fn grammar_source(Path(name): Path<String>) -> Response {
     let name = name.strip_suffix(".mdg").unwrap_or(&name);
     match library::find(name) {
@@ -228,14 +391,30 @@ async fn grammar_source(Path(name): Path<String>) -> Response {
 }
 
 /// The body of `POST /v1/check`.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, ToSchema)]
 pub struct CheckReport {
     /// True when the source parses.
     pub ok: bool,
     /// The language it was read as, when known.
+    #[schema(value_type = Option<String>)]
     pub language: Option<&'static str>,
     /// Errors and warnings with line and column.
+    #[schema(value_type = Vec<DiagnosticSchema>)]
     pub diagnostics: Vec<Diagnostic>,
+}
+
+/// The shape of a [`Diagnostic`] in JSON (for the OpenAPI document).
+#[derive(Debug, Serialize, ToSchema)]
+#[schema(as = Diagnostic)]
+pub struct DiagnosticSchema {
+    /// `error` or `warning`.
+    pub severity: String,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column, in characters.
+    pub column: u32,
+    /// A human message.
+    pub message: String,
 }
 
 /// Parses without evaluating; shared with gRPC.
@@ -255,6 +434,13 @@ pub fn check(body: CheckBody, ceiling: &Limits) -> Result<CheckReport, ServiceEr
 }
 
 /// `POST /v1/check`.
+#[utoipa::path(post, path = "/v1/check", tag = "grammars",
+    request_body = CheckBody,
+    responses(
+        (status = 200, description = "Diagnostics with line and column (no evaluation)", body = CheckReport),
+        (status = 400, description = "Malformed request", body = ErrorBody),
+        (status = 413, description = "Request body too large", body = ErrorBody)
+    ))]
 async fn check_post(State(st): State<Arc<AppState>>, body: Result<Bytes, BytesRejection>) -> Response {
     let result = body_bytes(body, st.config.body_limit).and_then(|b| from_json::<CheckBody>(&b)).and_then(|b| check(b, &st.ceiling));
     match result {
@@ -263,7 +449,19 @@ async fn check_post(State(st): State<Arc<AppState>>, body: Result<Bytes, BytesRe
     }
 }
 
+/// `GET /healthz`: 200 while the process runs.
+#[utoipa::path(get, path = "/healthz", tag = "meta",
+    responses((status = 200, description = "Alive", content_type = "text/plain", body = String)))]
+async fn healthz() -> &'static str {
+    "ok\n"
+}
+
 /// `GET /readyz`: 200 while accepting work, 503 once shutting down.
+#[utoipa::path(get, path = "/readyz", tag = "meta",
+    responses(
+        (status = 200, description = "Accepting work", content_type = "text/plain", body = String),
+        (status = 503, description = "Shutting down", body = ErrorBody)
+    ))]
 async fn readyz(State(st): State<Arc<AppState>>) -> Response {
     if st.is_ready() {
         "ready\n".into_response()
@@ -273,6 +471,8 @@ async fn readyz(State(st): State<Arc<AppState>>) -> Response {
 }
 
 /// `GET /metrics`.
+#[utoipa::path(get, path = "/metrics", tag = "meta",
+    responses((status = 200, description = "Prometheus text exposition", content_type = "text/plain", body = String)))]
 async fn metrics(State(st): State<Arc<AppState>>) -> Response {
     st.engine.cache().sync().await;
     ([(header::CONTENT_TYPE, "text/plain; version=0.0.4; charset=utf-8")], st.metrics.render_text(st.engine.cache())).into_response()

@@ -5,6 +5,7 @@ use crate::eval::Limits;
 use crate::lang::ir::ParamKind;
 use crate::lang::Language;
 use serde::Serialize;
+use utoipa::ToSchema;
 
 include!(concat!(env!("OUT_DIR"), "/grammars.rs"));
 
@@ -30,7 +31,7 @@ pub fn find(name: &str) -> Option<Builtin> {
 }
 
 /// A declared parameter as listed by the API.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct ParamInfo {
     /// Its name.
     pub name: String,
@@ -47,7 +48,7 @@ pub struct ParamInfo {
 }
 
 /// A grammar as listed by `GET /v1/grammars`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct GrammarInfo {
     /// Its name.
     pub name: &'static str,

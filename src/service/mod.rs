@@ -14,7 +14,7 @@ pub mod library;
 pub mod metrics;
 pub mod request;
 
-pub use config::ServeConfig;
+pub use config::{ConfigError, ConfigFile, ServeConfig};
 pub use engine::{Engine, Served};
 pub use error::ServiceError;
 pub use metrics::Metrics;
@@ -42,16 +42,16 @@ pub struct AppState {
 }
 
 impl AppState {
-    /// State for `config`.
-    pub fn new(config: ServeConfig) -> AppState {
+    /// State for `config`; fails if the disk cache directory cannot be opened.
+    pub fn new(config: ServeConfig) -> Result<AppState, crate::cache::DiskError> {
         let metrics = Arc::new(Metrics::default());
-        AppState {
-            engine: Engine::new(&config, metrics.clone()),
+        Ok(AppState {
+            engine: Engine::new(&config, metrics.clone())?,
             metrics,
             ceiling: config.ceiling(),
             config,
             ready: AtomicBool::new(true),
-        }
+        })
     }
 
     /// False once shutdown has begun.
@@ -74,6 +74,12 @@ pub enum ServeError {
     /// The HTTP server failed.
     #[error("HTTP server: {0}")]
     Http(std::io::Error),
+    /// The disk cache directory could not be opened.
+    #[error(transparent)]
+    Cache(#[from] crate::cache::DiskError),
+    /// The gRPC reflection service could not be built.
+    #[error("gRPC reflection: {0}")]
+    Reflection(#[from] tonic_reflection::server::Error),
     /// The gRPC server failed.
     #[error("gRPC server: {0}")]
     Grpc(#[from] tonic::transport::Error),
@@ -133,7 +139,7 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
     let grpc_listener = bind(config.grpc).await?;
     let http_addr = http_listener.local_addr().map_err(|source| ServeError::Bind { addr: config.http, source })?;
     let grpc_addr = grpc_listener.local_addr().map_err(|source| ServeError::Bind { addr: config.grpc, source })?;
-    let state = Arc::new(AppState::new(config));
+    let state = Arc::new(AppState::new(config)?);
     let (stop, _) = watch::channel(false);
 
     let stopped = |mut rx: watch::Receiver<bool>| async move {
@@ -149,10 +155,20 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
     let (health, health_service) = tonic_health::server::health_reporter();
     health.set_serving::<grpc::pb::rulemesh_server::RulemeshServer<grpc::GrpcService>>().await;
     let grpc_service = grpc::server(state.clone());
+    // Server reflection, in the current (v1) and the older (v1alpha) protocol that some tools still ask first.
+    let reflection = || {
+        tonic_reflection::server::Builder::configure()
+            .register_encoded_file_descriptor_set(grpc::FILE_DESCRIPTOR_SET)
+            .register_encoded_file_descriptor_set(tonic_health::pb::FILE_DESCRIPTOR_SET)
+    };
+    let reflection_alpha = reflection().build_v1alpha()?;
+    let reflection = reflection().build_v1()?;
     let grpc_stop = stopped(stop.subscribe());
     let grpc = tokio::spawn(async move {
         tonic::transport::Server::builder()
             .add_service(health_service)
+            .add_service(reflection)
+            .add_service(reflection_alpha)
             .add_service(grpc_service)
             .serve_with_incoming_shutdown(tonic::transport::server::TcpIncoming::from(grpc_listener), grpc_stop)
             .await

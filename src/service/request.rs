@@ -11,11 +11,12 @@ use crate::geom::{MeshLayout, DEFAULT_DETAIL};
 use crate::lang::Language;
 use crate::RenderRequest;
 use serde::Deserialize;
+use utoipa::ToSchema;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// Client-supplied limits: every field optional, missing ones take the defaults.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LimitsBody {
     /// [`Limits::max_depth`]
@@ -51,8 +52,22 @@ impl LimitsBody {
     }
 }
 
+/// The JSON shape of a grammar parameter's value (for the OpenAPI document;
+/// requests are read as [`ParamValue`]).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, ToSchema)]
+#[serde(untagged)]
+#[schema(as = ParamValue)]
+pub enum ParamValueSchema {
+    /// A number.
+    Number(f64),
+    /// A boolean.
+    Bool(bool),
+    /// Text read as a number or `true`/`false`.
+    Text(String),
+}
+
 /// `POST /v1/render` as sent (and the gRPC `RenderRequest`, converted).
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RenderBody {
     /// Grammar source.
@@ -61,8 +76,9 @@ pub struct RenderBody {
     pub language: Option<String>,
     /// Random seed.
     pub seed: Option<u64>,
-    /// Grammar parameters.
+    /// Grammar parameters (numbers, booleans, or text read as either).
     #[serde(default)]
+    #[schema(value_type = BTreeMap<String, ParamValueSchema>)]
     pub params: BTreeMap<String, ParamValue>,
     /// `"glb"` (default), `"gltf"`, `"stl"` or `"stl-ascii"`.
     pub format: Option<String>,
@@ -91,7 +107,7 @@ pub struct RenderBody {
 }
 
 /// `POST /v1/check` as sent.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CheckBody {
     /// Grammar source.

@@ -70,7 +70,10 @@ fn every_grammar_validates_and_loads_in_three_in_every_variant() {
             if *suffix == "plain" {
                 (plain_triangles, plain_len) = (t, bytes.len());
             } else {
-                assert!(bytes.len() < plain_len, "{name}.{suffix}: {} bytes, plain {plain_len}", bytes.len());
+                // Welding alone can find nothing to merge (every vertex of a
+                // flat-shaded or swept mesh is distinct); then only its JSON grows a little.
+                let bound = if *suffix == "weld" { plain_len + 256 } else { plain_len - 1 };
+                assert!(bytes.len() <= bound, "{name}.{suffix}: {} bytes, plain {plain_len}", bytes.len());
                 let j = glb_json(&bytes);
                 let used: Vec<&str> = j["extensionsUsed"].as_array().map(|a| a.iter().filter_map(Value::as_str).collect()).unwrap_or_default();
                 assert_eq!(used.contains(&"KHR_mesh_quantization"), suffix.starts_with("quant"), "{name}.{suffix}");
