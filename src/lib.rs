@@ -11,6 +11,7 @@ pub mod export;
 pub mod eval;
 pub mod geom;
 pub mod lang;
+pub mod lsystem;
 pub mod pipeline;
 pub mod service;
 

@@ -301,9 +301,9 @@ fn render_failure(file: &str, e: RenderError) -> Failure {
 fn run_check(args: CheckArgs) -> Result<(), Failure> {
     let limits = Limits::default();
     let source = read_source(&args.file, limits.max_source_bytes)?;
-    match rulemesh::pipeline::parse_source(&source, language_for(&args.file, args.language), &limits) {
-        Ok((_, program)) => {
-            for line in diagnostic_lines(&args.file, &program.warnings) {
+    match rulemesh::pipeline::check_source(&source, language_for(&args.file, args.language), &limits) {
+        Ok((_, warnings)) => {
+            for line in diagnostic_lines(&args.file, &warnings) {
                 println!("{line}");
             }
             Ok(())

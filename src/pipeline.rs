@@ -138,6 +138,16 @@ pub fn parse_source(source: &[u8], language: Option<Language>, limits: &Limits) 
     Ok((language, lang::parse(language, source)?))
 }
 
+/// Parses `source` only to report its diagnostics: the language read and its warnings.
+pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<Diagnostic>), RenderError> {
+    Budget::check_source(limits, source.len() as u64)?;
+    let language = match language.or_else(|| Language::detect(source)) {
+        Some(l) => l,
+        None => return Err(RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into())),
+    };
+    Ok((language, lang::check(language, source)?))
+}
+
 /// Renders `source` as the request says. Never panics on bad input; every
 /// failure is a typed [`RenderError`].
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
@@ -151,6 +161,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     }
     if req.format == Format::Strips {
         req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
+    }
+    if req.language.or_else(|| Language::detect(source)) == Some(Language::Lsystem) {
+        return crate::lsystem::render(source, req);
     }
     let mut budget = Budget::new(req.limits);
     let mut phases = PhaseTimes::default();

@@ -1,9 +1,12 @@
 // Decoder for rulemesh's `strips` format (application/vnd.rulemesh.strips),
 // specified in docs/strips-format.md. Dependency-free ES module: decodes to
 // typed arrays ready for WebGL (TRIANGLE_STRIP with primitive restart, or a
-// TRIANGLES list on request). meshoptimizer's vertex codec (versions 0 and 1)
-// and index sequence codec are ported by hand from meshoptimizer's
-// src/vertexcodec.cpp and src/indexcodec.cpp (scalar paths).
+// TRIANGLES list on request). Reads format version 2. meshoptimizer's vertex
+// codec (versions 0 and 1) and index buffer codec (versions 0 and 1) are
+// ported by hand from meshoptimizer's src/vertexcodec.cpp and
+// src/indexcodec.cpp (scalar paths); the strip is rebuilt from the stored
+// triangles by `restrip`, the same algorithm as rulemesh's
+// geom::strip::restrip.
 //
 // Every length and offset is checked; damaged input throws a StripsError,
 // never reads out of bounds, and never allocates more than the payload's
@@ -23,6 +26,7 @@ const FLAG_ZSTD = 1;
 const FLAG_PALETTE = 2;
 const RESTART = 0xffffffff;
 const MAX_VERTICES_PER_STREAM_BYTE = 64;
+const INDEX_STREAM_OVERHEAD = 17;
 
 let crcTable = null;
 /** CRC-32 (IEEE 802.3, the zlib/PNG one) of `bytes`. */
@@ -202,36 +206,164 @@ export function decodeVertexBuffer(data, count, vertexSize) {
   return dest;
 }
 
-/** meshopt_decodeIndexSequence: decodes `count` 32-bit indices. */
-export function decodeIndexSequence(data, count) {
-  if (data.length < 1 + count + 4) throw new StripsError('index stream too short for its index count');
-  if ((data[0] & 0xf0) !== 0xd0) throw new StripsError('index stream: bad header');
-  if ((data[0] & 0x0f) > 1) throw new StripsError(`index stream: unsupported codec version ${data[0] & 0x0f}`);
+// ---- meshoptimizer index buffer codec (decodeIndexBuffer) ----
+
+const kCodeAuxTableSize = 16;
+
+// varint of up to 5 bytes, then zigzag delta from `last`; the caller
+// guarantees 16 readable bytes (the codeaux table makes that safe).
+function decodeVByte(data, p) {
+  const lead = data[p++];
+  if (lead < 128) return [lead, p];
+  let v = lead & 127;
+  let shift = 7;
+  for (let k = 0; k < 4; k++) {
+    const g = data[p++];
+    v = (v + (g & 127) * 2 ** shift) >>> 0;
+    shift += 7;
+    if (g < 128) break;
+  }
+  return [v, p];
+}
+
+/**
+ * meshopt_decodeIndexBuffer: decodes `count` 32-bit indices (a multiple of
+ * 3) into a Uint32Array. Throws StripsError on malformed data; like the C
+ * decoder it may return out-of-range indices, which the caller checks.
+ */
+export function decodeIndexBuffer(data, count) {
+  if (count % 3 !== 0) throw new StripsError('index count not a multiple of 3');
+  if (data.length < 1 + count / 3 + kCodeAuxTableSize) throw new StripsError('index stream too short for its triangle count');
+  if ((data[0] & 0xf0) !== 0xe0) throw new StripsError('index stream: bad header');
+  const version = data[0] & 0x0f;
+  if (version > 1) throw new StripsError(`index stream: unsupported codec version ${version}`);
   const out = new Uint32Array(count);
-  const safeEnd = data.length - 4;
-  const last = [0, 0];
-  let p = 1;
-  for (let i = 0; i < count; i++) {
-    if (p >= safeEnd) throw new StripsError('index stream truncated');
-    // varint, at most 5 bytes (the 4-byte tail makes reading past safeEnd safe)
-    let lead = data[p++];
-    let v = lead;
-    if (lead >= 128) {
-      v = lead & 127;
-      let shift = 7;
-      for (let k = 0; k < 4; k++) {
-        const g = data[p++];
-        v = (v | ((g & 127) * 2 ** shift)) >>> 0;
-        shift += 7;
-        if (g < 128) break;
+  const edge0 = new Uint32Array(16).fill(0xffffffff);
+  const edge1 = new Uint32Array(16).fill(0xffffffff);
+  const vfifo = new Uint32Array(16).fill(0xffffffff);
+  let eo = 0;
+  let vo = 0;
+  let next = 0;
+  let last = 0;
+  const fecmax = version >= 1 ? 13 : 15;
+  let code = 1;
+  const codeEnd = 1 + count / 3;
+  let p = codeEnd;
+  const safeEnd = data.length - kCodeAuxTableSize;
+  const aux = safeEnd;
+  let o = 0;
+  const pushV = (v, cond) => {
+    vfifo[vo] = v;
+    vo = (vo + cond) & 15;
+  };
+  const pushE = (a, b) => {
+    edge0[eo] = a;
+    edge1[eo] = b;
+    eo = (eo + 1) & 15;
+  };
+  while (code < codeEnd) {
+    const codetri = data[code++];
+    if (codetri < 0xf0) {
+      const fe = codetri >> 4;
+      const a = edge0[(eo - 1 - fe) & 15];
+      const b = edge1[(eo - 1 - fe) & 15];
+      let c;
+      const fec = codetri & 15;
+      if (fec < fecmax) {
+        const cf = vfifo[(vo - 1 - fec) & 15];
+        c = fec === 0 ? next : cf;
+        const fec0 = fec === 0 ? 1 : 0;
+        next = (next + fec0) >>> 0;
+        pushV(c, fec0);
+      } else {
+        if (p > safeEnd) throw new StripsError('index stream truncated');
+        if (fec !== 15) {
+          c = (last + (fec * 2 - 27)) >>> 0;
+        } else {
+          let v;
+          [v, p] = decodeVByte(data, p);
+          c = (last + ((v >>> 1) ^ -(v & 1))) >>> 0;
+        }
+        last = c;
+        pushV(c, 1);
       }
+      pushE(c, b);
+      pushE(a, c);
+      out[o++] = a;
+      out[o++] = b;
+      out[o++] = c;
+    } else if (codetri < 0xfe) {
+      const codeaux = data[aux + (codetri & 15)];
+      const feb = codeaux >> 4;
+      const fec = codeaux & 15;
+      const a = next;
+      next = (next + 1) >>> 0;
+      const bf = vfifo[(vo - feb) & 15];
+      const b = feb === 0 ? next : bf;
+      const feb0 = feb === 0 ? 1 : 0;
+      next = (next + feb0) >>> 0;
+      const cf = vfifo[(vo - fec) & 15];
+      const c = fec === 0 ? next : cf;
+      const fec0 = fec === 0 ? 1 : 0;
+      next = (next + fec0) >>> 0;
+      out[o++] = a;
+      out[o++] = b;
+      out[o++] = c;
+      pushV(a, 1);
+      pushV(b, feb0);
+      pushV(c, fec0);
+      pushE(b, a);
+      pushE(c, b);
+      pushE(a, c);
+    } else {
+      if (p > safeEnd) throw new StripsError('index stream truncated');
+      const codeaux = data[p++];
+      const fea = codetri === 0xfe ? 0 : 15;
+      const feb = codeaux >> 4;
+      const fec = codeaux & 15;
+      if (codeaux === 0) next = 0;
+      let a = 0;
+      if (fea === 0) {
+        a = next;
+        next = (next + 1) >>> 0;
+      }
+      let b;
+      if (feb === 0) {
+        b = next;
+        next = (next + 1) >>> 0;
+      } else {
+        b = vfifo[(vo - feb) & 15];
+      }
+      let c;
+      if (fec === 0) {
+        c = next;
+        next = (next + 1) >>> 0;
+      } else {
+        c = vfifo[(vo - fec) & 15];
+      }
+      let v;
+      if (fea === 15) {
+        [v, p] = decodeVByte(data, p);
+        last = a = (last + ((v >>> 1) ^ -(v & 1))) >>> 0;
+      }
+      if (feb === 15) {
+        [v, p] = decodeVByte(data, p);
+        last = b = (last + ((v >>> 1) ^ -(v & 1))) >>> 0;
+      }
+      if (fec === 15) {
+        [v, p] = decodeVByte(data, p);
+        last = c = (last + ((v >>> 1) ^ -(v & 1))) >>> 0;
+      }
+      out[o++] = a;
+      out[o++] = b;
+      out[o++] = c;
+      pushV(a, 1);
+      pushV(b, feb === 0 || feb === 15 ? 1 : 0);
+      pushV(c, fec === 0 || fec === 15 ? 1 : 0);
+      pushE(b, a);
+      pushE(c, b);
+      pushE(a, c);
     }
-    const current = v & 1;
-    v >>>= 1;
-    const d = ((v >>> 1) ^ -(v & 1)) >>> 0;
-    const index = (last[current] + d) >>> 0;
-    last[current] = index;
-    out[i] = index;
   }
   if (p !== safeEnd) throw new StripsError('index stream has the wrong length');
   return out;
@@ -254,6 +386,59 @@ function octDecode(qx, qy, max, out, o) {
   out[o] = x / len;
   out[o + 1] = y / len;
   out[o + 2] = z / len;
+}
+
+/**
+ * Triangle list in strip order → strip with RESTART between runs (the spec's
+ * rule, identical to rulemesh's geom::strip::restrip). A run starts at a
+ * triangle in the first of its rotations (a,b,c), (b,c,a), (c,a,b) that the
+ * next triangle can continue; with x, y the run's last two indices and k the
+ * number of the next triangle inside the run, a triangle continues the run
+ * if it holds the directed edge x→y (k even) or y→x (k odd), and its third
+ * corner is appended.
+ */
+export function restrip(list) {
+  const n = Math.floor(list.length / 3);
+  // third corner of triangle t if it holds the directed edge p→q, else -1
+  const third = (t, p, q) => {
+    const a = list[3 * t];
+    const b = list[3 * t + 1];
+    const c = list[3 * t + 2];
+    if (a === p && b === q) return c;
+    if (b === p && c === q) return a;
+    if (c === p && a === q) return b;
+    return -1;
+  };
+  const out = [];
+  let i = 0;
+  while (i < n) {
+    if (i > 0) out.push(RESTART);
+    const a = list[3 * i];
+    const b = list[3 * i + 1];
+    const c = list[3 * i + 2];
+    let start = [a, b, c];
+    if (i + 1 < n) {
+      for (const r of [[a, b, c], [b, c, a], [c, a, b]]) {
+        if (third(i + 1, r[2], r[1]) >= 0) {
+          start = r;
+          break;
+        }
+      }
+    }
+    out.push(start[0], start[1], start[2]);
+    i++;
+    let k = 1;
+    while (i < n) {
+      const x = out[out.length - 2];
+      const y = out[out.length - 1];
+      const z = k % 2 === 0 ? third(i, x, y) : third(i, y, x);
+      if (z < 0) break;
+      out.push(z);
+      i++;
+      k++;
+    }
+  }
+  return Uint32Array.from(out);
 }
 
 /** Strip indices → triangle list (GL rule for odd triangles; joins skipped). */
@@ -307,7 +492,7 @@ export function decodeStrips(input, options = {}) {
   const flags = bytes[5];
   const pbits = bytes[6];
   const nbits = bytes[7];
-  if (version !== 1) throw new StripsError(`unsupported strips version ${version} (this decoder reads version 1)`);
+  if (version !== 2) throw new StripsError(`unsupported strips version ${version} (this decoder reads version 2)`);
   if (flags & ~(FLAG_ZSTD | FLAG_PALETTE)) throw new StripsError(`invalid strips header: unknown flags ${flags}`);
   if (flags & FLAG_ZSTD) throw new StripsError('this payload is zstd-wrapped; the JavaScript decoder reads only unwrapped payloads (request zstd=false)');
   if (![8, 10, 12, 16].includes(pbits) || ![8, 16].includes(nbits)) throw new StripsError(`invalid strips header: position bits ${pbits}, normal bits ${nbits}`);
@@ -317,7 +502,7 @@ export function decodeStrips(input, options = {}) {
     if (!Number.isFinite(bboxMin[a]) || !Number.isFinite(bboxMax[a]) || bboxMin[a] > bboxMax[a]) throw new StripsError('invalid strips header: bounding box not finite or min > max');
   }
   const vertexCount = dv.getUint32(32, true);
-  const indexCount = dv.getUint32(36, true);
+  const triangleCount = dv.getUint32(36, true);
   const paletteLen = dv.getUint32(40, true);
   const rawLen = dv.getUint32(48, true);
   const hasPalette = (flags & FLAG_PALETTE) !== 0;
@@ -340,12 +525,15 @@ export function decodeStrips(input, options = {}) {
   const istream = takeStream('index');
   if (at !== body.length) throw new StripsError(`invalid strips body: ${body.length - at} stray bytes after the index stream`);
   if (vertexCount > vstream.length * MAX_VERTICES_PER_STREAM_BYTE + 256 || vertexCount >= RESTART) throw new StripsError(`invalid strips header: ${vertexCount} vertices cannot fit in a ${vstream.length}-byte vertex stream`);
-  if (indexCount + 5 > istream.length) throw new StripsError(`invalid strips header: ${indexCount} indices cannot fit in a ${istream.length}-byte index stream`);
+  if (triangleCount + INDEX_STREAM_OVERHEAD > istream.length) throw new StripsError(`invalid strips header: ${triangleCount} triangles cannot fit in a ${istream.length}-byte index stream`);
 
   const raw = decodeVertexBuffer(vstream, vertexCount, 16);
-  const strip = decodeIndexSequence(istream, indexCount);
-  for (let i = 0; i < strip.length; i++) {
-    if (strip[i] !== RESTART && strip[i] >= vertexCount) throw new StripsError(`invalid strips body: strip index ${strip[i]} out of range (${vertexCount} vertices)`);
+  const tris = decodeIndexBuffer(istream, triangleCount * 3);
+  for (let i = 0; i < tris.length; i++) {
+    if (tris[i] >= vertexCount) throw new StripsError(`invalid strips body: index ${tris[i]} out of range (${vertexCount} vertices)`);
+  }
+  for (let t = 0; t < tris.length; t += 3) {
+    if (tris[t] === tris[t + 1] || tris[t + 1] === tris[t + 2] || tris[t] === tris[t + 2]) throw new StripsError(`invalid strips body: triangle ${t / 3} has a repeated index`);
   }
 
   const pmax = 2 ** pbits - 1;
@@ -375,10 +563,12 @@ export function decodeStrips(input, options = {}) {
   let mode;
   let restartIndex = null;
   if (options.triangles) {
-    const tris = unstripify(strip);
-    indices = small ? Uint16Array.from(tris) : Uint32Array.from(tris);
+    indices = small ? Uint16Array.from(tris) : tris;
     mode = 'TRIANGLES';
-  } else if (small) {
+    return { positions, normals, colours, indices, mode, restartIndex, vertexCount, bboxMin, bboxMax, positionBits: pbits, normalBits: nbits, palette };
+  }
+  const strip = restrip(tris);
+  if (small) {
     indices = new Uint16Array(strip.length);
     for (let i = 0; i < strip.length; i++) indices[i] = strip[i] === RESTART ? 0xffff : strip[i];
     mode = 'TRIANGLE_STRIP';

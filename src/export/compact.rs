@@ -126,20 +126,9 @@ fn check(m: &NamedMesh) -> Result<(), ExportError> {
 
 /// The quantisation grid over all meshes: origin and uniform step.
 fn grid(meshes: &[NamedMesh]) -> ([f64; 3], f64) {
-    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for m in meshes {
-        for &i in &m.mesh.indices {
-            if let Some(p) = m.mesh.positions.get(i as usize) {
-                for a in 0..3 {
-                    lo[a] = lo[a].min(f64::from(p[a]));
-                    hi[a] = hi[a].max(f64::from(p[a]));
-                }
-            }
-        }
-    }
-    if !lo[0].is_finite() {
+    let Some((lo, hi)) = crate::geom::normalize::bounds(meshes) else {
         return ([0.0; 3], 1.0);
-    }
+    };
     // The origin and step are stored as f32 in the JSON; quantise against
     // those exact values so dequantisation reproduces the grid.
     let lo = lo.map(|c| f64::from(c as f32));

@@ -7,8 +7,10 @@
 //! Encoding: merge all meshes → quantise each vertex to 16 bytes (positions
 //! relative to the bounding box, octahedral normals, colour or palette index)
 //! → weld identical quantised vertices → optimise for the vertex cache and
-//! stripify ([`crate::geom::strip`]) → meshoptimizer's vertex codec and index
-//! sequence codec → optional zstd → header and CRC32.
+//! stripify ([`crate::geom::strip`]) → meshoptimizer's vertex codec for the
+//! vertices and its index buffer codec for the strip's triangles, in strip
+//! order (the decoder rebuilds the strip from them with
+//! [`strip::restrip`]) → optional zstd → header and CRC32.
 
 use super::ExportError;
 use crate::eval::budget::Budget;
@@ -20,7 +22,10 @@ use std::io::Read;
 /// The four bytes every strips file starts with.
 pub const MAGIC: [u8; 4] = *b"RMST";
 /// The format version this encoder writes and the decoder reads.
-pub const VERSION: u8 = 1;
+/// Version 2 stores the strip as its triangles (index buffer codec) where
+/// version 1 stored the strip indices (index sequence codec); the decoders
+/// read version 2 only.
+pub const VERSION: u8 = 2;
 /// Bytes before the body: magic, version, flags, bits, bounding box, counts, lengths.
 pub const HEADER_LEN: usize = 52;
 /// Bytes after the body: the CRC32.
@@ -42,6 +47,10 @@ pub const MAX_ZSTD_RATIO: u64 = 64;
 /// `64·n` vertices (plus one block); the decoder refuses larger counts
 /// before allocating.
 pub const MAX_VERTICES_PER_STREAM_BYTE: u64 = 64;
+/// The index buffer codec spends at least one code byte per triangle, after a
+/// 1-byte header and before a 16-byte table, so `n` bytes cannot hold more
+/// than `n − 17` triangles; the decoder refuses larger counts before allocating.
+pub const INDEX_STREAM_OVERHEAD: u64 = 17;
 
 /// Precision choices for the `strips` format (request options). Every other
 /// format ignores them; they reach only the exporter, never the parser or
@@ -112,7 +121,7 @@ pub enum StripsError {
         computed: u32,
     },
     /// A version this decoder does not know.
-    #[error("unsupported strips version {0} (this decoder reads version 1)")]
+    #[error("unsupported strips version {0} (this decoder reads version 2)")]
     Version(u8),
     /// Any other header field out of range.
     #[error("invalid strips header: {0}")]
@@ -126,9 +135,11 @@ pub enum StripsError {
 /// (for clients and tests that want more than a triangle list).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DecodedStrips {
-    /// The mesh; `indices` is the unstripified triangle list.
+    /// The mesh; `indices` is the triangle list as stored (in strip order,
+    /// each triangle possibly rotated by the index codec, winding kept).
     pub mesh: Mesh,
-    /// The strip index sequence, with [`RESTART`] between strips.
+    /// The strip index sequence rebuilt from the triangles by
+    /// [`strip::restrip`], with [`RESTART`] between strips.
     pub strip: Vec<u32>,
     /// Bounding box minimum (the quantisation origin).
     pub bbox_min: [f32; 3],
@@ -287,10 +298,14 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
         .collect();
     let (welded, indices) = strip::weld(&quantised, &indices);
     let (vertices, strip_indices) = strip::stripify(&welded, &indices);
+    // The strip travels as its triangles, in strip order: the index buffer
+    // codec stores them in fewer bytes than the sequence codec stores the
+    // strip, and the decoder rebuilds the strip with `strip::restrip`.
+    let triangles = strip::unstripify(&strip_indices);
 
-    let vstream = meshopt::encode_vertex_buffer_level(&vertices, 2, Some(1))
+    let vstream = meshopt::encode_vertex_buffer_level(&vertices, 3, Some(1))
         .map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("vertex codec: {e:?}") })?;
-    let istream = meshopt::encode_index_sequence(&strip_indices, vertices.len())
+    let istream = meshopt::encode_index_buffer(&triangles, vertices.len())
         .map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("index codec: {e:?}") })?;
 
     let mut body = Vec::with_capacity(distinct.len() * 4 + vstream.len() + istream.len() + 8);
@@ -322,7 +337,7 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
         out.extend_from_slice(&c.to_le_bytes());
     }
     out.extend_from_slice(&len32(vertices.len())?.to_le_bytes());
-    out.extend_from_slice(&len32(strip_indices.len())?.to_le_bytes());
+    out.extend_from_slice(&len32(triangles.len() / 3)?.to_le_bytes());
     out.extend_from_slice(&(if palette { distinct.len() as u32 } else { 0 }).to_le_bytes());
     out.extend_from_slice(&len32(body.len())?.to_le_bytes());
     out.extend_from_slice(&raw_len.to_le_bytes());
@@ -393,7 +408,7 @@ pub fn decode_strips_full(bytes: &[u8]) -> Result<DecodedStrips, StripsError> {
         return Err(StripsError::Header("bounding box not finite or min > max".into()));
     }
     let vertex_count = u32_at(bytes, 32) as u64;
-    let index_count = u32_at(bytes, 36) as u64;
+    let triangle_count = u32_at(bytes, 36) as u64;
     let palette_len = u32_at(bytes, 40) as u64;
     let raw_len = u32_at(bytes, 48) as u64;
     let palette_flag = flags & FLAG_PALETTE != 0;
@@ -433,16 +448,18 @@ pub fn decode_strips_full(bytes: &[u8]) -> Result<DecodedStrips, StripsError> {
     if vertex_count > (vstream.len() as u64).saturating_mul(MAX_VERTICES_PER_STREAM_BYTE) + 256 || vertex_count >= u64::from(RESTART) {
         return Err(StripsError::Header(format!("{vertex_count} vertices cannot fit in a {}-byte vertex stream", vstream.len())));
     }
-    // The index sequence codec spends at least one byte per index, plus 5.
-    if index_count + 5 > istream.len() as u64 {
-        return Err(StripsError::Header(format!("{index_count} indices cannot fit in a {}-byte index stream", istream.len())));
+    if triangle_count + INDEX_STREAM_OVERHEAD > istream.len() as u64 {
+        return Err(StripsError::Header(format!("{triangle_count} triangles cannot fit in a {}-byte index stream", istream.len())));
     }
     let raw: Vec<[u16; 8]> = meshopt::decode_vertex_buffer(vstream, vertex_count as usize)
         .map_err(|e| StripsError::Body(format!("vertex stream does not decode: {e:?}")))?;
-    let strip: Vec<u32> = meshopt::decode_index_sequence(istream, index_count as usize)
+    let triangles: Vec<u32> = meshopt::decode_index_buffer(istream, triangle_count as usize * 3)
         .map_err(|e| StripsError::Body(format!("index stream does not decode: {e:?}")))?;
-    if let Some(i) = strip.iter().find(|&&i| i != RESTART && u64::from(i) >= vertex_count) {
-        return Err(StripsError::Body(format!("strip index {i} out of range ({vertex_count} vertices)")));
+    if let Some(i) = triangles.iter().find(|&&i| u64::from(i) >= vertex_count) {
+        return Err(StripsError::Body(format!("index {i} out of range ({vertex_count} vertices)")));
+    }
+    if let Some(k) = triangles.chunks_exact(3).position(|t| t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+        return Err(StripsError::Body(format!("triangle {k} has a repeated index")));
     }
 
     let pmax = (1u32 << pbits) - 1;
@@ -473,7 +490,8 @@ pub fn decode_strips_full(bytes: &[u8]) -> Result<DecodedStrips, StripsError> {
         };
         mesh.colours.push(colour);
     }
-    mesh.indices = strip::unstripify(&strip);
+    let strip = strip::restrip(&triangles);
+    mesh.indices = triangles;
     Ok(DecodedStrips { mesh, strip, bbox_min, bbox_max, position_bits: pbits, normal_bits: nbits, palette })
 }
 
@@ -550,7 +568,7 @@ mod tests {
     #[test]
     fn hostile_counts_are_refused_before_allocating() {
         let bytes = enc(StripsOptions::default());
-        for (off, val) in [(32usize, u32::MAX - 1), (36, u32::MAX), (40, 300), (48, u32::MAX)] {
+        for (off, val) in [(32usize, u32::MAX - 1), (36, u32::MAX), (36, u32::MAX / 3), (40, 300), (48, u32::MAX)] {
             let mut b = bytes.clone();
             b[off..off + 4].copy_from_slice(&val.to_le_bytes());
             let end = b.len() - 4;

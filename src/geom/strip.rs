@@ -58,11 +58,13 @@ pub fn first_use_remap(list: &[u32], vertex_count: usize) -> (Vec<u32>, usize) {
     (remap, used)
 }
 
-/// Orders a triangle list for the post-transform vertex cache, reorders the
-/// vertices by first use (so the vertex codec sees neighbours together), and
-/// turns the list into one strip index sequence with [`RESTART`] between
-/// strips. The set of triangles and the winding of each are preserved
-/// (triangles with a repeated index are dropped: they cover no area).
+/// Orders a triangle list for the post-transform vertex cache and for
+/// stripification (`meshopt_optimizeVertexCacheStrip`), turns it into one
+/// strip index sequence with [`RESTART`] between strips (`meshopt_stripify`),
+/// and reorders the vertices by first use in that strip (so the vertex codec
+/// sees neighbours together). The set of triangles and the winding of each
+/// are preserved (triangles with a repeated index are dropped: they cover no
+/// area).
 ///
 /// Every index in `indices` must be below `vertices.len()`, and there must
 /// be fewer than `u32::MAX` vertices (the restart index).
@@ -71,22 +73,72 @@ pub fn stripify<T: Copy + Default>(vertices: &[T], indices: &[u32]) -> (Vec<T>, 
     if list.is_empty() {
         return (Vec::new(), Vec::new());
     }
-    let list = meshopt::optimize_vertex_cache(&list, vertices.len());
-    // Vertex order = first use in the cache-optimised list (the strip visits
-    // them in nearly the same order); unused vertices are dropped.
-    let (remap, used) = first_use_remap(&list, vertices.len());
+    let list = meshopt::optimize_vertex_cache_strip(&list, vertices.len());
+    // meshopt only fails on bad arguments (it has none here); an empty strip
+    // would lose the model, so fall back to one strip per triangle.
+    let strip = meshopt::stripify(&list, vertices.len(), RESTART)
+        .unwrap_or_else(|_| list.chunks_exact(3).flat_map(|t| [t[0], t[1], t[2], RESTART]).collect());
+    // Vertex order = first use in the strip; unused vertices are dropped
+    // (the restart index is no vertex, so it stays unmapped).
+    let (remap, used) = first_use_remap(&strip, vertices.len());
     let mut out = vec![T::default(); used];
     for (v, &r) in vertices.iter().zip(&remap) {
         if let Some(slot) = out.get_mut(r as usize) {
             *slot = *v;
         }
     }
-    let list: Vec<u32> = list.iter().map(|&i| remap.get(i as usize).copied().unwrap_or(0)).collect();
-    // meshopt only fails on bad arguments (it has none here); an empty strip
-    // would lose the model, so fall back to one strip per triangle.
-    let strip = meshopt::stripify(&list, out.len(), RESTART)
-        .unwrap_or_else(|_| list.chunks_exact(3).flat_map(|t| [t[0], t[1], t[2], RESTART]).collect());
+    let strip = strip.iter().map(|&i| if i == RESTART { RESTART } else { remap.get(i as usize).copied().unwrap_or(0) }).collect();
     (out, strip)
+}
+
+/// Rebuilds a strip from a triangle list whose triangles come in strip order
+/// (what [`unstripify`] of a [`stripify`] strip gives, possibly with each
+/// triangle rotated, as meshoptimizer's index buffer codec does). This is how
+/// the `strips` format (version 2) carries its strip: as the strip's
+/// triangles, which the index buffer codec stores in fewer bytes than the
+/// index sequence codec stores the strip. Deterministic and shared with
+/// `clients/js/strips.mjs` and `docs/strips-format.md`:
+///
+/// A run starts at a triangle `(a, b, c)` written in the first of the
+/// rotations `(a, b, c)`, `(b, c, a)`, `(c, a, b)` after which the next
+/// triangle can continue the run (or `(a, b, c)` if none can). With `x, y` the
+/// last two indices of the run and `k` the number of the next triangle inside
+/// the run, the next list triangle continues the run if it holds the directed
+/// edge `x → y` (k even) or `y → x` (k odd): its third corner `z` is
+/// appended. Otherwise [`RESTART`] is written and a new run starts.
+///
+/// [`unstripify`] of the result gives the input triangles in order (each
+/// possibly rotated, so with the same winding). Triangles with a repeated
+/// index are the caller's business: the decoders refuse them first.
+pub fn restrip(list: &[u32]) -> Vec<u32> {
+    let tris: Vec<[u32; 3]> = list.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+    // The third corner of `t` if `t` holds the directed edge p → q.
+    let third = |t: &[u32; 3], p: u32, q: u32| (0..3).find(|&r| t[r] == p && t[(r + 1) % 3] == q).map(|r| t[(r + 2) % 3]);
+    let mut out = Vec::with_capacity(tris.len() + 2);
+    let mut i = 0;
+    while i < tris.len() {
+        if i > 0 {
+            out.push(RESTART);
+        }
+        let [a, b, c] = tris[i];
+        let rots = [[a, b, c], [b, c, a], [c, a, b]];
+        // The second triangle of a run is odd: it needs the edge (last → second last).
+        let start = tris.get(i + 1).and_then(|n| rots.iter().find(|r| third(n, r[2], r[1]).is_some())).unwrap_or(&rots[0]);
+        out.extend_from_slice(start);
+        i += 1;
+        let mut k = 1usize;
+        while let Some(t) = tris.get(i) {
+            let (x, y) = (out[out.len() - 2], out[out.len() - 1]);
+            let z = if k % 2 == 0 { third(t, x, y) } else { third(t, y, x) };
+            match z {
+                Some(z) => out.push(z),
+                None => break,
+            }
+            i += 1;
+            k += 1;
+        }
+    }
+    out
 }
 
 /// Turns a strip index sequence back into a triangle list (three indices per
@@ -162,6 +214,14 @@ mod tests {
         let (sv, strip) = stripify(&verts, &idx);
         assert!(strip.len() < idx.len(), "strip {} vs list {}", strip.len(), idx.len());
         let back = unstripify(&strip);
+        // The strip comes back from its triangles, even rotated ones.
+        let rebuilt = restrip(&back);
+        // Same triangles in the same order, each up to rotation.
+        let rot = |l: &[u32]| -> Vec<[u32; 3]> { l.chunks_exact(3).map(|t| canonical(std::iter::once([t[0], t[1], t[2]]))[0]).collect() };
+        assert_eq!(rot(&unstripify(&rebuilt)), rot(&back));
+        assert!(rebuilt.len() <= strip.len() + strip.len() / 4, "rebuilt {} vs {}", rebuilt.len(), strip.len());
+        let rotated: Vec<u32> = back.chunks_exact(3).enumerate().flat_map(|(k, t)| match k % 3 { 0 => [t[0], t[1], t[2]], 1 => [t[1], t[2], t[0]], _ => [t[2], t[0], t[1]] }).collect();
+        assert_eq!(tri_keys(&sv, &unstripify(&restrip(&rotated))), tri_keys(&sv, &back));
         let nondegenerate: Vec<u32> =
             idx.chunks_exact(3).filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2]).flatten().copied().collect();
         assert_eq!(tri_keys(&sv, &back), tri_keys(&verts, &nondegenerate));

@@ -21,6 +21,22 @@ pub enum BinOp {
     Div,
     /// `^` (power, right-associative)
     Pow,
+    /// `<` (1 when true, else 0; likewise for the comparisons and logical operators below)
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `==`
+    Eq,
+    /// `!=`
+    Ne,
+    /// `&&`: 1 when both operands are non-zero
+    And,
+    /// `||`: 1 when either operand is non-zero
+    Or,
 }
 
 /// A built-in function.
@@ -142,6 +158,14 @@ impl Expr {
                     BinOp::Mul => a * b,
                     BinOp::Div => a / b,
                     BinOp::Pow => libm::pow(a, b),
+                    BinOp::Lt => truth(a < b),
+                    BinOp::Le => truth(a <= b),
+                    BinOp::Gt => truth(a > b),
+                    BinOp::Ge => truth(a >= b),
+                    BinOp::Eq => truth(a == b),
+                    BinOp::Ne => truth(a != b),
+                    BinOp::And => truth(a != 0.0 && b != 0.0),
+                    BinOp::Or => truth(a != 0.0 || b != 0.0),
                 }
             }
             Expr::Func(f, args) => {
@@ -195,6 +219,15 @@ impl Expr {
     }
 }
 
+/// 1 for true, 0 for false: how comparisons and logical operators report.
+fn truth(b: bool) -> f64 {
+    if b {
+        1.0
+    } else {
+        0.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -226,6 +259,17 @@ mod tests {
         assert!(e.is_deterministic());
         let e = Expr::Func(Func::Atan2, vec![Expr::Num(1.0), Expr::Num(0.0)]);
         assert!((e.eval(&mut Env) - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn comparisons_and_logic_give_one_or_zero() {
+        let b = |op, x, y| Expr::Binary(op, n(x), n(y)).eval(&mut Env);
+        assert_eq!(b(BinOp::Lt, 1.0, 2.0), 1.0);
+        assert_eq!(b(BinOp::Ge, 1.0, 2.0), 0.0);
+        assert_eq!(b(BinOp::Eq, 2.0, 2.0), 1.0);
+        assert_eq!(b(BinOp::Ne, 2.0, 2.0), 0.0);
+        assert_eq!(b(BinOp::And, 1.0, 0.0), 0.0);
+        assert_eq!(b(BinOp::Or, 1.0, 0.0), 1.0);
     }
 
     #[test]

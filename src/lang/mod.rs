@@ -3,6 +3,7 @@
 
 pub mod expr;
 pub mod ir;
+pub mod lsystem;
 pub mod mdg;
 
 use serde::Serialize;
@@ -88,6 +89,8 @@ impl ParseError {
 pub enum Language {
     /// Model Design Grammars (seed 000).
     Mdg,
+    /// L-systems in the notation of *The Algorithmic Beauty of Plants* (seed 001); see `docs/lsystem.md`.
+    Lsystem,
 }
 
 impl Language {
@@ -95,6 +98,7 @@ impl Language {
     pub fn name(self) -> &'static str {
         match self {
             Language::Mdg => "mdg",
+            Language::Lsystem => "lsystem",
         }
     }
 
@@ -102,6 +106,7 @@ impl Language {
     pub fn from_extension(path: &std::path::Path) -> Option<Language> {
         match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
             "mdg" => Some(Language::Mdg),
+            "ls" => Some(Language::Lsystem),
             _ => None,
         }
     }
@@ -110,8 +115,14 @@ impl Language {
     pub fn detect(source: &[u8]) -> Option<Language> {
         let text = String::from_utf8_lossy(&source[..source.len().min(64 * 1024)]);
         let mdg_words = ["startshape", "rule ", "rule\t", "@param", "@define"];
+        let lsystem_line = |l: &str| {
+            let l = l.trim_start();
+            l.starts_with("axiom:") || l.starts_with("iterations:")
+        };
         if mdg_words.iter().any(|w| text.contains(w)) {
             Some(Language::Mdg)
+        } else if text.lines().any(lsystem_line) {
+            Some(Language::Lsystem)
         } else {
             None
         }
@@ -120,8 +131,22 @@ impl Language {
 
 /// Parses `source` in `language` into the IR. `source` is raw bytes so that
 /// invalid UTF-8 is reported with a position instead of crashing a caller.
+/// L-systems do not lower into the rule IR (they are derived, not expanded):
+/// parse them with [`lsystem::parse`]; here they are checked and refused.
 pub fn parse(language: Language, source: &[u8]) -> Result<ir::Program, ParseError> {
     match language {
         Language::Mdg => mdg::parse(source),
+        Language::Lsystem => {
+            lsystem::parse(source)?;
+            Err(ParseError::single(Span::new(1, 1), "L-systems do not lower into the rule IR; use lang::lsystem::parse"))
+        }
+    }
+}
+
+/// Parses `source` in `language` only to report its diagnostics (warnings on success).
+pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, ParseError> {
+    match language {
+        Language::Mdg => mdg::parse(source).map(|p| p.warnings),
+        Language::Lsystem => lsystem::parse(source).map(|s| s.warnings),
     }
 }

@@ -134,7 +134,8 @@ pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceErr
     match name.map(str::trim) {
         None | Some("") => Ok(None),
         Some(n) if n.eq_ignore_ascii_case("mdg") => Ok(Some(Language::Mdg)),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg)"))),
+        Some(n) if n.eq_ignore_ascii_case("lsystem") => Ok(Some(Language::Lsystem)),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem)"))),
     }
 }
 

@@ -13,6 +13,7 @@ mod gallery;
 mod grammars;
 mod hostile;
 mod lines;
+mod lsystem;
 mod selectors;
 mod strips;
 mod scaleout;

@@ -1,0 +1,300 @@
+//! The 3D turtle (seed 001 §3.2, ABOP p.19): reads a derived string and
+//! draws it into a [`Scene`].
+//!
+//! The turtle starts at the origin heading along +Y with its up vector along
+//! +Z (so its left vector is −X). `+`/`-` turn about up, `&`/`^` pitch about
+//! left, `\`/`/` roll about the heading, `|` turns around. Every turn takes an
+//! optional angle in degrees, else the system's `angle:`.
+//!
+//! Segments (`F`) are swept tubes by default: each unbranched run of segments
+//! is one polyline, so consecutive segments join without gaps and a branch
+//! starts where its parent segment ended. With `shape: KIND` each segment is
+//! instead one built-in primitive, scaled uniformly by the segment length and
+//! centred on the segment.
+
+use super::derive::ModuleString;
+use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
+use crate::eval::frame::Frame;
+use crate::eval::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
+use crate::eval::EvalError;
+use crate::geom::{primitives, sweep};
+use crate::lang::lsystem::{LSystem, Shape};
+use crate::lang::Span;
+use glam::{DQuat, DVec3};
+
+/// Default colour of segments (linear RGBA): a bark brown.
+pub const DEFAULT_COLOUR: [f64; 4] = [0.32, 0.2, 0.1, 1.0];
+/// Factor `!` without an argument multiplies the width by.
+pub const WIDTH_DECREMENT: f64 = 0.7;
+
+/// What a symbol does to the turtle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Action {
+    Draw,
+    Move,
+    /// Local rotation: axis (0 = x, 1 = y, 2 = z) and sign.
+    Turn(u8, f64),
+    TurnAround,
+    Push,
+    Pop,
+    Width,
+    Colour,
+    Tropism,
+    RollToTropism,
+    None,
+}
+
+fn action(name: &str) -> Action {
+    match name {
+        "F" => Action::Draw,
+        "f" => Action::Move,
+        "+" => Action::Turn(2, 1.0),
+        "-" => Action::Turn(2, -1.0),
+        "&" => Action::Turn(0, -1.0),
+        "^" => Action::Turn(0, 1.0),
+        "\\" => Action::Turn(1, 1.0),
+        "/" => Action::Turn(1, -1.0),
+        "|" => Action::TurnAround,
+        "[" => Action::Push,
+        "]" => Action::Pop,
+        "!" => Action::Width,
+        "'" => Action::Colour,
+        "@" => Action::Tropism,
+        "~" => Action::RollToTropism,
+        _ => Action::None,
+    }
+}
+
+/// What interpretation needs besides the system and the string.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TurtleOptions {
+    /// Tessellation detail (for triangle and memory accounting).
+    pub detail: u32,
+    /// Fail or truncate at a limit.
+    pub on_limit: OnLimit,
+    /// Bytes that meshing and export will need per tube point.
+    pub line_point_bytes: u64,
+    /// Bytes that meshing and export will need per primitive of each kind.
+    pub downstream_bytes: [u64; 9],
+}
+
+/// What the turtle drew.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Drawing {
+    /// The scene.
+    pub scene: Scene,
+    /// Segments drawn (`F` modules).
+    pub segments: u64,
+    /// Memory promised for meshing and export, to be released before meshing.
+    pub promised: u64,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct State {
+    pos: DVec3,
+    rot: DQuat,
+    width: f64,
+    colour: [f64; 4],
+    /// The polyline whose last point is at `pos`, if the turtle is drawing one.
+    line: Option<usize>,
+}
+
+const STATE_BYTES: u64 = std::mem::size_of::<State>() as u64;
+
+fn arg(s: &ModuleString, i: usize, k: usize) -> Option<f64> {
+    s.params_of(i).get(k).copied()
+}
+
+fn non_finite(what: &str, v: f64) -> EvalError {
+    EvalError::NonFinite { span: Span::default(), what: what.to_string(), value: format!("{v}") }
+}
+
+/// Interprets `s` into a scene under `budget`.
+pub fn interpret(sys: &LSystem, s: &ModuleString, opts: &TurtleOptions, budget: &mut Budget) -> Result<Drawing, EvalError> {
+    let mut t = Turtle {
+        sys,
+        opts,
+        actions: sys.symbols.iter().map(|n| action(n)).collect(),
+        drawing: Drawing::default(),
+        stack: Vec::new(),
+        state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width: sys.width, colour: DEFAULT_COLOUR, line: None },
+        point_tris: sweep::per_point_bound(sweep::profile_sides(opts.detail)).1,
+    };
+    let result = t.run(s, budget);
+    budget.release_memory((t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
+    match result {
+        Ok(()) => {}
+        Err(EvalError::Limit(l)) if opts.on_limit == OnLimit::Truncate => {
+            t.drawing.scene.truncated = Some(l);
+        }
+        Err(e) => return Err(e),
+    }
+    Ok(t.drawing)
+}
+
+struct Turtle<'a> {
+    sys: &'a LSystem,
+    opts: &'a TurtleOptions,
+    actions: Vec<Action>,
+    drawing: Drawing,
+    stack: Vec<State>,
+    state: State,
+    point_tris: u64,
+}
+
+impl Turtle<'_> {
+    fn run(&mut self, s: &ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
+        for i in 0..s.len() {
+            let act = self.actions.get(s.syms[i] as usize).copied().unwrap_or(Action::None);
+            match act {
+                Action::Draw => {
+                    let len = arg(s, i, 0).unwrap_or(self.sys.length);
+                    if let Some(w) = arg(s, i, 1) {
+                        self.state.width = w;
+                    }
+                    self.draw(len, budget)?;
+                }
+                Action::Move => {
+                    let len = arg(s, i, 0).unwrap_or(self.sys.length);
+                    self.advance(len)?;
+                    self.state.line = None;
+                }
+                Action::Turn(axis, sign) => {
+                    let a = sign * arg(s, i, 0).unwrap_or(self.sys.angle).to_radians();
+                    let q = match axis {
+                        0 => DQuat::from_rotation_x(a),
+                        1 => DQuat::from_rotation_y(a),
+                        _ => DQuat::from_rotation_z(a),
+                    };
+                    self.turn(q);
+                }
+                Action::TurnAround => self.turn(DQuat::from_rotation_z(std::f64::consts::PI)),
+                Action::Push => {
+                    if self.stack.len() == self.stack.capacity() {
+                        let extra = self.stack.capacity().max(16);
+                        budget.reserve_memory((extra as u64).saturating_mul(STATE_BYTES))?;
+                        self.stack.reserve_exact(extra);
+                    }
+                    self.stack.push(self.state);
+                    self.state.line = None;
+                }
+                Action::Pop => {
+                    // An unbalanced `]` is ignored.
+                    if let Some(st) = self.stack.pop() {
+                        self.state = st;
+                    }
+                }
+                Action::Width => {
+                    self.state.width = match arg(s, i, 0) {
+                        Some(w) => w,
+                        None => self.state.width * WIDTH_DECREMENT,
+                    };
+                    if !self.state.width.is_finite() {
+                        return Err(non_finite("width", self.state.width));
+                    }
+                }
+                Action::Colour => {
+                    let p = s.params_of(i);
+                    if p.len() >= 3 {
+                        self.state.colour = [p[0], p[1], p[2], p.get(3).copied().unwrap_or(1.0)];
+                    }
+                }
+                Action::Tropism => {
+                    if let Some(t) = self.sys.tropism {
+                        let e = arg(s, i, 0).unwrap_or(self.sys.elasticity);
+                        self.tropism(DVec3::from_array(t), e);
+                    }
+                }
+                Action::RollToTropism => {
+                    if let Some(t) = self.sys.tropism {
+                        self.roll_to(DVec3::from_array(t));
+                    }
+                }
+                Action::None => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn heading(&self) -> DVec3 {
+        self.state.rot * DVec3::Y
+    }
+
+    fn turn(&mut self, local: DQuat) {
+        self.state.rot = (self.state.rot * local).normalize();
+    }
+
+    /// Bends the heading towards `t` by e·|H×T| about H×T (seed 001 §3.7).
+    fn tropism(&mut self, t: DVec3, e: f64) {
+        let h = self.heading();
+        let axis = h.cross(t);
+        let len = axis.length();
+        if len < 1e-12 || !len.is_finite() || !e.is_finite() {
+            return;
+        }
+        let q = DQuat::from_axis_angle(axis / len, e * len);
+        self.state.rot = (q * self.state.rot).normalize();
+    }
+
+    /// Rolls about the heading so that the up vector points as nearly along `t` as possible.
+    fn roll_to(&mut self, t: DVec3) {
+        let h = self.heading();
+        let tp = t - h * t.dot(h);
+        if tp.length() < 1e-12 || !tp.is_finite() {
+            return;
+        }
+        let up = self.state.rot * DVec3::Z;
+        let sigma = libm::atan2(up.cross(tp).dot(h), up.dot(tp));
+        self.state.rot = (DQuat::from_axis_angle(h, sigma) * self.state.rot).normalize();
+    }
+
+    fn advance(&mut self, len: f64) -> Result<DVec3, EvalError> {
+        let to = self.state.pos + self.heading() * len;
+        if !to.is_finite() {
+            return Err(non_finite("turtle position", len));
+        }
+        self.state.pos = to;
+        Ok(to)
+    }
+
+    fn point(&self, budget: &mut Budget) -> Result<LinePoint, LimitExceeded> {
+        budget.reserve_memory(LINE_POINT_BYTES.saturating_add(self.opts.line_point_bytes))?;
+        // The sweep profile lies in local XY and the pen moves along local +Z: turn +Z onto the heading.
+        let rot = self.state.rot * DQuat::from_rotation_x(-std::f64::consts::FRAC_PI_2);
+        let scale = (self.state.width / (2.0 * sweep::PROFILE_RADIUS)).abs().max(1e-9);
+        let frame = Frame { translation: self.state.pos, rotation: rot, scale, parity: false };
+        Ok(LinePoint { frame, colour: self.state.colour.map(|c| c.clamp(0.0, 1.0) as f32) })
+    }
+
+    fn draw(&mut self, len: f64, budget: &mut Budget) -> Result<(), EvalError> {
+        match self.sys.shape {
+            Shape::Tube => {
+                budget.charge_primitive(self.point_tris)?;
+                if self.state.line.is_none() {
+                    let first = self.point(budget)?;
+                    self.drawing.promised = self.drawing.promised.saturating_add(self.opts.line_point_bytes);
+                    self.drawing.scene.lines.push(Polyline { points: vec![first], profile: None });
+                    self.state.line = Some(self.drawing.scene.lines.len() - 1);
+                }
+                self.advance(len)?;
+                let p = self.point(budget)?;
+                self.drawing.promised = self.drawing.promised.saturating_add(self.opts.line_point_bytes);
+                if let Some(line) = self.state.line.and_then(|l| self.drawing.scene.lines.get_mut(l)) {
+                    line.points.push(p);
+                }
+            }
+            Shape::Primitive(kind) => {
+                budget.charge_primitive(primitives::triangle_count(kind, self.opts.detail))?;
+                let down = self.opts.downstream_bytes[kind as usize];
+                budget.reserve_memory(INSTANCE_BYTES.saturating_add(down))?;
+                self.drawing.promised = self.drawing.promised.saturating_add(down);
+                let from = self.state.pos;
+                let to = self.advance(len)?;
+                let frame = Frame { translation: (from + to) * 0.5, rotation: self.state.rot, scale: len.abs().max(1e-9), parity: false };
+                self.drawing.scene.instances.push(Instance::new(kind, &frame, self.state.colour));
+            }
+        }
+        self.drawing.segments += 1;
+        Ok(())
+    }
+}

@@ -1,0 +1,325 @@
+//! L-systems (issue 5): exact segment counts, the Hogeweg–Hesper system
+//! against an independent reference derivation, the Gen and PlantMaker
+//! strings of seed 004, determinism, budgets, diagnostics, and every
+//! `grammars/*.ls` through the glTF validator.
+
+use crate::common::{grammar_files, run, tempdir, validate_gltf};
+use rulemesh::eval::{Budget, Limit, Limits, OnLimit};
+use rulemesh::export::Format;
+use rulemesh::lang::lsystem::parse;
+use rulemesh::lang::Language;
+use rulemesh::lsystem::derive::derive_n;
+use rulemesh::{render, RenderError, RenderRequest};
+
+fn req(format: Format) -> RenderRequest {
+    RenderRequest { language: Some(Language::Lsystem), format, ..RenderRequest::default() }
+}
+
+fn segments(src: &str) -> u64 {
+    render(src.as_bytes(), &req(Format::Stl)).unwrap_or_else(|e| panic!("{e}")).primitives
+}
+
+/// The string after `n` derivation steps.
+fn derived(src: &str, n: u32, seed: u64) -> String {
+    let sys = parse(src.as_bytes()).unwrap_or_else(|e| panic!("{e}"));
+    let mut budget = Budget::new(Limits::default());
+    let d = derive_n(&sys, seed, n, OnLimit::Error, &mut budget).unwrap_or_else(|e| panic!("{e}"));
+    d.string.to_text(&sys)
+}
+
+#[test]
+fn bracketed_plant_has_five_to_the_fifth_segments() {
+    assert_eq!(segments("iterations: 5\nangle: 25.7\naxiom: F\nF -> F[+F]F[-F]F\n"), 3125);
+}
+
+#[test]
+fn koch_curve_has_four_to_the_sixth_segments() {
+    assert_eq!(segments("iterations: 6\nangle: 60\naxiom: F\nF -> F+F--F+F\n"), 4096);
+}
+
+#[test]
+fn koch_string_length_is_predicted_exactly() {
+    // The derived string equals a naive text rewrite.
+    let mut s = "F".to_string();
+    for _ in 0..4 {
+        s = s.chars().map(|c| if c == 'F' { "F+F--F+F".to_string() } else { c.to_string() }).collect();
+    }
+    assert_eq!(derived("axiom: F\nF -> F+F--F+F\n", 4, 0), s);
+}
+
+const HOGEWEG: &str = include_str!("../../grammars/hogeweg.ls");
+
+/// An independent, deliberately naive derivation of ABOP fig 1.31a: chars,
+/// bracket depth counted by scanning, contexts found by walking.
+fn hogeweg_reference(steps: usize) -> String {
+    let ignored = |c: char| c == '+' || c == '-' || c == 'F';
+    let mut s: Vec<char> = "F1F1F1".chars().collect();
+    for _ in 0..steps {
+        let mut out = String::new();
+        for i in 0..s.len() {
+            let c = s[i];
+            match c {
+                '+' => out.push('-'),
+                '-' => out.push('+'),
+                '0' | '1' => {
+                    // Left: walk back; a ']' skips its whole branch, a '[' is passed into the parent.
+                    let mut left = None;
+                    let mut j = i;
+                    while j > 0 {
+                        j -= 1;
+                        match s[j] {
+                            ']' => {
+                                let mut depth = 1;
+                                while depth > 0 && j > 0 {
+                                    j -= 1;
+                                    if s[j] == ']' {
+                                        depth += 1;
+                                    } else if s[j] == '[' {
+                                        depth -= 1;
+                                    }
+                                }
+                            }
+                            '[' => {}
+                            x if ignored(x) => {}
+                            x => {
+                                left = Some(x);
+                                break;
+                            }
+                        }
+                    }
+                    // Right: walk forward; a '[' skips its branch, a ']' ends the search.
+                    let mut right = None;
+                    let mut j = i + 1;
+                    while j < s.len() {
+                        match s[j] {
+                            '[' => {
+                                let mut depth = 1;
+                                while depth > 0 && j + 1 < s.len() {
+                                    j += 1;
+                                    if s[j] == '[' {
+                                        depth += 1;
+                                    } else if s[j] == ']' {
+                                        depth -= 1;
+                                    }
+                                }
+                                j += 1;
+                            }
+                            ']' => break,
+                            x if ignored(x) => j += 1,
+                            x => {
+                                right = Some(x);
+                                break;
+                            }
+                        }
+                    }
+                    let succ = match (left, c, right) {
+                        (Some('0'), '0', Some('0')) => "0",
+                        (Some('0'), '0', Some('1')) => "1[+F1F1]",
+                        (Some('0'), '1', Some('0')) => "1",
+                        (Some('0'), '1', Some('1')) => "1",
+                        (Some('1'), '0', Some('0')) => "0",
+                        (Some('1'), '0', Some('1')) => "1F1",
+                        (Some('1'), '1', Some('0')) => "0",
+                        (Some('1'), '1', Some('1')) => "0",
+                        _ => "",
+                    };
+                    if succ.is_empty() {
+                        out.push(c);
+                    } else {
+                        out.push_str(succ);
+                    }
+                }
+                other => out.push(other),
+            }
+        }
+        s = out.chars().collect();
+    }
+    s.into_iter().collect()
+}
+
+#[test]
+fn hogeweg_hesper_matches_reference_at_step_30() {
+    let reference = hogeweg_reference(30);
+    assert!(reference.len() > 1000, "the reference plant grows: {}", reference.len());
+    for n in [1, 2, 5, 10, 30] {
+        assert_eq!(derived(HOGEWEG, n, 0), hogeweg_reference(n as usize), "step {n}");
+    }
+    assert_eq!(derived(HOGEWEG, 30, 0), reference);
+    // Early steps by hand (ABOP p.35): 1<1>1 → 0; the end modules lack a neighbour and stay.
+    assert_eq!(derived(HOGEWEG, 1, 0), "F1F0F1");
+    assert_eq!(derived(HOGEWEG, 2, 0), "F1F1F1F1");
+}
+
+#[test]
+fn gen_example_corrected_generations() {
+    // Seed 004 lines 2010–2018, with the off-by-one corrected (seed note 004 §7.1).
+    let src = "modules: draw rotateZ\naxiom: A(1)\nA(w) : (w = 1) -> A(w+1) rotateZ(45) draw(2)\nA(w) : (w > 1) -> draw(1) rotateZ(45) A(w+1)\n";
+    assert_eq!(derived(src, 0, 0), "A(1)");
+    assert_eq!(derived(src, 1, 0), "A(2)rotateZ(45)draw(2)");
+    assert_eq!(derived(src, 2, 0), "draw(1)rotateZ(45)A(3)rotateZ(45)draw(2)");
+    assert_eq!(derived(src, 3, 0), "draw(1)rotateZ(45)draw(1)rotateZ(45)A(4)rotateZ(45)draw(2)");
+}
+
+#[test]
+fn plantmaker_generation_three_string() {
+    // Seed 004 line 1776; PlantMaker's push/pop `(` `)` are our `[` `]`.
+    let src = "axiom: p\ni -> S[ejL][ekL]S\np -> ir[p]de[dL]i[cL]l[p]cp\n";
+    let printed = "S(ejL) (ekL) Sr(ir(p) de (dL) i (cL) l (p) cp) de (dL) S(ejL) (ekL) S(cL) l (ir(p) de (dL) i (cL) l (p) cp) cir (p) de (dL) i (cL) l (p) cp";
+    let expected: String = printed.chars().filter(|c| !c.is_whitespace()).map(|c| match c {
+        '(' => '[',
+        ')' => ']',
+        c => c,
+    }).collect();
+    let got = derived(src, 2, 0);
+    assert_eq!(got, expected);
+    assert_eq!(got.len(), 107);
+    assert_eq!(got.matches('L').count(), 12);
+}
+
+#[test]
+fn parametric_conditions_and_context_with_parameters() {
+    // ABOP fig 1.31-style signal passing with parameters: B(x) < A(y) moves values right.
+    let src = "axiom: B(5) A(0) A(0) A(0)\nB(x) < A(y) -> A(x + y)\nA(y) < A(z) : y > 0 && z == 0 -> A(y * 2)\nB(x) -> B(x - 1)\n";
+    assert_eq!(derived(src, 1, 0), "B(4)A(5)A(0)A(0)");
+    assert_eq!(derived(src, 2, 0), "B(3)A(9)A(10)A(0)");
+}
+
+#[test]
+fn stochastic_choice_is_seeded_and_terminate_table_applies_once() {
+    let src = "axiom: A\nA -> AB : 1\nA -> AC : 1\nterminate: A -> F\n";
+    let a = derived(src, 12, 1);
+    assert_eq!(a, derived(src, 12, 1));
+    assert_ne!(a, derived(src, 12, 2));
+    assert!(a.starts_with('F') && a.len() == 13 && !a.contains('A'), "{a}");
+    let (b, c) = (a.matches('B').count(), a.matches('C').count());
+    assert_eq!(b + c, 12);
+}
+
+#[test]
+fn cut_removes_the_rest_of_the_branch() {
+    assert_eq!(derived("axiom: F[F%FF[F]F]F\n", 1, 0), "F[F]F");
+}
+
+#[test]
+fn same_seed_same_bytes_and_stochastic_seeds_differ() {
+    let src = std::fs::read(crate::common::repo().join("grammars/stochastic-plant.ls")).expect("grammar");
+    let with = |seed| render(&src, &RenderRequest { seed: Some(seed), ..req(Format::Glb) }).expect("renders").bytes;
+    assert_eq!(with(3), with(3));
+    assert_ne!(with(3), with(4));
+    let grass = std::fs::read(crate::common::repo().join("grammars/grass.ls")).expect("grammar");
+    let g = |seed| render(&grass, &RenderRequest { seed: Some(seed), ..req(Format::Stl) }).expect("renders").bytes;
+    assert_eq!(g(9), g(9));
+    assert_ne!(g(9), g(10));
+}
+
+#[test]
+fn exponential_growth_is_refused_before_the_work() {
+    let start = std::time::Instant::now();
+    let e = render(b"iterations: 60\naxiom: F\nF -> FF\n", &req(Format::Stl)).expect_err("too big");
+    assert!(matches!(e, RenderError::Limit(l) if l.limit == Limit::Steps || l.limit == Limit::Memory), "{e}");
+    assert!(start.elapsed().as_secs_f64() < 1.0);
+    // Not predictable (parametric): stopped by the budget while deriving.
+    let e = render(b"iterations: 60\naxiom: A(1)\nA(x) -> A(x+1)A(x)\n", &req(Format::Stl)).expect_err("too big");
+    assert!(matches!(e, RenderError::Limit(_)), "{e}");
+    // Too many segments for the primitive limit.
+    let limits = Limits { max_primitives: 100, ..Limits::default() };
+    let e = render(b"iterations: 5\naxiom: F\nF -> F[+F]F[-F]F\n", &RenderRequest { limits, ..req(Format::Stl) }).expect_err("limit");
+    assert!(matches!(e, RenderError::Limit(l) if l.limit == Limit::Primitives), "{e}");
+    // Truncation on request keeps a partial model.
+    let out = render(
+        b"iterations: 5\naxiom: F\nF -> F[+F]F[-F]F\n",
+        &RenderRequest { limits, on_limit: OnLimit::Truncate, ..req(Format::Stl) },
+    )
+    .expect("truncated render");
+    assert_eq!(out.primitives, 100);
+    assert!(out.truncated.is_some());
+}
+
+#[test]
+fn hostile_sources_fail_cleanly() {
+    for src in [
+        "axiom: F(1/0)\n",
+        "iterations: 3\naxiom: A(1)\nA(x) -> A(x*1e300)F(x)\n",
+        "axiom: ]]][[[F\n",
+        "iterations: 2\naxiom: A\nA -> : 0\n",
+        "axiom: F(((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((1)))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))\n",
+    ] {
+        // Must return (Ok or a typed error), never panic.
+        let _ = render(src.as_bytes(), &req(Format::Glb));
+    }
+    assert!(matches!(render(b"axiom: F(1/0)\n", &req(Format::Glb)), Err(RenderError::Eval(_))));
+}
+
+#[test]
+fn cli_detects_the_language_and_reports_positions() {
+    let out = run(&["check", "-", "--language", "lsystem"], Some(b"axiom: F\nF -> F[+F\nG -> F(2*)\n"));
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.starts_with("-:3:"), "{err}");
+    // Detected from content.
+    let out = run(&["render", "-", "--format", "stl"], Some(b"axiom: F\n"));
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for g in grammar_files("ls") {
+        let out = run(&["check", g.to_str().expect("utf-8")], None);
+        assert!(out.status.success(), "{}: {}", g.display(), String::from_utf8_lossy(&out.stderr));
+    }
+}
+
+#[test]
+fn there_are_at_least_ten_lsystems_and_each_renders_valid_gltf() {
+    let files = grammar_files("ls");
+    assert!(files.len() >= 10, "{files:?}");
+    let dir = tempdir();
+    let mut out_files = Vec::new();
+    for g in files {
+        let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
+        for ext in ["glb", "gltf"] {
+            let path = dir.path().join(format!("{stem}.{ext}"));
+            let out = run(&["render", g.to_str().expect("utf-8"), "-o", path.to_str().expect("utf-8")], None);
+            assert!(out.status.success(), "{stem}: {}", String::from_utf8_lossy(&out.stderr));
+            out_files.push(path);
+        }
+    }
+    for (file, (errors, _warnings, report)) in out_files.iter().zip(validate_gltf(&out_files)) {
+        assert_eq!(errors, 0, "{}: {report}", file.display());
+    }
+}
+
+#[test]
+fn primitive_shape_places_one_primitive_per_segment() {
+    let out = render(b"iterations: 2\nshape: CYLINDER\naxiom: F\nF -> F[+F]F\n", &req(Format::Glb)).expect("renders");
+    assert_eq!(out.primitives, 9);
+    assert!(out.triangles > 0);
+}
+
+#[test]
+fn every_lsystem_example_in_the_docs_renders() {
+    let doc = std::fs::read_to_string(crate::common::repo().join("docs/lsystem.md")).expect("docs/lsystem.md");
+    let mut examples = Vec::new();
+    let mut current: Option<String> = None;
+    for line in doc.lines() {
+        match (&mut current, line.trim_end()) {
+            (None, "```ls") => current = Some(String::new()),
+            (Some(_), "```") => examples.extend(current.take()),
+            (Some(buf), l) => {
+                buf.push_str(l);
+                buf.push('\n');
+            }
+            (None, _) => {}
+        }
+    }
+    assert!(examples.len() >= 12, "only {} examples", examples.len());
+    let dir = tempdir();
+    let mut files = Vec::new();
+    for (i, src) in examples.iter().enumerate() {
+        let path = dir.path().join(format!("example-{i}.glb"));
+        let out = run(&["render", "-", "--language", "lsystem", "-o", path.to_str().expect("utf-8")], Some(src.as_bytes()));
+        assert!(out.status.success(), "example {i}:\n{src}\n{}", String::from_utf8_lossy(&out.stderr));
+        let summary = String::from_utf8_lossy(&out.stderr);
+        assert!(!summary.contains(" 0 primitives"), "example {i} draws something: {summary}");
+        files.push(path);
+    }
+    for (i, (errors, _, report)) in validate_gltf(&files).into_iter().enumerate() {
+        assert_eq!(errors, 0, "example {i}: {report}");
+    }
+}
