@@ -229,7 +229,7 @@ pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
         bytes: bytes::Bytes::copy_from_slice(bytes),
         etag,
         content_type: static_content_type(&header.content_type)?,
-        language: [Language::Mdg].into_iter().find(|l| l.name() == header.language)?,
+        language: [Language::Mdg, Language::Lsystem].into_iter().find(|l| l.name() == header.language)?,
         primitives: header.primitives,
         triangles: header.triangles,
         truncated: None,
@@ -266,6 +266,9 @@ mod tests {
             *b ^= 1;
         }
         assert_eq!(decode(&flipped), None);
+        // Every language round-trips (the Redis tier shares this encoding).
+        let l = Rendered { language: Language::Lsystem, ..model() };
+        assert_eq!(encode(&l).as_deref().and_then(decode), Some(l));
     }
 
     #[tokio::test]
