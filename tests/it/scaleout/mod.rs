@@ -35,8 +35,13 @@ struct Redis {
 
 impl Redis {
     fn start(port: u16) -> Redis {
+        Redis::start_with(port, &[])
+    }
+
+    fn start_with(port: u16, extra: &[&str]) -> Redis {
         let child = Command::new("redis-server")
             .args(["--port", &port.to_string(), "--bind", "127.0.0.1", "--save", "", "--appendonly", "no", "--protected-mode", "yes"])
+            .args(extra)
             .stdout(Stdio::null())
             .stderr(Stdio::null())
             .spawn()
@@ -56,6 +61,27 @@ impl Redis {
         let _ = s.set_read_timeout(Some(Duration::from_millis(500)));
         let mut buf = [0u8; 7];
         s.write_all(b"PING\r\n").is_ok() && s.read_exact(&mut buf).is_ok() && &buf == b"+PONG\r\n"
+    }
+
+    /// Sends one command and returns the raw RESP reply.
+    fn command(&self, args: &[&str]) -> String {
+        use std::io::{Read, Write};
+        let mut s = TcpStream::connect(("127.0.0.1", self.port)).expect("connect to redis");
+        let mut req = format!("*{}\r\n", args.len());
+        for a in args {
+            req.push_str(&format!("${}\r\n{a}\r\n", a.len()));
+        }
+        s.write_all(req.as_bytes()).expect("write");
+        let _ = s.set_read_timeout(Some(Duration::from_millis(300)));
+        let mut out = Vec::new();
+        let mut buf = [0u8; 4096];
+        while let Ok(n) = s.read(&mut buf) {
+            if n == 0 {
+                break;
+            }
+            out.extend_from_slice(&buf[..n]);
+        }
+        String::from_utf8_lossy(&out).into_owned()
     }
 
     fn url(&self) -> String {
@@ -268,4 +294,58 @@ async fn fifty_identical_misses_render_at_most_twice_and_once_with_the_lock() {
         let renders = burst(&a, &b, &format!("burst-locked-{round}")).await;
         assert_eq!(renders, 1, "with the lock, round {round}");
     }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn redis_values_have_a_ttl_and_a_size_cap_and_a_full_or_slow_redis_is_survived() {
+    if redis_server().is_none() {
+        return;
+    }
+    let c = client();
+    // TTL: the stored model expires (PX) within the configured lifetime.
+    let redis = Redis::start(free_port());
+    let a = Worker::start("a", &redis.url(), false, &["--cache-redis-ttl-secs", "120"]);
+    assert_eq!(a.render(&c, &grammar("ttl")).await.0, 200);
+    let keys = redis.command(&["KEYS", "rulemesh:m:*"]);
+    let key = keys.lines().find(|l| l.starts_with("rulemesh:m:")).unwrap_or_else(|| panic!("no model key in Redis: {keys:?}")).to_string();
+    let pttl: i64 = redis.command(&["PTTL", &key]).trim().trim_start_matches(':').parse().expect("PTTL reply");
+    assert!(pttl > 100_000 && pttl <= 120_000, "PTTL {pttl}");
+    drop(a);
+
+    // Size cap: a model larger than the cap is not written, and is not shared.
+    let a = Worker::start("a", &redis.url(), false, &["--cache-redis-max-bytes", "1000"]);
+    let b = Worker::start("b", &redis.url(), false, &["--cache-redis-max-bytes", "1000"]);
+    let src = grammar("capped");
+    assert_eq!(a.render(&c, &src).await.0, 200);
+    assert_eq!(a.metric(&c, "rulemesh_redis_skipped_total").await, 1);
+    assert_eq!(a.metric(&c, "rulemesh_redis_writes_total").await, 0);
+    assert_eq!(b.render(&c, &src).await.1, "miss");
+    drop((a, b));
+
+    // A full Redis (maxmemory without eviction refuses writes): requests
+    // succeed, the failure is counted, local caching goes on.
+    let full = Redis::start_with(free_port(), &["--maxmemory", "1mb", "--maxmemory-policy", "noeviction"]);
+    let a = Worker::start("a", &full.url(), false, &[]);
+    for i in 0..3 {
+        let src = grammar(&format!("full-{i}"));
+        assert_eq!(a.render(&c, &src).await.0, 200);
+        let (status, cache, _) = a.render(&c, &src).await;
+        assert_eq!((status, cache.as_str()), (200, "hit"));
+    }
+    assert!(a.metric(&c, "rulemesh_redis_errors_total").await > 0, "an OOM refusal is counted");
+    drop(a);
+
+    // A slow Redis (blocked by DEBUG SLEEP): requests go on after the
+    // command timeout (200 ms here) instead of waiting for it.
+    let slow = Redis::start_with(free_port(), &["--enable-debug-command", "yes"]);
+    let a = Worker::start("a", &slow.url(), false, &[]);
+    assert_eq!(a.render(&c, &grammar("before-slow")).await.0, 200);
+    let port = slow.port;
+    let sleeper = std::thread::spawn(move || Redis { port, child: None }.command(&["DEBUG", "SLEEP", "3"]));
+    tokio::time::sleep(Duration::from_millis(100)).await;
+    let started = Instant::now();
+    assert_eq!(a.render(&c, &grammar("while-slow")).await.0, 200);
+    assert!(started.elapsed() < Duration::from_millis(1500), "a slow Redis held a request {:?}", started.elapsed());
+    assert!(a.metric(&c, "rulemesh_redis_errors_total").await > 0, "the timeout is counted");
+    let _ = sleeper.join();
 }
