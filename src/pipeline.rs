@@ -148,9 +148,8 @@ pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) 
     Ok((language, lang::check(language, source)?))
 }
 
-/// Renders `source` as the request says. Never panics on bad input; every
-/// failure is a typed [`RenderError`].
-pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
+/// Rejects a tessellation detail outside `MIN_DETAIL..=MAX_DETAIL`.
+pub(crate) fn check_detail(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
         return Err(RenderError::BadRequest(format!(
             "detail must be in {}..={}, got {}",
@@ -159,6 +158,62 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
             req.detail
         )));
     }
+    Ok(())
+}
+
+/// Times the pipeline's stages: each `lap` records the time since the last one.
+pub(crate) struct Stages {
+    /// The times recorded so far.
+    pub phases: PhaseTimes,
+    mark: Instant,
+}
+
+impl Stages {
+    /// Starts timing now.
+    pub(crate) fn start() -> Stages {
+        Stages { phases: PhaseTimes::default(), mark: Instant::now() }
+    }
+
+    /// Records the time since the last lap into the slot `which` picks.
+    pub(crate) fn lap(&mut self, which: fn(&mut PhaseTimes) -> &mut Duration) {
+        *which(&mut self.phases) = self.mark.elapsed();
+        self.mark = Instant::now();
+    }
+}
+
+/// The stages every language shares after evaluation: meshing, export and
+/// the summary. `primitives` is what the language counts as its primitives.
+pub(crate) fn mesh_and_export(
+    scene: eval::Scene,
+    req: &RenderRequest,
+    language: Language,
+    primitives: u64,
+    warnings: Vec<Diagnostic>,
+    mut budget: Budget,
+    mut stages: Stages,
+) -> Result<RenderOutput, RenderError> {
+    let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
+    stages.lap(|p| &mut p.mesh);
+    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
+    let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
+    stages.lap(|p| &mut p.export);
+    let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+    Ok(RenderOutput {
+        bytes,
+        language,
+        primitives,
+        triangles,
+        truncated: scene.truncated,
+        warnings,
+        elapsed: budget.elapsed(),
+        phases: stages.phases,
+    })
+}
+
+/// Renders `source` as the request says. Never panics on bad input; every
+/// failure is a typed [`RenderError`].
+pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
+    check_detail(req)?;
     if req.format == Format::Strips {
         req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
     }
@@ -166,15 +221,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         return crate::lsystem::render(source, req);
     }
     let mut budget = Budget::new(req.limits);
-    let mut phases = PhaseTimes::default();
-    let mut mark = Instant::now();
-    let mut lap = |slot: &mut Duration| {
-        *slot = mark.elapsed();
-        mark = Instant::now();
-    };
+    let mut stages = Stages::start();
     let (language, program) = parse_source(source, req.language, &req.limits)?;
     let params = bind_params(&program, &req.params)?;
-    lap(&mut phases.parse);
+    stages.lap(|p| &mut p.parse);
     // Promise the memory that meshing and export will need while evaluating,
     // so the memory limit binds (or truncates) as primitives are made.
     let overhead = export::estimated_size(req.format, 0, 0);
@@ -186,29 +236,15 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         downstream: downstream(req, overhead),
     };
     let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
-    lap(&mut phases.eval);
+    stages.lap(|p| &mut p.eval);
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut scene))?;
     budget.release_memory(eval::promised_bytes(&scene, &options).saturating_add(overhead));
-
-    let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
-    lap(&mut phases.mesh);
-    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
-    let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
-    lap(&mut phases.export);
-    let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
-    Ok(RenderOutput {
-        bytes,
-        language,
-        primitives: scene.instances.len() as u64,
-        triangles,
-        truncated: scene.truncated,
-        warnings: program.warnings,
-        elapsed: budget.elapsed(),
-        phases,
-    })
+    let primitives = scene.instances.len() as u64;
+    mesh_and_export(scene, req, language, primitives, program.warnings, budget, stages)
 }
 
-fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene) -> Result<(), RenderError> {
+/// Under `truncate`, records `e` as the reason the scene is partial; under `error`, fails with it.
+pub(crate) fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene) -> Result<(), RenderError> {
     match on_limit {
         OnLimit::Error => Err(RenderError::Limit(e)),
         OnLimit::Truncate => {
@@ -220,7 +256,7 @@ fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene
 
 /// Bytes the mesh buffers and the encoded output need per vertex and per
 /// triangle (both are linear in the counts beyond a fixed overhead).
-fn downstream(req: &RenderRequest, overhead: u64) -> eval::Downstream {
+pub(crate) fn downstream(req: &RenderRequest, overhead: u64) -> eval::Downstream {
     let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
     eval::Downstream {
         per_vertex: crate::geom::meshing::mesh_bytes(1, 0).saturating_add(est(1, 0)),
