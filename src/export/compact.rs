@@ -98,31 +98,10 @@ struct Prepared {
     indices: Stream,
 }
 
-fn invalid(name: &str, detail: impl Into<String>) -> ExportError {
-    ExportError::InvalidMesh { name: name.to_string(), detail: detail.into() }
-}
-
 fn too_large(detail: impl Into<String>) -> ExportError {
     ExportError::TooLarge { format: "glTF", detail: detail.into() }
 }
 
-fn check(m: &NamedMesh) -> Result<(), ExportError> {
-    let mesh = &m.mesh;
-    let n = mesh.positions.len();
-    if mesh.normals.len() != n || mesh.colours.len() != n {
-        return Err(invalid(&m.name, "normals and colours must have one entry per position"));
-    }
-    if mesh.indices.len() % 3 != 0 {
-        return Err(invalid(&m.name, "index count is not a multiple of 3"));
-    }
-    if mesh.indices.iter().any(|&i| i as usize >= n) {
-        return Err(invalid(&m.name, "index out of range"));
-    }
-    if mesh.positions.iter().flatten().any(|c| !c.is_finite()) {
-        return Err(invalid(&m.name, "non-finite position"));
-    }
-    Ok(())
-}
 
 /// The quantisation grid over all meshes: origin and uniform step.
 fn grid(meshes: &[NamedMesh]) -> ([f64; 3], f64) {
@@ -235,7 +214,7 @@ fn index_stream(list: &[u32], vertices: usize) -> Stream {
 }
 
 fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Prepared>, ExportError> {
-    check(m)?;
+    super::gltf::check_mesh(m)?;
     let mesh = &m.mesh;
     if mesh.indices.is_empty() {
         return Ok(None);

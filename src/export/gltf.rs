@@ -75,6 +75,26 @@ fn invalid(name: &str, detail: impl Into<String>) -> ExportError {
     ExportError::InvalidMesh { name: name.to_string(), detail: detail.into() }
 }
 
+/// Rejects a mesh a glTF writer cannot describe: attribute lists of unequal
+/// length, a partial triangle, an index out of range or a non-finite position.
+pub(super) fn check_mesh(m: &NamedMesh) -> Result<(), ExportError> {
+    let mesh = &m.mesh;
+    let n = mesh.positions.len();
+    if mesh.normals.len() != n || mesh.colours.len() != n {
+        return Err(invalid(&m.name, "normals and colours must have one entry per position"));
+    }
+    if mesh.indices.len() % 3 != 0 {
+        return Err(invalid(&m.name, "index count is not a multiple of 3"));
+    }
+    if mesh.indices.iter().any(|&i| i as usize >= n) {
+        return Err(invalid(&m.name, "index out of range"));
+    }
+    if mesh.positions.iter().flatten().any(|c| !c.is_finite()) {
+        return Err(invalid(&m.name, "non-finite position"));
+    }
+    Ok(())
+}
+
 /// A mesh with its place in the buffer.
 type Placement<'a> = (&'a NamedMesh, Placed);
 
@@ -90,20 +110,9 @@ fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), ExportError>
         if mesh.indices.is_empty() || n == 0 {
             continue;
         }
-        if mesh.normals.len() != n || mesh.colours.len() != n {
-            return Err(invalid(&m.name, "normals and colours must have one entry per position"));
-        }
-        if mesh.indices.len() % 3 != 0 {
-            return Err(invalid(&m.name, "index count is not a multiple of 3"));
-        }
-        if mesh.indices.iter().any(|&i| i as usize >= n) {
-            return Err(invalid(&m.name, "index out of range"));
-        }
+        check_mesh(m)?;
         let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
         for p in &mesh.positions {
-            if !p.iter().all(|c| c.is_finite()) {
-                return Err(invalid(&m.name, "non-finite position"));
-            }
             for k in 0..3 {
                 min[k] = min[k].min(p[k]);
                 max[k] = max[k].max(p[k]);
