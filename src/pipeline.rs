@@ -192,9 +192,14 @@ pub(crate) fn mesh_and_export(
     mut budget: Budget,
     mut stages: Stages,
 ) -> Result<RenderOutput, RenderError> {
-    let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
+    let (meshes, graph) = if carries_graph(&scene, req) {
+        let (meshes, graph) = mesh_with_graph(&scene, req, &mut budget)?;
+        (meshes, Some(graph))
+    } else {
+        (geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?, None)
+    };
     stages.lap(|p| &mut p.mesh);
-    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
+    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some(), graph };
     let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
     stages.lap(|p| &mut p.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
@@ -208,6 +213,43 @@ pub(crate) fn mesh_and_export(
         elapsed: budget.elapsed(),
         phases: stages.phases,
     })
+}
+
+/// True when the scene has bones or a camera and the request's format can
+/// carry a node hierarchy: plain glTF (the quantised and compressed writers,
+/// STL, strips and unit-box fitting show the model at time 0 instead).
+fn carries_graph(scene: &eval::Scene, req: &RenderRequest) -> bool {
+    (scene.rig.is_some() || scene.camera.is_some())
+        && matches!(req.format, Format::Glb | Format::Gltf)
+        && req.export_options.gltf.is_plain()
+        && !req.export_options.fit_unit_box
+}
+
+/// Meshes each bone's geometry in the bone's own coordinates and builds the
+/// node graph (bones, animation samples, camera) that places them.
+fn mesh_with_graph(
+    scene: &eval::Scene,
+    req: &RenderRequest,
+    budget: &mut Budget,
+) -> Result<(Vec<geom::NamedMesh>, export::graph::NodeGraph), RenderError> {
+    let mut meshes = Vec::new();
+    let mut bones = Vec::new();
+    match &scene.rig {
+        Some(rig) => {
+            for (bone, part) in rig.split(scene, budget)? {
+                for m in geom::build_meshes(&part, req.detail, req.layout, budget)? {
+                    bones.push(bone);
+                    meshes.push(m);
+                }
+            }
+        }
+        None => {
+            meshes = geom::build_meshes(scene, req.detail, req.layout, budget)?;
+            bones = vec![0; meshes.len()];
+        }
+    }
+    let graph = export::graph::NodeGraph::new(scene.rig.as_ref(), scene.camera.as_ref(), &bones, budget)?;
+    Ok((meshes, graph))
 }
 
 /// Renders `source` as the request says. Never panics on bad input; every

@@ -7,6 +7,7 @@
 //! do not depend on the order in which work is done.
 
 use super::budget::{Budget, OnLimit};
+use super::animation::{looped, Bone, CameraPath, Rig, Timeline, BONE_BYTES};
 use super::frame::Frame;
 use super::rng::StreamKey;
 use super::scene::{
@@ -42,6 +43,8 @@ struct Ctx {
     colour: [f64; 4],
     depth: u32,
     key: StreamKey,
+    /// The animation bone the work belongs to (0: none; see [`Rig`]).
+    bone: u32,
 }
 
 impl Ctx {
@@ -160,6 +163,8 @@ struct Evaluator<'p> {
     cost: Downstream,
     detail: u32,
     maxiter: u64,
+    /// Sampling of transform rules and the camera.
+    timeline: Timeline,
 }
 
 /// Evaluation slot reserved for rule selection (never a `rand()` site).
@@ -205,6 +210,7 @@ impl<'p> Evaluator<'p> {
             cost: options.downstream,
             detail,
             maxiter: program.directives.maxiter.unwrap_or(u64::MAX),
+            timeline: Timeline::new(program.directives.fps, program.directives.duration),
         })
     }
 
@@ -362,13 +368,21 @@ impl Default for EvalOptions {
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
     let ev = Evaluator::new(program, params, options)?;
     let seed = options.seed.or(program.directives.randseed).unwrap_or(0);
+    let animated = program.groups.iter().flat_map(|g| &g.rules).any(|r| matches!(r.transform, RuleTransform::Animate(_)));
     let scene = Scene {
         background: program.directives.background.map(|c| c.map(|v| v.clamp(0.0, 1.0) as f32)),
+        rig: animated.then(|| Rig::new(ev.timeline)),
         ..Scene::default()
     };
-    let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed) };
+    let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed), bone: 0 };
     let mut m = Machine::new(&ev, budget, scene, None, root.key);
-    let result = m.run(ev.program.start, root);
+    let mut result = m.run(ev.program.start, root);
+    if result.is_ok() {
+        match m.camera() {
+            Ok(c) => m.scene.camera = c,
+            Err(e) => result = Err(e),
+        }
+    }
     m.release();
     let mut scene = m.scene;
     match result {
@@ -406,6 +420,8 @@ struct Machine<'p, 'b> {
     root_key: StreamKey,
     /// Scene shape index of each isosurface meshed so far.
     isosurface_shape: HashMap<u32, u32>,
+    /// Track index in the scene's rig of each list of transform rules.
+    track_index: HashMap<Vec<GroupId>, u32>,
 }
 
 /// What a path or profile rule emitted.
@@ -450,6 +466,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             profile_index: HashMap::new(),
             root_key,
             isosurface_shape: HashMap::new(),
+            track_index: HashMap::new(),
         }
     }
 
@@ -520,7 +537,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                     _ => ctx,
                 };
                 let (frame, colour) = base.apply(&d);
-                let child = Ctx { frame, colour, depth: ctx.depth + 1, key };
+                let child = Ctx { frame, colour, depth: ctx.depth + 1, key, bone: ctx.bone };
                 self.expand(call.target, child)
             }
             Item::Block(items) => {
@@ -588,6 +605,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
                 self.scene.shape_instances.push(ShapeInstance { shape, frame: ctx.frame, colour: colour.map(|c| c.clamp(0.0, 1.0) as f32) });
+                self.tag(|r| &mut r.shape_instance_bone, ctx.bone)?;
                 self.last_terminal = Some(ctx.frame);
                 Ok(())
             }
@@ -604,6 +622,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
                 instances.push(Instance::new(kind, &ctx.frame, colour));
+                self.tag(|r| &mut r.instance_bone, ctx.bone)?;
                 self.last_terminal = Some(ctx.frame);
                 Ok(())
             }
@@ -613,7 +632,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             }
             Target::Group(g) => {
                 let dirs = &self.ev.program.directives;
-                if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
+                if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.stacksize.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
                     return Ok(());
                 }
                 self.budget.check_depth(ctx.depth)?;
@@ -632,14 +651,9 @@ impl<'p, 'b> Machine<'p, 'b> {
                         }
                     }
                     RuleTransform::Animate(paths) => {
-                        // Static output: the animation at time 0.
-                        let mut frame = ctx.frame;
-                        for &p in paths {
-                            if let Some(f) = self.capture_group(p, Some(1))?.frames.first() {
-                                frame = frame.then(f);
-                            }
-                        }
-                        self.stack.push(Task::Items { items: &rule.body, next: 0, ctx: Ctx { frame, ..ctx } });
+                        // The body runs at the animation's time 0; a rig records the bone.
+                        let (frame, bone) = self.bone(&group.name, paths, &ctx)?;
+                        self.stack.push(Task::Items { items: &rule.body, next: 0, ctx: Ctx { frame, bone, ..ctx } });
                     }
                 }
                 Ok(())
@@ -683,6 +697,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                         let start = LinePoint { frame: self.pen.start, colour };
                         self.charge_line_point(profile)?;
                         self.scene.lines.push(Polyline { points: vec![start], profile });
+                        self.tag(|r| &mut r.line_bone, ctx.bone)?;
                         let i = self.scene.lines.len() - 1;
                         self.pen.open = Some(i);
                         i
@@ -748,6 +763,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                 let local = self.ev.program.directives.normal.map_or(DVec3::Z, DVec3::from_array);
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
+                self.tag(|r| &mut r.vertex_bone, ctx.bone)?;
                 self.scene.vertices.push(FreeVertex {
                     position: ctx.frame.translation,
                     normal: ctx.frame.transform_normal(local).normalize_or_zero(),
@@ -773,13 +789,81 @@ impl<'p, 'b> Machine<'p, 'b> {
         Ok(())
     }
 
+    /// Records which bone a new piece of geometry belongs to (when the scene has a rig).
+    fn tag(&mut self, tags: fn(&mut Rig) -> &mut Vec<u32>, bone: u32) -> Result<(), EvalError> {
+        if let Some(rig) = &mut self.scene.rig {
+            self.budget.reserve_memory(4)?;
+            tags(rig).push(bone);
+        }
+        Ok(())
+    }
+
+    /// A call of animated rule `name` with transform rules `paths`: the frame
+    /// its body runs in (the call frame composed with the track at time 0)
+    /// and its bone (a new one when the scene has a rig).
+    fn bone(&mut self, name: &str, paths: &[GroupId], ctx: &Ctx) -> Result<(Frame, u32), EvalError> {
+        let Some(samples) = self.scene.rig.as_ref().map(|r| r.timeline.samples) else {
+            // No rig (inside a path rule): only time 0 matters.
+            let mut frame = ctx.frame;
+            for &p in paths {
+                if let Some(f) = self.capture_group(p, Some(1))?.frames.first() {
+                    frame = frame.then(f);
+                }
+            }
+            return Ok((frame, ctx.bone));
+        };
+        let track = match self.track_index.get(paths) {
+            Some(&t) => t,
+            None => {
+                let streams = paths.iter().map(|&p| self.capture_group(p, Some(samples as usize))).collect::<Result<Vec<_>, _>>()?;
+                self.budget.reserve_memory(u64::from(samples).saturating_mul(std::mem::size_of::<Frame>() as u64))?;
+                let frames: Vec<Frame> = (0..samples as usize)
+                    .map(|k| streams.iter().fold(Frame::IDENTITY, |f, s| f.then(&looped(&s.frames, k))))
+                    .collect();
+                let Some(rig) = self.scene.rig.as_mut() else { return Ok((ctx.frame, ctx.bone)) };
+                rig.tracks.push(frames);
+                let t = (rig.tracks.len() - 1) as u32;
+                self.track_index.insert(paths.to_vec(), t);
+                t
+            }
+        };
+        self.budget.reserve_memory(BONE_BYTES)?;
+        let Some(rig) = self.scene.rig.as_mut() else { return Ok((ctx.frame, ctx.bone)) };
+        let start = rig.tracks.get(track as usize).and_then(|t| t.first()).copied().unwrap_or(Frame::IDENTITY);
+        let body = ctx.frame.then(&start);
+        let parent_body = rig.bones.get(ctx.bone as usize).map_or(Frame::IDENTITY, |b| b.body);
+        // A parent collapsed to zero scale hides its children anyway.
+        let local = parent_body.inverse().map_or(Frame::IDENTITY, |inv| inv.then(&ctx.frame));
+        let id = u32::try_from(rig.bones.len()).unwrap_or(u32::MAX);
+        rig.bones.push(Bone { name: name.to_string(), parent: ctx.bone, local, body, track });
+        Ok((body, id))
+    }
+
+    /// The camera path of `camerarule`, sampled on the timeline.
+    fn camera(&mut self) -> Result<Option<CameraPath>, EvalError> {
+        let dirs = &self.ev.program.directives;
+        let Some(g) = dirs.camerarule else { return Ok(None) };
+        let lens = dirs.camera;
+        let timeline = self.ev.timeline;
+        let stream = self.capture_group(g, Some(timeline.samples as usize))?;
+        let frames = match stream.frames.len() {
+            0 => vec![Frame::IDENTITY],
+            1 => vec![stream.frames[0]],
+            _ => {
+                self.budget.reserve_memory(u64::from(timeline.samples).saturating_mul(std::mem::size_of::<Frame>() as u64))?;
+                (0..timeline.samples as usize).map(|k| looped(&stream.frames, k)).collect()
+            }
+        };
+        Ok(Some(CameraPath { timeline, frames, lens }))
+    }
+
     /// Evaluates a path or profile rule from the identity frame, once per evaluation.
     fn capture_group(&mut self, g: GroupId, frame_limit: Option<usize>) -> Result<Rc<Capture>, EvalError> {
         if let Some(c) = self.captured.get(&g).filter(|c| c.frame_limit.is_none() || c.frame_limit == frame_limit) {
             return Ok(Rc::clone(c));
         }
         let key = self.root_key.child(CAPTURE_SLOT, u64::from(g));
-        let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key };
+        let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key, bone: 0 };
         let capture = Capture { frame_limit, ..Capture::default() };
         let mut sub = Machine::new(self.ev, &mut *self.budget, Scene::default(), Some(capture), self.root_key);
         let result = sub.run(Target::Group(g), root);

@@ -112,6 +112,19 @@ impl Frame {
         self.sign() * self.scale.powi(3)
     }
 
+    /// The inverse transform, so geometry can be re-expressed in a frame's
+    /// local coordinates (animation bones). `None` for a zero scale, which
+    /// collapses space and cannot be undone.
+    pub fn inverse(&self) -> Option<Frame> {
+        if !(self.scale > 0.0) || !self.scale.is_finite() {
+            return None;
+        }
+        let rotation = self.rotation.conjugate();
+        let scale = 1.0 / self.scale;
+        // p = t + s·σ·R·q  ⇔  q = −(σ/s)·R⁻¹·t + (σ/s)·R⁻¹·p, and σ commutes with R.
+        Some(Frame { translation: -(self.sign() * scale) * (rotation * self.translation), rotation, scale, parity: self.parity })
+    }
+
     /// True when every component is finite.
     pub fn is_finite(&self) -> bool {
         self.translation.is_finite() && self.rotation.is_finite() && self.scale.is_finite()

@@ -1,6 +1,7 @@
 //! The evaluator: frames, seeded random streams, budgets, and the
 //! depth-first expansion of the IR into a [`scene::Scene`].
 
+pub mod animation;
 pub mod budget;
 pub mod evaluator;
 pub mod frame;

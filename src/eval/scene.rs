@@ -39,6 +39,29 @@ impl Instance {
         }
     }
 
+    /// The instance's placement as a frame (in f64, for composing).
+    pub fn frame(&self) -> Frame {
+        Frame {
+            translation: self.translation.as_dvec3(),
+            rotation: self.rotation.as_dquat(),
+            scale: f64::from(self.scale),
+            parity: self.parity,
+        }
+    }
+
+    /// The same instance placed by `outer ∘ self` (re-expressed in another space).
+    pub fn transformed(&self, outer: &Frame) -> Instance {
+        let f = outer.then(&self.frame());
+        Instance {
+            kind: self.kind,
+            parity: f.parity,
+            translation: f.translation.as_vec3(),
+            rotation: f.rotation.as_quat().normalize(),
+            scale: f.scale as f32,
+            colour: self.colour,
+        }
+    }
+
     /// The linear part s·σ·R as a matrix.
     pub fn linear(&self) -> Mat3 {
         let sign = if self.parity { -1.0 } else { 1.0 };
@@ -120,6 +143,11 @@ pub struct Scene {
     pub background: Option<[f32; 4]>,
     /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.
     pub truncated: Option<LimitExceeded>,
+    /// Animation bones (calls of animated rules) and which bone each piece
+    /// of geometry belongs to; `None` when the grammar animates nothing.
+    pub rig: Option<crate::eval::animation::Rig>,
+    /// The camera path of `camerarule`, if the grammar has one.
+    pub camera: Option<crate::eval::animation::CameraPath>,
 }
 
 /// Bytes accounted per stored instance (for the memory budget).

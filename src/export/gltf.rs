@@ -12,11 +12,17 @@
 //!   default material (white, metallic 0, roughness 0.8) so vertex colours show;
 //! * one scene whose only root node, `"rulemesh"`, has no transform and one
 //!   child node per mesh; background colour and truncation go in the scene's
-//!   `extras`.
+//!   `extras`;
+//! * with a [`NodeGraph`] (animated grammars, cameras): one node per bone
+//!   under the root, each mesh under its bone's node, a camera node, and one
+//!   animation `"rulemesh"` with LINEAR translation/rotation/scale channels
+//!   per animated node, sampled at the grammar's fps; the samples follow the
+//!   meshes in the buffer, in one buffer view without a target.
 //!
 //! Output is deterministic: every map is ordered and nothing time-dependent
 //! is written.
 
+use super::graph::{NodeGraph, Trs};
 use super::{ExportError, ExportMeta};
 use crate::eval::budget::Budget;
 use crate::geom::NamedMesh;
@@ -37,6 +43,8 @@ const DATA_URI: &str = "data:application/octet-stream;base64,";
 
 /// Where one mesh's data lives in the binary buffer.
 struct Placed {
+    /// Index of the mesh in the writer's input (for the node graph).
+    mesh: usize,
     vertices: usize,
     triangles: usize,
     /// Indices as u16 (else u32).
@@ -104,7 +112,7 @@ type Placement<'a> = (&'a NamedMesh, Placed);
 fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), ExportError> {
     let mut placed = Vec::with_capacity(meshes.len());
     let mut offset = 0u64;
-    for m in meshes {
+    for (index, m) in meshes.iter().enumerate() {
         let mesh = &m.mesh;
         let n = mesh.positions.len();
         if mesh.indices.is_empty() || n == 0 {
@@ -118,7 +126,7 @@ fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), ExportError>
                 max[k] = max[k].max(p[k]);
             }
         }
-        let p = Placed { vertices: n, triangles: mesh.indices.len() / 3, short: n <= MAX_SHORT_VERTICES, offset, min, max };
+        let p = Placed { mesh: index, vertices: n, triangles: mesh.indices.len() / 3, short: n <= MAX_SHORT_VERTICES, offset, min, max };
         offset = align4(p.end());
         let end = p.end();
         placed.push((m, p));
@@ -185,8 +193,174 @@ fn scene_extras(meta: &ExportMeta) -> Result<json::Extras, ExportError> {
     Ok(Some(json::extras::RawValue::from_string(serde_json::to_string(&map)?)?))
 }
 
+/// What an animation channel moves.
+#[derive(Debug, Clone, Copy)]
+enum Mover {
+    /// Graph node `i`.
+    Node(usize),
+    /// The camera node.
+    Camera,
+}
+
+/// Animation samples laid out in the buffer after the meshes.
+#[derive(Debug, Default)]
+struct Tracks {
+    /// Buffer offset of the first byte (4-byte aligned).
+    offset: u64,
+    /// Sample times, then each channel's outputs, all little-endian f32.
+    bytes: Vec<u8>,
+    /// Samples per channel.
+    count: usize,
+    /// The last sample time.
+    end: f32,
+    /// Per channel: what it moves, which property, and where its outputs start in `bytes`.
+    channels: Vec<(Mover, json::animation::Property, u64)>,
+}
+
+impl Tracks {
+    /// Lays out the samples of every node (and the camera) that moves;
+    /// empty when nothing does. Rotations are sign-aligned sample to sample
+    /// so LINEAR interpolation takes the short way.
+    fn of(graph: Option<&NodeGraph>, offset: u64) -> Tracks {
+        use json::animation::Property;
+        let Some(g) = graph.filter(|g| g.is_animated()) else { return Tracks::default() };
+        let count = g.times.len();
+        let mut t = Tracks { offset, count, end: g.times.last().copied().unwrap_or(0.0), ..Tracks::default() };
+        for time in &g.times {
+            t.bytes.extend_from_slice(&time.to_le_bytes());
+        }
+        let mut movers: Vec<(Mover, &[Trs], bool)> = Vec::new();
+        for (i, n) in g.nodes.iter().enumerate() {
+            if n.samples.len() == count {
+                movers.push((Mover::Node(i), &n.samples, true));
+            }
+        }
+        if let Some(c) = g.camera.as_ref().filter(|c| c.samples.len() == count) {
+            movers.push((Mover::Camera, &c.samples, false));
+        }
+        for (mover, samples, with_scale) in movers {
+            t.channels.push((mover, Property::Translation, t.bytes.len() as u64));
+            for s in samples {
+                for c in s.translation {
+                    t.bytes.extend_from_slice(&c.to_le_bytes());
+                }
+            }
+            t.channels.push((mover, Property::Rotation, t.bytes.len() as u64));
+            let mut prev = [0.0f32, 0.0, 0.0, 1.0];
+            for s in samples {
+                let dot: f32 = s.rotation.iter().zip(prev).map(|(a, b)| a * b).sum();
+                let q = if dot < 0.0 { s.rotation.map(|c| -c) } else { s.rotation };
+                for c in q {
+                    t.bytes.extend_from_slice(&c.to_le_bytes());
+                }
+                prev = q;
+            }
+            if with_scale {
+                t.channels.push((mover, Property::Scale, t.bytes.len() as u64));
+                for s in samples {
+                    for c in s.scale {
+                        t.bytes.extend_from_slice(&c.to_le_bytes());
+                    }
+                }
+            }
+        }
+        t
+    }
+
+    /// The buffer's length with these samples after `meshes_end` bytes of meshes.
+    fn buffer_len(&self, meshes_end: u64) -> u64 {
+        if self.bytes.is_empty() {
+            meshes_end
+        } else {
+            self.offset + self.bytes.len() as u64
+        }
+    }
+}
+
+/// A glTF node with the transform `trs`.
+fn trs_node(name: &str, trs: &Trs) -> json::Node {
+    json::Node {
+        name: Some(name.to_string()),
+        translation: Some(trs.translation),
+        rotation: Some(json::scene::UnitQuaternion(trs.rotation)),
+        scale: Some(trs.scale),
+        ..Default::default()
+    }
+}
+
+/// Adds the graph's nodes, camera and animation to `root`. Returns, per
+/// graph node, its glTF node, and the nodes that hang directly under the
+/// model's root node (top-level bones and the camera).
+fn add_graph(root: &mut json::Root, g: &NodeGraph, tracks: &Tracks, buffer: Option<json::Index<json::Buffer>>) -> (Vec<json::Index<json::Node>>, Vec<json::Index<json::Node>>) {
+    use json::accessor::{ComponentType, Type};
+    let identity = Trs { translation: [0.0; 3], rotation: [0.0, 0.0, 0.0, 1.0], scale: [1.0; 3] };
+    let nodes: Vec<_> = g.nodes.iter().map(|n| root.push(trs_node(&n.name, n.samples.first().unwrap_or(&identity)))).collect();
+    let mut top = Vec::new();
+    for (i, n) in g.nodes.iter().enumerate() {
+        match n.parent.and_then(|p| nodes.get(p as usize)) {
+            Some(&p) => root.nodes[p.value()].children.get_or_insert_with(Vec::new).push(nodes[i]),
+            None => top.push(nodes[i]),
+        }
+    }
+    let camera_node = g.camera.as_ref().map(|c| {
+        let camera = root.push(json::Camera {
+            name: Some("camerarule".to_string()),
+            orthographic: None,
+            perspective: Some(json::camera::Perspective { aspect_ratio: None, yfov: c.yfov, zfar: Some(c.zfar), znear: c.znear, extensions: None, extras: None }),
+            type_: Valid(json::camera::Type::Perspective),
+            extensions: None,
+            extras: None,
+        });
+        let mut node = trs_node("camera", c.samples.first().unwrap_or(&identity));
+        node.scale = None;
+        node.camera = Some(camera);
+        let n = root.push(node);
+        top.push(n);
+        n
+    });
+    let Some(buffer) = buffer.filter(|_| !tracks.channels.is_empty()) else { return (nodes, top) };
+    let view = root.push(json::buffer::View {
+        buffer,
+        byte_length: USize64(tracks.bytes.len() as u64),
+        byte_offset: Some(USize64(tracks.offset)),
+        byte_stride: None,
+        name: Some("animation".to_string()),
+        target: None,
+        extensions: None,
+        extras: None,
+    });
+    let mut times = accessor(view, tracks.count, ComponentType::F32, Type::Scalar, false);
+    times.min = Some(json::Value::Array(vec![json::Value::from(0.0)]));
+    times.max = Some(json::Value::Array(vec![json::Value::from(f64::from(tracks.end))]));
+    let input = root.push(times);
+    let mut samplers = Vec::new();
+    let mut channels = Vec::new();
+    for &(mover, property, at) in &tracks.channels {
+        let type_ = if property == json::animation::Property::Rotation { Type::Vec4 } else { Type::Vec3 };
+        let mut out = accessor(view, tracks.count, ComponentType::F32, type_, false);
+        out.byte_offset = Some(USize64(at));
+        let output = root.push(out);
+        samplers.push(json::animation::Sampler { input, interpolation: Valid(json::animation::Interpolation::Linear), output, extensions: None, extras: None });
+        let node = match mover {
+            Mover::Node(i) => nodes[i],
+            Mover::Camera => match camera_node {
+                Some(n) => n,
+                None => continue,
+            },
+        };
+        channels.push(json::animation::Channel {
+            sampler: json::Index::new((samplers.len() - 1) as u32),
+            target: json::animation::Target { node, path: Valid(property), extensions: None, extras: None },
+            extensions: None,
+            extras: None,
+        });
+    }
+    root.push(json::Animation { name: Some("rulemesh".to_string()), channels, samplers, extensions: None, extras: None });
+    (nodes, top)
+}
+
 /// Builds the glTF JSON. `uri` is the buffer's URI (None for GLB).
-fn document(placed: &[Placement<'_>], buffer_len: u64, meta: &ExportMeta, uri: Option<String>) -> Result<Vec<u8>, ExportError> {
+fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &ExportMeta, uri: Option<String>) -> Result<Vec<u8>, ExportError> {
     use json::accessor::{ComponentType, Type};
     use json::buffer::Target;
     let mut root = json::Root {
@@ -201,8 +375,12 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, meta: &ExportMeta, uri: O
         ..Default::default()
     };
     let root_node = root.push(json::Node { name: Some("rulemesh".to_string()), ..Default::default() });
-    if !placed.is_empty() {
-        let buffer = root.push(json::Buffer { byte_length: USize64(buffer_len), name: None, uri, extensions: None, extras: None });
+    let buffer = (buffer_len > 0).then(|| root.push(json::Buffer { byte_length: USize64(buffer_len), name: None, uri, extensions: None, extras: None }));
+    let (graph_nodes, mut children) = match &meta.graph {
+        Some(g) => add_graph(&mut root, g, tracks, buffer),
+        None => (Vec::new(), Vec::new()),
+    };
+    if let (false, Some(buffer)) = (placed.is_empty(), buffer) {
         let material = root.push(json::Material {
             pbr_metallic_roughness: json::material::PbrMetallicRoughness {
                 base_color_factor: json::material::PbrBaseColorFactor([1.0, 1.0, 1.0, 1.0]),
@@ -213,7 +391,6 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, meta: &ExportMeta, uri: O
             double_sided: false,
             ..Default::default()
         });
-        let mut children = Vec::with_capacity(placed.len());
         for (m, p) in placed {
             let n = p.vertices;
             let pv = root.push(view(buffer, p.position_offset(), 12 * n as u64, Target::ArrayBuffer));
@@ -247,8 +424,15 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, meta: &ExportMeta, uri: O
                 }],
                 weights: None,
             });
-            children.push(root.push(json::Node { mesh: Some(mesh), name: Some(m.name.clone()), ..Default::default() }));
+            let node = root.push(json::Node { mesh: Some(mesh), name: Some(m.name.clone()), ..Default::default() });
+            let parent = meta.graph.as_ref().and_then(|g| g.mesh_nodes.get(p.mesh).copied().flatten()).and_then(|i| graph_nodes.get(i as usize));
+            match parent {
+                Some(&b) => root.nodes[b.value()].children.get_or_insert_with(Vec::new).push(node),
+                None => children.push(node),
+            }
         }
+    }
+    if !children.is_empty() {
         root.nodes[root_node.value()].children = Some(children);
     }
     let scene = root.push(json::Scene { extensions: None, extras: scene_extras(meta)?, name: None, nodes: vec![root_node] });
@@ -334,8 +518,9 @@ fn put_words<T: bytemuck::Pod>(sink: &mut impl Sink, values: &[T], to_le: fn(T) 
     }
 }
 
-/// Writes the binary buffer (exactly `buffer_len` bytes, zero padding between meshes).
-fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
+/// Writes the binary buffer (exactly `buffer_len` bytes, zero padding between
+/// meshes), then the animation samples.
+fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>], tracks: &Tracks) {
     let mut at = 0u64;
     for (m, p) in placed {
         while at < p.offset {
@@ -356,6 +541,13 @@ fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
         }
         at = p.end();
     }
+    if !tracks.bytes.is_empty() {
+        while at < tracks.offset {
+            sink.put(&[0]);
+            at += 1;
+        }
+        sink.put(&tracks.bytes);
+    }
 }
 
 /// Writes a binary glTF (.glb): 12-byte header, JSON chunk padded with spaces,
@@ -364,10 +556,12 @@ fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>]) {
 /// Reserves the exact output size in `budget` before allocating it; fails
 /// with [`ExportError::TooLarge`] beyond the format's 4 GiB limit.
 pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    let (placed, buffer_len) = place(meshes)?;
-    let json_bytes = document(&placed, buffer_len, meta, None)?;
+    let (placed, meshes_end) = place(meshes)?;
+    let tracks = animation_tracks(meta, meshes_end, budget)?;
+    let buffer_len = tracks.buffer_len(meshes_end);
+    let json_bytes = document(&placed, buffer_len, &tracks, meta, None)?;
     let json_len = align4(json_bytes.len() as u64);
-    let bin_chunk = if placed.is_empty() { 0 } else { 8 + align4(buffer_len) };
+    let bin_chunk = if buffer_len == 0 { 0 } else { 8 + align4(buffer_len) };
     let total = 12 + 8 + json_len + bin_chunk;
     if total > MAX_BYTES {
         return Err(ExportError::TooLarge { format: "GLB", detail: format!("file of {total} bytes exceeds the 4 GiB limit") });
@@ -382,10 +576,10 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
     out.extend_from_slice(&CHUNK_JSON.to_le_bytes());
     out.extend_from_slice(&json_bytes);
     out.resize(20 + json_len as usize, b' ');
-    if !placed.is_empty() {
+    if buffer_len > 0 {
         out.extend_from_slice(&(align4(buffer_len) as u32).to_le_bytes());
         out.extend_from_slice(&CHUNK_BIN.to_le_bytes());
-        write_buffer(&mut out, &placed);
+        write_buffer(&mut out, &placed, &tracks);
         out.resize(total as usize, 0);
     }
     debug_assert_eq!(out.len() as u64, total);
@@ -399,30 +593,43 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
 /// streamed into the output at that point, so the buffer is never held twice.
 /// Reserves the exact output size in `budget` before allocating it.
 pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    let (placed, buffer_len) = place(meshes)?;
-    let json_bytes = document(&placed, buffer_len, meta, (!placed.is_empty()).then(|| DATA_URI.to_string()))?;
+    let (placed, meshes_end) = place(meshes)?;
+    let tracks = animation_tracks(meta, meshes_end, budget)?;
+    let buffer_len = tracks.buffer_len(meshes_end);
+    let json_bytes = document(&placed, buffer_len, &tracks, meta, (buffer_len > 0).then(|| DATA_URI.to_string()))?;
     // Compact JSON: `"uri":"` can only occur as a key (quotes inside strings are
     // escaped), and only the one buffer has a URI.
-    let split = if placed.is_empty() {
+    let split = if buffer_len == 0 {
         json_bytes.len()
     } else {
         let needle = format!("\"uri\":\"{DATA_URI}\"");
         let at = find(&json_bytes, needle.as_bytes()).ok_or_else(|| invalid("model", "buffer URI not found in the serialised JSON"))?;
         at + needle.len() - 1
     };
-    let encoded = if placed.is_empty() { 0 } else { base64_len(buffer_len) };
+    let encoded = if buffer_len == 0 { 0 } else { base64_len(buffer_len) };
     let total = (json_bytes.len() as u64).saturating_add(encoded);
     budget.reserve_memory(total)?;
     let mut out = Vec::with_capacity(total as usize);
     out.extend_from_slice(&json_bytes[..split]);
-    if !placed.is_empty() {
+    if buffer_len > 0 {
         let mut b64 = Base64 { out: &mut out, carry: [0; 3], held: 0 };
-        write_buffer(&mut b64, &placed);
+        write_buffer(&mut b64, &placed, &tracks);
         b64.finish();
     }
     out.extend_from_slice(&json_bytes[split..]);
     debug_assert_eq!(out.len() as u64, total);
     Ok(out)
+}
+
+/// The animation samples of `meta`'s graph, placed after `meshes_end` bytes of
+/// meshes and charged to `budget` (they are held until written).
+fn animation_tracks(meta: &ExportMeta, meshes_end: u64, budget: &mut Budget) -> Result<Tracks, ExportError> {
+    let tracks = Tracks::of(meta.graph.as_ref(), align4(meshes_end));
+    budget.reserve_memory(tracks.bytes.len() as u64)?;
+    if tracks.buffer_len(meshes_end) > MAX_BYTES {
+        return Err(ExportError::TooLarge { format: "glTF", detail: "animation samples exceed the 4 GiB buffer limit".to_string() });
+    }
+    Ok(tracks)
 }
 
 fn find(haystack: &[u8], needle: &[u8]) -> Option<usize> {
@@ -552,10 +759,10 @@ pub(crate) mod tests {
     #[test]
     fn extras_record_background_and_truncation() {
         let meshes = meshes_of(&scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 1.0, false)]), 16, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true };
+        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"background": [0.25, 0.5, 1.0, 1.0], "truncated": true}));
-        let meta = ExportMeta { background: None, truncated: true };
+        let meta = ExportMeta { background: None, truncated: true, graph: None };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"truncated": true}));
     }
@@ -563,7 +770,7 @@ pub(crate) mod tests {
     #[test]
     fn gltf_embeds_the_same_buffer_as_glb() {
         let meshes = meshes_of(&all_nine(), 7, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false };
+        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None };
         let glb = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let gltf = write_gltf(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let (jb, bin) = parse_glb(&glb);
@@ -608,7 +815,7 @@ pub(crate) mod tests {
     #[test]
     fn deterministic_bytes() {
         let meshes = meshes_of(&all_nine(), 16, MeshLayout::PerKind);
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None };
         let a = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let b = write_glb(&meshes_of(&all_nine(), 16, MeshLayout::PerKind), &meta, &mut Budget::new(Limits::default())).unwrap();
         assert_eq!(a, b);

@@ -328,6 +328,35 @@ pub struct Directives {
     pub linerule: Option<GroupId>,
     /// `normal x y z`: the local normal given to `VERTEX` (default 0 0 1).
     pub normal: Option<[f64; 3]>,
+    /// `stacksize N`: calls whose depth (nested rule calls) exceeds N are
+    /// silently not expanded, like `maxdepth` (seed 000 B.1 lists both).
+    pub stacksize: Option<u32>,
+    /// `fps N`: animation frames per second (transform rules emit one frame per tick).
+    pub fps: Option<f64>,
+    /// `duration T`: animation length in seconds, sampled at `fps`.
+    pub duration: Option<f64>,
+    /// `camerarule NAME`: the transform rule whose frames give the camera (view) path.
+    pub camerarule: Option<GroupId>,
+    /// `camerafov`, `cameranearplane`, `camerafarplane`: the camera's lens.
+    pub camera: CameraLens,
+}
+
+/// The camera's lens from `camerafov`, `cameranearplane` and `camerafarplane`
+/// (seed 000 B.1 gives the defaults 40°, 0.1 and 1000).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CameraLens {
+    /// Vertical field of view in degrees.
+    pub fov_degrees: f64,
+    /// Near clipping distance (> 0).
+    pub near: f64,
+    /// Far clipping distance (> near).
+    pub far: f64,
+}
+
+impl Default for CameraLens {
+    fn default() -> Self {
+        CameraLens { fov_degrees: 40.0, near: 0.1, far: 1000.0 }
+    }
 }
 
 /// The type of an `@param`.

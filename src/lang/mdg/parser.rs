@@ -19,22 +19,19 @@ pub const MAX_NESTING: u32 = 256;
 const LATER_DRAWABLES: [&str; 1] = ["DEBUG"];
 
 /// Top-level directives that are skipped (to the end of their line) with a warning.
-const SKIPPED_DIRECTIVES: [&str; 14] = [
+const SKIPPED_DIRECTIVES: [&str; 5] = [
     "uniform",
-    "camerarule",
-    "duration",
-    "fps",
-    "color",
-    "weight",
-    "stacksize",
-    "camerafov",
-    "cameranearplane",
-    "camerafarplane",
     "buffer",
     "invalidateskipframes",
     "cameramode",
     "render",
 ];
+
+/// The largest `fps` a grammar may set (frames are sampled per tick).
+pub const MAX_FPS: f64 = 240.0;
+
+/// The longest `duration` a grammar may set, in seconds.
+pub const MAX_DURATION: f64 = 3600.0;
 
 /// Adjustment keywords (case-sensitive); a bare name equal to one of these is never an argument.
 const ADJUST_WORDS: &[&str] = &[
@@ -124,6 +121,8 @@ pub(crate) struct Parser<'a> {
     group_refs: Vec<(GroupRef, &'a str, Span)>,
     /// `linerule NAME`, resolved at the end.
     linerule: Option<(&'a str, Span)>,
+    /// `camerarule NAME`, resolved at the end.
+    camerarule: Option<(&'a str, Span)>,
     /// `isosurface` declarations and their names.
     isosurfaces: Vec<Isosurface>,
     isosurface_index: HashMap<&'a str, u32>,
@@ -189,6 +188,7 @@ impl<'a> Parser<'a> {
             coords: false,
             group_refs: Vec::new(),
             linerule: None,
+            camerarule: None,
             isosurfaces: Vec::new(),
             isosurface_index: HashMap::new(),
         }
@@ -322,6 +322,13 @@ impl<'a> Parser<'a> {
         }
         if let Some((name, span)) = self.linerule {
             self.directives.linerule = Some(group_of(name, span)?);
+        }
+        if let Some((name, span)) = self.camerarule {
+            self.directives.camerarule = Some(group_of(name, span)?);
+        }
+        let lens = self.directives.camera;
+        if lens.far <= lens.near {
+            return Err(err(Span::new(1, 1), format!("camerafarplane ({}) must be beyond cameranearplane ({})", lens.far, lens.near)));
         }
         for (name, span, pending) in std::mem::take(&mut self.selectors) {
             let selector = match pending {
@@ -562,6 +569,45 @@ impl<'a> Parser<'a> {
             }
             "linerule" => {
                 self.linerule = Some(self.name_after("linerule")?);
+            }
+            "camerarule" => {
+                self.camerarule = Some(self.name_after("camerarule")?);
+            }
+            "stacksize" => {
+                let v = self.whole_value("stacksize", f64::from(u32::MAX))?;
+                self.directives.stacksize = Some(v as u32);
+            }
+            "fps" => {
+                let (v, span) = self.const_value("fps")?;
+                if !(v > 0.0 && v <= MAX_FPS) {
+                    return Err(err(span, format!("fps must be in (0, {MAX_FPS}], found {v}")));
+                }
+                self.directives.fps = Some(v);
+            }
+            "duration" => {
+                let (v, span) = self.const_value("duration")?;
+                if !(0.0..=MAX_DURATION).contains(&v) {
+                    return Err(err(span, format!("duration must be in [0, {MAX_DURATION}] seconds, found {v}")));
+                }
+                self.directives.duration = Some(v);
+            }
+            "camerafov" => {
+                let (v, span) = self.const_value("camerafov")?;
+                if !(v > 0.0 && v < 180.0) {
+                    return Err(err(span, format!("camerafov must be in (0, 180) degrees, found {v}")));
+                }
+                self.directives.camera.fov_degrees = v;
+            }
+            "cameranearplane" | "camerafarplane" => {
+                let (v, span) = self.const_value(word)?;
+                if !(v > 0.0) {
+                    return Err(err(span, format!("{word} must be > 0, found {v}")));
+                }
+                if lower == "cameranearplane" {
+                    self.directives.camera.near = v;
+                } else {
+                    self.directives.camera.far = v;
+                }
             }
             "normal" => {
                 let mut n = [0.0; 3];
