@@ -635,7 +635,12 @@ impl<'p, 'b> Machine<'p, 'b> {
                 if dirs.maxdepth.is_some_and(|m| ctx.depth > m) || dirs.stacksize.is_some_and(|m| ctx.depth > m) || dirs.minsize.is_some_and(|m| ctx.frame.scale < m) {
                     return Ok(());
                 }
-                self.budget.check_depth(ctx.depth)?;
+                // A transform rule sampled for animation may recurse once per
+                // frame (Listing 4.2's X2, C.3's CAMERARULE): its frame limit,
+                // the step budget and the charged stack bound it, not the depth.
+                if !self.capture.as_ref().is_some_and(|c| c.frame_limit.is_some()) {
+                    self.budget.check_depth(ctx.depth)?;
+                }
                 self.budget.charge_step()?;
                 let Some(group) = self.ev.program.groups.get(g as usize) else { return Ok(()) };
                 let Some(rule) = self.select(g, group, &ctx)? else { return Ok(()) };

@@ -81,6 +81,14 @@ pub struct NodeGraph {
     pub camera: Option<GraphCamera>,
 }
 
+/// One sample when every sample is the same (a node that does not move gets no channels).
+fn still_if_constant(mut samples: Vec<Trs>) -> Vec<Trs> {
+    if samples.windows(2).all(|w| w[0] == w[1]) {
+        samples.truncate(1);
+    }
+    samples
+}
+
 impl NodeGraph {
     /// Builds the graph of `rig` (bones → nodes; bone 0, the root, becomes no
     /// node) and `camera`, for meshes made per bone in the order `mesh_bones`.
@@ -102,7 +110,7 @@ impl NodeGraph {
                     name: bone.name.clone(),
                     // Bone b is node b − 1; the root bone 0 is no node.
                     parent: bone.parent.checked_sub(1),
-                    samples: (0..samples).map(|k| Trs::of(&rig.pose(b, k))).collect(),
+                    samples: still_if_constant((0..samples).map(|k| Trs::of(&rig.pose(b, k))).collect()),
                 });
             }
         }
@@ -110,7 +118,7 @@ impl NodeGraph {
             yfov: c.lens.fov_degrees.to_radians() as f32,
             znear: c.lens.near as f32,
             zfar: c.lens.far as f32,
-            samples: c.frames.iter().map(Trs::of_view).collect(),
+            samples: still_if_constant(c.frames.iter().map(Trs::of_view).collect()),
         });
         Ok(NodeGraph { nodes, mesh_nodes: mesh_bones.iter().map(|b| b.checked_sub(1)).collect(), times, camera })
     }

@@ -83,17 +83,20 @@ fn every_grammar_validates_and_loads_in_three_in_every_variant() {
                 render_to(&g, &again, extra);
                 assert!(std::fs::read(&again).expect("again") == bytes, "{name}.{suffix}: not deterministic");
             }
+            let animations = glb_json(&std::fs::read(&out).expect("output"))["animations"].as_array().map_or(0, Vec::len);
             files.push(out);
-            expected.push((format!("{name}.{suffix}"), plain_triangles));
+            expected.push((format!("{name}.{suffix}"), plain_triangles, animations));
         }
     }
-    for ((errors, warnings, report), (name, _)) in validate_gltf(&files).iter().zip(&expected) {
+    for ((errors, warnings, report), (name, _, _)) in validate_gltf(&files).iter().zip(&expected) {
         assert_eq!(*errors, 0, "{name}: {report}");
         assert_eq!(*warnings, 0, "{name}: {report}");
     }
     let Some(reports) = three_check(&files) else { return };
-    for (r, (name, plain)) in reports.iter().zip(&expected) {
+    for (r, (name, plain, animations)) in reports.iter().zip(&expected) {
         assert_eq!(r["ok"], true, "{name} does not load in three.js: {r}");
+        // Animated grammars (windmill) keep their animation through GLTFLoader.
+        assert_eq!(r["animations"].as_u64(), Some(*animations as u64), "{name}: {r}");
         let t = r["triangles"].as_u64().expect("triangles");
         if name.ends_with(".plain") {
             assert_eq!(t, *plain, "{name}: {r}");

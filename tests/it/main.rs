@@ -5,6 +5,7 @@
 mod common;
 
 mod cli;
+mod animation;
 mod compact;
 mod counts;
 mod determinism;
