@@ -45,6 +45,9 @@ struct Ctx {
     key: StreamKey,
     /// The animation bone the work belongs to (0: none; see [`Rig`]).
     bone: u32,
+    /// The namespace of the call that made this context (its pen and
+    /// continuation point; 0 is the global namespace).
+    ns: u32,
 }
 
 impl Ctx {
@@ -374,7 +377,7 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
         rig: animated.then(|| Rig::new(ev.timeline)),
         ..Scene::default()
     };
-    let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed), bone: 0 };
+    let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed), bone: 0, ns: 0 };
     let mut m = Machine::new(&ev, budget, scene, None, root.key);
     let mut result = m.run(ev.program.start, root);
     if result.is_ok() {
@@ -406,10 +409,10 @@ struct Machine<'p, 'b> {
     budget: &'b mut Budget,
     /// Calls so far per group, for sequential selection.
     sequence: Vec<u64>,
-    /// Frame of the last terminal drawn, where a continued call (`\`) starts.
-    last_terminal: Option<Frame>,
-    /// The swept-line pen.
-    pen: Pen,
+    /// Per namespace, the frame of the last terminal drawn, where a continued call (`\`) starts.
+    last_terminal: Vec<Option<Frame>>,
+    /// Per namespace, the swept-line pen.
+    pens: Vec<Pen>,
     /// Set while evaluating a path or profile rule: `FRAME` and `VERTEX` are collected here.
     capture: Option<Capture>,
     /// Paths and profiles already evaluated, by group.
@@ -459,8 +462,8 @@ impl<'p, 'b> Machine<'p, 'b> {
             charged_slots: 0,
             scene,
             budget,
-            last_terminal: None,
-            pen: Pen { start: Frame::IDENTITY, lifted: false, moveto: Frame::IDENTITY, open: None },
+            last_terminal: vec![None; ev.program.namespaces.count()],
+            pens: vec![Pen { start: Frame::IDENTITY, lifted: false, moveto: Frame::IDENTITY, open: None }; ev.program.namespaces.count()],
             capture,
             captured: HashMap::new(),
             profile_index: HashMap::new(),
@@ -532,12 +535,13 @@ impl<'p, 'b> Machine<'p, 'b> {
             Item::Call(call) => {
                 let key = ctx.key.child(call.site, 0);
                 let d = self.ev.delta(&call.adjust, call.site, key)?;
-                let base = match (call.continues, self.last_terminal) {
+                let ns = self.ev.program.namespaces.of(call.site);
+                let base = match (call.continues, self.last_terminal.get(ns as usize).copied().flatten()) {
                     (true, Some(frame)) => Ctx { frame, ..ctx },
                     _ => ctx,
                 };
                 let (frame, colour) = base.apply(&d);
-                let child = Ctx { frame, colour, depth: ctx.depth + 1, key, bone: ctx.bone };
+                let child = Ctx { frame, colour, depth: ctx.depth + 1, key, bone: ctx.bone, ns };
                 self.expand(call.target, child)
             }
             Item::Block(items) => {
@@ -606,7 +610,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                 colour[3] += 1.0;
                 self.scene.shape_instances.push(ShapeInstance { shape, frame: ctx.frame, colour: colour.map(|c| c.clamp(0.0, 1.0) as f32) });
                 self.tag(|r| &mut r.shape_instance_bone, ctx.bone)?;
-                self.last_terminal = Some(ctx.frame);
+                self.set_terminal(ctx.ns, ctx.frame);
                 Ok(())
             }
             Target::Primitive(kind) => {
@@ -623,7 +627,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                 colour[3] += 1.0;
                 instances.push(Instance::new(kind, &ctx.frame, colour));
                 self.tag(|r| &mut r.instance_bone, ctx.bone)?;
-                self.last_terminal = Some(ctx.frame);
+                self.set_terminal(ctx.ns, ctx.frame);
                 Ok(())
             }
             Target::Line(op, profile) => {
@@ -666,45 +670,69 @@ impl<'p, 'b> Machine<'p, 'b> {
         }
     }
 
-    /// Moves the pen (seed 000 §4.3): every operation is a terminal for continuation.
+    /// Records where the last terminal of namespace `ns` left off.
+    fn set_terminal(&mut self, ns: u32, frame: Frame) {
+        if let Some(t) = self.last_terminal.get_mut(ns as usize) {
+            *t = Some(frame);
+        }
+    }
+
+    /// Moves the pen of the call's namespace (seed 000 §4.3, §4.1.4): every
+    /// operation is a terminal for continuation.
     fn draw_line(&mut self, op: LineOp, profile: Option<GroupId>, ctx: &Ctx) -> Result<(), EvalError> {
+        let frame = ctx.frame;
+        let ns = (ctx.ns as usize).min(self.pens.len().saturating_sub(1));
+        let Some(mut pen) = self.pens.get(ns).copied() else { return Ok(()) };
+        let result = self.move_pen(&mut pen, op, profile, ctx);
+        if let Some(p) = self.pens.get_mut(ns) {
+            *p = pen;
+        }
+        result?;
+        if op != LineOp::Reset {
+            self.set_terminal(ctx.ns, frame);
+        }
+        Ok(())
+    }
+
+    /// One pen operation on `pen` (the pen of the call's namespace).
+    fn move_pen(&mut self, pen: &mut Pen, op: LineOp, profile: Option<GroupId>, ctx: &Ctx) -> Result<(), EvalError> {
         let frame = ctx.frame;
         match op {
             LineOp::MoveTo => {
-                self.pen = Pen { start: frame, lifted: false, moveto: frame, open: None };
+                *pen = Pen { start: frame, lifted: false, moveto: frame, open: None };
             }
             LineOp::NewLine => {
-                self.pen.open = None;
-                self.pen.lifted = true;
+                pen.open = None;
+                pen.lifted = true;
             }
             LineOp::Reset => {
-                self.pen.open = None;
-                self.pen.lifted = false;
-                self.pen.start = self.pen.moveto;
-                self.last_terminal = Some(self.pen.moveto);
+                pen.open = None;
+                pen.lifted = false;
+                pen.start = pen.moveto;
+                self.set_terminal(ctx.ns, pen.moveto);
                 return Ok(());
             }
-            LineOp::LineTo | LineOp::SLineTo | LineOp::BlendTo if self.pen.lifted => {
-                self.pen.lifted = false;
-                self.pen.start = frame;
+            LineOp::LineTo | LineOp::SLineTo | LineOp::BlendTo if pen.lifted => {
+                pen.lifted = false;
+                pen.start = frame;
             }
             LineOp::LineTo | LineOp::SLineTo | LineOp::BlendTo => {
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
                 let colour = colour.map(|c| c.clamp(0.0, 1.0) as f32);
-                let open = match self.pen.open {
+                let open = match pen.open {
                     Some(i) => i,
                     None => {
                         let profile = match profile.or(self.ev.program.directives.linerule) {
                             Some(g) => self.profile(g)?,
                             None => None,
                         };
-                        let start = LinePoint { frame: self.pen.start, colour };
+                        let start = LinePoint { frame: pen.start, colour };
                         self.charge_line_point(profile)?;
                         self.scene.lines.push(Polyline { points: vec![start], profile });
                         self.tag(|r| &mut r.line_bone, ctx.bone)?;
                         let i = self.scene.lines.len() - 1;
-                        self.pen.open = Some(i);
+                        pen.open = Some(i);
                         i
                     }
                 };
@@ -729,7 +757,6 @@ impl<'p, 'b> Machine<'p, 'b> {
                 line.points.push(point);
             }
         }
-        self.last_terminal = Some(frame);
         Ok(())
     }
 
@@ -774,7 +801,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                     normal: ctx.frame.transform_normal(local).normalize_or_zero(),
                     colour: colour.map(|c| c.clamp(0.0, 1.0) as f32),
                 });
-                self.last_terminal = Some(ctx.frame);
+                self.set_terminal(ctx.ns, ctx.frame);
             }
             Target::FaceNormals => {
                 let n = self.scene.vertices.len();
@@ -868,7 +895,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             return Ok(Rc::clone(c));
         }
         let key = self.root_key.child(CAPTURE_SLOT, u64::from(g));
-        let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key, bone: 0 };
+        let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key, bone: 0, ns: 0 };
         let capture = Capture { frame_limit, ..Capture::default() };
         let mut sub = Machine::new(self.ev, &mut *self.budget, Scene::default(), Some(capture), self.root_key);
         let result = sub.run(Target::Group(g), root);
@@ -1018,6 +1045,7 @@ mod tests {
             site_count,
             warnings: vec![],
             isosurfaces: vec![],
+            namespaces: Default::default(),
         }
     }
 

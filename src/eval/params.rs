@@ -46,7 +46,18 @@ pub fn bind_params(program: &Program, given: &BTreeMap<String, ParamValue>) -> R
         .map(|p| {
             let Some(raw) = given.get(&p.name) else { return Ok(p.default) };
             let bad = |message: String| EvalError::BadParam { name: p.name.clone(), message };
-            let v = raw.as_number().filter(|v| v.is_finite()).ok_or_else(|| bad(format!("{raw:?} is not a finite number")))?;
+            // A named choice (`@presets`) stands for its index.
+            let named = match raw {
+                ParamValue::Text(t) => p.choices.iter().position(|c| c == t.trim()).map(|i| i as f64),
+                _ => None,
+            };
+            let v = named
+                .or_else(|| raw.as_number())
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| match p.choices.is_empty() {
+                    true => bad(format!("{raw:?} is not a finite number")),
+                    false => bad(format!("{raw:?} is not one of {} (or their index)", p.choices.join(", "))),
+                })?;
             match p.kind {
                 ParamKind::Int if v.fract() != 0.0 => return Err(bad(format!("{v} is not a whole number"))),
                 ParamKind::Bool if v != 0.0 && v != 1.0 => return Err(bad(format!("{v} is not a boolean"))),

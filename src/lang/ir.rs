@@ -30,6 +30,31 @@ pub struct Program {
     pub warnings: Vec<super::Diagnostic>,
     /// `isosurface` declarations; [`Target::Isosurface`] indexes this.
     pub isosurfaces: Vec<Isosurface>,
+    /// Namespaces (seed 000 §4.1.4): each has its own line pen and its own
+    /// "last terminal" for continuation.
+    pub namespaces: Namespaces,
+}
+
+/// The namespaces of a program and which one each call site is written in.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Namespaces {
+    /// Namespace names; index 0 is the global namespace "". Empty when the
+    /// program uses no namespace (everything is global).
+    pub names: Vec<String>,
+    /// The namespace of each call site (indexed by site); empty when `names` is.
+    pub of_site: Vec<u32>,
+}
+
+impl Namespaces {
+    /// The namespace call site `site` draws and continues in (0: global).
+    pub fn of(&self, site: u32) -> u32 {
+        self.of_site.get(site as usize).copied().unwrap_or(0)
+    }
+
+    /// How many pens evaluation needs (at least the global one).
+    pub fn count(&self) -> usize {
+        self.names.len().max(1)
+    }
 }
 
 /// All rules that share one name; a call picks one of them with the group's selector.
@@ -381,6 +406,9 @@ pub struct ParamDecl {
     pub default: f64,
     /// Inclusive range, if declared.
     pub range: Option<(f64, f64)>,
+    /// Names of the values 0, 1, … (`@presets`): a request may give a name
+    /// instead of its index. Empty for ordinary parameters.
+    pub choices: Vec<String>,
     /// Where it is declared.
     pub span: Span,
 }

@@ -7,7 +7,7 @@ use crate::lang::Language;
 use serde::Serialize;
 use utoipa::ToSchema;
 
-include!(concat!(env!("OUT_DIR"), "/grammars.rs"));
+use crate::grammars::BUILTIN;
 
 /// One built-in grammar.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -3,7 +3,7 @@
 
 use super::lexer::{Tok, Token};
 use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
-use crate::lang::ir::{GroupId, Isosurface, LineOp, RuleTransform, Selector};
+use crate::lang::ir::{GroupId, Isosurface, LineOp, Namespaces, RuleTransform, Selector};
 use crate::lang::ir::{
     Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
     Program, Rule, RuleGroup, Target,
@@ -15,9 +15,6 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// Maximum nesting of blocks, iterator chains, parentheses and expression trees.
 pub const MAX_NESTING: u32 = 256;
 
-/// Drawables that belong to later issues.
-const LATER_DRAWABLES: [&str; 1] = ["DEBUG"];
-
 /// Top-level directives that are skipped (to the end of their line) with a warning.
 const SKIPPED_DIRECTIVES: [&str; 5] = [
     "uniform",
@@ -26,6 +23,9 @@ const SKIPPED_DIRECTIVES: [&str; 5] = [
     "cameramode",
     "render",
 ];
+
+/// The parameter `@presets` declares.
+pub const PRESET_PARAM: &str = "preset";
 
 /// The largest `fps` a grammar may set (frames are sampled per tick).
 pub const MAX_FPS: f64 = 240.0;
@@ -104,8 +104,9 @@ pub(crate) struct Parser<'a> {
     params: Vec<ParamDecl>,
     param_index: HashMap<&'a str, u32>,
     site: u32,
-    /// Unresolved call names with their sites, in increasing site order.
-    call_names: Vec<(u32, &'a str, Span)>,
+    /// Unresolved call names with their sites and the namespace they are
+    /// written in, in increasing site order.
+    call_names: Vec<(u32, &'a str, Span, Option<&'a str>)>,
     directives: Directives,
     startshape: Option<(&'a str, Span)>,
     warnings: Vec<Diagnostic>,
@@ -117,12 +118,23 @@ pub(crate) struct Parser<'a> {
     functions: HashMap<&'a str, Expr>,
     /// True while parsing a function of position, where `x`, `y`, `z` name coordinates.
     coords: bool,
-    /// Names to resolve to groups at the end: transform-rule paths and line profiles.
-    group_refs: Vec<(GroupRef, &'a str, Span)>,
+    /// Names to resolve to groups at the end: transform-rule paths and line
+    /// profiles, with the namespace they are written in.
+    group_refs: Vec<(GroupRef, &'a str, Span, Option<&'a str>)>,
     /// `linerule NAME`, resolved at the end.
     linerule: Option<(&'a str, Span)>,
     /// `camerarule NAME`, resolved at the end.
     camerarule: Option<(&'a str, Span)>,
+    /// The namespace being parsed (`namespace NS { … }`), if any.
+    namespace: Option<&'a str>,
+    /// Namespace names; index 0 is the global one, "".
+    namespace_names: Vec<String>,
+    /// The namespace of each call site that is not the global one.
+    site_namespace: Vec<(u32, u32)>,
+    /// Names of the colour adjustments (`color` renames R G B A).
+    colour_names: [&'a str; 4],
+    /// Names of the vertex-weight adjustments (`weight` renames u v w q).
+    weight_names: [&'a str; 4],
     /// `isosurface` declarations and their names.
     isosurfaces: Vec<Isosurface>,
     isosurface_index: HashMap<&'a str, u32>,
@@ -189,6 +201,11 @@ impl<'a> Parser<'a> {
             group_refs: Vec::new(),
             linerule: None,
             camerarule: None,
+            namespace: None,
+            namespace_names: vec![String::new()],
+            site_namespace: Vec::new(),
+            colour_names: ["R", "G", "B", "A"],
+            weight_names: ["u", "v", "w", "q"],
             isosurfaces: Vec::new(),
             isosurface_index: HashMap::new(),
         }
@@ -287,19 +304,19 @@ impl<'a> Parser<'a> {
         };
         // Resolve call targets, in site order for a stable first error.
         let mut targets: Vec<Option<Target>> = vec![None; self.site as usize];
-        for &(site, name, span) in &self.call_names {
+        for &(site, name, span, ns) in &self.call_names {
             if let Some(slot) = targets.get_mut(site as usize) {
-                *slot = Some(self.resolve(name, span)?);
+                *slot = Some(self.resolve_in(ns, name, span)?);
             }
         }
         let mut groups = std::mem::take(&mut self.groups);
-        let group_of = |name: &str, span: Span| match self.group_index.get(name) {
-            Some(&g) => Ok(g),
+        let group_of = |ns: Option<&str>, name: &str, span: Span| match self.group_in(ns, name) {
+            Some(g) => Ok(g),
             None => Err(err(span, format!("unknown rule `{name}`"))),
         };
         let mut profiles: Vec<Option<GroupId>> = vec![None; self.site as usize];
-        for &(r, name, span) in &self.group_refs {
-            let g = group_of(name, span)?;
+        for &(r, name, span, ns) in &self.group_refs {
+            let g = group_of(ns, name, span)?;
             match r {
                 GroupRef::Path { group, rule, index } => {
                     let slot = groups
@@ -320,12 +337,10 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        if let Some((name, span)) = self.linerule {
-            self.directives.linerule = Some(group_of(name, span)?);
-        }
-        if let Some((name, span)) = self.camerarule {
-            self.directives.camerarule = Some(group_of(name, span)?);
-        }
+        let linerule = self.linerule.map(|(name, span)| group_of(None, name, span)).transpose()?;
+        let camerarule = self.camerarule.map(|(name, span)| group_of(None, name, span)).transpose()?;
+        self.directives.linerule = linerule;
+        self.directives.camerarule = camerarule;
         let lens = self.directives.camera;
         if lens.far <= lens.near {
             return Err(err(Span::new(1, 1), format!("camerafarplane ({}) must be beyond cameranearplane ({})", lens.far, lens.near)));
@@ -356,7 +371,42 @@ impl<'a> Parser<'a> {
             site_count: self.site,
             warnings: self.warnings,
             isosurfaces: self.isosurfaces,
+            namespaces: namespace_table(self.namespace_names, &self.site_namespace, self.site),
         })
+    }
+
+    /// The group `name` names when written in namespace `ns`: `ns.name`
+    /// first, then the global `name` (a qualified `a.B` is looked up as is).
+    fn group_in(&self, ns: Option<&str>, name: &str) -> Option<u32> {
+        if let Some(ns) = ns.filter(|_| !name.contains('.')) {
+            if let Some(&g) = self.group_index.get(&format!("{ns}.{name}")) {
+                return Some(g);
+            }
+        }
+        self.group_index.get(name).copied()
+    }
+
+    /// [`Self::resolve`] for a call written in namespace `ns`.
+    fn resolve_in(&self, ns: Option<&str>, name: &str, span: Span) -> PResult<Target> {
+        match self.group_in(ns, name) {
+            Some(g) => Ok(Target::Group(g)),
+            None => self.resolve(name, span),
+        }
+    }
+
+    /// The index of namespace `name` (declared or only referenced, as `X.LINETO` may).
+    fn namespace_id(&mut self, name: &str, span: Span) -> PResult<u32> {
+        if let Some(i) = self.namespace_names.iter().position(|n| n == name) {
+            return Ok(i as u32);
+        }
+        let i = u32::try_from(self.namespace_names.len()).map_err(|_| err(span, "too many namespaces"))?;
+        self.namespace_names.push(name.to_string());
+        Ok(i)
+    }
+
+    /// Whether `w` is an adjustment keyword (under the current colour and weight names).
+    fn is_adjust_word(&self, w: &str) -> bool {
+        ADJUST_WORDS.contains(&w) || self.colour_names.contains(&w) || self.weight_names.contains(&w)
     }
 
     fn resolve(&self, name: &str, span: Span) -> PResult<Target> {
@@ -390,6 +440,7 @@ impl<'a> Parser<'a> {
         let r = match word.to_ascii_lowercase().as_str() {
             "define" => self.define(t.span),
             "param" => self.param(t.span),
+            "presets" => self.presets(t.span),
             _ => Err(err(t.span, format!("unexpected `@{word}`"))),
         };
         r?;
@@ -438,6 +489,41 @@ impl<'a> Parser<'a> {
         }
     }
 
+    /// `@presets a b c`: named presets (seed 000 B.2). Declares the int
+    /// parameter `preset` (0 ..= n − 1, default 0, the first) and each name
+    /// as the constant of its index, so a grammar reads e.g. `preset == b`
+    /// or `preset * { … }`, and a request picks `preset=b` by name.
+    fn presets(&mut self, span: Span) -> PResult<()> {
+        if self.param_index.contains_key(PRESET_PARAM) || self.defines.contains_key(PRESET_PARAM) {
+            return Err(err(span, format!("`{PRESET_PARAM}` is already defined (one `@presets` per grammar)")));
+        }
+        let mut names: Vec<&'a str> = Vec::new();
+        while self.peek().tok != Tok::Eof {
+            let (n, nspan) = self.name_after("@presets")?;
+            if names.contains(&n) || self.defines.contains_key(n) || self.param_index.contains_key(n) {
+                return Err(err(nspan, format!("preset name `{n}` is already defined")));
+            }
+            names.push(n);
+        }
+        if names.is_empty() {
+            return Err(err(span, "expected preset names after `@presets`"));
+        }
+        for (i, n) in names.iter().enumerate() {
+            self.defines.insert(n, Define { expr: num(i as f64) });
+        }
+        let index = u32::try_from(self.params.len()).map_err(|_| err(span, "too many @params"))?;
+        self.params.push(ParamDecl {
+            name: PRESET_PARAM.to_string(),
+            kind: ParamKind::Int,
+            default: 0.0,
+            range: Some((0.0, (names.len() - 1) as f64)),
+            span,
+            choices: names.iter().map(|n| n.to_string()).collect(),
+        });
+        self.param_index.insert(PRESET_PARAM, index);
+        Ok(())
+    }
+
     fn param(&mut self, span: Span) -> PResult<()> {
         let kt = self.bump();
         let kind = match kt.tok {
@@ -482,7 +568,7 @@ impl<'a> Parser<'a> {
             range = Some((lo, hi));
         }
         let index = u32::try_from(self.params.len()).map_err(|_| err(span, "too many @params"))?;
-        self.params.push(ParamDecl { name: name.to_string(), kind, default, range, span });
+        self.params.push(ParamDecl { name: name.to_string(), kind, default, range, span, choices: Vec::new() });
         self.param_index.insert(name, index);
         Ok(())
     }
@@ -658,7 +744,20 @@ impl<'a> Parser<'a> {
                 self.warnings.push(Diagnostic::warning(t.span, format!("`{word}` ignored: not supported yet")));
             }
             "isosurface" => self.isosurface(t.span)?,
-            "namespace" => return Err(err(t.span, format!("not supported yet: `{word}`"))),
+            "namespace" => self.namespace_block(t.span)?,
+            "color" | "colour" | "weight" => {
+                // Renames adjustments from here on (text parsed earlier, such as
+                // imported rules, keeps the names it was written with).
+                let mut names = [""; 4];
+                for n in &mut names {
+                    *n = self.name_after(word)?.0;
+                }
+                if lower == "weight" {
+                    self.weight_names = names;
+                } else {
+                    self.colour_names = names;
+                }
+            }
             w if SKIPPED_DIRECTIVES.contains(&w) => {
                 let stop = self.line_end(self.pos.saturating_sub(1));
                 while self.pos < stop && !self.is_punct('{') {
@@ -759,8 +858,40 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
+    /// `namespace NS { rules and directives }`: rule names get the prefix
+    /// `NS.`; calls inside find `NS.NAME` before a global `NAME`.
+    fn namespace_block(&mut self, span: Span) -> PResult<()> {
+        if self.namespace.is_some() {
+            return Err(err(span, "namespaces do not nest"));
+        }
+        let (ns, nspan) = self.name_after("namespace")?;
+        if ns.contains('.') {
+            return Err(err(nspan, format!("namespace name `{ns}` may not contain `.`")));
+        }
+        self.namespace_id(ns, nspan)?;
+        self.expect_punct('{', || format!("after `namespace {ns}`"))?;
+        self.namespace = Some(ns);
+        loop {
+            let t = self.peek();
+            match t.tok {
+                Tok::Punct('}') => {
+                    self.bump();
+                    break;
+                }
+                Tok::Eof => return Err(err(span, format!("`{{` of namespace `{ns}` is not closed"))),
+                Tok::At(w) => self.preprocessor_line(w, t)?,
+                Tok::Ident(w) => self.directive(w, t)?,
+                other => return Err(err(t.span, format!("expected `rule` or a directive in namespace `{ns}`, found {other}"))),
+            }
+        }
+        self.namespace = None;
+        Ok(())
+    }
+
     fn rule(&mut self, span: Span) -> PResult<()> {
-        let (name, _) = self.name_after("rule")?;
+        let (short, _) = self.name_after("rule")?;
+        let qualified = self.namespace.map(|ns| format!("{ns}.{short}"));
+        let name: &str = qualified.as_deref().unwrap_or(short);
         let mut weight = 1.0;
         let mut paths: Vec<(&'a str, Span)> = Vec::new();
         let mut convolve = false;
@@ -807,7 +938,7 @@ impl<'a> Parser<'a> {
         if let Some(g) = self.groups.get_mut(id as usize) {
             let rule = g.rules.len();
             for (index, (p, pspan)) in paths.into_iter().enumerate() {
-                self.group_refs.push((GroupRef::Path { group: id, rule, index }, p, pspan));
+                self.group_refs.push((GroupRef::Path { group: id, rule, index }, p, pspan, self.namespace));
             }
             g.rules.push(Rule { weight, transform, body, span });
         }
@@ -873,7 +1004,12 @@ impl<'a> Parser<'a> {
         let Tok::Ident(name) = t.tok else {
             return Err(err(t.span, format!("expected a rule call, found {}", t.tok)));
         };
-        let line_op = match name.to_ascii_uppercase().as_str() {
+        // `NS.LINETO` draws with namespace NS's pen (seed 000 §4.1.4).
+        let (prefix, base) = match name.rsplit_once('.') {
+            Some((p, b)) => (Some(p), b),
+            None => (None, name),
+        };
+        let line_op = match base.to_ascii_uppercase().as_str() {
             "MOVETO" => Some(LineOp::MoveTo),
             "LINETO" | "ALINETO" => Some(LineOp::LineTo),
             "SLINETO" => Some(LineOp::SLineTo),
@@ -882,10 +1018,17 @@ impl<'a> Parser<'a> {
             "RESET" => Some(LineOp::Reset),
             _ => None,
         };
-        let base = name.rsplit('.').next().unwrap_or(name);
-        if line_op.is_none() && LATER_DRAWABLES.iter().any(|d| d.eq_ignore_ascii_case(base)) {
-            return Err(err(t.span, format!("not supported yet: drawable `{name}`")));
+        if line_op.is_none() && base.eq_ignore_ascii_case("DEBUG") {
+            // Debug output of the thesis's viewer: no geometry.
+            self.expect_punct('{', || format!("after `{name}`"))?;
+            self.adjustments('}')?;
+            self.warnings.push(Diagnostic::warning(t.span, format!("`{name}` ignored: debug output draws nothing")));
+            return Ok(Item::Block(Vec::new()));
         }
+        let namespace = match (line_op, prefix) {
+            (Some(_), Some(p)) => Some(p),
+            _ => self.namespace,
+        };
         let mut profile = None;
         if line_op.is_some() {
             if let Tok::Ident(p) = self.peek().tok {
@@ -894,6 +1037,10 @@ impl<'a> Parser<'a> {
         }
         self.expect_punct('{', || format!("after rule name `{name}`"))?;
         let site = self.next_site(t.span)?;
+        if let Some(ns) = namespace {
+            let id = self.namespace_id(ns, t.span)?;
+            self.site_namespace.push((site, id));
+        }
         let adjust = self.adjustments('}')?;
         let special = match name.to_ascii_uppercase().as_str() {
             "VERTEX" => Some(Target::Vertex),
@@ -904,13 +1051,13 @@ impl<'a> Parser<'a> {
         let target = match (line_op, special) {
             (Some(op), _) => {
                 if let Some((p, pspan)) = profile {
-                    self.group_refs.push((GroupRef::Profile { site }, p, pspan));
+                    self.group_refs.push((GroupRef::Profile { site }, p, pspan, self.namespace));
                 }
                 Target::Line(op, None)
             }
             (None, Some(t)) => t,
             (None, None) => {
-                self.call_names.push((site, name, t.span));
+                self.call_names.push((site, name, t.span, self.namespace));
                 Target::Primitive(PrimitiveKind::Box)
             }
         };
@@ -965,6 +1112,17 @@ impl<'a> Parser<'a> {
                 other => return Err(err(t.span, format!("expected an adjustment or `{close}`, found {other}"))),
             };
             let span = t.span;
+            // Colour and weight adjustments go by their (renamable) names first.
+            if let Some(channel) = self.colour_names.iter().position(|n| *n == word) {
+                let d = self.arg(Ctx::Plain, What::After(word))?;
+                out.push(Adjust { op: AdjustOp::Colour { channel: channel as u8, delta: d.e }, span });
+                continue;
+            }
+            if self.weight_names.contains(&word) {
+                self.arg(Ctx::Plain, What::After(word))?;
+                self.warnings.push(Diagnostic::warning(span, format!("vertex weight `{word}` ignored: weights only feed the thesis's shaders")));
+                continue;
+            }
             let mut push = |op: AdjustOp| out.push(Adjust { op, span });
             let rot = |axis, angle: E| AdjustOp::Rotate { axis, angle: angle.e };
             match word {
@@ -1039,17 +1197,10 @@ impl<'a> Parser<'a> {
                     };
                     push(AdjustOp::Reflect(n.map(Expr::Num)));
                 }
-                "R" | "G" | "B" | "A" => {
-                    let channel = match word {
-                        "R" => 0,
-                        "G" => 1,
-                        "B" => 2,
-                        _ => 3,
-                    };
-                    let d = self.arg(Ctx::Plain, What::After(word))?;
-                    push(AdjustOp::Colour { channel, delta: d.e });
+                "R" | "G" | "B" | "A" | "u" | "v" | "w" | "q" => {
+                    return Err(err(span, format!("unknown adjustment `{word}`: renamed by a `color` or `weight` directive")));
                 }
-                "u" | "v" | "w" | "q" | "fps" => {
+                "fps" => {
                     self.arg(Ctx::Plain, What::After(word))?;
                     self.warnings.push(Diagnostic::warning(span, format!("adjustment `{word}` ignored: not supported yet")));
                 }
@@ -1069,7 +1220,7 @@ impl<'a> Parser<'a> {
         match self.peek().tok {
             Tok::Num { .. } | Tok::Punct('(') | Tok::Punct('-') => true,
             Tok::Ident(w) => {
-                !ADJUST_WORDS.contains(&w)
+                !self.is_adjust_word(w)
                     && (self.is_value_name(w) || (w == "rand" || Func::from_name(w).is_some()) && self.peek2().tok == Tok::Punct('('))
             }
             _ => false,
@@ -1115,7 +1266,7 @@ impl<'a> Parser<'a> {
                 self.neg(inner, t.span)
             }
             Tok::Num { .. } | Tok::Punct('(') => self.primary(ctx),
-            Tok::Ident(w) if !ADJUST_WORDS.contains(&w) || self.is_value_name(w) => self.primary(ctx),
+            Tok::Ident(w) if !self.is_adjust_word(w) || self.is_value_name(w) => self.primary(ctx),
             other => Err(err(t.span, format!("expected a number {what}, found {other}"))),
         }
     }
@@ -1322,6 +1473,21 @@ fn set_targets(items: &mut [Item], targets: &[Option<Target>], profiles: &[Optio
 }
 
 /// Finds the first top-level `angle MODE` so that it applies to the whole file.
+/// The program's namespace table: names, and each call site's namespace
+/// (left empty when the source declares and references no namespace).
+fn namespace_table(names: Vec<String>, site_namespace: &[(u32, u32)], sites: u32) -> Namespaces {
+    if names.len() <= 1 {
+        return Namespaces::default();
+    }
+    let mut of_site = vec![0; sites as usize];
+    for &(site, ns) in site_namespace {
+        if let Some(slot) = of_site.get_mut(site as usize) {
+            *slot = ns;
+        }
+    }
+    Namespaces { names, of_site }
+}
+
 fn prescan_angle(toks: &[Token]) -> AngleMode {
     let mut level = 0i64;
     let mut prev: Option<Tok> = None;

@@ -62,6 +62,8 @@ struct Macro {
 }
 
 struct State {
+    /// Built-in grammars being imported, outermost first (cycle detection).
+    imports: Vec<String>,
     names: HashSet<String>,
     macros: HashMap<String, Macro>,
     out: Preprocessed,
@@ -91,6 +93,7 @@ fn is_word_char(c: char) -> bool {
 /// Runs the preprocessor over `text`.
 pub fn preprocess(text: &str) -> Result<Preprocessed, ParseError> {
     let mut st = State {
+        imports: Vec::new(),
         names: HashSet::new(),
         macros: HashMap::new(),
         out: Preprocessed::default(),
@@ -277,9 +280,16 @@ fn run(st: &mut State, lines: &[(u32, ColMap, &str)], depth: usize) -> Result<()
                 // Passed through for the parser; columns stay exact.
                 emit(st, ln, map, code, dspan)?;
             }
-            "import" | "presets" => {
-                st.out.warnings.push(Diagnostic::warning(dspan, format!("`@{directive}` ignored: not supported")));
+            "presets" => emit(st, ln, map, code, dspan)?,
+            "import" => {
                 emit(st, ln, map, "", dspan)?;
+                let names: Vec<&str> = words.collect();
+                if names.is_empty() {
+                    return Err(err(dspan, "expected a built-in grammar name after `@import`"));
+                }
+                for name in names {
+                    import(st, name, dspan, depth)?;
+                }
             }
             "expand" => expand_inline(st, ln, map, raw, comment_at, depth)?,
             "endmacro" => return Err(err(dspan, "`@endmacro` without `@macro`")),
@@ -291,6 +301,42 @@ fn run(st: &mut State, lines: &[(u32, ColMap, &str)], depth: usize) -> Result<()
         return Err(err(c.span, "`@ifdef` is not closed by `@endif`"));
     }
     Ok(())
+}
+
+/// Most nested `@import`s (a grammar importing one that imports …).
+pub const MAX_IMPORT_DEPTH: usize = 8;
+
+/// `@import NAME`: the built-in grammar `grammars/NAME.mdg`, preprocessed in
+/// place, without its `startshape` lines (the importer's start applies).
+/// Only the embedded library can be imported, never a path: a request must
+/// not read the server's files. Every line it adds reports the `@import`'s
+/// position in errors.
+fn import(st: &mut State, name: &str, span: Span, depth: usize) -> Result<(), ParseError> {
+    let stem = name.strip_suffix(".mdg").unwrap_or(name);
+    if stem.is_empty() || !stem.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_') {
+        return Err(err(span, format!("`@import {name}`: only built-in grammars (names from grammars/, such as `gem`) can be imported")));
+    }
+    let Some(source) = crate::grammars::source(stem) else {
+        return Err(err(span, format!("`@import {name}`: no built-in grammar `{stem}` (GET /v1/grammars lists them)")));
+    };
+    if st.imports.iter().any(|i| i == stem) {
+        return Err(err(span, format!("`@import {stem}` imports itself (through {})", st.imports.join(" → "))));
+    }
+    if st.imports.len() >= MAX_IMPORT_DEPTH {
+        return Err(err(span, format!("imports nested deeper than {MAX_IMPORT_DEPTH}")));
+    }
+    let map = ColMap::Fixed(span.column);
+    let lines: Vec<(u32, ColMap, &str)> = source
+        .split('\n')
+        .map(|l| {
+            let starts = l.trim_start().get(..10).is_some_and(|w| w.eq_ignore_ascii_case("startshape"));
+            (span.line, map, if starts { "" } else { l })
+        })
+        .collect();
+    st.imports.push(stem.to_string());
+    let result = run(st, &lines, depth);
+    st.imports.pop();
+    result
 }
 
 fn parse_macro_header(h: &str, span: Span) -> Result<(String, Vec<String>), ParseError> {

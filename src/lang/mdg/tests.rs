@@ -102,6 +102,7 @@ fn parses_the_basic_example_into_exact_ir() {
         site_count: 2,
         warnings: vec![],
         isosurfaces: vec![],
+        namespaces: Default::default(),
     };
     assert_eq!(p, expected);
 }
@@ -306,9 +307,9 @@ fn preprocessor_define_param_ifdef_macro() {
     assert_eq!(
         p.params,
         vec![
-            ParamDecl { name: "n".into(), kind: ParamKind::Int, default: 3.0, range: Some((1.0, 10.0)), span: Span::new(1, 1) },
-            ParamDecl { name: "size".into(), kind: ParamKind::Float, default: 0.5, range: None, span: Span::new(2, 1) },
-            ParamDecl { name: "flag".into(), kind: ParamKind::Bool, default: 1.0, range: None, span: Span::new(3, 1) },
+            ParamDecl { name: "n".into(), kind: ParamKind::Int, default: 3.0, range: Some((1.0, 10.0)), span: Span::new(1, 1), choices: vec![] },
+            ParamDecl { name: "size".into(), kind: ParamKind::Float, default: 0.5, range: None, span: Span::new(2, 1), choices: vec![] },
+            ParamDecl { name: "flag".into(), kind: ParamKind::Bool, default: 1.0, range: None, span: Span::new(3, 1), choices: vec![] },
         ]
     );
     let Item::Iterate(it) = &body(&p, 0, 0)[0] else { panic!() };
