@@ -8,6 +8,7 @@ mod cli;
 mod animation;
 mod compact;
 mod counts;
+mod directives;
 mod determinism;
 mod docs;
 mod gallery;
