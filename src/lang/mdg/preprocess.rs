@@ -309,15 +309,21 @@ pub const MAX_IMPORT_DEPTH: usize = 8;
 /// `@import NAME`: the built-in grammar `grammars/NAME.mdg`, preprocessed in
 /// place, without its `startshape` lines (the importer's start applies).
 /// Only the embedded library can be imported, never a path: a request must
-/// not read the server's files. Every line it adds reports the `@import`'s
-/// position in errors.
+/// not read the server's files; any other name is ignored with a warning.
+/// Every line it adds reports the `@import`'s position in errors.
 fn import(st: &mut State, name: &str, span: Span, depth: usize) -> Result<(), ParseError> {
     let stem = name.strip_suffix(".mdg").unwrap_or(name);
-    if stem.is_empty() || !stem.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_') {
-        return Err(err(span, format!("`@import {name}`: only built-in grammars (names from grammars/, such as `gem`) can be imported")));
-    }
-    let Some(source) = crate::grammars::source(stem) else {
-        return Err(err(span, format!("`@import {name}`: no built-in grammar `{stem}` (GET /v1/grammars lists them)")));
+    let builtin = (!stem.is_empty() && stem.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_'))
+        .then(|| crate::grammars::source(stem))
+        .flatten();
+    let Some(source) = builtin else {
+        // The thesis imports its own projects (C.5: `@import projects/basic-shaders`,
+        // shader libraries): not geometry, and never read from disk here.
+        st.out.warnings.push(Diagnostic::warning(
+            span,
+            format!("`@import {name}` ignored: only built-in grammars (GET /v1/grammars, e.g. `gem`) can be imported"),
+        ));
+        return Ok(());
     };
     if st.imports.iter().any(|i| i == stem) {
         return Err(err(span, format!("`@import {stem}` imports itself (through {})", st.imports.join(" → "))));
