@@ -4,6 +4,7 @@
 pub mod budget;
 pub mod evaluator;
 pub mod frame;
+pub mod hierarchy;
 pub mod params;
 pub mod rng;
 pub mod scene;

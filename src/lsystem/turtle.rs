@@ -15,6 +15,8 @@
 use super::derive::ModuleString;
 use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
 use crate::eval::frame::Frame;
+use crate::eval::hierarchy::LeafShape;
+use crate::lang::ir::PrimitiveKind;
 use crate::eval::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
 use crate::eval::EvalError;
 use crate::geom::{primitives, sweep};
@@ -29,7 +31,7 @@ pub const WIDTH_DECREMENT: f64 = 0.7;
 
 /// What a symbol does to the turtle.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Action {
+pub(crate) enum Action {
     Draw,
     Move,
     /// Local rotation: axis (0 = x, 1 = y, 2 = z) and sign.
@@ -44,7 +46,8 @@ enum Action {
     None,
 }
 
-fn action(name: &str) -> Action {
+/// The action of the symbol called `name`.
+pub(crate) fn action(name: &str) -> Action {
     match name {
         "F" => Action::Draw,
         "f" => Action::Move,
@@ -89,6 +92,21 @@ pub struct Drawing {
     pub promised: u64,
 }
 
+/// A segment recorded instead of drawn (leaf mode, for instancing): the
+/// turtle's pose at its start, its look and its colour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Leaf {
+    /// Position at the segment's start.
+    pub pos: DVec3,
+    /// Orientation (heading is local +Y).
+    pub rot: DQuat,
+    /// The primitive in the start frame: a cylinder of the width for tubes,
+    /// the `shape:` primitive scaled by the length otherwise.
+    pub shape: LeafShape,
+    /// Linear RGBA in 0..=255.
+    pub colour: [u8; 4],
+}
+
 #[derive(Debug, Clone, Copy)]
 struct State {
     pos: DVec3,
@@ -101,9 +119,19 @@ struct State {
 
 const STATE_BYTES: u64 = std::mem::size_of::<State>() as u64;
 
-fn arg(s: &ModuleString, i: usize, k: usize) -> Option<f64> {
-    s.params_of(i).get(k).copied()
+/// The local rotation of a turn action: about axis `axis` (0 = x, 1 = y, 2 = z)
+/// by `sign` times `degrees`.
+pub(crate) fn turn_quat(axis: u8, sign: f64, degrees: f64) -> DQuat {
+    let a = sign * degrees.to_radians();
+    match axis {
+        0 => DQuat::from_rotation_x(a),
+        1 => DQuat::from_rotation_y(a),
+        _ => DQuat::from_rotation_z(a),
+    }
 }
+
+/// A sink the modules of a string are fed into, one at a time, in string order.
+pub type ModuleSink<'s> = dyn FnMut(u32, &[f64]) -> Result<(), EvalError> + 's;
 
 fn non_finite(what: &str, v: f64) -> EvalError {
     EvalError::NonFinite { span: Span::default(), what: what.to_string(), value: format!("{v}") }
@@ -111,6 +139,22 @@ fn non_finite(what: &str, v: f64) -> EvalError {
 
 /// Interprets `s` into a scene under `budget`.
 pub fn interpret(sys: &LSystem, s: &ModuleString, opts: &TurtleOptions, budget: &mut Budget) -> Result<Drawing, EvalError> {
+    interpret_stream(sys, opts, budget, &mut |sink| {
+        for i in 0..s.len() {
+            sink(s.syms[i], s.params_of(i))?;
+        }
+        Ok(())
+    })
+}
+
+/// Interprets the modules `feed` hands to its sink, in order, as if they were
+/// one string: how an instancing DAG is drawn without ever building its string.
+pub fn interpret_stream(
+    sys: &LSystem,
+    opts: &TurtleOptions,
+    budget: &mut Budget,
+    feed: &mut dyn FnMut(&mut ModuleSink<'_>) -> Result<(), EvalError>,
+) -> Result<Drawing, EvalError> {
     let mut t = Turtle {
         sys,
         opts,
@@ -119,8 +163,9 @@ pub fn interpret(sys: &LSystem, s: &ModuleString, opts: &TurtleOptions, budget: 
         stack: Vec::new(),
         state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width: sys.width, colour: DEFAULT_COLOUR, line: None },
         point_tris: sweep::per_point_bound(sweep::profile_sides(opts.detail)).1,
+        leaves: None,
     };
-    let result = t.run(s, budget);
+    let result = feed(&mut |sym, p| t.module(sym, p, budget));
     budget.release_memory((t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
     match result {
         Ok(()) => {}
@@ -140,78 +185,129 @@ struct Turtle<'a> {
     stack: Vec<State>,
     state: State,
     point_tris: u64,
+    /// In leaf mode, the segments recorded instead of drawn.
+    leaves: Option<Vec<Leaf>>,
+}
+
+/// A turtle in leaf mode: it records each segment as a [`Leaf`] in its own
+/// start frame instead of drawing, and can be moved by a sub-object's end
+/// state, so one subtree of a derivation becomes one reusable object.
+pub(crate) struct LeafTurtle<'a> {
+    t: Turtle<'a>,
+}
+
+impl<'a> LeafTurtle<'a> {
+    /// A turtle at the origin with the given inherited width and colour.
+    pub(crate) fn new(sys: &'a LSystem, opts: &'a TurtleOptions, width: f64, colour: [f64; 4]) -> LeafTurtle<'a> {
+        LeafTurtle {
+            t: Turtle {
+                sys,
+                opts,
+                actions: sys.symbols.iter().map(|n| action(n)).collect(),
+                drawing: Drawing::default(),
+                stack: Vec::new(),
+                state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width, colour, line: None },
+                point_tris: 0,
+                leaves: Some(Vec::new()),
+            },
+        }
+    }
+
+    /// Interprets one module.
+    pub(crate) fn module(&mut self, sym: u32, p: &[f64], budget: &mut Budget) -> Result<(), EvalError> {
+        self.t.module(sym, p, budget)
+    }
+
+    /// The segments recorded since the last call.
+    pub(crate) fn take_leaves(&mut self) -> Vec<Leaf> {
+        self.t.leaves.as_mut().map(std::mem::take).unwrap_or_default()
+    }
+
+    /// Position and orientation.
+    pub(crate) fn pose(&self) -> (DVec3, DQuat) {
+        (self.t.state.pos, self.t.state.rot)
+    }
+
+    /// Width and colour, which a sub-object inherits.
+    pub(crate) fn inherited(&self) -> (f64, [f64; 4]) {
+        (self.t.state.width, self.t.state.colour)
+    }
+
+    /// Moves by a sub-object's end state: `pos` and `rot` relative to the
+    /// current pose, and the width and colour it ended with.
+    pub(crate) fn follow(&mut self, pos: DVec3, rot: DQuat, width: f64, colour: [f64; 4]) {
+        let st = &mut self.t.state;
+        st.pos += st.rot * pos;
+        st.rot = (st.rot * rot).normalize();
+        st.width = width;
+        st.colour = colour;
+    }
+
+    /// Open brackets not closed yet.
+    pub(crate) fn depth(&self) -> usize {
+        self.t.stack.len()
+    }
 }
 
 impl Turtle<'_> {
-    fn run(&mut self, s: &ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
-        for i in 0..s.len() {
-            let act = self.actions.get(s.syms[i] as usize).copied().unwrap_or(Action::None);
-            match act {
-                Action::Draw => {
-                    let len = arg(s, i, 0).unwrap_or(self.sys.length);
-                    if let Some(w) = arg(s, i, 1) {
-                        self.state.width = w;
-                    }
-                    self.draw(len, budget)?;
+    fn module(&mut self, sym: u32, p: &[f64], budget: &mut Budget) -> Result<(), EvalError> {
+        let arg = |k: usize| p.get(k).copied();
+        match self.actions.get(sym as usize).copied().unwrap_or(Action::None) {
+            Action::Draw => {
+                let len = arg(0).unwrap_or(self.sys.length);
+                if let Some(w) = arg(1) {
+                    self.state.width = w;
                 }
-                Action::Move => {
-                    let len = arg(s, i, 0).unwrap_or(self.sys.length);
-                    self.advance(len)?;
-                    self.state.line = None;
-                }
-                Action::Turn(axis, sign) => {
-                    let a = sign * arg(s, i, 0).unwrap_or(self.sys.angle).to_radians();
-                    let q = match axis {
-                        0 => DQuat::from_rotation_x(a),
-                        1 => DQuat::from_rotation_y(a),
-                        _ => DQuat::from_rotation_z(a),
-                    };
-                    self.turn(q);
-                }
-                Action::TurnAround => self.turn(DQuat::from_rotation_z(std::f64::consts::PI)),
-                Action::Push => {
-                    if self.stack.len() == self.stack.capacity() {
-                        let extra = self.stack.capacity().max(16);
-                        budget.reserve_memory((extra as u64).saturating_mul(STATE_BYTES))?;
-                        self.stack.reserve_exact(extra);
-                    }
-                    self.stack.push(self.state);
-                    self.state.line = None;
-                }
-                Action::Pop => {
-                    // An unbalanced `]` is ignored.
-                    if let Some(st) = self.stack.pop() {
-                        self.state = st;
-                    }
-                }
-                Action::Width => {
-                    self.state.width = match arg(s, i, 0) {
-                        Some(w) => w,
-                        None => self.state.width * WIDTH_DECREMENT,
-                    };
-                    if !self.state.width.is_finite() {
-                        return Err(non_finite("width", self.state.width));
-                    }
-                }
-                Action::Colour => {
-                    let p = s.params_of(i);
-                    if p.len() >= 3 {
-                        self.state.colour = [p[0], p[1], p[2], p.get(3).copied().unwrap_or(1.0)];
-                    }
-                }
-                Action::Tropism => {
-                    if let Some(t) = self.sys.tropism {
-                        let e = arg(s, i, 0).unwrap_or(self.sys.elasticity);
-                        self.tropism(DVec3::from_array(t), e);
-                    }
-                }
-                Action::RollToTropism => {
-                    if let Some(t) = self.sys.tropism {
-                        self.roll_to(DVec3::from_array(t));
-                    }
-                }
-                Action::None => {}
+                self.draw(len, budget)?;
             }
+            Action::Move => {
+                let len = arg(0).unwrap_or(self.sys.length);
+                self.advance(len)?;
+                self.state.line = None;
+            }
+            Action::Turn(axis, sign) => self.turn(turn_quat(axis, sign, arg(0).unwrap_or(self.sys.angle))),
+            Action::TurnAround => self.turn(DQuat::from_rotation_z(std::f64::consts::PI)),
+            Action::Push => {
+                if self.stack.len() == self.stack.capacity() {
+                    let extra = self.stack.capacity().max(16);
+                    budget.reserve_memory((extra as u64).saturating_mul(STATE_BYTES))?;
+                    self.stack.reserve_exact(extra);
+                }
+                self.stack.push(self.state);
+                self.state.line = None;
+            }
+            Action::Pop => {
+                // An unbalanced `]` is ignored.
+                if let Some(st) = self.stack.pop() {
+                    self.state = st;
+                }
+            }
+            Action::Width => {
+                self.state.width = match arg(0) {
+                    Some(w) => w,
+                    None => self.state.width * WIDTH_DECREMENT,
+                };
+                if !self.state.width.is_finite() {
+                    return Err(non_finite("width", self.state.width));
+                }
+            }
+            Action::Colour => {
+                if p.len() >= 3 {
+                    self.state.colour = [p[0], p[1], p[2], p.get(3).copied().unwrap_or(1.0)];
+                }
+            }
+            Action::Tropism => {
+                if let Some(t) = self.sys.tropism {
+                    let e = arg(0).unwrap_or(self.sys.elasticity);
+                    self.tropism(DVec3::from_array(t), e);
+                }
+            }
+            Action::RollToTropism => {
+                if let Some(t) = self.sys.tropism {
+                    self.roll_to(DVec3::from_array(t));
+                }
+            }
+            Action::None => {}
         }
         Ok(())
     }
@@ -267,6 +363,24 @@ impl Turtle<'_> {
     }
 
     fn draw(&mut self, len: f64, budget: &mut Budget) -> Result<(), EvalError> {
+        if self.leaves.is_some() {
+            let length = len.abs().max(1e-9) as f32;
+            let shape = match self.sys.shape {
+                Shape::Tube => {
+                    let w = self.state.width.abs().max(1e-9) as f32;
+                    LeafShape { kind: PrimitiveKind::Cylinder, scale: [w, length, w], offset: [0.0, (len / 2.0) as f32, 0.0] }
+                }
+                Shape::Primitive(kind) => LeafShape { kind, scale: [length; 3], offset: [0.0, (len / 2.0) as f32, 0.0] },
+            };
+            let colour = self.state.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+            let leaf = Leaf { pos: self.state.pos, rot: self.state.rot, shape, colour };
+            self.advance(len)?;
+            if let Some(leaves) = self.leaves.as_mut() {
+                leaves.push(leaf);
+            }
+            self.drawing.segments += 1;
+            return Ok(());
+        }
         match self.sys.shape {
             Shape::Tube => {
                 budget.charge_primitive(self.point_tris)?;

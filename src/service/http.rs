@@ -227,7 +227,8 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
             (Vec<u8> = "model/gltf-binary"),
             (Vec<u8> = "model/gltf+json"),
             (Vec<u8> = "model/stl"),
-            (Vec<u8> = "application/vnd.rulemesh.strips")
+            (Vec<u8> = "application/vnd.rulemesh.strips"),
+            (Vec<u8> = "application/vnd.rulemesh.scene")
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
@@ -266,13 +267,14 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
     })
 }
 
-/// `GET /v1/models/{name}.{glb|gltf|stl}?seed=N&p.<param>=V&detail=D`.
+/// `GET /v1/models/{name}.{glb|gltf|stl|rmscene}?seed=N&p.<param>=V&detail=D&instancing=flat`.
 #[utoipa::path(get, path = "/v1/models/{file}", tag = "render",
     params(
-        ("file" = String, Path, description = "NAME.glb, NAME.gltf or NAME.stl, NAME a built-in grammar"),
+        ("file" = String, Path, description = "NAME.glb, NAME.gltf, NAME.stl or NAME.rmscene (L-systems), NAME a built-in grammar"),
         ("seed" = Option<u64>, Query, description = "Random seed; pinning it makes the response immutable"),
         ("detail" = Option<u32>, Query, description = "Tessellation detail"),
         ("p.<param>" = Option<String>, Query, description = "A grammar parameter, e.g. p.size=3"),
+        ("instancing" = Option<String>, Query, description = "Instanced L-systems as glb/gltf: gpu (default, EXT_mesh_gpu_instancing) or flat"),
         ("If-None-Match" = Option<String>, Header, description = "ETags the client holds"),
         ("Cache-Control" = Option<String>, Header, description = "`no-cache` renders afresh")
     ),
@@ -302,8 +304,8 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
         let Some((name, ext)) = file.rsplit_once('.') else {
             return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf or NAME.stl")));
         };
-        if !matches!(ext, "glb" | "gltf" | "stl") {
-            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl)")));
+        if !matches!(ext, "glb" | "gltf" | "stl" | "rmscene") {
+            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl, rmscene)")));
         }
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let mut body = RenderBody {
@@ -323,11 +325,12 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
                 "weld" => body.weld = Some(v.parse().map_err(|_| bad("weld must be true or false"))?),
                 "compress" => body.compress = Some(v.clone()),
                 "fit" => body.fit = Some(v.clone()),
+                "instancing" => body.instancing = Some(v.clone()),
                 _ => match k.strip_prefix("p.") {
                     Some(p) if !p.is_empty() => {
                         body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
                     }
-                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, p.<name>)")),
+                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, instancing, p.<name>)")),
                 },
             }
         }
