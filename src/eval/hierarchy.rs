@@ -30,13 +30,17 @@ pub struct LeafShape {
     pub scale: [f32; 3],
     /// Translation applied after the scale.
     pub offset: [f32; 3],
+    /// A tube segment: tessellated with the sides of a swept tube's profile
+    /// (half the detail, at least 4) rather than the full detail, so an
+    /// instanced tube costs what the swept one would.
+    pub tube: bool,
 }
 
 impl LeafShape {
     /// The primitive tessellated at `detail` with this shape's scale and offset
     /// baked in (normals follow the inverse transpose of the scale).
     pub fn prototype(&self, detail: u32) -> Prototype {
-        let mut p = primitives::tessellate(self.kind, detail);
+        let mut p = primitives::tessellate(self.kind, self.detail(detail));
         let [sx, sy, sz] = self.scale;
         for v in &mut p.positions {
             *v = [v[0] * sx + self.offset[0], v[1] * sy + self.offset[1], v[2] * sz + self.offset[2]];
@@ -51,7 +55,16 @@ impl LeafShape {
 
     /// Triangles of one placement at `detail`.
     pub fn triangles(&self, detail: u32) -> u64 {
-        primitives::triangle_count(self.kind, detail)
+        primitives::triangle_count(self.kind, self.detail(detail))
+    }
+
+    /// The detail this shape is tessellated at under a request's `detail`.
+    pub fn detail(&self, detail: u32) -> u32 {
+        if self.tube {
+            u32::try_from(crate::geom::sweep::profile_sides(detail)).unwrap_or(detail)
+        } else {
+            detail
+        }
     }
 }
 

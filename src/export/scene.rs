@@ -85,7 +85,7 @@ pub fn write_scene(h: &Hierarchy, budget: &mut Budget) -> Result<Vec<u8>, Export
     out.extend_from_slice(&(h.objects.len() as u32).to_le_bytes());
     out.extend_from_slice(&h.leaves().to_le_bytes());
     for s in &h.shapes {
-        out.extend_from_slice(&[s.kind as u8, 0, 0, 0]);
+        out.extend_from_slice(&[s.kind as u8, u8::from(s.tube), 0, 0]);
         put_f32s(&mut out, &s.scale);
         put_f32s(&mut out, &s.offset);
     }
@@ -151,10 +151,10 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
     }
     let mut h = Hierarchy { shapes: Vec::with_capacity(nshapes as usize), objects: Vec::with_capacity(nobjects as usize), truncated: None };
     for _ in 0..nshapes {
-        let [k, _, _, _] = r.take::<4>()?;
+        let [k, flags, _, _] = r.take::<4>()?;
         let kind = *PrimitiveKind::ALL.get(k as usize).ok_or(SceneError::Kind(k))?;
         let (scale, offset) = (r.f32s::<3>()?, r.f32s::<3>()?);
-        h.shapes.push(LeafShape { kind, scale, offset });
+        h.shapes.push(LeafShape { kind, scale, offset, tube: flags & 1 != 0 });
     }
     for o in 0..nobjects {
         let n = r.u32()?;

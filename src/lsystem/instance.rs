@@ -36,7 +36,7 @@ struct Built {
     colour: [f64; 4],
 }
 
-type ShapeKey = (u8, [u32; 3], [u32; 3]);
+type ShapeKey = (u8, bool, [u32; 3], [u32; 3]);
 
 struct Builder<'a, 'b> {
     sys: &'a LSystem,
@@ -69,7 +69,7 @@ pub fn build(sys: &LSystem, dag: &StringDag, budget: &mut Budget) -> Result<Hier
 
 impl Builder<'_, '_> {
     fn shape(&mut self, s: LeafShape) -> u32 {
-        let key = (s.kind as u8, s.scale.map(f32::to_bits), s.offset.map(f32::to_bits));
+        let key = (s.kind as u8, s.tube, s.scale.map(f32::to_bits), s.offset.map(f32::to_bits));
         let next = self.out.shapes.len() as u32;
         *self.shapes.entry(key).or_insert_with(|| {
             self.out.shapes.push(s);

@@ -79,8 +79,14 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     };
     let mut drawing = match &dag {
         Some(d) => {
-            // Refuse before drawing what is known to exceed the segment limit.
-            let segments = d.root().segments;
+            // Refuse before drawing what is known to exceed the limits: reading
+            // the expansion costs a step per module (the string length), and
+            // every segment is a primitive.
+            let (modules, segments) = (d.root().modules, d.root().segments);
+            let steps = budget.steps().saturating_add(modules);
+            if req.on_limit == OnLimit::Error && steps > req.limits.max_steps {
+                return Err(LimitExceeded { limit: Limit::Steps, configured: req.limits.max_steps, reached: steps }.into());
+            }
             if req.on_limit == OnLimit::Error && segments > req.limits.max_primitives {
                 return Err(LimitExceeded { limit: Limit::Primitives, configured: req.limits.max_primitives, reached: segments }.into());
             }

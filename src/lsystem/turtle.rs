@@ -368,9 +368,9 @@ impl Turtle<'_> {
             let shape = match self.sys.shape {
                 Shape::Tube => {
                     let w = self.state.width.abs().max(1e-9) as f32;
-                    LeafShape { kind: PrimitiveKind::Cylinder, scale: [w, length, w], offset: [0.0, (len / 2.0) as f32, 0.0] }
+                    LeafShape { kind: PrimitiveKind::Cylinder, scale: [w, length, w], offset: [0.0, (len / 2.0) as f32, 0.0], tube: true }
                 }
-                Shape::Primitive(kind) => LeafShape { kind, scale: [length; 3], offset: [0.0, (len / 2.0) as f32, 0.0] },
+                Shape::Primitive(kind) => LeafShape { kind, scale: [length; 3], offset: [0.0, (len / 2.0) as f32, 0.0], tube: false },
             };
             let colour = self.state.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
             let leaf = Leaf { pos: self.state.pos, rot: self.state.rot, shape, colour };
