@@ -267,14 +267,13 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
     })
 }
 
-/// `GET /v1/models/{name}.{glb|gltf|stl|rmscene}?seed=N&p.<param>=V&detail=D&instancing=flat`.
+/// `GET /v1/models/{name}.{glb|gltf|stl}?seed=N&p.<param>=V&detail=D`.
 #[utoipa::path(get, path = "/v1/models/{file}", tag = "render",
     params(
-        ("file" = String, Path, description = "NAME.glb, NAME.gltf, NAME.stl or NAME.rmscene (L-systems), NAME a built-in grammar"),
+        ("file" = String, Path, description = "NAME.glb, NAME.gltf or NAME.stl, NAME a built-in grammar"),
         ("seed" = Option<u64>, Query, description = "Random seed; pinning it makes the response immutable"),
         ("detail" = Option<u32>, Query, description = "Tessellation detail"),
         ("p.<param>" = Option<String>, Query, description = "A grammar parameter, e.g. p.size=3"),
-        ("instancing" = Option<String>, Query, description = "Instanced L-systems as glb/gltf: gpu (default, EXT_mesh_gpu_instancing) or flat"),
         ("If-None-Match" = Option<String>, Header, description = "ETags the client holds"),
         ("Cache-Control" = Option<String>, Header, description = "`no-cache` renders afresh")
     ),
@@ -304,8 +303,8 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
         let Some((name, ext)) = file.rsplit_once('.') else {
             return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf or NAME.stl")));
         };
-        if !matches!(ext, "glb" | "gltf" | "stl" | "rmscene") {
-            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl, rmscene)")));
+        if !matches!(ext, "glb" | "gltf" | "stl") {
+            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl)")));
         }
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let mut body = RenderBody {
@@ -325,12 +324,11 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
                 "weld" => body.weld = Some(v.parse().map_err(|_| bad("weld must be true or false"))?),
                 "compress" => body.compress = Some(v.clone()),
                 "fit" => body.fit = Some(v.clone()),
-                "instancing" => body.instancing = Some(v.clone()),
                 _ => match k.strip_prefix("p.") {
                     Some(p) if !p.is_empty() => {
                         body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
                     }
-                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, instancing, p.<name>)")),
+                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, p.<name>)")),
                 },
             }
         }
