@@ -120,6 +120,7 @@ impl Builder<'_, '_> {
         debug_assert!(root || t.depth() == 0);
         let (pos, rot) = t.pose();
         let (w, col) = t.inherited();
+        t.release(self.budget);
         let object = match entries.as_slice() {
             [] => None,
             // A single sub-object at the origin passes through.

@@ -77,21 +77,29 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         },
         downstream_bytes: PrimitiveKind::ALL.map(|k| cost.bytes(primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail))),
     };
-    let mut drawing = match &dag {
-        Some(d) => {
-            // Refuse before drawing what is known to exceed the limits: reading
-            // the expansion costs a step per module (the string length), and
-            // every segment is a primitive.
-            let (modules, segments) = (d.root().modules, d.root().segments);
-            let steps = budget.steps().saturating_add(modules);
-            if req.on_limit == OnLimit::Error && steps > req.limits.max_steps {
-                return Err(LimitExceeded { limit: Limit::Steps, configured: req.limits.max_steps, reached: steps }.into());
-            }
-            if req.on_limit == OnLimit::Error && segments > req.limits.max_primitives {
-                return Err(LimitExceeded { limit: Limit::Primitives, configured: req.limits.max_primitives, reached: segments }.into());
-            }
-            turtle::interpret_stream(&sys, &opts, &mut budget, &mut |sink| d.feed(d.root_index(), sink))?
+    // Reading the expansion costs a step per module (the string length), and
+    // every segment is a primitive: what is known to exceed either is refused
+    // before drawing, or (truncating) drawn from the string, which stops at the limit.
+    let fits = |d: &dag::StringDag, budget: &Budget| -> Result<bool, LimitExceeded> {
+        let (steps, segments) = (budget.steps().saturating_add(d.root().modules), d.root().segments);
+        let over = if steps > req.limits.max_steps {
+            LimitExceeded { limit: Limit::Steps, configured: req.limits.max_steps, reached: steps }
+        } else if segments > req.limits.max_primitives {
+            LimitExceeded { limit: Limit::Primitives, configured: req.limits.max_primitives, reached: segments }
+        } else {
+            return Ok(true);
+        };
+        match req.on_limit {
+            OnLimit::Error => Err(over),
+            OnLimit::Truncate => Ok(false),
         }
+    };
+    let walk = match &dag {
+        Some(d) if fits(d, &budget)? => Some(d),
+        _ => None,
+    };
+    let mut drawing = match walk {
+        Some(d) => turtle::interpret_stream(&sys, &opts, &mut budget, &mut |sink| d.feed(d.root_index(), sink))?,
         None => {
             let derivation = derive::derive(&sys, seed, req.on_limit, &mut budget)?;
             let mut drawing = turtle::interpret(&sys, &derivation.string, &opts, &mut budget)?;

@@ -247,6 +247,11 @@ impl<'a> LeafTurtle<'a> {
     pub(crate) fn depth(&self) -> usize {
         self.t.stack.len()
     }
+
+    /// Returns the memory its state stack accounted.
+    pub(crate) fn release(self, budget: &mut Budget) {
+        budget.release_memory((self.t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
+    }
 }
 
 impl Turtle<'_> {
