@@ -57,6 +57,9 @@ pub fn not_instanceable(sys: &LSystem) -> Option<&'static str> {
     if sys.symbols.iter().any(|s| s.starts_with('?')) {
         return Some("environment queries");
     }
+    if sys.symbol("{").is_some() {
+        return Some("polygons");
+    }
     if sys.tropism.is_some() && (sys.symbol("@").is_some() || sys.symbol("~").is_some()) {
         return Some("tropism");
     }

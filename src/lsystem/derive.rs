@@ -170,9 +170,19 @@ pub fn derive_n(sys: &LSystem, seed: u64, iterations: u32, on_limit: OnLimit, bu
     let terminator = Rewriter::new(sys, &sys.terminate);
     let root = StreamKey::root(seed);
     let total = iterations + u32::from(!sys.terminate.is_empty());
-    for n in 0..total {
-        let rw = if n < iterations { &rewriter } else { &terminator };
-        match rw.step(&cur, root.child(n, 0), budget) {
+    let queries = super::turtle::has_queries(sys);
+    for n in 0..=total {
+        // Environment queries see the turtle after every step (seed 001 §3.6).
+        let step = if queries { super::turtle::fill_queries(sys, &mut cur, budget) } else { Ok(()) };
+        let step = match step {
+            Ok(()) if n == total => break,
+            Ok(()) => {
+                let rw = if n < iterations { &rewriter } else { &terminator };
+                rw.step(&cur, root.child(n, 0), budget)
+            }
+            Err(e) => Err(e),
+        };
+        match step {
             Ok(next) => {
                 budget.release_memory(cur.bytes());
                 cur = next;

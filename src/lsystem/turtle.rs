@@ -17,7 +17,7 @@ use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
 use crate::eval::frame::Frame;
 use crate::eval::hierarchy::LeafShape;
 use crate::lang::ir::PrimitiveKind;
-use crate::eval::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
+use crate::eval::scene::{FreeVertex, Instance, LinePoint, Polyline, Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES};
 use crate::eval::EvalError;
 use crate::geom::{primitives, sweep};
 use crate::lang::lsystem::{LSystem, Shape};
@@ -43,6 +43,9 @@ pub(crate) enum Action {
     Colour,
     Tropism,
     RollToTropism,
+    PolygonStart,
+    PolygonVertex,
+    PolygonEnd,
     None,
 }
 
@@ -64,6 +67,9 @@ pub(crate) fn action(name: &str) -> Action {
         "'" => Action::Colour,
         "@" => Action::Tropism,
         "~" => Action::RollToTropism,
+        "{" => Action::PolygonStart,
+        "." => Action::PolygonVertex,
+        "}" => Action::PolygonEnd,
         _ => Action::None,
     }
 }
@@ -118,6 +124,9 @@ struct State {
 }
 
 const STATE_BYTES: u64 = std::mem::size_of::<State>() as u64;
+/// Bytes accounted per open polygon and per recorded polygon vertex.
+const POLYGON_BYTES: u64 = std::mem::size_of::<Vec<DVec3>>() as u64;
+const VERTEX_BYTES: u64 = std::mem::size_of::<DVec3>() as u64;
 
 /// The local rotation of a turn action: about axis `axis` (0 = x, 1 = y, 2 = z)
 /// by `sign` times `degrees`.
@@ -128,6 +137,70 @@ pub(crate) fn turn_quat(axis: u8, sign: f64, degrees: f64) -> DQuat {
         1 => DQuat::from_rotation_y(a),
         _ => DQuat::from_rotation_z(a),
     }
+}
+
+/// What an environment query module (seed 001 §3.6) receives: `?P`, `?Q`,
+/// `?R` and `?S` the turtle's position (the thesis's topiary uses the last
+/// three like `?P`, L3572), `?H`, `?U` and `?L` its heading, up and left vectors.
+fn query_kind(name: &str) -> Option<u8> {
+    match name {
+        "?P" | "?Q" | "?R" | "?S" => Some(0),
+        "?H" => Some(1),
+        "?U" => Some(2),
+        "?L" => Some(3),
+        _ => None,
+    }
+}
+
+/// True when `sys` uses an environment query, so every derivation step must
+/// be followed by an interpretation that fills the queries in.
+pub fn has_queries(sys: &LSystem) -> bool {
+    sys.symbols.iter().any(|n| query_kind(n).is_some())
+}
+
+/// Interprets `s` without drawing and writes, into the parameters of every
+/// query module, what the turtle sees there: its position (x, y, z) or one of
+/// its axes. A query with fewer parameters gets the first ones; extra
+/// parameters are kept. Each module read costs one step, so the queries
+/// after every derivation step are budgeted like the step itself.
+pub fn fill_queries(sys: &LSystem, s: &mut ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
+    let kinds: Vec<Option<u8>> = sys.symbols.iter().map(|n| query_kind(n)).collect();
+    let opts = TurtleOptions { detail: 0, on_limit: OnLimit::Error, line_point_bytes: 0, downstream_bytes: [0; 9] };
+    let mut t = LeafTurtle::new(sys, &opts, sys.width, DEFAULT_COLOUR);
+    let mut result = Ok(());
+    for i in 0..s.len() {
+        if let Err(e) = budget.charge_step() {
+            result = Err(e.into());
+            break;
+        }
+        let sym = s.syms[i];
+        match kinds.get(sym as usize).copied().flatten() {
+            Some(kind) => {
+                let (pos, rot) = t.pose();
+                let v = match kind {
+                    0 => pos,
+                    1 => rot * DVec3::Y,
+                    2 => rot * DVec3::Z,
+                    _ => rot * DVec3::NEG_X,
+                };
+                let (a, b) = (s.starts[i] as usize, s.starts[i + 1] as usize);
+                for (slot, value) in s.params[a..b].iter_mut().zip(v.to_array()) {
+                    *slot = value;
+                }
+            }
+            None => {
+                let (a, b) = (s.starts[i] as usize, s.starts[i + 1] as usize);
+                let p: Vec<f64> = s.params[a..b].to_vec();
+                if let Err(e) = t.module(sym, &p, budget) {
+                    result = Err(e);
+                    break;
+                }
+                t.take_leaves();
+            }
+        }
+    }
+    t.release(budget);
+    result
 }
 
 /// A sink the modules of a string are fed into, one at a time, in string order.
@@ -164,6 +237,7 @@ pub fn interpret_stream(
         state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width: sys.width, colour: DEFAULT_COLOUR, line: None },
         point_tris: sweep::per_point_bound(sweep::profile_sides(opts.detail)).1,
         leaves: None,
+        polygons: Vec::new(),
     };
     let result = feed(&mut |sym, p| t.module(sym, p, budget));
     budget.release_memory((t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
@@ -187,6 +261,8 @@ struct Turtle<'a> {
     point_tris: u64,
     /// In leaf mode, the segments recorded instead of drawn.
     leaves: Option<Vec<Leaf>>,
+    /// Open polygons (`{`), innermost last: the vertices recorded by `.` so far.
+    polygons: Vec<Vec<DVec3>>,
 }
 
 /// A turtle in leaf mode: it records each segment as a [`Leaf`] in its own
@@ -209,6 +285,7 @@ impl<'a> LeafTurtle<'a> {
                 state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width, colour, line: None },
                 point_tris: 0,
                 leaves: Some(Vec::new()),
+                polygons: Vec::new(),
             },
         }
     }
@@ -312,7 +389,52 @@ impl Turtle<'_> {
                     self.roll_to(DVec3::from_array(t));
                 }
             }
+            Action::PolygonStart => {
+                budget.reserve_memory(POLYGON_BYTES)?;
+                self.polygons.push(Vec::new());
+            }
+            Action::PolygonVertex => {
+                if let Some(poly) = self.polygons.last_mut() {
+                    budget.reserve_memory(VERTEX_BYTES)?;
+                    poly.push(self.state.pos);
+                }
+            }
+            Action::PolygonEnd => {
+                if let Some(poly) = self.polygons.pop() {
+                    let held = POLYGON_BYTES.saturating_add(VERTEX_BYTES.saturating_mul(poly.len() as u64));
+                    let r = self.polygon(&poly, budget);
+                    budget.release_memory(held);
+                    r?;
+                }
+            }
             Action::None => {}
+        }
+        Ok(())
+    }
+
+    /// Fills a closed polygon (ABOP p.120 `{ . }`) as a triangle fan from its
+    /// first vertex, facing along its Newell normal, in the current colour.
+    /// Polygons are two-sided (leaves are seen from both sides), so every
+    /// triangle is written in both windings. Fewer than 3 vertices draw nothing.
+    fn polygon(&mut self, poly: &[DVec3], budget: &mut Budget) -> Result<(), EvalError> {
+        if poly.len() < 3 || self.leaves.is_some() {
+            return Ok(());
+        }
+        let mut normal = DVec3::ZERO;
+        for (k, a) in poly.iter().enumerate() {
+            let b = poly[(k + 1) % poly.len()];
+            normal += DVec3::new((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        }
+        let normal = normal.normalize_or_zero();
+        let triangles = 2 * (poly.len() as u64 - 2);
+        budget.charge_primitive(triangles)?;
+        budget.reserve_memory(FREE_VERTEX_BYTES.saturating_mul(3 * triangles))?;
+        let colour = self.state.colour.map(|c| c.clamp(0.0, 1.0) as f32);
+        let v = |position: DVec3, normal: DVec3| FreeVertex { position, normal, colour };
+        for k in 1..poly.len() - 1 {
+            let (a, b, c) = (poly[0], poly[k], poly[k + 1]);
+            self.drawing.scene.vertices.extend([v(a, normal), v(b, normal), v(c, normal)]);
+            self.drawing.scene.vertices.extend([v(a, -normal), v(c, -normal), v(b, -normal)]);
         }
         Ok(())
     }
