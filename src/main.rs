@@ -4,7 +4,7 @@
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rulemesh::eval::{Limits, OnLimit, ParamValue};
-use rulemesh::export::{Compression, ExportOptions, Format, GltfOptions, StripsOptions};
+use rulemesh::export::{Compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};
 use rulemesh::geom::{MeshLayout, DEFAULT_DETAIL};
 use rulemesh::lang::{Diagnostic, Language};
 use rulemesh::{render, RenderError, RenderRequest};
@@ -58,7 +58,7 @@ struct ServeArgs {
 struct DecodeArgs {
     /// The `.strips` file, or `-` for standard input.
     file: String,
-    /// Output file (format from its extension: .glb, .gltf, .stl), or `-` for standard output.
+    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene), or `-` for standard output.
     #[arg(short, long)]
     output: String,
     /// Output format (default: from the output extension, else glb).
@@ -136,6 +136,9 @@ struct RenderArgs {
     /// Scale and move the model into a unit box centred at the origin (every format).
     #[arg(long)]
     fit_unit_box: bool,
+    /// glb/gltf of instanced L-systems: gpu (EXT_mesh_gpu_instancing) or flat (plain meshes).
+    #[arg(long, value_enum, default_value = "gpu")]
+    instancing: Instancing,
 }
 
 #[derive(Args)]
@@ -245,6 +248,7 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
             strips: StripsOptions { position_bits: args.position_bits, normal_bits: args.normal_bits, zstd: args.zstd },
             gltf: GltfOptions { weld: args.weld, quantize: args.quantize, compress: args.compress },
             fit_unit_box: args.fit_unit_box,
+            instancing: args.instancing,
         },
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;

@@ -262,6 +262,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     if req.language.or_else(|| Language::detect(source)) == Some(Language::Lsystem) {
         return crate::lsystem::render(source, req);
     }
+    if req.format == Format::Scene {
+        return Err(RenderError::BadRequest("format `scene` writes object-instancing hierarchies, which only L-systems make".into()));
+    }
     let mut budget = Budget::new(req.limits);
     let mut stages = Stages::start();
     let (language, program) = parse_source(source, req.language, &req.limits)?;

@@ -209,7 +209,7 @@ pub(super) fn encode(model: &Rendered) -> Option<Vec<u8>> {
 }
 
 fn static_content_type(s: &str) -> Option<&'static str> {
-    [Format::Glb, Format::Gltf, Format::Stl, Format::StlAscii, Format::Strips].into_iter().map(Format::content_type).find(|c| *c == s)
+    <Format as clap::ValueEnum>::value_variants().iter().map(|f| f.content_type()).find(|c| *c == s)
 }
 
 pub(super) fn decode(data: &[u8]) -> Option<Rendered> {

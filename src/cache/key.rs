@@ -62,6 +62,7 @@ fn format_name(f: Format) -> &'static str {
         Format::Stl => "stl",
         Format::StlAscii => "stl-ascii",
         Format::Strips => "strips",
+        Format::Scene => "scene",
     }
 }
 
@@ -115,6 +116,9 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
     let g = &req.export_options.gltf;
     if matches!(req.format, Format::Glb | Format::Gltf) && !g.is_plain() {
         e.field("gltf", &[u8::from(g.weld), u8::from(g.quantize), g.compress as u8]);
+    }
+    if matches!(req.format, Format::Glb | Format::Gltf) && req.export_options.instancing == crate::export::Instancing::Flat {
+        e.field("instancing", b"flat");
     }
     if req.export_options.fit_unit_box {
         e.field("fit", b"unit");

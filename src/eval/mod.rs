@@ -5,6 +5,7 @@ pub mod animation;
 pub mod budget;
 pub mod evaluator;
 pub mod frame;
+pub mod hierarchy;
 pub mod params;
 pub mod rng;
 pub mod scene;

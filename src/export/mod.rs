@@ -3,6 +3,7 @@
 pub mod compact;
 pub mod gltf;
 pub mod graph;
+pub mod scene;
 pub mod stl;
 pub mod strips;
 
@@ -27,6 +28,9 @@ pub enum Format {
     /// rulemesh's compact triangle-strip format for phone clients
     /// (`docs/strips-format.md`): quantised, stripified and compressed.
     Strips,
+    /// rulemesh's object-instancing hierarchy (`docs/scene-format.md`), for
+    /// L-systems: its size grows with the distinct subtrees, not the segments.
+    Scene,
 }
 
 impl Format {
@@ -37,6 +41,7 @@ impl Format {
             "gltf" => Some(Format::Gltf),
             "stl" => Some(Format::Stl),
             "strips" => Some(Format::Strips),
+            "rmscene" => Some(Format::Scene),
             _ => None,
         }
     }
@@ -48,6 +53,7 @@ impl Format {
             Format::Gltf => "model/gltf+json",
             Format::Stl | Format::StlAscii => "model/stl",
             Format::Strips => "application/vnd.rulemesh.strips",
+            Format::Scene => "application/vnd.rulemesh.scene",
         }
     }
 
@@ -59,8 +65,21 @@ impl Format {
             Format::Stl => "stl",
             Format::StlAscii => "stl",
             Format::Strips => "strips",
+            Format::Scene => "rmscene",
         }
     }
+}
+
+/// How an instanced model (an L-system that instances) is written as glTF.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Instancing {
+    /// One mesh per distinct segment look, drawn per instance with
+    /// `EXT_mesh_gpu_instancing` (a required extension).
+    #[default]
+    Gpu,
+    /// The same geometry expanded into plain meshes, for loaders without the extension.
+    Flat,
 }
 
 /// Scene-level facts an exporter may record besides geometry.
@@ -125,6 +144,8 @@ pub struct ExportOptions {
     /// Scale and move the model into a unit box centred at the origin (every
     /// format): its longest side becomes 1, its bounding box centre the origin.
     pub fit_unit_box: bool,
+    /// `glb`/`gltf` of instanced L-systems: GPU instancing or the flat fallback.
+    pub instancing: Instancing,
 }
 
 /// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
@@ -157,6 +178,10 @@ pub fn export_with(
         Format::Gltf => gltf::write_gltf(meshes, meta, budget),
         Format::Stl => stl::write_binary(meshes, budget),
         Format::StlAscii => stl::write_ascii(meshes, budget),
+        Format::Scene => Err(ExportError::InvalidOptions {
+            format: "scene",
+            detail: "the scene format writes object hierarchies, which only L-systems make; meshes cannot be written as one".into(),
+        }),
     }
 }
 
@@ -175,6 +200,8 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
         // partial block), a strip at most 5 indices per triangle at 5 bytes
         // each; zstd's worst-case growth fits in the per-vertex slack.
         Format::Strips => (16 * 1024, 20, 25),
+        // The hierarchy is sized exactly when written; no meshes are made.
+        Format::Scene => (1024, 0, 0),
     };
     vertices
         .saturating_mul(per_vertex)

@@ -170,9 +170,19 @@ pub fn derive_n(sys: &LSystem, seed: u64, iterations: u32, on_limit: OnLimit, bu
     let terminator = Rewriter::new(sys, &sys.terminate);
     let root = StreamKey::root(seed);
     let total = iterations + u32::from(!sys.terminate.is_empty());
-    for n in 0..total {
-        let rw = if n < iterations { &rewriter } else { &terminator };
-        match rw.step(&cur, root.child(n, 0), budget) {
+    let queries = super::turtle::has_queries(sys);
+    for n in 0..=total {
+        // Environment queries see the turtle after every step (seed 001 §3.6).
+        let step = if queries { super::turtle::fill_queries(sys, &mut cur, budget) } else { Ok(()) };
+        let step = match step {
+            Ok(()) if n == total => break,
+            Ok(()) => {
+                let rw = if n < iterations { &rewriter } else { &terminator };
+                rw.step(&cur, root.child(n, 0), budget)
+            }
+            Err(e) => Err(e),
+        };
+        match step {
             Ok(next) => {
                 budget.release_memory(cur.bytes());
                 cur = next;
@@ -509,7 +519,25 @@ impl<'a> Rewriter<'a> {
         Ok(next)
     }
 
-    fn emit(&self, m: &Module, env: &[f64], key: StreamKey, vals: &mut Vec<f64>) -> Result<(), EvalError> {
+    /// Context-free choice for one module `sym(params)` on its own: the
+    /// production applied (its formal parameters bound in `env`), or `None`
+    /// when the module is copied. Only meaningful for context-free tables.
+    pub(crate) fn choose(&self, sym: u32, params: &[f64], key: StreamKey, env: &mut Vec<f64>) -> Result<Option<&'a Production>, EvalError> {
+        let mut one = ModuleString::with_capacity(1, params.len());
+        one.push(sym, params);
+        let c = self.select(&one, &[], 0, key, env)?;
+        let Some(p) = self.prods.get(c as usize) else { return Ok(None) };
+        self.bind(&one, &[], 0, p, env);
+        Ok(Some(p))
+    }
+
+    /// True when the table has no productions.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.prods.is_empty()
+    }
+
+    /// Evaluates the arguments of successor module `m` under `env` into `vals`.
+    pub(crate) fn emit(&self, m: &Module, env: &[f64], key: StreamKey, vals: &mut Vec<f64>) -> Result<(), EvalError> {
         vals.clear();
         for a in &m.args {
             let what = self.sys.symbols.get(m.symbol as usize).map_or("module", String::as_str);

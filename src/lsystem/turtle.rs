@@ -15,7 +15,9 @@
 use super::derive::ModuleString;
 use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
 use crate::eval::frame::Frame;
-use crate::eval::scene::{Instance, LinePoint, Polyline, Scene, INSTANCE_BYTES, LINE_POINT_BYTES};
+use crate::eval::hierarchy::LeafShape;
+use crate::lang::ir::PrimitiveKind;
+use crate::eval::scene::{FreeVertex, Instance, LinePoint, Polyline, Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES};
 use crate::eval::EvalError;
 use crate::geom::{primitives, sweep};
 use crate::lang::lsystem::{LSystem, Shape};
@@ -29,7 +31,7 @@ pub const WIDTH_DECREMENT: f64 = 0.7;
 
 /// What a symbol does to the turtle.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Action {
+pub(crate) enum Action {
     Draw,
     Move,
     /// Local rotation: axis (0 = x, 1 = y, 2 = z) and sign.
@@ -41,10 +43,14 @@ enum Action {
     Colour,
     Tropism,
     RollToTropism,
+    PolygonStart,
+    PolygonVertex,
+    PolygonEnd,
     None,
 }
 
-fn action(name: &str) -> Action {
+/// The action of the symbol called `name`.
+pub(crate) fn action(name: &str) -> Action {
     match name {
         "F" => Action::Draw,
         "f" => Action::Move,
@@ -61,6 +67,9 @@ fn action(name: &str) -> Action {
         "'" => Action::Colour,
         "@" => Action::Tropism,
         "~" => Action::RollToTropism,
+        "{" => Action::PolygonStart,
+        "." => Action::PolygonVertex,
+        "}" => Action::PolygonEnd,
         _ => Action::None,
     }
 }
@@ -89,6 +98,21 @@ pub struct Drawing {
     pub promised: u64,
 }
 
+/// A segment recorded instead of drawn (leaf mode, for instancing): the
+/// turtle's pose at its start, its look and its colour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Leaf {
+    /// Position at the segment's start.
+    pub pos: DVec3,
+    /// Orientation (heading is local +Y).
+    pub rot: DQuat,
+    /// The primitive in the start frame: a cylinder of the width for tubes,
+    /// the `shape:` primitive scaled by the length otherwise.
+    pub shape: LeafShape,
+    /// Linear RGBA in 0..=255.
+    pub colour: [u8; 4],
+}
+
 #[derive(Debug, Clone, Copy)]
 struct State {
     pos: DVec3,
@@ -100,10 +124,87 @@ struct State {
 }
 
 const STATE_BYTES: u64 = std::mem::size_of::<State>() as u64;
+/// Bytes accounted per open polygon and per recorded polygon vertex.
+const POLYGON_BYTES: u64 = std::mem::size_of::<Vec<DVec3>>() as u64;
+const VERTEX_BYTES: u64 = std::mem::size_of::<DVec3>() as u64;
 
-fn arg(s: &ModuleString, i: usize, k: usize) -> Option<f64> {
-    s.params_of(i).get(k).copied()
+/// The local rotation of a turn action: about axis `axis` (0 = x, 1 = y, 2 = z)
+/// by `sign` times `degrees`.
+pub(crate) fn turn_quat(axis: u8, sign: f64, degrees: f64) -> DQuat {
+    let a = sign * degrees.to_radians();
+    match axis {
+        0 => DQuat::from_rotation_x(a),
+        1 => DQuat::from_rotation_y(a),
+        _ => DQuat::from_rotation_z(a),
+    }
 }
+
+/// What an environment query module (seed 001 §3.6) receives: `?P`, `?Q`,
+/// `?R` and `?S` the turtle's position (the thesis's topiary uses the last
+/// three like `?P`, L3572), `?H`, `?U` and `?L` its heading, up and left vectors.
+fn query_kind(name: &str) -> Option<u8> {
+    match name {
+        "?P" | "?Q" | "?R" | "?S" => Some(0),
+        "?H" => Some(1),
+        "?U" => Some(2),
+        "?L" => Some(3),
+        _ => None,
+    }
+}
+
+/// True when `sys` uses an environment query, so every derivation step must
+/// be followed by an interpretation that fills the queries in.
+pub fn has_queries(sys: &LSystem) -> bool {
+    sys.symbols.iter().any(|n| query_kind(n).is_some())
+}
+
+/// Interprets `s` without drawing and writes, into the parameters of every
+/// query module, what the turtle sees there: its position (x, y, z) or one of
+/// its axes. A query with fewer parameters gets the first ones; extra
+/// parameters are kept. Each module read costs one step, so the queries
+/// after every derivation step are budgeted like the step itself.
+pub fn fill_queries(sys: &LSystem, s: &mut ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
+    let kinds: Vec<Option<u8>> = sys.symbols.iter().map(|n| query_kind(n)).collect();
+    let opts = TurtleOptions { detail: 0, on_limit: OnLimit::Error, line_point_bytes: 0, downstream_bytes: [0; 9] };
+    let mut t = LeafTurtle::new(sys, &opts, sys.width, DEFAULT_COLOUR);
+    let mut result = Ok(());
+    for i in 0..s.len() {
+        if let Err(e) = budget.charge_step() {
+            result = Err(e.into());
+            break;
+        }
+        let sym = s.syms[i];
+        match kinds.get(sym as usize).copied().flatten() {
+            Some(kind) => {
+                let (pos, rot) = t.pose();
+                let v = match kind {
+                    0 => pos,
+                    1 => rot * DVec3::Y,
+                    2 => rot * DVec3::Z,
+                    _ => rot * DVec3::NEG_X,
+                };
+                let (a, b) = (s.starts[i] as usize, s.starts[i + 1] as usize);
+                for (slot, value) in s.params[a..b].iter_mut().zip(v.to_array()) {
+                    *slot = value;
+                }
+            }
+            None => {
+                let (a, b) = (s.starts[i] as usize, s.starts[i + 1] as usize);
+                let p: Vec<f64> = s.params[a..b].to_vec();
+                if let Err(e) = t.module(sym, &p, budget) {
+                    result = Err(e);
+                    break;
+                }
+                t.take_leaves();
+            }
+        }
+    }
+    t.release(budget);
+    result
+}
+
+/// A sink the modules of a string are fed into, one at a time, in string order.
+pub type ModuleSink<'s> = dyn FnMut(u32, &[f64]) -> Result<(), EvalError> + 's;
 
 fn non_finite(what: &str, v: f64) -> EvalError {
     EvalError::NonFinite { span: Span::default(), what: what.to_string(), value: format!("{v}") }
@@ -111,6 +212,22 @@ fn non_finite(what: &str, v: f64) -> EvalError {
 
 /// Interprets `s` into a scene under `budget`.
 pub fn interpret(sys: &LSystem, s: &ModuleString, opts: &TurtleOptions, budget: &mut Budget) -> Result<Drawing, EvalError> {
+    interpret_stream(sys, opts, budget, &mut |sink| {
+        for i in 0..s.len() {
+            sink(s.syms[i], s.params_of(i))?;
+        }
+        Ok(())
+    })
+}
+
+/// Interprets the modules `feed` hands to its sink, in order, as if they were
+/// one string: how an instancing DAG is drawn without ever building its string.
+pub fn interpret_stream(
+    sys: &LSystem,
+    opts: &TurtleOptions,
+    budget: &mut Budget,
+    feed: &mut dyn FnMut(&mut ModuleSink<'_>) -> Result<(), EvalError>,
+) -> Result<Drawing, EvalError> {
     let mut t = Turtle {
         sys,
         opts,
@@ -119,8 +236,10 @@ pub fn interpret(sys: &LSystem, s: &ModuleString, opts: &TurtleOptions, budget: 
         stack: Vec::new(),
         state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width: sys.width, colour: DEFAULT_COLOUR, line: None },
         point_tris: sweep::per_point_bound(sweep::profile_sides(opts.detail)).1,
+        leaves: None,
+        polygons: Vec::new(),
     };
-    let result = t.run(s, budget);
+    let result = feed(&mut |sym, p| t.module(sym, p, budget));
     budget.release_memory((t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
     match result {
         Ok(()) => {}
@@ -140,78 +259,182 @@ struct Turtle<'a> {
     stack: Vec<State>,
     state: State,
     point_tris: u64,
+    /// In leaf mode, the segments recorded instead of drawn.
+    leaves: Option<Vec<Leaf>>,
+    /// Open polygons (`{`), innermost last: the vertices recorded by `.` so far.
+    polygons: Vec<Vec<DVec3>>,
+}
+
+/// A turtle in leaf mode: it records each segment as a [`Leaf`] in its own
+/// start frame instead of drawing, and can be moved by a sub-object's end
+/// state, so one subtree of a derivation becomes one reusable object.
+pub(crate) struct LeafTurtle<'a> {
+    t: Turtle<'a>,
+}
+
+impl<'a> LeafTurtle<'a> {
+    /// A turtle at the origin with the given inherited width and colour.
+    pub(crate) fn new(sys: &'a LSystem, opts: &'a TurtleOptions, width: f64, colour: [f64; 4]) -> LeafTurtle<'a> {
+        LeafTurtle {
+            t: Turtle {
+                sys,
+                opts,
+                actions: sys.symbols.iter().map(|n| action(n)).collect(),
+                drawing: Drawing::default(),
+                stack: Vec::new(),
+                state: State { pos: DVec3::ZERO, rot: DQuat::IDENTITY, width, colour, line: None },
+                point_tris: 0,
+                leaves: Some(Vec::new()),
+                polygons: Vec::new(),
+            },
+        }
+    }
+
+    /// Interprets one module.
+    pub(crate) fn module(&mut self, sym: u32, p: &[f64], budget: &mut Budget) -> Result<(), EvalError> {
+        self.t.module(sym, p, budget)
+    }
+
+    /// The segments recorded since the last call.
+    pub(crate) fn take_leaves(&mut self) -> Vec<Leaf> {
+        self.t.leaves.as_mut().map(std::mem::take).unwrap_or_default()
+    }
+
+    /// Position and orientation.
+    pub(crate) fn pose(&self) -> (DVec3, DQuat) {
+        (self.t.state.pos, self.t.state.rot)
+    }
+
+    /// Width and colour, which a sub-object inherits.
+    pub(crate) fn inherited(&self) -> (f64, [f64; 4]) {
+        (self.t.state.width, self.t.state.colour)
+    }
+
+    /// Moves by a sub-object's end state: `pos` and `rot` relative to the
+    /// current pose, and the width and colour it ended with.
+    pub(crate) fn follow(&mut self, pos: DVec3, rot: DQuat, width: f64, colour: [f64; 4]) {
+        let st = &mut self.t.state;
+        st.pos += st.rot * pos;
+        st.rot = (st.rot * rot).normalize();
+        st.width = width;
+        st.colour = colour;
+    }
+
+    /// Open brackets not closed yet.
+    pub(crate) fn depth(&self) -> usize {
+        self.t.stack.len()
+    }
+
+    /// Returns the memory its state stack accounted.
+    pub(crate) fn release(self, budget: &mut Budget) {
+        budget.release_memory((self.t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
+    }
 }
 
 impl Turtle<'_> {
-    fn run(&mut self, s: &ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
-        for i in 0..s.len() {
-            let act = self.actions.get(s.syms[i] as usize).copied().unwrap_or(Action::None);
-            match act {
-                Action::Draw => {
-                    let len = arg(s, i, 0).unwrap_or(self.sys.length);
-                    if let Some(w) = arg(s, i, 1) {
-                        self.state.width = w;
-                    }
-                    self.draw(len, budget)?;
+    fn module(&mut self, sym: u32, p: &[f64], budget: &mut Budget) -> Result<(), EvalError> {
+        let arg = |k: usize| p.get(k).copied();
+        match self.actions.get(sym as usize).copied().unwrap_or(Action::None) {
+            Action::Draw => {
+                let len = arg(0).unwrap_or(self.sys.length);
+                if let Some(w) = arg(1) {
+                    self.state.width = w;
                 }
-                Action::Move => {
-                    let len = arg(s, i, 0).unwrap_or(self.sys.length);
-                    self.advance(len)?;
-                    self.state.line = None;
-                }
-                Action::Turn(axis, sign) => {
-                    let a = sign * arg(s, i, 0).unwrap_or(self.sys.angle).to_radians();
-                    let q = match axis {
-                        0 => DQuat::from_rotation_x(a),
-                        1 => DQuat::from_rotation_y(a),
-                        _ => DQuat::from_rotation_z(a),
-                    };
-                    self.turn(q);
-                }
-                Action::TurnAround => self.turn(DQuat::from_rotation_z(std::f64::consts::PI)),
-                Action::Push => {
-                    if self.stack.len() == self.stack.capacity() {
-                        let extra = self.stack.capacity().max(16);
-                        budget.reserve_memory((extra as u64).saturating_mul(STATE_BYTES))?;
-                        self.stack.reserve_exact(extra);
-                    }
-                    self.stack.push(self.state);
-                    self.state.line = None;
-                }
-                Action::Pop => {
-                    // An unbalanced `]` is ignored.
-                    if let Some(st) = self.stack.pop() {
-                        self.state = st;
-                    }
-                }
-                Action::Width => {
-                    self.state.width = match arg(s, i, 0) {
-                        Some(w) => w,
-                        None => self.state.width * WIDTH_DECREMENT,
-                    };
-                    if !self.state.width.is_finite() {
-                        return Err(non_finite("width", self.state.width));
-                    }
-                }
-                Action::Colour => {
-                    let p = s.params_of(i);
-                    if p.len() >= 3 {
-                        self.state.colour = [p[0], p[1], p[2], p.get(3).copied().unwrap_or(1.0)];
-                    }
-                }
-                Action::Tropism => {
-                    if let Some(t) = self.sys.tropism {
-                        let e = arg(s, i, 0).unwrap_or(self.sys.elasticity);
-                        self.tropism(DVec3::from_array(t), e);
-                    }
-                }
-                Action::RollToTropism => {
-                    if let Some(t) = self.sys.tropism {
-                        self.roll_to(DVec3::from_array(t));
-                    }
-                }
-                Action::None => {}
+                self.draw(len, budget)?;
             }
+            Action::Move => {
+                let len = arg(0).unwrap_or(self.sys.length);
+                self.advance(len)?;
+                self.state.line = None;
+            }
+            Action::Turn(axis, sign) => self.turn(turn_quat(axis, sign, arg(0).unwrap_or(self.sys.angle))),
+            Action::TurnAround => self.turn(DQuat::from_rotation_z(std::f64::consts::PI)),
+            Action::Push => {
+                if self.stack.len() == self.stack.capacity() {
+                    let extra = self.stack.capacity().max(16);
+                    budget.reserve_memory((extra as u64).saturating_mul(STATE_BYTES))?;
+                    self.stack.reserve_exact(extra);
+                }
+                self.stack.push(self.state);
+                self.state.line = None;
+            }
+            Action::Pop => {
+                // An unbalanced `]` is ignored.
+                if let Some(st) = self.stack.pop() {
+                    self.state = st;
+                }
+            }
+            Action::Width => {
+                self.state.width = match arg(0) {
+                    Some(w) => w,
+                    None => self.state.width * WIDTH_DECREMENT,
+                };
+                if !self.state.width.is_finite() {
+                    return Err(non_finite("width", self.state.width));
+                }
+            }
+            Action::Colour => {
+                if p.len() >= 3 {
+                    self.state.colour = [p[0], p[1], p[2], p.get(3).copied().unwrap_or(1.0)];
+                }
+            }
+            Action::Tropism => {
+                if let Some(t) = self.sys.tropism {
+                    let e = arg(0).unwrap_or(self.sys.elasticity);
+                    self.tropism(DVec3::from_array(t), e);
+                }
+            }
+            Action::RollToTropism => {
+                if let Some(t) = self.sys.tropism {
+                    self.roll_to(DVec3::from_array(t));
+                }
+            }
+            Action::PolygonStart => {
+                budget.reserve_memory(POLYGON_BYTES)?;
+                self.polygons.push(Vec::new());
+            }
+            Action::PolygonVertex => {
+                if let Some(poly) = self.polygons.last_mut() {
+                    budget.reserve_memory(VERTEX_BYTES)?;
+                    poly.push(self.state.pos);
+                }
+            }
+            Action::PolygonEnd => {
+                if let Some(poly) = self.polygons.pop() {
+                    let held = POLYGON_BYTES.saturating_add(VERTEX_BYTES.saturating_mul(poly.len() as u64));
+                    let r = self.polygon(&poly, budget);
+                    budget.release_memory(held);
+                    r?;
+                }
+            }
+            Action::None => {}
+        }
+        Ok(())
+    }
+
+    /// Fills a closed polygon (ABOP p.120 `{ . }`) as a triangle fan from its
+    /// first vertex, facing along its Newell normal, in the current colour.
+    /// Polygons are two-sided (leaves are seen from both sides), so every
+    /// triangle is written in both windings. Fewer than 3 vertices draw nothing.
+    fn polygon(&mut self, poly: &[DVec3], budget: &mut Budget) -> Result<(), EvalError> {
+        if poly.len() < 3 || self.leaves.is_some() {
+            return Ok(());
+        }
+        let mut normal = DVec3::ZERO;
+        for (k, a) in poly.iter().enumerate() {
+            let b = poly[(k + 1) % poly.len()];
+            normal += DVec3::new((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        }
+        let normal = normal.normalize_or_zero();
+        let triangles = 2 * (poly.len() as u64 - 2);
+        budget.charge_primitive(triangles)?;
+        budget.reserve_memory(FREE_VERTEX_BYTES.saturating_mul(3 * triangles))?;
+        let colour = self.state.colour.map(|c| c.clamp(0.0, 1.0) as f32);
+        let v = |position: DVec3, normal: DVec3| FreeVertex { position, normal, colour };
+        for k in 1..poly.len() - 1 {
+            let (a, b, c) = (poly[0], poly[k], poly[k + 1]);
+            self.drawing.scene.vertices.extend([v(a, normal), v(b, normal), v(c, normal)]);
+            self.drawing.scene.vertices.extend([v(a, -normal), v(c, -normal), v(b, -normal)]);
         }
         Ok(())
     }
@@ -267,6 +490,24 @@ impl Turtle<'_> {
     }
 
     fn draw(&mut self, len: f64, budget: &mut Budget) -> Result<(), EvalError> {
+        if self.leaves.is_some() {
+            let length = len.abs().max(1e-9) as f32;
+            let shape = match self.sys.shape {
+                Shape::Tube => {
+                    let w = self.state.width.abs().max(1e-9) as f32;
+                    LeafShape { kind: PrimitiveKind::Cylinder, scale: [w, length, w], offset: [0.0, (len / 2.0) as f32, 0.0], tube: true }
+                }
+                Shape::Primitive(kind) => LeafShape { kind, scale: [length; 3], offset: [0.0, (len / 2.0) as f32, 0.0], tube: false },
+            };
+            let colour = self.state.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+            let leaf = Leaf { pos: self.state.pos, rot: self.state.rot, shape, colour };
+            self.advance(len)?;
+            if let Some(leaves) = self.leaves.as_mut() {
+                leaves.push(leaf);
+            }
+            self.drawing.segments += 1;
+            return Ok(());
+        }
         match self.sys.shape {
             Shape::Tube => {
                 budget.charge_primitive(self.point_tris)?;

@@ -64,6 +64,7 @@ impl From<pb::RenderRequest> for RenderBody {
             quantize: r.quantize,
             compress: non_empty(r.compress),
             fit: non_empty(r.fit),
+            instancing: non_empty(r.instancing),
         }
     }
 }

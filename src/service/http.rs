@@ -227,7 +227,8 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
             (Vec<u8> = "model/gltf-binary"),
             (Vec<u8> = "model/gltf+json"),
             (Vec<u8> = "model/stl"),
-            (Vec<u8> = "application/vnd.rulemesh.strips")
+            (Vec<u8> = "application/vnd.rulemesh.strips"),
+            (Vec<u8> = "application/vnd.rulemesh.scene")
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),

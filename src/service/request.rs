@@ -6,7 +6,7 @@ use super::ServiceError;
 use crate::cache::key::{cache_key, normalize_source};
 use crate::cache::CacheKey;
 use crate::eval::{Limits, OnLimit, ParamValue};
-use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptions, StripsOptions};
+use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};
 use crate::geom::{MeshLayout, DEFAULT_DETAIL};
 use crate::lang::Language;
 use crate::RenderRequest;
@@ -80,7 +80,8 @@ pub struct RenderBody {
     #[serde(default)]
     #[schema(value_type = BTreeMap<String, ParamValueSchema>)]
     pub params: BTreeMap<String, ParamValue>,
-    /// `"glb"` (default), `"gltf"`, `"stl"` or `"stl-ascii"`.
+    /// `"glb"` (default), `"gltf"`, `"stl"`, `"stl-ascii"`, `"strips"` or
+    /// `"scene"` (L-systems only: the object-instancing hierarchy).
     pub format: Option<String>,
     /// Limits, each clamped to the server's ceiling.
     pub limits: Option<LimitsBody>,
@@ -104,6 +105,9 @@ pub struct RenderBody {
     pub compress: Option<String>,
     /// `"unit"`: scale and move the model into a unit box centred at the origin; `"none"` (default) leaves it.
     pub fit: Option<String>,
+    /// `glb`/`gltf` of instanced L-systems: `"gpu"` (default, `EXT_mesh_gpu_instancing`)
+    /// or `"flat"` (plain meshes, for loaders without the extension).
+    pub instancing: Option<String>,
 }
 
 /// `POST /v1/check` as sent.
@@ -147,7 +151,8 @@ pub fn parse_format(name: Option<&str>) -> Result<Format, ServiceError> {
         Some("stl") => Ok(Format::Stl),
         Some("stl-ascii") => Ok(Format::StlAscii),
         Some("strips") => Ok(Format::Strips),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: glb, gltf, stl, stl-ascii, strips)"))),
+        Some("scene") | Some("rmscene") => Ok(Format::Scene),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: glb, gltf, stl, stl-ascii, strips, scene)"))),
     }
 }
 
@@ -164,6 +169,15 @@ fn parse_layout(name: Option<&str>) -> Result<MeshLayout, ServiceError> {
         None | Some("") | Some("merged") => Ok(MeshLayout::Merged),
         Some("per-kind") => Ok(MeshLayout::PerKind),
         Some(other) => Err(ServiceError::BadRequest(format!("unknown layout `{other}` (known: merged, per-kind)"))),
+    }
+}
+
+/// Reads an `instancing` value: `"gpu"` (default) or `"flat"`.
+pub fn parse_instancing(name: Option<&str>) -> Result<Instancing, ServiceError> {
+    match name.map(str::trim) {
+        None | Some("") | Some("gpu") => Ok(Instancing::Gpu),
+        Some("flat") => Ok(Instancing::Flat),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown instancing `{other}` (known: gpu, flat)"))),
     }
 }
 
@@ -202,7 +216,8 @@ impl RenderBody {
                     compress: parse_compression(self.compress.as_deref().unwrap_or("")).map_err(ServiceError::BadRequest)?,
                 };
                 let fit_unit_box = parse_fit(self.fit.as_deref())?;
-                ExportOptions { strips, gltf, fit_unit_box }
+                let instancing = parse_instancing(self.instancing.as_deref())?;
+                ExportOptions { strips, gltf, fit_unit_box, instancing }
             },
         };
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();

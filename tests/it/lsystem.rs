@@ -323,3 +323,42 @@ fn every_lsystem_example_in_the_docs_renders() {
         assert_eq!(errors, 0, "example {i}: {report}");
     }
 }
+
+#[test]
+fn position_queries_see_the_turtle_after_every_step() {
+    // Growth stops once the apex is above y = 4.5: the query carries the height.
+    let src = "iterations: 10\naxiom: A ?P(0,0,0)\nA > ?P(x,y,z) : y < 4.5 -> F A\n";
+    assert_eq!(segments(src), 5);
+    assert_eq!(derived(src, 2, 0), "FFA?P(0,2,0)");
+    // Turned: the heading vector and a position off the axis.
+    let turned = derived("axiom: +F ?H(0,0,0) ?P(9)\n", 0, 0);
+    assert!(turned.starts_with("+F?H(-1,") && turned.ends_with(",0)?P(-1)"), "{turned}");
+    // Queries cost steps: a query system over the step budget fails cleanly.
+    let limits = Limits { max_steps: 50, ..Limits::default() };
+    let e = render(src.as_bytes(), &RenderRequest { limits, ..req(Format::Stl) }).expect_err("steps");
+    assert!(matches!(e, RenderError::Limit(l) if l.limit == Limit::Steps), "{e}");
+}
+
+#[test]
+fn polygons_fill_two_sided_fans() {
+    // A unit square: 2 fan triangles, written in both windings.
+    let src = "axiom: F {. f . +f . +f . }\nangle: 90\n";
+    let out = render(src.as_bytes(), &req(Format::Stl)).expect("renders");
+    let tris = crate::common::decode_stl(&out.bytes);
+    let tube = render(b"axiom: F\n", &req(Format::Stl)).expect("renders").triangles;
+    assert_eq!(out.triangles, tube + 4);
+    let area: f64 = tris
+        .iter()
+        .rev()
+        .take(4)
+        .map(|[a, b, c]| {
+            let (u, v) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
+            let cr = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+            f64::from((cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]).sqrt()) / 2.0
+        })
+        .sum();
+    assert!((area - 2.0).abs() < 1e-5, "both sides of a unit square: {area}");
+    // Fewer than three vertices draw nothing; an unclosed polygon draws nothing.
+    assert_eq!(render(b"axiom: F {. f .}\n", &req(Format::Stl)).expect("renders").triangles, tube);
+    assert_eq!(render(b"axiom: F {. f . f . f .\n", &req(Format::Stl)).expect("renders").triangles, tube);
+}

@@ -14,6 +14,7 @@ mod docs;
 mod gallery;
 mod grammars;
 mod hostile;
+mod instancing;
 mod lines;
 mod lsystem;
 mod selectors;

@@ -101,6 +101,31 @@ async fn health_grammars_metrics_and_404s() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn lsystems_render_as_scenes_and_instanced_or_flat_gltf() {
+    let (srv, base) = start(config()).await;
+    let source = std::fs::read_to_string(common::repo().join("grammars/sierpinski-tetrahedron.ls")).expect("grammar");
+    let r = post(&base, "/v1/render", &json!({"source": source, "format": "scene"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "application/vnd.rulemesh.scene");
+    assert_eq!(header(&r, "x-rulemesh-primitives"), "4096");
+    let scene = r.bytes().await.expect("body");
+    assert_eq!(rulemesh::export::scene::decode_scene(&scene).expect("decodes").leaves(), 4096);
+    let gpu = post(&base, "/v1/render", &json!({"source": source, "format": "glb"})).await.bytes().await.expect("body");
+    let flat = post(&base, "/v1/render", &json!({"source": source, "format": "glb", "instancing": "flat"})).await;
+    assert_eq!(flat.status(), 200);
+    let flat = flat.bytes().await.expect("body");
+    let has_ext = |b: &[u8]| String::from_utf8_lossy(&b[..b.len().min(4096)]).contains("EXT_mesh_gpu_instancing");
+    assert!(has_ext(&gpu) && !has_ext(&flat));
+    assert!(gpu.len() * 20 < flat.len());
+    let bad = post(&base, "/v1/render", &json!({"source": source, "instancing": "sometimes"})).await;
+    assert_eq!(bad.status(), 400);
+    let mdg = post(&base, "/v1/render", &json!({"source": small("scene"), "format": "scene"})).await;
+    assert_eq!(mdg.status(), 400);
+    srv.shutdown();
+    srv.wait().await.expect("clean shutdown");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn render_formats_headers_cache_and_bypass() {
     let (srv, base) = start(config()).await;
     let source = small("formats");

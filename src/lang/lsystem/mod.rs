@@ -104,6 +104,11 @@ pub struct LSystem {
     pub tropism: Option<[f64; 3]>,
     /// Susceptibility to tropism e (`elasticity:`; default 0.2 when a tropism is set).
     pub elasticity: f64,
+    /// `variety: k`: instance a stochastic system with at most k pseudo-stochastic
+    /// variants per (module, parameters, remaining depth) (seed 001 §5.1), trading
+    /// exactness of the distribution for a model whose size does not grow with the
+    /// string. `None`: stochastic systems are derived in full.
+    pub variety: Option<u32>,
     /// Number of `rand()`/`ran()` sites; every site id is below it.
     pub site_count: u32,
     /// Non-fatal diagnostics.

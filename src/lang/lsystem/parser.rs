@@ -174,8 +174,12 @@ fn is_ident(c: char) -> bool {
     c.is_ascii_alphanumeric() || c == '_'
 }
 
-const SETTINGS: [&str; 12] =
-    ["iterations", "angle", "length", "width", "axiom", "ignore", "seed", "shape", "tropism", "elasticity", "terminate", "modules"];
+const SETTINGS: [&str; 13] = [
+    "iterations", "angle", "length", "width", "axiom", "ignore", "seed", "shape", "tropism", "elasticity", "terminate", "modules", "variety",
+];
+
+/// The largest `variety:` accepted: more variants than this defeat instancing.
+const MAX_VARIETY: f64 = 1024.0;
 
 #[derive(Default)]
 struct Parser {
@@ -203,6 +207,7 @@ impl Default for LSystem {
             shape: Shape::Tube,
             tropism: None,
             elasticity: 0.2,
+            variety: None,
             site_count: 0,
             warnings: Vec::new(),
         }
@@ -303,6 +308,13 @@ impl Parser {
             "length" => self.sys.length = self.number(value, at, key)?,
             "width" => self.sys.width = self.number(value, at, key)?,
             "elasticity" => self.sys.elasticity = self.number(value, at, key)?,
+            "variety" => {
+                let v = self.number(value, at, key)?;
+                if v < 1.0 || v.fract() != 0.0 || v > MAX_VARIETY {
+                    return err(vspan, format!("`variety:` must be a whole number in 1..={MAX_VARIETY}, got {v}"));
+                }
+                self.sys.variety = Some(v as u32);
+            }
             "seed" => {
                 let v = self.number(value, at, key)?;
                 if v < 0.0 || v.fract() != 0.0 || v >= 1.8e19 {

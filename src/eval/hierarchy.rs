@@ -1,0 +1,204 @@
+//! Object-instancing hierarchies (seed 001 §2.2, §4.2): objects that are
+//! lists of (child object or leaf shape, rigid transform, colour).
+//!
+//! A [`Hierarchy`] is what an instanced L-system evaluates to instead of a flat
+//! [`Scene`](super::Scene): each distinct subtree of the derivation is one
+//! object, placed wherever the subtree occurs, so the hierarchy grows with the
+//! number of distinct subtrees (the b-grammar), not with the number of
+//! segments. Exporters either write it as it is (`format=scene`), walk it to
+//! write per-instance transforms (`EXT_mesh_gpu_instancing`), or expand it
+//! into a flat scene.
+//!
+//! Objects are stored children first: an entry of object `i` refers only to
+//! objects `j < i` (the thesis's ordering condition), so the hierarchy is
+//! acyclic by construction and the root is the last object.
+
+use super::budget::LimitExceeded;
+use crate::geom::primitives::{self, Prototype};
+use crate::lang::ir::PrimitiveKind;
+use glam::{DQuat, DVec3};
+use std::collections::BTreeMap;
+
+/// A leaf shape: a built-in primitive scaled per axis, then moved by `offset`,
+/// in the frame its entry places it in. One exists per distinct segment look
+/// (kind, length, width), so it can become one shared mesh.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LeafShape {
+    /// The primitive.
+    pub kind: PrimitiveKind,
+    /// Scale along local x, y, z (the primitive is unit-sized).
+    pub scale: [f32; 3],
+    /// Translation applied after the scale.
+    pub offset: [f32; 3],
+    /// A tube segment: tessellated with the sides of a swept tube's profile
+    /// (half the detail, at least 4) rather than the full detail, so an
+    /// instanced tube costs what the swept one would.
+    pub tube: bool,
+}
+
+impl LeafShape {
+    /// The primitive tessellated at `detail` with this shape's scale and offset
+    /// baked in (normals follow the inverse transpose of the scale).
+    pub fn prototype(&self, detail: u32) -> Prototype {
+        let mut p = primitives::tessellate(self.kind, self.detail(detail));
+        let [sx, sy, sz] = self.scale;
+        for v in &mut p.positions {
+            *v = [v[0] * sx + self.offset[0], v[1] * sy + self.offset[1], v[2] * sz + self.offset[2]];
+        }
+        let inv = |s: f32| if s == 0.0 { 0.0 } else { 1.0 / s };
+        for n in &mut p.normals {
+            let m = glam::Vec3::new(n[0] * inv(sx), n[1] * inv(sy), n[2] * inv(sz)).normalize_or_zero();
+            *n = m.to_array();
+        }
+        p
+    }
+
+    /// Triangles of one placement at `detail`.
+    pub fn triangles(&self, detail: u32) -> u64 {
+        primitives::triangle_count(self.kind, self.detail(detail))
+    }
+
+    /// The detail this shape is tessellated at under a request's `detail`.
+    pub fn detail(&self, detail: u32) -> u32 {
+        if self.tube {
+            u32::try_from(crate::geom::sweep::profile_sides(detail)).unwrap_or(detail)
+        } else {
+            detail
+        }
+    }
+}
+
+/// What an entry places.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Target {
+    /// Another object (always of a lower index).
+    Object(u32),
+    /// A leaf shape (index into [`Hierarchy::shapes`]).
+    Shape(u32),
+}
+
+/// One placement inside an object: a target in a rigid frame relative to the object's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Entry {
+    /// What is placed.
+    pub target: Target,
+    /// Where the target's origin goes, in the object's frame.
+    pub translation: DVec3,
+    /// The target's rotation relative to the object (unit).
+    pub rotation: DQuat,
+    /// Linear RGBA of a leaf in 0..=255 (objects carry their leaves' own colours; 0 for them).
+    pub colour: [u8; 4],
+}
+
+/// A list of placements.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Object {
+    /// The placements, in drawing order.
+    pub entries: Vec<Entry>,
+    /// Leaves in the object's full expansion (saturating), for budgets before any walk.
+    pub leaves: u64,
+}
+
+/// A leaf of the expanded hierarchy: a shape in world space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlacedLeaf {
+    /// Index into [`Hierarchy::shapes`].
+    pub shape: u32,
+    /// World translation.
+    pub translation: DVec3,
+    /// World rotation (unit).
+    pub rotation: DQuat,
+    /// Linear RGBA in 0..=255.
+    pub colour: [u8; 4],
+}
+
+/// An object-instancing hierarchy; see the module documentation.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Hierarchy {
+    /// The distinct leaf shapes.
+    pub shapes: Vec<LeafShape>,
+    /// The objects, children before parents; the last one is the root.
+    pub objects: Vec<Object>,
+    /// Set when a limit cut the model short (only with `on_limit = truncate`).
+    pub truncated: Option<LimitExceeded>,
+}
+
+/// Bytes accounted per stored entry.
+pub const ENTRY_BYTES: u64 = std::mem::size_of::<Entry>() as u64;
+
+impl Hierarchy {
+    /// Leaves in the full expansion (0 when there is no root).
+    pub fn leaves(&self) -> u64 {
+        self.objects.last().map_or(0, |o| o.leaves)
+    }
+
+    /// Entries over all objects: the size of the hierarchy.
+    pub fn entry_count(&self) -> u64 {
+        self.objects.iter().map(|o| o.entries.len() as u64).sum()
+    }
+
+    /// How often each object occurs in the expansion (the root once), saturating.
+    pub fn multiplicities(&self) -> Vec<u64> {
+        let mut mult = vec![0u64; self.objects.len()];
+        if let Some(last) = mult.last_mut() {
+            *last = 1;
+        }
+        for i in (0..self.objects.len()).rev() {
+            let m = mult[i];
+            for e in &self.objects[i].entries {
+                if let Target::Object(c) = e.target {
+                    if let Some(slot) = mult.get_mut(c as usize) {
+                        *slot = slot.saturating_add(m);
+                    }
+                }
+            }
+        }
+        mult
+    }
+
+    /// Leaves per (shape, colour) in the expansion, in (shape, colour) order:
+    /// the instance count of each mesh an instanced export writes.
+    pub fn leaf_counts(&self) -> BTreeMap<(u32, [u8; 4]), u64> {
+        let mult = self.multiplicities();
+        let mut out = BTreeMap::new();
+        for (o, m) in self.objects.iter().zip(mult) {
+            for e in &o.entries {
+                if let Target::Shape(s) = e.target {
+                    let c = out.entry((s, e.colour)).or_insert(0u64);
+                    *c = c.saturating_add(m);
+                }
+            }
+        }
+        out
+    }
+
+    /// Triangles of the full expansion at `detail` (saturating).
+    pub fn triangles(&self, detail: u32) -> u64 {
+        self.leaf_counts().iter().fold(0u64, |acc, (&(s, _), &n)| {
+            let t = self.shapes.get(s as usize).map_or(0, |sh| sh.triangles(detail));
+            acc.saturating_add(t.saturating_mul(n))
+        })
+    }
+
+    /// Calls `f` with every leaf of the expansion in world space, depth first
+    /// in entry order (the order the turtle drew them). Recursion is as deep as
+    /// the hierarchy, which its builder bounds.
+    pub fn walk(&self, f: &mut dyn FnMut(&PlacedLeaf)) {
+        if let Some(root) = self.objects.len().checked_sub(1) {
+            self.walk_from(root, DVec3::ZERO, DQuat::IDENTITY, f);
+        }
+    }
+
+    fn walk_from(&self, object: usize, t: DVec3, r: DQuat, f: &mut dyn FnMut(&PlacedLeaf)) {
+        let Some(o) = self.objects.get(object) else { return };
+        for e in &o.entries {
+            let translation = t + r * e.translation;
+            let rotation = (r * e.rotation).normalize();
+            match e.target {
+                Target::Object(c) if (c as usize) < object => self.walk_from(c as usize, translation, rotation, f),
+                Target::Object(_) => {}
+                Target::Shape(shape) => f(&PlacedLeaf { shape, translation, rotation, colour: e.colour }),
+            }
+        }
+    }
+}
