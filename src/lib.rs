@@ -10,6 +10,7 @@ pub mod cache;
 pub mod export;
 pub mod eval;
 pub mod geom;
+pub mod eisen;
 pub mod lang;
 pub mod lsystem;
 pub mod pipeline;

@@ -217,8 +217,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     if req.format == Format::Strips {
         req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
     }
-    if req.language.or_else(|| Language::detect(source)) == Some(Language::Lsystem) {
-        return crate::lsystem::render(source, req);
+    match req.language.or_else(|| Language::detect(source)) {
+        Some(Language::Lsystem) => return crate::lsystem::render(source, req),
+        Some(Language::Eisenscript) => return crate::eisen::render(source, req),
+        _ => {}
     }
     let mut budget = Budget::new(req.limits);
     let mut stages = Stages::start();
