@@ -9,6 +9,7 @@ mod compact;
 mod counts;
 mod determinism;
 mod docs;
+mod eisen;
 mod gallery;
 mod grammars;
 mod hostile;

@@ -390,7 +390,7 @@ fn operator(word: &str) -> Option<&'static str> {
         "ry" => "ry",
         "rz" => "rz",
         "s" => "s",
-        "m" | "matrix" => "matrix",
+        "matrix" => "matrix",
         "fx" => "fx",
         "fy" => "fy",
         "fz" => "fz",
@@ -617,7 +617,9 @@ impl Parser {
                 return Ok(t);
             }
             let lower = tok.text.to_ascii_lowercase();
-            let Some(op) = operator(&lower) else {
+            // `m` is the matrix operator only inside a list: Structure Synth's
+            // tokenizer knows only `matrix`, so scripts name rules `m`.
+            let Some(op) = operator(&lower).or((lower == "m").then_some("matrix")) else {
                 return Err(ParseError::single(
                     tok.span,
                     format!("unknown transformation `{}` (the list opened at {}:{} is not closed?)", tok.text, open.span.line, open.span.column),
