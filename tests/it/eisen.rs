@@ -104,7 +104,9 @@ fn maxobjects_stops_at_a_generation_boundary_in_breadth_first_order() {
 fn minsize_and_maxsize_prune_branches() {
     // Diagonal √3 · 0.5ᵏ: minsize 0.2 keeps k = 0..3.
     assert_eq!(objects("set minsize 0.2\nr\nrule r { box { s 0.5 } r }\n"), 4);
-    assert_eq!(objects("set maxsize 1\nr\nrule r { box { s 0.5 } r }\nset maxdepth 5\n"), 3);
+    assert_eq!(objects("set maxsize 4\nr\nrule r { box { s 1.5 } r }\n"), 3);
+    // The size check applies to the start rule too: maxsize below √3 prunes everything, as in Structure Synth.
+    assert_eq!(objects("set maxsize 1\nbox\n"), 0);
 }
 
 const RANDOM: &str = "set maxdepth 30\n40 * { x 1 } r\nrule r { { color random } box }\nrule r w 2 { { y 1 color random } sphere }\n";
@@ -152,10 +154,13 @@ fn colour_pools() {
     let rgb = colours("randomrgb");
     assert!(rgb.iter().any(|c| c[0] != c[1]));
     // The default state colour is red (hue 0, full saturation and value); `hue` adds, `b` multiplies.
-    let s = scene("box\n{ hue 120 } box\n{ b 0.5 color white } box\n", 0);
+    let s = scene("box\n{ hue 120 } box\n{ color white } box\n{ b 0.5 color white } box\n", 0);
     assert_eq!(s.affine[0].colour, [1.0, 0.0, 0.0, 1.0]);
     assert_eq!(s.affine[1].colour, [0.0, 1.0, 0.0, 1.0]);
     assert_eq!(s.affine[2].colour, [1.0, 1.0, 1.0, 1.0]);
+    // Structure Synth composes a list's colour changes before applying them,
+    // so `b 0.5` scales the absolute white that follows it: 50 % grey (sRGB).
+    assert!((s.affine[3].colour[0] - 0.214_041_14).abs() < 1e-6, "{:?}", s.affine[3].colour);
     let e = render(b"set colorpool image:x.png\nbox", &req(Format::Glb)).unwrap_err();
     assert!(e.to_string().contains("image"), "{e}");
 }
