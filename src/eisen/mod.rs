@@ -68,15 +68,15 @@ fn bind(script_params: &[lang_es::GuiParam], given: &BTreeMap<String, ParamValue
 }
 
 /// Parses `source` with the request's parameters bound to its GUI defines.
-pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>) -> Result<(Script, f64), RenderError> {
+pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u64) -> Result<(Script, f64), RenderError> {
     // The defines are only known after a first parse; request values then
     // replace their defaults in a second one.
-    let first = lang_es::parse(source, &ParseOptions::default())?;
+    let first = lang_es::parse(source, &ParseOptions { params: BTreeMap::new(), seed })?;
     let (values, radius) = bind(&first.params, params)?;
     if values.is_empty() {
         return Ok((first, radius));
     }
-    Ok((lang_es::parse(source, &ParseOptions { params: values })?, radius))
+    Ok((lang_es::parse(source, &ParseOptions { params: values, seed })?, radius))
 }
 
 /// Renders EisenScript `source` as the request says (the request's language is taken to be EisenScript).
@@ -85,7 +85,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let mut budget = Budget::new(req.limits);
     let mut stages = Stages::start();
     Budget::check_source(&req.limits, source.len() as u64)?;
-    let (script, line_radius) = parse_bound(source, &req.params)?;
+    let (script, line_radius) = parse_bound(source, &req.params, req.seed.unwrap_or(0))?;
     stages.lap(|p| &mut p.parse);
     let overhead = export::estimated_size(req.format, 0, 0);
     budget.reserve_memory(overhead)?;

@@ -124,7 +124,12 @@ impl Language {
             let l = l.trim_start();
             l.starts_with("axiom:") || l.starts_with("iterations:")
         };
-        if eisen::looks_like_eisenscript(&text) {
+        // EisenScript shares `rule ` with MDG and `#define` with L-systems, so
+        // it wins only without their unambiguous markers.
+        let eisen = eisen::looks_like_eisenscript(&text)
+            && !text.lines().any(lsystem_line)
+            && !["startshape", "@param", "@define"].iter().any(|w| text.contains(w));
+        if eisen {
             Some(Language::Eisenscript)
         } else if mdg_words.iter().any(|w| text.contains(w)) {
             Some(Language::Mdg)

@@ -224,6 +224,13 @@ fn classes_become_mesh_names_and_detection_works() {
     assert_eq!(mats, ["model", "glass", "metal"]);
     assert_eq!(Language::detect(b"set maxdepth 10\nr\nrule r { box }"), Some(Language::Eisenscript));
     assert_eq!(Language::from_extension(Path::new("x.es")), Some(Language::Eisenscript));
+    // No MDG grammar or L-system (which use `#define` too) is taken for EisenScript.
+    for ext in ["mdg", "ls"] {
+        for f in crate::common::grammar_files(ext) {
+            let src = std::fs::read(&f).expect("read grammar");
+            assert_ne!(Language::detect(&src), Some(Language::Eisenscript), "{}", f.display());
+        }
+    }
 }
 
 /// Every `.es` under `dir`, sorted.

@@ -241,6 +241,8 @@ pub struct Script {
 pub struct ParseOptions {
     /// Values for `#define … (float:a-b)` parameters; checked by [`crate::eisen`].
     pub params: std::collections::BTreeMap<String, f64>,
+    /// Seed of the preprocessor's `random[a,b]` expressions.
+    pub seed: u64,
 }
 
 /// Parses EisenScript `source`.
@@ -260,7 +262,7 @@ pub fn parse(source: &[u8], opts: &ParseOptions) -> Result<Script, ParseError> {
             "this is a Structure Synth JavaScript animation script (#javascript), not EisenScript; it drives the Structure Synth GUI and cannot be rendered",
         ));
     }
-    let pre = preprocess::preprocess(text, &|n| opts.params.get(n).copied())?;
+    let pre = preprocess::preprocess(text, opts.seed, &|n| opts.params.get(n).copied())?;
     let tokens = tokenize(&pre.text)?;
     let mut p = Parser { tokens, pos: 0, script: Script { classes: vec![String::new()], params: pre.params, ..Script::default() }, site: 0, pending: Vec::new() };
     p.program()?;
@@ -870,13 +872,15 @@ mod tests {
 
     #[test]
     fn errors_have_positions() {
-        let e = p("rule a {\n  { x 1 foo 2 } box\n}\n").unwrap_err();
-        assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (2, 10));
+        let e = p("rule r {\n  { x 1 foo 2 } box\n}\n").unwrap_err();
+        assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (2, 9));
         let e = p("box\nnothere\n").unwrap_err();
         assert_eq!(e.diagnostics[0].span.line, 2);
         assert!(p("set colorpool image:a.png\nbox").unwrap_err().to_string().contains("image"));
         assert!(p("#javascript\nBuilder.build();").is_err());
-        assert!(p("rule a {\n box\n").is_err());
+        assert!(p("rule r {\n box\n").is_err());
+        // Transformation names are not rule names, as in Structure Synth.
+        assert!(p("rule a { box }\n").is_err());
         assert!(p("3 * x 1 } box").is_err());
     }
 
