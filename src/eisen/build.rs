@@ -103,6 +103,7 @@ struct RuleState<'a> {
 }
 
 const RULE_STATE_BYTES: u64 = std::mem::size_of::<RuleState>() as u64;
+const STATE_BYTES: u64 = std::mem::size_of::<State>() as u64;
 
 fn state_bytes(s: &RuleState) -> u64 {
     RULE_STATE_BYTES + 16 * s.state.depths.capacity() as u64
@@ -333,48 +334,69 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// Structure Synth's `Action::apply`: queues `target` once per loop copy.
+    /// Structure Synth's `Action::apply`: queues `target` once per loop copy,
+    /// in Structure Synth's order (the first loop's copy index runs fastest).
+    /// Each loop's copies are made incrementally — copy k is copy k − 1 with
+    /// the step applied once more, the same operations in the same order as
+    /// applying it k times afresh — so N copies cost N steps, not N²/2.
     fn call(&mut self, loops: &'a [Loop], target: &'a Target, site: u32, state: &State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {
         let parent = self.stream.child(self.draws, 0);
         if loops.iter().any(|l| l.count == 0) {
             return Ok(());
         }
-        let mut counters = vec![1u32; loops.len()];
-        let mut copy: u64 = 0;
-        loop {
-            let mut s = state.clone();
-            if !loops.is_empty() {
-                s.previous = state.matrix;
-            }
-            for (l, &n) in loops.iter().zip(&counters) {
-                for _ in 0..n {
-                    self.budget.charge_step()?;
-                    self.transform(&mut s, &l.transform);
-                }
-            }
-            if let Some((def, d)) = calling {
-                s.set_depth(def, d);
-            }
-            s.key = parent.child(site, copy);
-            s.depth = state.depth.saturating_add(1);
-            let rs = RuleState { what: Pending::Target(target), state: s };
-            let bytes = state_bytes(&rs);
-            self.budget.reserve_memory(bytes)?;
-            self.next_bytes += bytes;
-            self.next.push(rs);
-            copy += 1;
-            // Increase the first counter; carry into the next ones.
-            let mut i = 0;
-            loop {
-                let Some(c) = counters.get_mut(i) else { return Ok(()) };
-                *c += 1;
-                if *c <= loops[i].count {
-                    break;
-                }
-                *c = 1;
-                i += 1;
-            }
+        let mut base = state.clone();
+        if !loops.is_empty() {
+            base.previous = state.matrix;
         }
+        if let Some((def, d)) = calling {
+            base.set_depth(def, d);
+        }
+        base.depth = state.depth.saturating_add(1);
+        let per_state = STATE_BYTES.saturating_add(16 * base.depths.len() as u64);
+        let mut held = 0u64;
+        let result = (|| {
+            let mut level = vec![base];
+            for l in loops {
+                let n = (level.len() as u64).saturating_mul(u64::from(l.count));
+                // Reserved before allocating, so a huge loop fails on memory, not on allocation.
+                self.budget.reserve_memory(n.saturating_mul(per_state))?;
+                held = held.saturating_add(n.saturating_mul(per_state));
+                let mut next = Vec::with_capacity(n as usize);
+                for s in &level {
+                    let mut cur = s.clone();
+                    for _ in 0..l.count {
+                        self.budget.charge_step()?;
+                        self.transform(&mut cur, &l.transform);
+                        next.push(cur.clone());
+                    }
+                }
+                level = next;
+            }
+            // `level` has the first loop's index slowest; Structure Synth runs it fastest.
+            let counts: Vec<usize> = loops.iter().map(|l| l.count as usize).collect();
+            let mut states: Vec<Option<State>> = level.into_iter().map(Some).collect();
+            for copy in 0..states.len() {
+                let (mut rem, mut index) = (copy, 0);
+                let mut digits = vec![0usize; counts.len()];
+                for (d, &c) in digits.iter_mut().zip(&counts) {
+                    *d = rem % c;
+                    rem /= c;
+                }
+                for (d, &c) in digits.iter().zip(&counts) {
+                    index = index * c + d;
+                }
+                let Some(mut s) = states.get_mut(index).and_then(Option::take) else { continue };
+                s.key = parent.child(site, copy as u64);
+                let rs = RuleState { what: Pending::Target(target), state: s };
+                let bytes = state_bytes(&rs);
+                self.budget.reserve_memory(bytes)?;
+                self.next_bytes += bytes;
+                self.next.push(rs);
+            }
+            Ok(())
+        })();
+        self.budget.release_memory(held);
+        result
     }
 
     /// Structure Synth's `Transformation::apply`.

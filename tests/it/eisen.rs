@@ -55,6 +55,13 @@ fn loops_make_n_copies_at_the_first_to_nth_power() {
     let s = scene("2 * { y 10 } 2 * { x 1 } box", 0);
     let p: Vec<(f32, f32)> = s.affine.iter().map(|a| (a.translation.x, a.translation.y)).collect();
     assert_eq!(p, [(1.5, 10.5), (1.5, 20.5), (2.5, 10.5), (2.5, 20.5)]);
+    // Copies are made incrementally: 50 000 copies cost 50 000 steps, not 1.25 billion.
+    let out = render(b"set maxobjects 60000\n50000 * { x 1 } box", &req(Format::Stl)).unwrap();
+    assert_eq!(out.primitives, 50_000);
+    // A loop's step repeats colour changes too: hue 120 per copy.
+    let s = scene("3 * { x 1 hue 120 } box", 0);
+    let c: Vec<[f32; 4]> = s.affine.iter().map(|a| a.colour).collect();
+    assert_eq!(c, [[0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 1.0, 1.0], [1.0, 0.0, 0.0, 1.0]]);
 }
 
 #[test]
