@@ -11,6 +11,7 @@ pub mod export;
 pub mod eval;
 pub mod geom;
 pub mod grammars;
+pub mod eisen;
 pub mod lang;
 pub mod lsystem;
 pub mod pipeline;

@@ -199,7 +199,7 @@ pub(crate) fn mesh_and_export(
         (geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?, None)
     };
     stages.lap(|p| &mut p.mesh);
-    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some(), graph };
+    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some(), graph, material_per_mesh: !scene.classes.is_empty() };
     let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
     stages.lap(|p| &mut p.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
@@ -259,8 +259,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     if req.format == Format::Strips {
         req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
     }
-    if req.language.or_else(|| Language::detect(source)) == Some(Language::Lsystem) {
-        return crate::lsystem::render(source, req);
+    match req.language.or_else(|| Language::detect(source)) {
+        Some(Language::Lsystem) => return crate::lsystem::render(source, req),
+        Some(Language::Eisenscript) => return crate::eisen::render(source, req),
+        _ => {}
     }
     if req.format == Format::Scene {
         return Err(RenderError::BadRequest("format `scene` writes object-instancing hierarchies, which only L-systems make".into()));

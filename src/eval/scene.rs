@@ -75,6 +75,54 @@ impl Instance {
     }
 }
 
+/// A primitive placed by a general affine map (non-uniform scale, shear,
+/// reflection), for languages whose frames are not similarities
+/// (EisenScript's `s x y z` and `m`). Kept apart from [`Instance`] so the
+/// similarity path stays as compact as it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AffineInstance {
+    /// Which primitive (its unit prototype, centred at the origin).
+    pub kind: PrimitiveKind,
+    /// The linear part: prototype coordinates to world directions.
+    pub linear: Mat3,
+    /// Where the prototype's origin goes.
+    pub translation: Vec3,
+    /// Linear RGBA, each clamped to [0, 1].
+    pub colour: [f32; 4],
+    /// Index into [`Scene::classes`] (0 is the default class): the output mesh
+    /// and material the instance belongs to.
+    pub class: u32,
+}
+
+impl AffineInstance {
+    /// True when the map reverses orientation (det < 0): winding must flip.
+    pub fn parity(&self) -> bool {
+        self.linear.determinant() < 0.0
+    }
+
+    /// The normal matrix: the inverse transpose of the linear part, up to a
+    /// positive factor (the cofactor matrix, signed by the determinant, so it
+    /// stays finite for nearly flat maps). Normals must be renormalised.
+    pub fn normal_matrix(&self) -> Mat3 {
+        let [a, b, c] = [self.linear.x_axis, self.linear.y_axis, self.linear.z_axis];
+        let cof = Mat3::from_cols(b.cross(c), c.cross(a), a.cross(b));
+        if self.parity() {
+            cof * -1.0
+        } else {
+            cof
+        }
+    }
+
+    /// Whether the instance yields usable geometry (finite, not flat).
+    pub fn is_drawable(&self) -> bool {
+        let d = self.linear.determinant();
+        d.is_finite() && d != 0.0 && self.translation.is_finite()
+    }
+}
+
+/// Bytes accounted per stored affine instance.
+pub const AFFINE_INSTANCE_BYTES: u64 = std::mem::size_of::<AffineInstance>() as u64;
+
 /// One pen position of a swept line: the frame the profile is placed in, and its colour.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinePoint {
@@ -139,6 +187,11 @@ pub struct Scene {
     pub shapes: Vec<crate::geom::primitives::Prototype>,
     /// Placements of [`Scene::shapes`].
     pub shape_instances: Vec<ShapeInstance>,
+    /// Primitives placed by general affine maps (EisenScript), in evaluation order.
+    pub affine: Vec<AffineInstance>,
+    /// Names of the classes [`AffineInstance::class`] indexes (`box::shiny` → `shiny`);
+    /// index 0 is the default class. Empty when no language uses classes.
+    pub classes: Vec<String>,
     /// Clear colour from `background`, if the grammar set one.
     pub background: Option<[f32; 4]>,
     /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.

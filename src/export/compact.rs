@@ -384,7 +384,7 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
         accessors.push(accessor(view, &p.indices));
         json_meshes.push(json!({
             "name": p.name,
-            "primitives": [{"attributes": attributes, "indices": indices, "material": 0, "mode": 4}],
+            "primitives": [{"attributes": attributes, "indices": indices, "material": if meta.material_per_mesh { json_meshes.len() } else { 0 }, "mode": 4}],
         }));
         let mut node = Map::new();
         node.insert("mesh".into(), json!(json_meshes.len() - 1));
@@ -415,10 +415,13 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
         root.insert("accessors".into(), Value::Array(accessors));
         root.insert("bufferViews".into(), Value::Array(layout.views));
         root.insert("buffers".into(), Value::Array(buffers));
-        root.insert(
-            "materials".into(),
-            json!([{"pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.8}}]),
-        );
+        let material = json!({"pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.8}});
+        let materials: Vec<Value> = if meta.material_per_mesh {
+            prepared.iter().map(|p| { let mut m = material.clone(); m["name"] = json!(p.name); m }).collect()
+        } else {
+            vec![material]
+        };
+        root.insert("materials".into(), Value::Array(materials));
         root.insert("meshes".into(), Value::Array(json_meshes));
     }
     if !used.is_empty() {

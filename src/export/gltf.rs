@@ -381,7 +381,8 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &E
         None => (Vec::new(), Vec::new()),
     };
     if let (false, Some(buffer)) = (placed.is_empty(), buffer) {
-        let material = root.push(json::Material {
+        let material = |name: Option<String>| json::Material {
+            name,
             pbr_metallic_roughness: json::material::PbrMetallicRoughness {
                 base_color_factor: json::material::PbrBaseColorFactor([1.0, 1.0, 1.0, 1.0]),
                 metallic_factor: json::material::StrengthFactor(0.0),
@@ -390,8 +391,13 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &E
             },
             double_sided: false,
             ..Default::default()
-        });
+        };
+        let shared = (!meta.material_per_mesh).then(|| root.push(material(None)));
         for (m, p) in placed {
+            let material = match shared {
+                Some(s) => s,
+                None => root.push(material(Some(m.name.clone()))),
+            };
             let n = p.vertices;
             let pv = root.push(view(buffer, p.position_offset(), 12 * n as u64, Target::ArrayBuffer));
             let nv = root.push(view(buffer, p.normal_offset(), 12 * n as u64, Target::ArrayBuffer));
@@ -894,10 +900,10 @@ pub(crate) mod tests {
     #[test]
     fn extras_record_background_and_truncation() {
         let meshes = meshes_of(&scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 1.0, false)]), 16, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None };
+        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None, material_per_mesh: false };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"background": [0.25, 0.5, 1.0, 1.0], "truncated": true}));
-        let meta = ExportMeta { background: None, truncated: true, graph: None };
+        let meta = ExportMeta { background: None, truncated: true, graph: None, material_per_mesh: false };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"truncated": true}));
     }
@@ -905,7 +911,7 @@ pub(crate) mod tests {
     #[test]
     fn gltf_embeds_the_same_buffer_as_glb() {
         let meshes = meshes_of(&all_nine(), 7, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None };
+        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None, material_per_mesh: false };
         let glb = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let gltf = write_gltf(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let (jb, bin) = parse_glb(&glb);
@@ -950,7 +956,7 @@ pub(crate) mod tests {
     #[test]
     fn deterministic_bytes() {
         let meshes = meshes_of(&all_nine(), 16, MeshLayout::PerKind);
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false };
         let a = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let b = write_glb(&meshes_of(&all_nine(), 16, MeshLayout::PerKind), &meta, &mut Budget::new(Limits::default())).unwrap();
         assert_eq!(a, b);

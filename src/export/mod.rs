@@ -92,6 +92,10 @@ pub struct ExportMeta {
     /// Bones, their animation and the camera, for the plain glTF writers;
     /// the meshes are then each in their node's coordinates.
     pub graph: Option<graph::NodeGraph>,
+    /// Give each mesh its own glTF material named like the mesh, instead of
+    /// one shared unnamed material: EisenScript's primitive classes
+    /// (`box::glass`) become meshes and materials a viewer can restyle.
+    pub material_per_mesh: bool,
 }
 
 /// Export failures.
@@ -228,7 +232,7 @@ mod tests {
             let s = scene(vec![inst(kind, [0.0; 3], 1.0, false)]);
             out.push((kind.name().to_ascii_lowercase(), meshes_of(&s, 16, MeshLayout::Merged), plain.clone()));
         }
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false };
         out.push(("all-merged".into(), meshes_of(&all_nine(), 16, MeshLayout::Merged), meta.clone()));
         out.push(("all-per-kind".into(), meshes_of(&all_nine(), 5, MeshLayout::PerKind), meta));
         let mirrored = scene(vec![inst(PrimitiveKind::Cone, [1.0, 2.0, 3.0], 2.0, true)]);

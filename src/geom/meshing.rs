@@ -12,7 +12,7 @@
 use super::primitives::{self, Prototype};
 use super::{Mesh, NamedMesh};
 use crate::eval::budget::{Budget, Limit, LimitExceeded};
-use crate::eval::scene::{FreeVertex, Instance, Scene};
+use crate::eval::scene::{AffineInstance, FreeVertex, Instance, Scene};
 use crate::lang::ir::PrimitiveKind;
 use glam::Vec3;
 
@@ -61,6 +61,7 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
     if present.iter().any(|&p| p) {
         build_instance_meshes(scene, detail, layout, &present, budget, &mut meshes)?;
     }
+    build_affine_meshes(scene, detail, budget, &mut meshes)?;
     // Swept lines are their own mesh in either layout.
     if let Some(mesh) = super::sweep::sweep_lines(&scene.lines, &scene.profiles, detail, budget)? {
         meshes.push(NamedMesh { name: "lines".to_string(), mesh });
@@ -168,6 +169,70 @@ fn build_instance_meshes(
         meshes.push(NamedMesh { name, mesh });
     }
     Ok(())
+}
+
+/// Meshes of the scene's affine instances: one per class present, in class
+/// order, named `model` for the default class and by the class name otherwise
+/// (so `box::glass` ends up in a mesh and material called `glass`).
+fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, meshes: &mut Vec<NamedMesh>) -> Result<(), LimitExceeded> {
+    if scene.affine.is_empty() {
+        return Ok(());
+    }
+    let classes = scene.affine.iter().map(|a| a.class).max().unwrap_or(0) as usize + 1;
+    let mut protos: [Option<Prototype>; PrimitiveKind::ALL.len()] = Default::default();
+    for class in 0..classes {
+        let members = || scene.affine.iter().filter(move |a| a.class as usize == class && a.is_drawable());
+        let (v, t) = members().fold((0u64, 0u64), |(v, t), i| {
+            (v.saturating_add(primitives::vertex_count(i.kind, detail)), t.saturating_add(primitives::triangle_count(i.kind, detail)))
+        });
+        if t == 0 {
+            continue;
+        }
+        let bytes = mesh_bytes(v, t);
+        if v > u64::from(u32::MAX) {
+            return Err(LimitExceeded { limit: Limit::Memory, configured: budget.limits().max_memory, reached: budget.memory().saturating_add(bytes) });
+        }
+        budget.reserve_memory(bytes)?;
+        let mut mesh = Mesh {
+            positions: Vec::with_capacity(v as usize),
+            normals: Vec::with_capacity(v as usize),
+            colours: Vec::with_capacity(v as usize),
+            indices: Vec::with_capacity((t as usize).saturating_mul(3)),
+        };
+        for inst in members() {
+            let proto = protos[inst.kind as usize].get_or_insert_with(|| primitives::tessellate(inst.kind, detail));
+            append_affine(&mut mesh, proto, inst);
+        }
+        let name = match scene.classes.get(class).map(String::as_str) {
+            None | Some("") => "model".to_string(),
+            Some(n) => n.to_string(),
+        };
+        meshes.push(NamedMesh { name, mesh });
+    }
+    Ok(())
+}
+
+/// Appends `proto` mapped by the affine `inst` to `mesh` (normals by the
+/// inverse transpose, winding flipped for orientation-reversing maps).
+fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
+    let normal_matrix = inst.normal_matrix();
+    let colour = inst.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    let base = mesh.positions.len() as u32;
+    for (p, n) in proto.positions.iter().zip(&proto.normals) {
+        let p = inst.linear * Vec3::from_array(*p) + inst.translation;
+        let n = (normal_matrix * Vec3::from_array(*n)).try_normalize().unwrap_or(Vec3::Z);
+        mesh.positions.push(p.to_array());
+        mesh.normals.push(n.to_array());
+        mesh.colours.push(colour);
+    }
+    let flip = inst.parity();
+    for t in proto.indices.chunks_exact(3) {
+        if flip {
+            mesh.indices.extend_from_slice(&[base + t[0], base + t[2], base + t[1]]);
+        } else {
+            mesh.indices.extend_from_slice(&[base + t[0], base + t[1], base + t[2]]);
+        }
+    }
 }
 
 /// Appends `proto` transformed by `inst` to `mesh`.

@@ -1,6 +1,7 @@
 //! Front ends: one module per language, each turning source bytes into the
 //! shared [`ir::Program`]. Parsers never touch geometry or output formats.
 
+pub mod eisen;
 pub mod expr;
 pub mod ir;
 pub mod lsystem;
@@ -91,6 +92,8 @@ pub enum Language {
     Mdg,
     /// L-systems in the notation of *The Algorithmic Beauty of Plants* (seed 001); see `docs/lsystem.md`.
     Lsystem,
+    /// EisenScript, the language of Structure Synth 1.5; see `docs/eisenscript.md`.
+    Eisenscript,
 }
 
 impl Language {
@@ -99,6 +102,7 @@ impl Language {
         match self {
             Language::Mdg => "mdg",
             Language::Lsystem => "lsystem",
+            Language::Eisenscript => "eisenscript",
         }
     }
 
@@ -107,6 +111,7 @@ impl Language {
         match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
             "mdg" => Some(Language::Mdg),
             "ls" => Some(Language::Lsystem),
+            "es" => Some(Language::Eisenscript),
             _ => None,
         }
     }
@@ -119,7 +124,14 @@ impl Language {
             let l = l.trim_start();
             l.starts_with("axiom:") || l.starts_with("iterations:")
         };
-        if mdg_words.iter().any(|w| text.contains(w)) {
+        // EisenScript shares `rule ` with MDG and `#define` with L-systems, so
+        // it wins only without their unambiguous markers.
+        let eisen = eisen::looks_like_eisenscript(&text)
+            && !text.lines().any(lsystem_line)
+            && !["startshape", "@param", "@define"].iter().any(|w| text.contains(w));
+        if eisen {
+            Some(Language::Eisenscript)
+        } else if mdg_words.iter().any(|w| text.contains(w)) {
             Some(Language::Mdg)
         } else if text.lines().any(lsystem_line) {
             Some(Language::Lsystem)
@@ -140,6 +152,10 @@ pub fn parse(language: Language, source: &[u8]) -> Result<ir::Program, ParseErro
             lsystem::parse(source)?;
             Err(ParseError::single(Span::new(1, 1), "L-systems do not lower into the rule IR; use lang::lsystem::parse"))
         }
+        Language::Eisenscript => {
+            eisen::parse(source, &Default::default())?;
+            Err(ParseError::single(Span::new(1, 1), "EisenScript does not lower into the rule IR (see docs/eisenscript.md); use lang::eisen::parse"))
+        }
     }
 }
 
@@ -148,5 +164,6 @@ pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, Parse
     match language {
         Language::Mdg => mdg::parse(source).map(|p| p.warnings),
         Language::Lsystem => lsystem::parse(source).map(|s| s.warnings),
+        Language::Eisenscript => eisen::parse(source, &Default::default()).map(|s| s.warnings),
     }
 }

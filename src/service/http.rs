@@ -423,8 +423,8 @@ pub fn check(body: CheckBody, ceiling: &Limits) -> Result<CheckReport, ServiceEr
     let language = super::request::parse_language(body.language.as_deref())?;
     let source = crate::cache::normalize_source(body.source.as_bytes());
     let limits = Limits::default().clamped_to(ceiling);
-    match crate::pipeline::parse_source(&source, language, &limits) {
-        Ok((lang, program)) => Ok(CheckReport { ok: true, language: Some(lang.name()), diagnostics: program.warnings }),
+    match crate::pipeline::check_source(&source, language, &limits) {
+        Ok((lang, warnings)) => Ok(CheckReport { ok: true, language: Some(lang.name()), diagnostics: warnings }),
         Err(crate::RenderError::Parse(p)) => {
             let lang = language.or_else(|| crate::lang::Language::detect(&source)).map(|l| l.name());
             let ok = !p.diagnostics.iter().any(|d| d.severity == Severity::Error);

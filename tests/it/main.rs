@@ -11,6 +11,7 @@ mod counts;
 mod directives;
 mod determinism;
 mod docs;
+mod eisen;
 mod gallery;
 mod grammars;
 mod hostile;

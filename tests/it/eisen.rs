@@ -1,0 +1,298 @@
+//! EisenScript (issue 8): exact counts for loops, retirement, `maxobjects`
+//! and breadth-first order, `set seed` reproducibility, colour pools, GUI
+//! parameters, affine frames, and every example script Debian's
+//! `structure-synth` package ships through the renderer and the Khronos
+//! glTF Validator.
+
+use crate::common::{decode_stl, signed_volume, tempdir, validate_gltf};
+use rulemesh::eisen::{build, BuildOptions};
+use rulemesh::eval::{Limit, Limits, OnLimit, ParamValue};
+use rulemesh::export::Format;
+use rulemesh::lang::eisen::{parse, ParseOptions};
+use rulemesh::lang::ir::PrimitiveKind;
+use rulemesh::lang::Language;
+use rulemesh::{render, RenderError, RenderRequest};
+use std::path::{Path, PathBuf};
+
+fn req(format: Format) -> RenderRequest {
+    RenderRequest { language: Some(Language::Eisenscript), format, ..RenderRequest::default() }
+}
+
+/// The scene `src` builds with seed `seed`.
+fn scene(src: &str, seed: u64) -> rulemesh::eval::Scene {
+    let script = parse(src.as_bytes(), &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let opts = BuildOptions {
+        seed,
+        detail: 8,
+        on_limit: OnLimit::Error,
+        line_radius: 0.01,
+        downstream_bytes: [0; 9],
+        vertex_bytes: 0,
+    };
+    let mut budget = rulemesh::eval::Budget::new(Limits::default());
+    build(&script, &opts, &mut budget).unwrap_or_else(|e| panic!("{e}")).scene
+}
+
+fn count(src: &str, kind: PrimitiveKind) -> usize {
+    scene(src, 0).affine.iter().filter(|a| a.kind == kind).count()
+}
+
+fn objects(src: &str) -> u64 {
+    render(src.as_bytes(), &req(Format::Stl)).unwrap_or_else(|e| panic!("{e}")).primitives
+}
+
+#[test]
+fn loops_make_n_copies_at_the_first_to_nth_power() {
+    assert_eq!(objects("3 * { x 2 } box"), 3);
+    assert_eq!(objects("2 * { y 1 } 3 * { x 1 } box"), 6);
+    assert_eq!(objects("4 * { x 1 } 0 * { y 1 } box"), 0);
+    // Structure Synth's Action::apply runs each loop's counter from 1 to N:
+    // the copies sit at T¹…Tᴺ (the box's centre is at 0.5 in its frame).
+    let s = scene("3 * { x 2 } box", 0);
+    let xs: Vec<f32> = s.affine.iter().map(|a| a.translation.x).collect();
+    assert_eq!(xs, [2.5, 4.5, 6.5]);
+    // Nested loops: the first loop's counter runs fastest.
+    let s = scene("2 * { y 10 } 2 * { x 1 } box", 0);
+    let p: Vec<(f32, f32)> = s.affine.iter().map(|a| (a.translation.x, a.translation.y)).collect();
+    assert_eq!(p, [(1.5, 10.5), (1.5, 20.5), (2.5, 10.5), (2.5, 20.5)]);
+    // Copies are made incrementally: 50 000 copies cost 50 000 steps, not 1.25 billion.
+    let out = render(b"set maxobjects 60000\n50000 * { x 1 } box", &req(Format::Stl)).unwrap();
+    assert_eq!(out.primitives, 50_000);
+    // A loop's step repeats colour changes too: hue 120 per copy.
+    let s = scene("3 * { x 1 hue 120 } box", 0);
+    let c: Vec<[f32; 4]> = s.affine.iter().map(|a| a.colour).collect();
+    assert_eq!(c, [[0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 1.0, 1.0], [1.0, 0.0, 0.0, 1.0]]);
+}
+
+#[test]
+fn maxdepth_retirement_runs_the_substitute_once_per_branch() {
+    let with = "r\nrule r md 3 > e { { x 1 } r box }\nrule e { sphere }\n";
+    assert_eq!(count(with, PrimitiveKind::Box), 3);
+    assert_eq!(count(with, PrimitiveKind::Sphere), 1);
+    let without = "r\nrule r maxdepth 3 { { x 1 } r box }\n";
+    assert_eq!(count(without, PrimitiveKind::Box), 3);
+    assert_eq!(count(without, PrimitiveKind::Sphere), 0);
+    // Retirement counters are per branch: two branches of 3 each, and the
+    // substitute restarts the count (md 2 > r2 alternating never ends before maxdepth).
+    assert_eq!(count("2 * { y 2 } r\nrule r md 3 { { x 1 } r box }\n", PrimitiveKind::Box), 6);
+    assert_eq!(count("set maxdepth 12\nr\nrule r md 2 > r { { x 1 } r box }\n", PrimitiveKind::Box), 10);
+}
+
+#[test]
+fn global_maxdepth_counts_generations() {
+    // Generation 1 runs the top level, generation k + 1 draws the box queued in generation k.
+    assert_eq!(objects("set maxdepth 1\nbox"), 0);
+    assert_eq!(objects("set maxdepth 2\nbox"), 1);
+    assert_eq!(objects("set maxdepth 10\nr\nrule r { box { x 1 } r }\n"), 8);
+}
+
+#[test]
+fn maxobjects_stops_at_a_generation_boundary_in_breadth_first_order() {
+    // One box per generation: exactly the limit.
+    assert_eq!(objects("set maxobjects 10\nr\nrule r { box { x 1 } r }\n"), 10);
+    // Four per generation: the generation that crosses the limit completes.
+    assert_eq!(objects("set maxobjects 10\nr\nrule r { 4 * { y 1 } box { x 1 } r }\n"), 12);
+    // Pending rule states count too: 36 queued boxes ≥ 10 stop before drawing.
+    assert_eq!(objects("set maxobjects 10\n36 * { x 1 } box\n"), 0);
+    // A binary tree: breadth-first keeps whole levels (the root box, then both
+    // children), where depth-first would follow one branch down.
+    let tree = "set maxobjects 7\nt\nrule t { box { x 1 s 0.5 } t { y 1 s 0.5 } t }\n";
+    let s = scene(tree, 0);
+    let mut sizes: Vec<f32> = s.affine.iter().map(|a| a.linear.x_axis.x).collect();
+    sizes.sort_by(f32::total_cmp);
+    assert_eq!(sizes, [0.5, 0.5, 1.0]);
+    // Depth-first (`set recursion depth`) follows the first branch instead.
+    let s = scene(&format!("set recursion depth\n{tree}"), 0);
+    let sizes: Vec<f32> = s.affine.iter().take(3).map(|a| a.linear.x_axis.x).collect();
+    assert_eq!(sizes, [1.0, 0.5, 0.25]);
+}
+
+#[test]
+fn minsize_and_maxsize_prune_branches() {
+    // Diagonal √3 · 0.5ᵏ: minsize 0.2 keeps k = 0..3.
+    assert_eq!(objects("set minsize 0.2\nr\nrule r { box { s 0.5 } r }\n"), 4);
+    assert_eq!(objects("set maxsize 4\nr\nrule r { box { s 1.5 } r }\n"), 3);
+    // The size check applies to the start rule too: maxsize below √3 prunes everything, as in Structure Synth.
+    assert_eq!(objects("set maxsize 1\nbox\n"), 0);
+}
+
+const RANDOM: &str = "set maxdepth 30\n40 * { x 1 } r\nrule r { { color random } box }\nrule r w 2 { { y 1 color random } sphere }\n";
+
+#[test]
+fn set_seed_reproduces_and_request_seed_varies() {
+    let bytes = |src: &str, seed: u64| {
+        let r = RenderRequest { seed: Some(seed), ..req(Format::Glb) };
+        render(src.as_bytes(), &r).unwrap_or_else(|e| panic!("{e}")).bytes
+    };
+    assert_eq!(bytes(RANDOM, 1), bytes(RANDOM, 1));
+    assert_ne!(bytes(RANDOM, 1), bytes(RANDOM, 2));
+    // `set seed` in the script wins over the request's seed, as it does over Structure Synth's GUI seed.
+    let seeded = format!("set seed 7\n{RANDOM}");
+    assert_eq!(bytes(&seeded, 1), bytes(&seeded, 2));
+    assert_ne!(bytes(&seeded, 1), bytes(&format!("set seed 8\n{RANDOM}"), 1));
+    // Weights: about twice as many spheres as boxes.
+    let s = scene(RANDOM, 3);
+    let spheres = s.affine.iter().filter(|a| a.kind == PrimitiveKind::Sphere).count();
+    assert_eq!(s.affine.len(), 40);
+    assert!((18..=36).contains(&spheres), "{spheres}");
+    // `set seed initial` gives every branch the same random choices.
+    let initial = "5 * { x 2 } r\nrule r { set seed initial 10 * { y 1 } q }\nrule q { box }\nrule q { sphere }\n";
+    let s = scene(initial, 9);
+    let kinds: Vec<Vec<PrimitiveKind>> = s.affine.chunks(10).map(|c| c.iter().map(|a| a.kind).collect()).collect();
+    assert!(kinds.windows(2).all(|w| w[0] == w[1]), "{kinds:?}");
+}
+
+#[test]
+fn colour_pools() {
+    let colours = |pool: &str| -> Vec<[f32; 4]> {
+        scene(&format!("set colorpool {pool}\n300 * {{ x 1 color random }} box\n"), 4).affine.iter().map(|a| a.colour).collect()
+    };
+    let list = colours("list:red,blue");
+    assert!(list.iter().all(|c| *c == [1.0, 0.0, 0.0, 1.0] || *c == [0.0, 0.0, 1.0, 1.0]), "{list:?}");
+    assert!(list.contains(&[1.0, 0.0, 0.0, 1.0]) && list.contains(&[0.0, 0.0, 1.0, 1.0]));
+    let grey = colours("greyscale");
+    assert!(grey.iter().all(|c| c[0] == c[1] && c[1] == c[2]));
+    assert!(grey.iter().any(|c| c[0] != grey[0][0]));
+    for c in colours("randomhue") {
+        let max = c[0].max(c[1]).max(c[2]);
+        let min = c[0].min(c[1]).min(c[2]);
+        assert_eq!((max, min), (1.0, 0.0), "{c:?}");
+    }
+    let rgb = colours("randomrgb");
+    assert!(rgb.iter().any(|c| c[0] != c[1]));
+    // The default state colour is red (hue 0, full saturation and value); `hue` adds, `b` multiplies.
+    let s = scene("box\n{ hue 120 } box\n{ color white } box\n{ b 0.5 color white } box\n", 0);
+    assert_eq!(s.affine[0].colour, [1.0, 0.0, 0.0, 1.0]);
+    assert_eq!(s.affine[1].colour, [0.0, 1.0, 0.0, 1.0]);
+    assert_eq!(s.affine[2].colour, [1.0, 1.0, 1.0, 1.0]);
+    // Structure Synth composes a list's colour changes before applying them,
+    // so `b 0.5` scales the absolute white that follows it: 50 % grey (sRGB).
+    assert!((s.affine[3].colour[0] - 0.214_041_14).abs() < 1e-6, "{:?}", s.affine[3].colour);
+    let e = render(b"set colorpool image:x.png\nbox", &req(Format::Glb)).unwrap_err();
+    assert!(e.to_string().contains("image"), "{e}");
+}
+
+#[test]
+fn gui_defines_bind_to_request_parameters() {
+    let src = "#define n 3 (int:1-10)\n#define d 1 (float:0.5-2)\nn * { x d } box\n";
+    assert_eq!(objects(src), 3);
+    let with = |name: &str, v: f64| {
+        let mut r = req(Format::Stl);
+        r.params.insert(name.into(), ParamValue::Number(v));
+        render(src.as_bytes(), &r)
+    };
+    assert_eq!(with("n", 5.0).unwrap().primitives, 5);
+    assert!(matches!(with("n", 11.0), Err(RenderError::Eval(_))));
+    assert!(matches!(with("n", 2.5), Err(RenderError::Eval(_))));
+    assert!(matches!(with("nope", 1.0), Err(RenderError::Eval(_))));
+    assert!(with("line_radius", 0.05).is_ok());
+}
+
+#[test]
+fn budget_limits_name_the_limit() {
+    let deep = "set maxdepth 5000\nr\nrule r { { x 1 } r box }\n";
+    match render(deep.as_bytes(), &req(Format::Glb)) {
+        Err(RenderError::Limit(l)) => assert_eq!(l.limit, Limit::Depth),
+        other => panic!("{other:?}"),
+    }
+    let many = "set maxobjects 1000000\nr\nrule r { 10 * { y 1 } box { x 1 } r }\n";
+    let small = RenderRequest { limits: Limits { max_primitives: 100, ..Limits::default() }, ..req(Format::Glb) };
+    match render(many.as_bytes(), &small) {
+        Err(RenderError::Limit(l)) => assert_eq!(l.limit, Limit::Primitives),
+        other => panic!("{other:?}"),
+    }
+    let out = render(many.as_bytes(), &RenderRequest { on_limit: OnLimit::Truncate, ..small }).unwrap();
+    assert_eq!(out.truncated.map(|t| t.limit), Some(Limit::Primitives));
+}
+
+#[test]
+fn affine_frames_keep_solids_closed_and_outward() {
+    // Non-uniform scale, a shear matrix and mirrors: every solid keeps positive volume.
+    let src = "{ s 1 2 0.5 } box\n{ x 3 fx } box\n{ x 6 m 1 0.5 0 0 1 0 0 0 1 } box\n{ y 4 s 2 1 1 } sphere\n{ z 4 fy s 1 0.3 2 } cylinder\n";
+    let out = render(src.as_bytes(), &req(Format::Stl)).unwrap();
+    let tris = decode_stl(&out.bytes);
+    assert!(signed_volume(&tris) > 0.0);
+    let s = scene("{ s 1 2 0.5 } box\n", 0);
+    assert!((s.affine[0].linear.determinant() - 1.0).abs() < 1e-6);
+    // A single mirrored box alone has the same volume as the plain one.
+    let v = |src: &str| signed_volume(&decode_stl(&render(src.as_bytes(), &req(Format::Stl)).unwrap().bytes));
+    assert!((v("{ fx s 2 1 1 } box") - 2.0).abs() < 1e-4);
+    assert!((v("{ s 2 1 1 } box") - 2.0).abs() < 1e-4);
+}
+
+#[test]
+fn classes_become_mesh_names_and_detection_works() {
+    let src = "box\n{ x 2 } box::glass\n{ x 4 } sphere::glass\n{ x 6 } box::metal\n";
+    let out = render(src.as_bytes(), &req(Format::Gltf)).unwrap();
+    let j: serde_json::Value = serde_json::from_slice(&out.bytes).unwrap();
+    let names: Vec<&str> = j["meshes"].as_array().unwrap().iter().map(|m| m["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["model", "glass", "metal"]);
+    let mats: Vec<&str> = j["materials"].as_array().unwrap().iter().filter_map(|m| m["name"].as_str()).collect();
+    assert_eq!(mats, ["model", "glass", "metal"]);
+    assert_eq!(Language::detect(b"set maxdepth 10\nr\nrule r { box }"), Some(Language::Eisenscript));
+    assert_eq!(Language::from_extension(Path::new("x.es")), Some(Language::Eisenscript));
+    // No MDG grammar or L-system (which use `#define` too) is taken for EisenScript.
+    for ext in ["mdg", "ls"] {
+        for f in crate::common::grammar_files(ext) {
+            let src = std::fs::read(&f).expect("read grammar");
+            assert_ne!(Language::detect(&src), Some(Language::Eisenscript), "{}", f.display());
+        }
+    }
+}
+
+/// Every `.es` under `dir`, sorted.
+fn scripts_under(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let Ok(rd) = std::fs::read_dir(dir) else { return out };
+    for e in rd.flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            out.extend(scripts_under(&p));
+        } else if p.extension().is_some_and(|x| x == "es") {
+            out.push(p);
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn debian_examples_render_and_validate() {
+    let dir = Path::new("/usr/share/structure-synth/Examples");
+    if !dir.is_dir() {
+        assert!(
+            std::env::var_os("EISEN_EXAMPLES_REQUIRED").is_none(),
+            "EISEN_EXAMPLES_REQUIRED is set but {} is missing: install Debian's structure-synth package (scripts/test does)",
+            dir.display()
+        );
+        eprintln!("skipping: {} is missing (apt-get install structure-synth; scripts/test requires it)", dir.display());
+        return;
+    }
+    let files = scripts_under(dir);
+    assert!(files.len() >= 30, "expected the package's ~38 examples, found {}", files.len());
+    let tmp = tempdir();
+    let mut written = Vec::new();
+    let mut failures = Vec::new();
+    for f in &files {
+        let source = std::fs::read(f).expect("read example");
+        let name = f.strip_prefix(dir).unwrap_or(f).display().to_string();
+        let r = RenderRequest { format: Format::Glb, ..RenderRequest::default() };
+        match render(&source, &RenderRequest { language: Language::from_extension(f), ..r }) {
+            Ok(out) => {
+                let path = tmp.path().join(format!("{}.glb", written.len()));
+                std::fs::write(&path, &out.bytes).expect("write glb");
+                written.push((name, path));
+            }
+            Err(RenderError::Limit(l)) => assert!(l.to_string().contains(l.limit.name()), "{name}: {l}"),
+            // Structure Synth's JavaScript animation driver is not EisenScript.
+            Err(RenderError::Parse(e)) if source.starts_with(b"#javascript") => assert!(e.to_string().contains("JavaScript")),
+            Err(e) => failures.push(format!("{name}: {e}")),
+        }
+    }
+    assert!(failures.is_empty(), "examples that failed:\n{}", failures.join("\n"));
+    assert!(written.len() >= 25, "only {} examples rendered", written.len());
+    let paths: Vec<PathBuf> = written.iter().map(|(_, p)| p.clone()).collect();
+    for ((name, _), (errors, _, report)) in written.iter().zip(validate_gltf(&paths)) {
+        assert_eq!(errors, 0, "{name}: {report}");
+    }
+}
