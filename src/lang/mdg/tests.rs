@@ -102,6 +102,7 @@ fn parses_the_basic_example_into_exact_ir() {
         site_count: 2,
         warnings: vec![],
         isosurfaces: vec![],
+        meshes: vec![],
     };
     assert_eq!(p, expected);
 }
