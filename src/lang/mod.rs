@@ -5,6 +5,7 @@ pub mod expr;
 pub mod ir;
 pub mod lsystem;
 pub mod mdg;
+pub mod stack;
 
 use serde::Serialize;
 
@@ -91,6 +92,8 @@ pub enum Language {
     Mdg,
     /// L-systems in the notation of *The Algorithmic Beauty of Plants* (seed 001); see `docs/lsystem.md`.
     Lsystem,
+    /// Seed 003's stacking string: a primitive and a modifier chain (`b1.5s1.4w0.1`); see `docs/modifiers.md`.
+    Stack,
 }
 
 impl Language {
@@ -99,6 +102,7 @@ impl Language {
         match self {
             Language::Mdg => "mdg",
             Language::Lsystem => "lsystem",
+            Language::Stack => "stack",
         }
     }
 
@@ -107,6 +111,7 @@ impl Language {
         match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
             "mdg" => Some(Language::Mdg),
             "ls" => Some(Language::Lsystem),
+            "stack" => Some(Language::Stack),
             _ => None,
         }
     }
@@ -140,6 +145,7 @@ pub fn parse(language: Language, source: &[u8]) -> Result<ir::Program, ParseErro
             lsystem::parse(source)?;
             Err(ParseError::single(Span::new(1, 1), "L-systems do not lower into the rule IR; use lang::lsystem::parse"))
         }
+        Language::Stack => stack::parse(source),
     }
 }
 
@@ -148,5 +154,6 @@ pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, Parse
     match language {
         Language::Mdg => mdg::parse(source).map(|p| p.warnings),
         Language::Lsystem => lsystem::parse(source).map(|s| s.warnings),
+        Language::Stack => stack::parse(source).map(|p| p.warnings),
     }
 }

@@ -135,7 +135,8 @@ pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceErr
         None | Some("") => Ok(None),
         Some(n) if n.eq_ignore_ascii_case("mdg") => Ok(Some(Language::Mdg)),
         Some(n) if n.eq_ignore_ascii_case("lsystem") => Ok(Some(Language::Lsystem)),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem)"))),
+        Some(n) if n.eq_ignore_ascii_case("stack") => Ok(Some(Language::Stack)),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem, stack)"))),
     }
 }
 

@@ -14,6 +14,7 @@ mod grammars;
 mod hostile;
 mod lines;
 mod lsystem;
+mod modifiers;
 mod selectors;
 mod strips;
 mod scaleout;
