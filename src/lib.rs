@@ -13,6 +13,7 @@ pub mod geom;
 pub mod lang;
 pub mod lsystem;
 pub mod pipeline;
+pub mod print;
 pub mod service;
 
 pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};

@@ -58,7 +58,7 @@ struct ServeArgs {
 struct DecodeArgs {
     /// The `.strips` file, or `-` for standard input.
     file: String,
-    /// Output file (format from its extension: .glb, .gltf, .stl), or `-` for standard output.
+    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .3mf), or `-` for standard output.
     #[arg(short, long)]
     output: String,
     /// Output format (default: from the output extension, else glb).
@@ -136,6 +136,15 @@ struct RenderArgs {
     /// Scale and move the model into a unit box centred at the origin (every format).
     #[arg(long)]
     fit_unit_box: bool,
+    /// Merge every part into one watertight, outward-oriented solid in millimetres for 3D printing (docs/print.md).
+    #[arg(long)]
+    print: bool,
+    /// With --print: scale so the longest side is this many millimetres.
+    #[arg(long, value_name = "N", requires = "print")]
+    size_mm: Option<f64>,
+    /// With --print: write the JSON printability report instead of the model.
+    #[arg(long, requires = "print")]
+    print_report: bool,
 }
 
 #[derive(Args)]
@@ -245,6 +254,14 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
             strips: StripsOptions { position_bits: args.position_bits, normal_bits: args.normal_bits, zstd: args.zstd },
             gltf: GltfOptions { weld: args.weld, quantize: args.quantize, compress: args.compress },
             fit_unit_box: args.fit_unit_box,
+            print: rulemesh::print::PrintOptions {
+                enabled: args.print,
+                size_um: match args.size_mm {
+                    Some(mm) => rulemesh::print::size_um(mm).map_err(|e| Failure::new(EXIT_USAGE, e.to_string()))?,
+                    None => 0,
+                },
+                report: args.print_report,
+            },
         },
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;

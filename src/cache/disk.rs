@@ -209,7 +209,11 @@ pub(super) fn encode(model: &Rendered) -> Option<Vec<u8>> {
 }
 
 fn static_content_type(s: &str) -> Option<&'static str> {
-    [Format::Glb, Format::Gltf, Format::Stl, Format::StlAscii, Format::Strips].into_iter().map(Format::content_type).find(|c| *c == s)
+    [Format::Glb, Format::Gltf, Format::Stl, Format::StlAscii, Format::Strips, Format::ThreeMf, Format::Ug]
+        .into_iter()
+        .map(Format::content_type)
+        .chain(["application/json"])
+        .find(|c| *c == s)
 }
 
 pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
@@ -229,7 +233,7 @@ pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
         bytes: bytes::Bytes::copy_from_slice(bytes),
         etag,
         content_type: static_content_type(&header.content_type)?,
-        language: [Language::Mdg, Language::Lsystem, Language::Stack].into_iter().find(|l| l.name() == header.language)?,
+        language: [Language::Mdg, Language::Lsystem, Language::Stack, Language::Ug].into_iter().find(|l| l.name() == header.language)?,
         primitives: header.primitives,
         triangles: header.triangles,
         truncated: None,

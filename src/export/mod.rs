@@ -4,6 +4,8 @@ pub mod compact;
 pub mod gltf;
 pub mod stl;
 pub mod strips;
+pub mod threemf;
+pub mod ug;
 
 pub use compact::{Compression, GltfOptions};
 pub use strips::{decode_strips, StripsError, StripsOptions};
@@ -26,6 +28,12 @@ pub enum Format {
     /// rulemesh's compact triangle-strip format for phone clients
     /// (`docs/strips-format.md`): quantised, stripified and compressed.
     Strips,
+    /// 3MF core package (a zip with the model XML in millimetres), for printing.
+    #[value(name = "3mf")]
+    #[serde(rename = "3mf")]
+    ThreeMf,
+    /// Berkeley UniGrafix text (seed 004 §1): `def`/`v`/`f`/`c`/`i` statements.
+    Ug,
 }
 
 impl Format {
@@ -36,6 +44,8 @@ impl Format {
             "gltf" => Some(Format::Gltf),
             "stl" => Some(Format::Stl),
             "strips" => Some(Format::Strips),
+            "3mf" => Some(Format::ThreeMf),
+            "ug" => Some(Format::Ug),
             _ => None,
         }
     }
@@ -47,6 +57,8 @@ impl Format {
             Format::Gltf => "model/gltf+json",
             Format::Stl | Format::StlAscii => "model/stl",
             Format::Strips => "application/vnd.rulemesh.strips",
+            Format::ThreeMf => "model/3mf",
+            Format::Ug => "text/plain; charset=utf-8",
         }
     }
 
@@ -58,6 +70,8 @@ impl Format {
             Format::Stl => "stl",
             Format::StlAscii => "stl",
             Format::Strips => "strips",
+            Format::ThreeMf => "3mf",
+            Format::Ug => "ug",
         }
     }
 }
@@ -104,6 +118,9 @@ pub enum ExportError {
         /// What is wrong.
         detail: String,
     },
+    /// `print=true` could not make a printable solid.
+    #[error("print: {0}")]
+    Print(crate::print::PrintError),
     /// JSON serialisation failed.
     #[error("serialising glTF JSON: {0}")]
     Json(#[from] serde_json::Error),
@@ -121,6 +138,8 @@ pub struct ExportOptions {
     /// Scale and move the model into a unit box centred at the origin (every
     /// format): its longest side becomes 1, its bounding box centre the origin.
     pub fit_unit_box: bool,
+    /// Printable output: one watertight solid in millimetres (`docs/print.md`).
+    pub print: crate::print::PrintOptions,
 }
 
 /// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
@@ -144,6 +163,20 @@ pub fn export_with(
     } else {
         meshes
     };
+    let printable;
+    let meshes = if options.print.enabled {
+        let (solid, report) = crate::print::make_printable(meshes, &options.print, budget).map_err(|e| match e {
+            crate::print::PrintError::Limit(l) => ExportError::Limit(l),
+            other => ExportError::Print(other),
+        })?;
+        if options.print.report {
+            return Ok(serde_json::to_vec_pretty(&report)?);
+        }
+        printable = solid;
+        &printable[..]
+    } else {
+        meshes
+    };
     let g = &options.gltf;
     match format {
         Format::Strips => strips::write_strips(meshes, &options.strips, budget),
@@ -153,6 +186,8 @@ pub fn export_with(
         Format::Gltf => gltf::write_gltf(meshes, meta, budget),
         Format::Stl => stl::write_binary(meshes, budget),
         Format::StlAscii => stl::write_ascii(meshes, budget),
+        Format::ThreeMf => threemf::write_3mf(meshes, budget),
+        Format::Ug => ug::write_ug(meshes, budget),
     }
 }
 
@@ -171,6 +206,10 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
         // partial block), a strip at most 5 indices per triangle at 5 bytes
         // each; zstd's worst-case growth fits in the per-vertex slack.
         Format::Strips => (16 * 1024, 20, 25),
+        // XML text (about 60 bytes a vertex, 45 a triangle) before compression.
+        Format::ThreeMf => (4 * 1024, 64, 48),
+        // `v vN x y z;` and `f (va vb vc) cN;` lines with shortest-round-trip floats.
+        Format::Ug => (4 * 1024, 64, 48),
     };
     vertices
         .saturating_mul(per_vertex)

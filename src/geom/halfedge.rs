@@ -327,22 +327,30 @@ impl HalfEdgeMesh {
     /// normal, positions rounded to f32 once per vertex so shared corners stay
     /// bit-identical (welding by position closes it again).
     pub fn to_prototype(&self) -> super::primitives::Prototype {
-        let pos32: Vec<[f32; 3]> = self.positions.iter().map(|p| p.as_vec3().to_array()).collect();
-        let mut proto = super::primitives::Prototype {
-            positions: Vec::with_capacity(self.tris.len() * 3),
-            normals: Vec::with_capacity(self.tris.len() * 3),
-            indices: Vec::with_capacity(self.tris.len() * 3),
-        };
-        for (f, t) in self.tris.iter().enumerate() {
-            let n = self.face_normal(f).as_vec3().to_array();
-            for &c in t {
-                proto.indices.push(proto.positions.len() as u32);
-                proto.positions.push(pos32[c as usize]);
-                proto.normals.push(n);
-            }
-        }
-        proto
+        flat_prototype(&self.positions, &self.tris)
     }
+}
+
+/// A flat-shaded prototype of any indexed triangles (no manifold check: UniGrafix
+/// models may share edges between touching parts): three vertices per face
+/// with its normal, positions rounded to f32 once per source vertex.
+pub fn flat_prototype(positions: &[DVec3], tris: &[[u32; 3]]) -> super::primitives::Prototype {
+    let pos32: Vec<[f32; 3]> = positions.iter().map(|p| p.as_vec3().to_array()).collect();
+    let mut proto = super::primitives::Prototype {
+        positions: Vec::with_capacity(tris.len() * 3),
+        normals: Vec::with_capacity(tris.len() * 3),
+        indices: Vec::with_capacity(tris.len() * 3),
+    };
+    for t in tris {
+        let Some(c) = t.iter().map(|&i| positions.get(i as usize).copied()).collect::<Option<Vec<DVec3>>>() else { continue };
+        let n = (c[1] - c[0]).cross(c[2] - c[0]).normalize_or(DVec3::Z).as_vec3().to_array();
+        for &i in t {
+            proto.indices.push(proto.positions.len() as u32);
+            proto.positions.push(pos32[i as usize]);
+            proto.normals.push(n);
+        }
+    }
+    proto
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@ pub mod ir;
 pub mod lsystem;
 pub mod mdg;
 pub mod stack;
+pub mod ug;
 
 use serde::Serialize;
 
@@ -94,6 +95,8 @@ pub enum Language {
     Lsystem,
     /// Seed 003's stacking string: a primitive and a modifier chain (`b1.5s1.4w0.1`); see `docs/modifiers.md`.
     Stack,
+    /// Berkeley UniGrafix (seed 004 §1), the safe subset: `v f c def end i`; see `docs/modifiers.md`.
+    Ug,
 }
 
 impl Language {
@@ -103,6 +106,7 @@ impl Language {
             Language::Mdg => "mdg",
             Language::Lsystem => "lsystem",
             Language::Stack => "stack",
+            Language::Ug => "ug",
         }
     }
 
@@ -112,6 +116,7 @@ impl Language {
             "mdg" => Some(Language::Mdg),
             "ls" => Some(Language::Lsystem),
             "stack" => Some(Language::Stack),
+            "ug" => Some(Language::Ug),
             _ => None,
         }
     }
@@ -146,6 +151,7 @@ pub fn parse(language: Language, source: &[u8]) -> Result<ir::Program, ParseErro
             Err(ParseError::single(Span::new(1, 1), "L-systems do not lower into the rule IR; use lang::lsystem::parse"))
         }
         Language::Stack => stack::parse(source),
+        Language::Ug => ug::parse(source),
     }
 }
 
@@ -155,5 +161,6 @@ pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, Parse
         Language::Mdg => mdg::parse(source).map(|p| p.warnings),
         Language::Lsystem => lsystem::parse(source).map(|s| s.warnings),
         Language::Stack => stack::parse(source).map(|p| p.warnings),
+        Language::Ug => ug::parse(source).map(|p| p.warnings),
     }
 }

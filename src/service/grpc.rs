@@ -64,6 +64,9 @@ impl From<pb::RenderRequest> for RenderBody {
             quantize: r.quantize,
             compress: non_empty(r.compress),
             fit: non_empty(r.fit),
+            print: r.print,
+            size_mm: r.size_mm,
+            print_report: r.print_report,
         }
     }
 }

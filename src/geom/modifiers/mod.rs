@@ -122,6 +122,13 @@ pub enum MeshBase {
     /// A geodesic sphere of this frequency (icosahedron, each face split
     /// into frequency² triangles, pushed onto the sphere).
     Geodesic(u32),
+    /// Indexed triangles given by the source (UniGrafix import).
+    Indexed {
+        /// Vertex positions.
+        positions: Vec<DVec3>,
+        /// CCW triangles.
+        triangles: Vec<[u32; 3]>,
+    },
 }
 
 impl MeshBase {
@@ -131,6 +138,7 @@ impl MeshBase {
             MeshBase::Primitive(k) => (primitives::vertex_count(*k, detail), primitives::triangle_count(*k, detail)),
             MeshBase::Solid(s) => s.size(),
             MeshBase::Geodesic(n) => polyhedra::geodesic_size(*n),
+            MeshBase::Indexed { positions, triangles } => (positions.len() as u64, triangles.len() as u64),
         }
     }
 
@@ -143,6 +151,7 @@ impl MeshBase {
             }
             MeshBase::Solid(s) => s.mesh(),
             MeshBase::Geodesic(n) => polyhedra::geodesic(*n),
+            MeshBase::Indexed { positions, triangles } => HalfEdgeMesh::new(positions.clone(), triangles.clone()),
         }
     }
 }
@@ -152,6 +161,12 @@ impl MeshBase {
 pub fn build(base: &MeshBase, modifiers: &[Modifier], detail: u32, budget: &mut Budget) -> Result<Prototype, ModifyError> {
     let (v, f) = base.size(detail);
     let bytes = admit(budget, v, f)?;
+    if let (MeshBase::Indexed { positions, triangles }, []) = (base, modifiers) {
+        // Drawn as given: imported models may have parts that touch along edges,
+        // which no half-edge structure holds; only modifiers need one.
+        budget.release_memory(bytes);
+        return Ok(super::halfedge::flat_prototype(positions, triangles));
+    }
     let mesh = base.build(detail).map_err(|source| ModifyError::Mesh { modifier: "base", source });
     budget.release_memory(bytes);
     let mesh = apply_all(mesh?, modifiers, budget)?;
