@@ -192,7 +192,12 @@ pub(crate) fn mesh_and_export(
     mut budget: Budget,
     mut stages: Stages,
 ) -> Result<RenderOutput, RenderError> {
-    let meshes = geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?;
+    let meshes = if req.export_options.print.enabled {
+        // Printing unites closed parts, so it needs them apart.
+        geom::meshing::build_parts(&scene, req.detail, &mut budget)?
+    } else {
+        geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?
+    };
     stages.lap(|p| &mut p.mesh);
     let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some() };
     let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;

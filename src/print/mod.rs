@@ -69,6 +69,10 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     // Rest the solid on z = 0, centred in x and y: how a slicer places it anyway.
     let offset = glam::DVec3::new(-(lo.x + hi.x) / 2.0, -(lo.y + hi.y) / 2.0, -lo.z);
     let scaled: Vec<[f32; 3]> = positions.iter().map(|p| ((*p + offset) * scale).as_vec3().to_array()).collect();
+    // Manifold leaves edges a few f32 ulps long, which slicers and checkers
+    // (trimesh merges within 1e-8) fuse into non-manifold edges: collapse
+    // edges shorter than a millionth of the size.
+    let (scaled, indices) = collapse_short_edges(scaled, &indices, (longest * scale) * 1e-6);
     let mesh = flat_mesh(&scaled, &indices);
     let mut report = measure(&scaled, &indices);
     report.parts = parts.closed.len() as u64;
@@ -77,6 +81,53 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     report.scale = scale;
     report.add_warnings(parts.skipped);
     Ok((vec![NamedMesh { name: "print".into(), mesh }], report))
+}
+
+/// Merges the two ends of every edge shorter than `eps` (and vertices at
+/// identical positions), then drops the triangles that thereby lose an edge.
+/// Collapsing only along edges keeps the surface closed and manifold; merging
+/// unconnected near points could pinch it.
+fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> (Vec<[f32; 3]>, Vec<u32>) {
+    let mut root: Vec<u32> = (0..positions.len() as u32).collect();
+    fn find(root: &mut [u32], mut v: u32) -> u32 {
+        while root[v as usize] != v {
+            root[v as usize] = root[root[v as usize] as usize];
+            v = root[v as usize];
+        }
+        v
+    }
+    let at = |i: u32| glam::Vec3::from_array(positions.get(i as usize).copied().unwrap_or([0.0; 3])).as_dvec3();
+    for t in indices.chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if at(a).distance(at(b)) < eps {
+                let (ra, rb) = (find(&mut root, a), find(&mut root, b));
+                if ra != rb {
+                    // Keep the lower index: deterministic whatever the triangle order.
+                    root[ra.max(rb) as usize] = ra.min(rb);
+                }
+            }
+        }
+    }
+    let mut ids: std::collections::HashMap<[u32; 3], u32> = std::collections::HashMap::with_capacity(positions.len());
+    let mut welded = Vec::with_capacity(positions.len());
+    let remap: Vec<u32> = (0..positions.len() as u32)
+        .map(|v| {
+            let p = positions[find(&mut root, v) as usize];
+            *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
+                welded.push(p);
+                (welded.len() - 1) as u32
+            })
+        })
+        .collect();
+    let mut out = Vec::with_capacity(indices.len());
+    for t in indices.chunks_exact(3) {
+        let [a, b, c] = [0, 1, 2].map(|k| remap.get(t[k] as usize).copied().unwrap_or(0));
+        if a != b && b != c && a != c {
+            out.extend_from_slice(&[a, b, c]);
+        }
+    }
+    (welded, out)
 }
 
 fn bounds(p: &[glam::DVec3]) -> (glam::DVec3, glam::DVec3) {

@@ -28,6 +28,9 @@ pub struct PrintReport {
     pub min_feature_mm: f64,
     /// Model units per millimetre applied.
     pub scale: f64,
+    /// Edges with other than two faces, or two faces wound the same way: where
+    /// parts touch only along an edge or at a point, the union is not a 2-manifold.
+    pub nonmanifold_edges: u64,
     /// Human-readable problems (thin features, several shells, skipped parts).
     pub warnings: Vec<String>,
 }
@@ -48,7 +51,10 @@ impl PrintReport {
             self.warnings.push(format!("{skipped} open or non-manifold parts (e.g. free-vertex surfaces) were left out"));
         }
         if !self.is_watertight {
-            self.warnings.push("the result is not watertight".into());
+            self.warnings.push(format!(
+                "the result is not watertight: {} edges are not shared by exactly two oppositely wound faces (parts that touch only along an edge or at a point); separate them slightly or thicken the contact",
+                self.nonmanifold_edges
+            ));
         }
     }
 
@@ -81,6 +87,7 @@ pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
         Ok(m) => (m.is_closed() && m.nonmanifold_vertices().is_empty(), shell_count(&m)),
         Err(_) => (false, 0),
     };
+    let nonmanifold_edges = if watertight { 0 } else { bad_edges(positions, indices) };
     PrintReport {
         volume_mm3: volume,
         surface_area_mm2: area,
@@ -88,8 +95,27 @@ pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
         shells,
         is_watertight: watertight,
         triangles: tris.len() as u64,
+        nonmanifold_edges,
         ..PrintReport::default()
     }
+}
+
+/// Undirected edges (vertices welded by position) not used exactly once in each direction.
+fn bad_edges(positions: &[[f32; 3]], indices: &[u32]) -> u64 {
+    let key = |i: u32| positions.get(i as usize).map_or([0; 3], |p| p.map(f32::to_bits));
+    let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32)> = std::collections::HashMap::new();
+    for t in indices.chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));
+            let e = uses.entry((a.min(b), a.max(b))).or_default();
+            if a < b {
+                e.0 += 1;
+            } else {
+                e.1 += 1;
+            }
+        }
+    }
+    uses.values().filter(|&&(f, r)| (f, r) != (1, 1)).count() as u64
 }
 
 /// Connected components of the faces (through shared edges).

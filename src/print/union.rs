@@ -18,15 +18,18 @@ pub(super) struct Parts {
     pub min_extent: f64,
 }
 
-/// Welds all meshes by exact position and splits the triangles into
-/// connected components, each checked as a closed manifold.
+/// Welds each mesh by exact position (never across meshes: touching parts
+/// must stay apart) and splits its triangles into connected components, each
+/// checked as a closed manifold.
 pub(super) fn split_parts(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Parts, PrintError> {
     let triangles: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     budget.charge_steps(triangles)?;
     let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
     let mut positions: Vec<DVec3> = Vec::new();
     let mut tris: Vec<[u32; 3]> = Vec::with_capacity(triangles as usize);
+    let mut parent: Vec<u32> = Vec::new();
     for m in meshes {
+        ids.clear();
         let remap: Vec<u32> = m
             .mesh
             .positions
@@ -46,7 +49,7 @@ pub(super) fn split_parts(meshes: &[NamedMesh], budget: &mut Budget) -> Result<P
         }
     }
     // Union-find over vertices joined by triangles.
-    let mut parent: Vec<u32> = (0..positions.len() as u32).collect();
+    parent.extend(0..positions.len() as u32);
     fn find(parent: &mut [u32], mut v: u32) -> u32 {
         while parent[v as usize] != v {
             parent[v as usize] = parent[parent[v as usize] as usize];

@@ -50,15 +50,19 @@ fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
         assert!(out.status.success(), "{stem}: {}", String::from_utf8_lossy(&out.stderr));
         let a = admesh(&stl);
         assert_eq!((a.open_edges, a.degenerate), (0, 0), "{stem}: {}", a.raw);
-        assert_eq!(report["is_watertight"], true, "{stem}: {report}");
+        let volume = report["volume_mm3"].as_f64().expect("volume");
+        assert!((volume - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: report {volume} vs admesh {}", a.volume);
+        if report["is_watertight"] != true {
+            // Parts touching only along an edge (the Menger sponge): the report says why.
+            assert!(report["warnings"].to_string().contains("not watertight") && report["nonmanifold_edges"].as_u64() > Some(0), "{stem}: {report}");
+            continue;
+        }
         let shells = report["shells"].as_u64().expect("shells");
         assert_eq!(a.parts, shells, "{stem}: admesh parts vs report shells\n{}", a.raw);
         if shells != 1 {
             let warnings = report["warnings"].to_string();
             assert!(warnings.contains("separate shells"), "{stem}: {report}");
         }
-        let volume = report["volume_mm3"].as_f64().expect("volume");
-        assert!((volume - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: report {volume} vs admesh {}", a.volume);
         let longest = report["bbox_mm"].as_array().expect("bbox").iter().map(|v| v.as_f64().expect("mm")).fold(0.0, f64::max);
         assert!((longest - 40.0).abs() < 1e-3, "{stem}: longest side {longest}");
         let (watertight, faces, _) = trimesh_check(&stl);
@@ -89,7 +93,9 @@ fn overlapping_parts_are_united() {
     let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
     assert_eq!(report["parts"], 2);
     assert_eq!(report["shells"], 1);
-    // 1 mm features warn.
+    // Shrunk to 1 mm overall, the 0.67 mm features warn.
+    let out = run(&["render", "-", "--language", "mdg", "--print", "--size-mm", "1", "--print-report", "-o", "-"], Some(src.as_bytes()));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
     assert!(report["warnings"].to_string().contains("thinnest feature"), "{report}");
     // Deterministic bytes.
     let again = run(&["render", "-", "--language", "mdg", "--print", "--format", "3mf", "-o", "-"], Some(src.as_bytes()));
