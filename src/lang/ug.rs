@@ -288,7 +288,7 @@ f (a d c b); f (e f g h); f (a b f e); f (b c g f); f (c d h g); f (d a e h);
 end;
 c red 1 0 0;
 i (cube);
-i (cube -tx 2 -sa 0.5);
+i (cube -sa 0.5 -tx 2);
 ";
 
     fn mesh(p: &Program) -> (usize, usize) {
