@@ -15,6 +15,7 @@ pub mod eisen;
 pub mod lang;
 pub mod lsystem;
 pub mod pipeline;
+pub mod print;
 pub mod service;
 
 pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};

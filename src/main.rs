@@ -58,7 +58,7 @@ struct ServeArgs {
 struct DecodeArgs {
     /// The `.strips` file, or `-` for standard input.
     file: String,
-    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene), or `-` for standard output.
+    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug), or `-` for standard output.
     #[arg(short, long)]
     output: String,
     /// Output format (default: from the output extension, else glb).
@@ -139,6 +139,15 @@ struct RenderArgs {
     /// glb/gltf of instanced L-systems: gpu (EXT_mesh_gpu_instancing) or flat (plain meshes).
     #[arg(long, value_enum, default_value = "gpu")]
     instancing: Instancing,
+    /// Merge every part into one watertight, outward-oriented solid in millimetres for 3D printing (docs/print.md).
+    #[arg(long)]
+    print: bool,
+    /// With --print: scale so the longest side is this many millimetres.
+    #[arg(long, value_name = "N", requires = "print")]
+    size_mm: Option<f64>,
+    /// With --print: write the JSON printability report instead of the model.
+    #[arg(long, requires = "print")]
+    print_report: bool,
 }
 
 #[derive(Args)]
@@ -249,6 +258,14 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
             gltf: GltfOptions { weld: args.weld, quantize: args.quantize, compress: args.compress },
             fit_unit_box: args.fit_unit_box,
             instancing: args.instancing,
+            print: rulemesh::print::PrintOptions {
+                enabled: args.print,
+                size_um: match args.size_mm {
+                    Some(mm) => rulemesh::print::size_um(mm).map_err(|e| Failure::new(EXIT_USAGE, e.to_string()))?,
+                    None => 0,
+                },
+                report: args.print_report,
+            },
         },
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;

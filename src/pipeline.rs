@@ -192,7 +192,10 @@ pub(crate) fn mesh_and_export(
     mut budget: Budget,
     mut stages: Stages,
 ) -> Result<RenderOutput, RenderError> {
-    let (meshes, graph) = if carries_graph(&scene, req) {
+    let (meshes, graph) = if req.export_options.print.enabled {
+        // Printing unites closed parts, so it needs them apart (and shows time 0).
+        (geom::meshing::build_parts(&scene, req.detail, &mut budget)?, None)
+    } else if carries_graph(&scene, req) {
         let (meshes, graph) = mesh_with_graph(&scene, req, &mut budget)?;
         (meshes, Some(graph))
     } else {

@@ -209,7 +209,7 @@ pub(super) fn encode(model: &Rendered) -> Option<Vec<u8>> {
 }
 
 fn static_content_type(s: &str) -> Option<&'static str> {
-    <Format as clap::ValueEnum>::value_variants().iter().map(|f| f.content_type()).find(|c| *c == s)
+    <Format as clap::ValueEnum>::value_variants().iter().map(|f| f.content_type()).chain(["application/json"]).find(|c| *c == s)
 }
 
 pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
@@ -229,7 +229,7 @@ pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
         bytes: bytes::Bytes::copy_from_slice(bytes),
         etag,
         content_type: static_content_type(&header.content_type)?,
-        language: [Language::Mdg, Language::Lsystem, Language::Eisenscript].into_iter().find(|l| l.name() == header.language)?,
+        language: [Language::Mdg, Language::Lsystem, Language::Eisenscript, Language::Stack, Language::Ug].into_iter().find(|l| l.name() == header.language)?,
         primitives: header.primitives,
         triangles: header.triangles,
         truncated: None,

@@ -63,6 +63,8 @@ fn format_name(f: Format) -> &'static str {
         Format::StlAscii => "stl-ascii",
         Format::Strips => "strips",
         Format::Scene => "scene",
+        Format::ThreeMf => "3mf",
+        Format::Ug => "ug",
     }
 }
 
@@ -122,6 +124,11 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
     }
     if req.export_options.fit_unit_box {
         e.field("fit", b"unit");
+    }
+    let p = &req.export_options.print;
+    if p.enabled {
+        e.u64("print.size_um", p.size_um.into());
+        e.field("print.report", &[u8::from(p.report)]);
     }
     e.u64("detail", req.detail.into());
     e.field("layout", layout_name(req.layout).as_bytes());

@@ -425,6 +425,8 @@ struct Machine<'p, 'b> {
     isosurface_shape: HashMap<u32, u32>,
     /// Track index in the scene's rig of each list of transform rules.
     track_index: HashMap<Vec<GroupId>, u32>,
+    /// Scene shape index of each `mesh` declaration built so far.
+    mesh_shape: HashMap<u32, u32>,
 }
 
 /// What a path or profile rule emitted.
@@ -470,6 +472,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             root_key,
             isosurface_shape: HashMap::new(),
             track_index: HashMap::new(),
+            mesh_shape: HashMap::new(),
         }
     }
 
@@ -599,10 +602,14 @@ impl<'p, 'b> Machine<'p, 'b> {
                 self.budget.charge_step()?;
                 self.special(target, &ctx)
             }
-            Target::Isosurface(_) if self.capture.is_some() => Ok(()),
-            Target::Isosurface(i) => {
+            Target::Isosurface(_) | Target::Mesh(_) if self.capture.is_some() => Ok(()),
+            Target::Isosurface(_) | Target::Mesh(_) => {
                 self.budget.charge_step()?;
-                let shape = self.isosurface(i)?;
+                let shape = match target {
+                    Target::Mesh(i) => self.mesh(i)?,
+                    Target::Isosurface(i) => self.isosurface(i)?,
+                    _ => return Ok(()),
+                };
                 let (v, t) = self.scene.shapes.get(shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, (p.indices.len() / 3) as u64));
                 self.budget.charge_triangles(t)?;
                 self.budget.reserve_memory(SHAPE_INSTANCE_BYTES.saturating_add(self.ev.cost.bytes(v, t)))?;
@@ -943,6 +950,24 @@ impl<'p, 'b> Machine<'p, 'b> {
         Ok(s)
     }
 
+    /// The scene shape of `mesh` declaration `i`, built on first use; the
+    /// modifiers check every intermediate size against the budget first.
+    fn mesh(&mut self, i: u32) -> Result<u32, EvalError> {
+        if let Some(&s) = self.mesh_shape.get(&i) {
+            return Ok(s);
+        }
+        let Some(decl) = self.ev.program.meshes.get(i as usize) else { return Ok(0) };
+        let proto = crate::geom::modifiers::build(&decl.base, &decl.modifiers, self.ev.detail, self.budget).map_err(|e| match e {
+            crate::geom::modifiers::ModifyError::Limit(l) => EvalError::Limit(l),
+            other => EvalError::Mesh { span: decl.span, name: decl.name.clone(), message: other.to_string() },
+        })?;
+        self.budget.reserve_memory(crate::geom::meshing::mesh_bytes(proto.positions.len() as u64, (proto.indices.len() / 3) as u64))?;
+        self.scene.shapes.push(proto);
+        let s = (self.scene.shapes.len() - 1) as u32;
+        self.mesh_shape.insert(i, s);
+        Ok(s)
+    }
+
     /// The scene profile made by profile rule `g` (its `VERTEX` points), if it made one.
     fn profile(&mut self, g: GroupId) -> Result<Option<u32>, EvalError> {
         if let Some(p) = self.profile_index.get(&g) {
@@ -1046,6 +1071,7 @@ mod tests {
             warnings: vec![],
             isosurfaces: vec![],
             namespaces: Default::default(),
+            meshes: vec![],
         }
     }
 

@@ -58,13 +58,23 @@ pub enum EvalError {
         /// What is wrong.
         message: String,
     },
+    /// A `mesh` declaration's modifiers could not be applied.
+    #[error("{}:{}: mesh `{name}`: {message}", span.line, span.column)]
+    Mesh {
+        /// Where the mesh is declared.
+        span: Span,
+        /// The mesh's name.
+        name: String,
+        /// What went wrong.
+        message: String,
+    },
 }
 
 impl EvalError {
     /// The source position, when the error comes from a place in the source.
     pub fn span(&self) -> Option<Span> {
         match self {
-            EvalError::NonFinite { span, .. } | EvalError::BadIteration { span, .. } => Some(*span),
+            EvalError::NonFinite { span, .. } | EvalError::BadIteration { span, .. } | EvalError::Mesh { span, .. } => Some(*span),
             _ => None,
         }
     }

@@ -75,6 +75,39 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
     Ok(meshes)
 }
 
+/// One mesh per placed part — every primitive instance and shape placement
+/// on its own, then the swept lines and free vertices as [`build_meshes`]
+/// makes them — for printable output, which must unite closed parts and so
+/// needs them apart: merged, touching parts weld into non-manifold clumps.
+pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
+    let mut parts = Vec::new();
+    let mut protos: Vec<Option<Prototype>> = vec![None; PrimitiveKind::ALL.len()];
+    let placed = scene.shape_instances.iter().filter_map(|s| {
+        let proto = scene.shapes.get(s.shape as usize)?;
+        Some((proto, Instance::new(PrimitiveKind::Box, &s.frame, s.colour.map(f64::from)), None))
+    });
+    let instances = scene.instances.iter().map(|i| (None::<&Prototype>, *i, Some(i.kind)));
+    for (shape, inst, kind) in instances.chain(placed.map(|(p, i, k)| (Some(p), i, k))) {
+        if !is_drawable(&inst) {
+            continue;
+        }
+        let proto = match (shape, kind) {
+            (Some(p), _) => p,
+            (None, Some(k)) => &*protos[k as usize].get_or_insert_with(|| primitives::tessellate(k, detail)),
+            (None, None) => continue,
+        };
+        let (v, t) = (proto.positions.len() as u64, proto.indices.len() as u64 / 3);
+        budget.reserve_memory(mesh_bytes(v, t))?;
+        let mut mesh = Mesh::default();
+        append_instance(&mut mesh, proto, &inst);
+        parts.push(NamedMesh { name: "part".to_string(), mesh });
+    }
+    let rest = Scene { lines: scene.lines.clone(), profiles: scene.profiles.clone(), vertices: scene.vertices.clone(), ..Scene::default() };
+    let whole = build_meshes(&rest, detail, MeshLayout::Merged, budget)?;
+    parts.extend(whole);
+    Ok(parts)
+}
+
 /// The scene's own shapes (isosurfaces) at each placement, in one mesh.
 fn placed_shapes(scene: &Scene, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
     let sizes = |s: &crate::eval::scene::ShapeInstance| {

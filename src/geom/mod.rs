@@ -1,10 +1,14 @@
 //! Geometry: tessellation of the built-in primitives and turning a
 //! [`Scene`](crate::eval::scene::Scene) of instances into indexed meshes.
 
+pub mod halfedge;
+pub mod hull;
 pub mod isosurface;
 pub mod mesh;
 pub mod meshing;
+pub mod modifiers;
 pub mod normalize;
+pub mod polyhedra;
 pub mod primitives;
 pub mod strip;
 pub mod sweep;

@@ -30,6 +30,8 @@ pub struct Program {
     pub warnings: Vec<super::Diagnostic>,
     /// `isosurface` declarations; [`Target::Isosurface`] indexes this.
     pub isosurfaces: Vec<Isosurface>,
+    /// `mesh` declarations and named solids; [`Target::Mesh`] indexes this.
+    pub meshes: Vec<MeshDecl>,
     /// Namespaces (seed 000 §4.1.4): each has its own line pen and its own
     /// "last terminal" for continuation.
     pub namespaces: Namespaces,
@@ -135,6 +137,24 @@ pub enum Target {
     Frame,
     /// An `isosurface` drawable, by index in [`Program::isosurfaces`].
     Isosurface(u32),
+    /// A modified or generated mesh, by index in [`Program::meshes`].
+    Mesh(u32),
+}
+
+/// `mesh NAME { BASE | modifier … | modifier … }` (docs/modifiers.md): a
+/// base shape with a chain of modifiers, built once on first use and placed
+/// like a primitive. Named solids (`SNUB_CUBE`) lower to a declaration with
+/// no modifiers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshDecl {
+    /// The drawable's name.
+    pub name: String,
+    /// What the chain starts from.
+    pub base: crate::geom::modifiers::MeshBase,
+    /// The modifiers, applied in order.
+    pub modifiers: Vec<crate::geom::modifiers::Modifier>,
+    /// Where it is declared.
+    pub span: Span,
 }
 
 /// `isosurface NAME { … }`: the surface f(x, y, z) = 0 of a field sampled on a

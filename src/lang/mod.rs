@@ -6,6 +6,8 @@ pub mod expr;
 pub mod ir;
 pub mod lsystem;
 pub mod mdg;
+pub mod stack;
+pub mod ug;
 
 use serde::Serialize;
 
@@ -94,6 +96,10 @@ pub enum Language {
     Lsystem,
     /// EisenScript, the language of Structure Synth 1.5; see `docs/eisenscript.md`.
     Eisenscript,
+    /// Seed 003's stacking string: a primitive and a modifier chain (`b1.5s1.4w0.1`); see `docs/modifiers.md`.
+    Stack,
+    /// Berkeley UniGrafix (seed 004 §1), the safe subset: `v f c def end i`; see `docs/modifiers.md`.
+    Ug,
 }
 
 impl Language {
@@ -103,6 +109,8 @@ impl Language {
             Language::Mdg => "mdg",
             Language::Lsystem => "lsystem",
             Language::Eisenscript => "eisenscript",
+            Language::Stack => "stack",
+            Language::Ug => "ug",
         }
     }
 
@@ -112,6 +120,8 @@ impl Language {
             "mdg" => Some(Language::Mdg),
             "ls" => Some(Language::Lsystem),
             "es" => Some(Language::Eisenscript),
+            "stack" => Some(Language::Stack),
+            "ug" => Some(Language::Ug),
             _ => None,
         }
     }
@@ -156,6 +166,8 @@ pub fn parse(language: Language, source: &[u8]) -> Result<ir::Program, ParseErro
             eisen::parse(source, &Default::default())?;
             Err(ParseError::single(Span::new(1, 1), "EisenScript does not lower into the rule IR (see docs/eisenscript.md); use lang::eisen::parse"))
         }
+        Language::Stack => stack::parse(source),
+        Language::Ug => ug::parse(source),
     }
 }
 
@@ -165,5 +177,7 @@ pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, Parse
         Language::Mdg => mdg::parse(source).map(|p| p.warnings),
         Language::Lsystem => lsystem::parse(source).map(|s| s.warnings),
         Language::Eisenscript => eisen::parse(source, &Default::default()).map(|s| s.warnings),
+        Language::Stack => stack::parse(source).map(|p| p.warnings),
+        Language::Ug => ug::parse(source).map(|p| p.warnings),
     }
 }

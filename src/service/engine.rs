@@ -140,5 +140,7 @@ impl Engine {
 /// The pipeline itself, exactly as the CLI runs it.
 fn render_blocking(source: &[u8], request: &RenderRequest) -> Result<Rendered, ServiceError> {
     let out = crate::render(source, request)?;
-    Ok(Rendered::from_output(out, request.format.content_type()))
+    // A print report is JSON whatever the format asked for.
+    let content_type = if request.export_options.print.report { "application/json" } else { request.format.content_type() };
+    Ok(Rendered::from_output(out, content_type))
 }

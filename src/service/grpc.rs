@@ -65,6 +65,9 @@ impl From<pb::RenderRequest> for RenderBody {
             compress: non_empty(r.compress),
             fit: non_empty(r.fit),
             instancing: non_empty(r.instancing),
+            print: r.print,
+            size_mm: r.size_mm,
+            print_report: r.print_report,
         }
     }
 }

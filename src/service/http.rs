@@ -184,7 +184,7 @@ fn header_value(s: &str) -> HeaderValue {
 
 /// Whether `format`'s bytes are text (and worth compressing).
 fn is_text(format: Format) -> bool {
-    matches!(format, Format::Gltf | Format::StlAscii)
+    matches!(format, Format::Gltf | Format::StlAscii | Format::Ug)
 }
 
 /// A model response with its ETag, cache and count headers.
@@ -303,8 +303,8 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
         let Some((name, ext)) = file.rsplit_once('.') else {
             return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf or NAME.stl")));
         };
-        if !matches!(ext, "glb" | "gltf" | "stl") {
-            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl)")));
+        if !matches!(ext, "glb" | "gltf" | "stl" | "3mf") {
+            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl, 3mf)")));
         }
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let mut body = RenderBody {
@@ -324,11 +324,14 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
                 "weld" => body.weld = Some(v.parse().map_err(|_| bad("weld must be true or false"))?),
                 "compress" => body.compress = Some(v.clone()),
                 "fit" => body.fit = Some(v.clone()),
+                "print" => body.print = Some(v.parse().map_err(|_| bad("print must be true or false"))?),
+                "size_mm" => body.size_mm = Some(v.parse().map_err(|_| bad("size_mm must be a number"))?),
+                "print_report" => body.print_report = Some(v.parse().map_err(|_| bad("print_report must be true or false"))?),
                 _ => match k.strip_prefix("p.") {
                     Some(p) if !p.is_empty() => {
                         body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
                     }
-                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, p.<name>)")),
+                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, p.<name>)")),
                 },
             }
         }

@@ -108,6 +108,12 @@ pub struct RenderBody {
     /// `glb`/`gltf` of instanced L-systems: `"gpu"` (default, `EXT_mesh_gpu_instancing`)
     /// or `"flat"` (plain meshes, for loaders without the extension).
     pub instancing: Option<String>,
+    /// Merge every part into one watertight solid in millimetres for 3D printing (default false).
+    pub print: Option<bool>,
+    /// With `print`: scale so the longest side is this many millimetres (default: one unit is 1 mm).
+    pub size_mm: Option<f64>,
+    /// With `print`: answer with the JSON printability report instead of the model.
+    pub print_report: Option<bool>,
 }
 
 /// `POST /v1/check` as sent.
@@ -140,7 +146,9 @@ pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceErr
         Some(n) if n.eq_ignore_ascii_case("mdg") => Ok(Some(Language::Mdg)),
         Some(n) if n.eq_ignore_ascii_case("lsystem") => Ok(Some(Language::Lsystem)),
         Some(n) if n.eq_ignore_ascii_case("eisenscript") => Ok(Some(Language::Eisenscript)),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem, eisenscript)"))),
+        Some(n) if n.eq_ignore_ascii_case("stack") => Ok(Some(Language::Stack)),
+        Some(n) if n.eq_ignore_ascii_case("ug") => Ok(Some(Language::Ug)),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem, eisenscript, stack, ug)"))),
     }
 }
 
@@ -153,7 +161,9 @@ pub fn parse_format(name: Option<&str>) -> Result<Format, ServiceError> {
         Some("stl-ascii") => Ok(Format::StlAscii),
         Some("strips") => Ok(Format::Strips),
         Some("scene") | Some("rmscene") => Ok(Format::Scene),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: glb, gltf, stl, stl-ascii, strips, scene)"))),
+        Some("3mf") => Ok(Format::ThreeMf),
+        Some("ug") => Ok(Format::Ug),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: glb, gltf, stl, stl-ascii, strips, scene, 3mf, ug)"))),
     }
 }
 
@@ -191,6 +201,19 @@ pub fn parse_fit(name: Option<&str>) -> Result<bool, ServiceError> {
     }
 }
 
+/// Reads the print fields; `size_mm` and `print_report` need `print`.
+pub fn print_options(print: Option<bool>, size_mm: Option<f64>, report: Option<bool>) -> Result<crate::print::PrintOptions, ServiceError> {
+    let enabled = print.unwrap_or(false);
+    if !enabled && (size_mm.is_some() || report == Some(true)) {
+        return Err(ServiceError::BadRequest("size_mm and print_report need print=true".into()));
+    }
+    let size_um = match size_mm {
+        Some(mm) => crate::print::size_um(mm).map_err(|e| ServiceError::BadRequest(e.to_string()))?,
+        None => 0,
+    };
+    Ok(crate::print::PrintOptions { enabled, size_um, report: report.unwrap_or(false) })
+}
+
 impl RenderBody {
     /// Validates the request against the server's `ceiling`.
     pub fn plan(self, ceiling: &Limits, no_cache: bool) -> Result<RenderPlan, ServiceError> {
@@ -218,7 +241,8 @@ impl RenderBody {
                 };
                 let fit_unit_box = parse_fit(self.fit.as_deref())?;
                 let instancing = parse_instancing(self.instancing.as_deref())?;
-                ExportOptions { strips, gltf, fit_unit_box, instancing }
+                let print = print_options(self.print, self.size_mm, self.print_report)?;
+                ExportOptions { strips, gltf, fit_unit_box, instancing, print }
             },
         };
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();

@@ -4,11 +4,17 @@ use crate::common::{repo, run, tempdir, validate_gltf};
 
 /// The fenced ```mdg blocks of a Markdown file.
 fn mdg_examples(markdown: &str) -> Vec<String> {
+    fenced_examples(markdown, "mdg")
+}
+
+/// The fenced blocks tagged `tag` (```mdg, ```stack, …) of a Markdown file.
+pub fn fenced_examples(markdown: &str, tag: &str) -> Vec<String> {
+    let open = format!("```{tag}");
     let mut out = Vec::new();
     let mut current: Option<String> = None;
     for line in markdown.lines() {
         match (&mut current, line.trim_end()) {
-            (None, "```mdg") => current = Some(String::new()),
+            (None, l) if l == open => current = Some(String::new()),
             (Some(_), "```") => out.extend(current.take()),
             (Some(buf), l) => {
                 buf.push_str(l);

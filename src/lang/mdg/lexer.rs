@@ -24,7 +24,7 @@ pub enum Tok<'a> {
     },
     /// `@word` (only `@define` and `@param` reach the lexer).
     At(&'a str),
-    /// One of `{ } [ ] ( ) * / + - ^ , : \`.
+    /// One of `{ } [ ] ( ) * / + - ^ , : \ |` (`|` chains mesh modifiers).
     Punct(char),
     /// End of input.
     Eof,
@@ -190,7 +190,7 @@ pub fn lex<'a>(pp: &'a Preprocessed) -> Result<Vec<Token<'a>>, ParseError> {
             toks.push(Token { tok, span, line: out_line });
             continue;
         }
-        if "{}[]()*/+-^,:\\".contains(c) {
+        if "{}[]()*/+-^,:\\|".contains(c) {
             toks.push(Token { tok: Tok::Punct(c), span, line: out_line });
             i += 1;
             col += 1;

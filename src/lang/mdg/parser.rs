@@ -12,6 +12,9 @@ use crate::lang::{Diagnostic, ParseError, Span};
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_PI_2, PI};
 
+#[path = "mesh_decl.rs"]
+mod mesh_decl;
+
 /// Maximum nesting of blocks, iterator chains, parentheses and expression trees.
 pub const MAX_NESTING: u32 = 256;
 
@@ -138,6 +141,9 @@ pub(crate) struct Parser<'a> {
     /// `isosurface` declarations and their names.
     isosurfaces: Vec<Isosurface>,
     isosurface_index: HashMap<&'a str, u32>,
+    /// `mesh` declarations and implicitly declared solids, and their names.
+    meshes: Vec<crate::lang::ir::MeshDecl>,
+    mesh_index: HashMap<String, u32>,
 }
 
 /// Where a group name that must be resolved at the end belongs.
@@ -208,6 +214,8 @@ impl<'a> Parser<'a> {
             weight_names: ["u", "v", "w", "q"],
             isosurfaces: Vec::new(),
             isosurface_index: HashMap::new(),
+            meshes: Vec::new(),
+            mesh_index: HashMap::new(),
         }
     }
 
@@ -292,6 +300,7 @@ impl<'a> Parser<'a> {
     }
 
     fn finish(mut self) -> PResult<Program> {
+        self.declare_named_solids()?;
         let start = match self.startshape {
             Some((name, span)) => self.resolve(name, span)?,
             // Thesis listings without `startshape` (C.4) start from `START`.
@@ -372,6 +381,7 @@ impl<'a> Parser<'a> {
             warnings: self.warnings,
             isosurfaces: self.isosurfaces,
             namespaces: namespace_table(self.namespace_names, &self.site_namespace, self.site),
+            meshes: self.meshes,
         })
     }
 
@@ -415,6 +425,9 @@ impl<'a> Parser<'a> {
         }
         if let Some(&i) = self.isosurface_index.get(name) {
             return Ok(Target::Isosurface(i));
+        }
+        if let Some(&i) = self.mesh_index.get(name) {
+            return Ok(Target::Mesh(i));
         }
         if let Some(k) = PrimitiveKind::from_keyword(name) {
             return Ok(Target::Primitive(k));
@@ -758,6 +771,7 @@ impl<'a> Parser<'a> {
                     self.colour_names = names;
                 }
             }
+            "mesh" => self.mesh_decl(t.span)?,
             w if SKIPPED_DIRECTIVES.contains(&w) => {
                 let stop = self.line_end(self.pos.saturating_sub(1));
                 while self.pos < stop && !self.is_punct('{') {

@@ -103,6 +103,7 @@ fn parses_the_basic_example_into_exact_ir() {
         warnings: vec![],
         isosurfaces: vec![],
         namespaces: Default::default(),
+        meshes: vec![],
     };
     assert_eq!(p, expected);
 }

@@ -1,0 +1,67 @@
+//! Berkeley UniGrafix (`format=ug`, seed 004 §1): the exchange format of the
+//! CS285 tools, so rulemesh models open in that lineage of viewers.
+//!
+//! Each mesh becomes a `def … end;` definition of `v` (vertex) and `f`
+//! (face) statements, with a `c` colour statement per distinct vertex colour,
+//! and one `i` (instance) statement places it. Vertices are welded by exact
+//! position so faces share them, as UG faces name vertices by id.
+
+use super::ExportError;
+use crate::eval::budget::Budget;
+use crate::geom::NamedMesh;
+use std::collections::HashMap;
+use std::fmt::Write as _;
+
+/// A UG identifier from a mesh name: letters, digits and `_` only.
+fn ident(name: &str, k: usize) -> String {
+    let clean: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    format!("m{k}_{clean}")
+}
+
+/// Writes the model as UniGrafix text, reserving its worst-case size first.
+pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    let v: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
+    let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+    let bytes = super::estimated_size(super::Format::Ug, v, t);
+    budget.reserve_memory(bytes)?;
+    let mut s = String::from("{ UniGrafix written by rulemesh }\n");
+    let mut colours: HashMap<[u8; 4], String> = HashMap::new();
+    let mut defs = Vec::new();
+    for (k, m) in meshes.iter().enumerate() {
+        let name = ident(&m.name, k);
+        let _ = writeln!(s, "def {name};");
+        let mut weld: HashMap<[u32; 3], u32> = HashMap::new();
+        let mut remap = Vec::with_capacity(m.mesh.positions.len());
+        for p in &m.mesh.positions {
+            let n = weld.len() as u32;
+            let id = *weld.entry(p.map(f32::to_bits)).or_insert_with(|| {
+                let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
+                n
+            });
+            remap.push(id);
+        }
+        for t in m.mesh.indices.chunks_exact(3) {
+            let [a, b, c] = [0, 1, 2].map(|i| remap.get(t[i] as usize).copied().unwrap_or(0));
+            if a == b || b == c || a == c {
+                continue;
+            }
+            let rgba = m.mesh.colours.get(t[0] as usize).copied().unwrap_or([255; 4]);
+            let next = colours.len();
+            let cname = colours.entry(rgba).or_insert_with(|| format!("c{next}")).clone();
+            let _ = writeln!(s, "  f (v{a} v{b} v{c}) {cname};");
+        }
+        s.push_str("end;\n");
+        defs.push(name);
+    }
+    // Colour statements, in first-use order, before the instances that use them.
+    let mut cs: Vec<(&[u8; 4], &String)> = colours.iter().collect();
+    cs.sort_by_key(|(_, n)| n[1..].parse::<usize>().unwrap_or(0));
+    for (rgba, name) in cs {
+        let _ = writeln!(s, "c {name} {:.4} {:.4} {:.4};", f64::from(rgba[0]) / 255.0, f64::from(rgba[1]) / 255.0, f64::from(rgba[2]) / 255.0);
+    }
+    for d in defs {
+        let _ = writeln!(s, "i ({d});");
+    }
+    budget.release_memory(bytes);
+    Ok(s.into_bytes())
+}

@@ -1,0 +1,152 @@
+//! Printable output (`print=true`, `rulemesh render --print`): every part of
+//! the model merged into one watertight, manifold, outward-oriented solid by
+//! a robust boolean union, scaled to millimetres, with a printability report.
+//!
+//! A grammar's output is many overlapping closed parts (one per primitive
+//! instance); a slicer needs their union, not their sum. Parts are found as
+//! connected components of the welded triangles, checked with the half-edge
+//! structure (open or non-manifold ones are left out and the report says
+//! so), turned outward, and united by Manifold (`manifold-rs`), whose exact
+//! predicates keep the result manifold even where surfaces touch.
+
+mod report;
+mod union;
+
+pub use report::{measure, PrintReport};
+
+use crate::eval::budget::{Budget, LimitExceeded};
+use crate::geom::{Mesh, NamedMesh};
+use serde::{Deserialize, Serialize};
+
+/// What a request asks of printable output. Part of the export options (and
+/// so of the cache key).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub struct PrintOptions {
+    /// Merge into one printable solid.
+    pub enabled: bool,
+    /// Target length of the longest side in micrometres (0: one model unit is one millimetre).
+    pub size_um: u32,
+    /// Answer with the JSON printability report instead of the model.
+    pub report: bool,
+}
+
+/// The thinnest feature most FDM printers reproduce (a 0.4 mm nozzle's two perimeters).
+pub const MIN_FEATURE_MM: f64 = 0.8;
+
+/// Why no printable solid could be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PrintError {
+    /// A limit ran out.
+    #[error(transparent)]
+    Limit(#[from] LimitExceeded),
+    /// No part of the model is a closed solid.
+    #[error("nothing printable: {0}")]
+    NothingPrintable(String),
+    /// The boolean union failed.
+    #[error("boolean union failed: {0}")]
+    Union(String),
+    /// The size is out of range.
+    #[error("size_mm must be in (0, 10000], found {0}")]
+    BadSize(f64),
+}
+
+/// Reads a `size_mm` value into micrometres.
+pub fn size_um(size_mm: f64) -> Result<u32, PrintError> {
+    if !(size_mm > 0.0 && size_mm <= 10_000.0) {
+        return Err(PrintError::BadSize(size_mm));
+    }
+    Ok((size_mm * 1000.0).round().max(1.0) as u32)
+}
+
+/// Unites every closed part of `meshes` into one solid in millimetres and
+/// measures it. The result is one mesh named "print" with flat normals.
+pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
+    let parts = union::split_parts(meshes, budget)?;
+    let (positions, indices) = union::unite(&parts.closed, budget)?;
+    let (lo, hi) = bounds(&positions);
+    let longest = (hi - lo).max_element();
+    let scale = if options.size_um > 0 && longest > 0.0 { f64::from(options.size_um) / 1000.0 / longest } else { 1.0 };
+    // Rest the solid on z = 0, centred in x and y: how a slicer places it anyway.
+    let offset = glam::DVec3::new(-(lo.x + hi.x) / 2.0, -(lo.y + hi.y) / 2.0, -lo.z);
+    let scaled: Vec<[f32; 3]> = positions.iter().map(|p| ((*p + offset) * scale).as_vec3().to_array()).collect();
+    // Manifold leaves edges a few f32 ulps long, which slicers and checkers
+    // (trimesh merges within 1e-8) fuse into non-manifold edges: collapse
+    // edges shorter than a millionth of the size.
+    let (scaled, indices) = collapse_short_edges(scaled, &indices, (longest * scale) * 1e-6);
+    let mesh = flat_mesh(&scaled, &indices);
+    let mut report = measure(&scaled, &indices);
+    report.parts = parts.closed.len() as u64;
+    report.skipped_parts = parts.skipped;
+    report.min_feature_mm = parts.min_extent * scale;
+    report.scale = scale;
+    report.add_warnings(parts.skipped);
+    Ok((vec![NamedMesh { name: "print".into(), mesh }], report))
+}
+
+/// Merges the two ends of every edge shorter than `eps` (and vertices at
+/// identical positions), then drops the triangles that thereby lose an edge.
+/// Collapsing only along edges keeps the surface closed and manifold; merging
+/// unconnected near points could pinch it.
+fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> (Vec<[f32; 3]>, Vec<u32>) {
+    let mut root: Vec<u32> = (0..positions.len() as u32).collect();
+    fn find(root: &mut [u32], mut v: u32) -> u32 {
+        while root[v as usize] != v {
+            root[v as usize] = root[root[v as usize] as usize];
+            v = root[v as usize];
+        }
+        v
+    }
+    let at = |i: u32| glam::Vec3::from_array(positions.get(i as usize).copied().unwrap_or([0.0; 3])).as_dvec3();
+    for t in indices.chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if at(a).distance(at(b)) < eps {
+                let (ra, rb) = (find(&mut root, a), find(&mut root, b));
+                if ra != rb {
+                    // Keep the lower index: deterministic whatever the triangle order.
+                    root[ra.max(rb) as usize] = ra.min(rb);
+                }
+            }
+        }
+    }
+    let mut ids: std::collections::HashMap<[u32; 3], u32> = std::collections::HashMap::with_capacity(positions.len());
+    let mut welded = Vec::with_capacity(positions.len());
+    let remap: Vec<u32> = (0..positions.len() as u32)
+        .map(|v| {
+            let p = positions[find(&mut root, v) as usize];
+            *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
+                welded.push(p);
+                (welded.len() - 1) as u32
+            })
+        })
+        .collect();
+    let mut out = Vec::with_capacity(indices.len());
+    for t in indices.chunks_exact(3) {
+        let [a, b, c] = [0, 1, 2].map(|k| remap.get(t[k] as usize).copied().unwrap_or(0));
+        if a != b && b != c && a != c {
+            out.extend_from_slice(&[a, b, c]);
+        }
+    }
+    (welded, out)
+}
+
+fn bounds(p: &[glam::DVec3]) -> (glam::DVec3, glam::DVec3) {
+    p.iter().fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)))
+}
+
+/// A flat-shaded mesh: three vertices per triangle (positions copied bit for
+/// bit, so welding by position restores the shared vertices), light grey.
+fn flat_mesh(positions: &[[f32; 3]], indices: &[u32]) -> Mesh {
+    let mut m = Mesh::default();
+    for t in indices.chunks_exact(3) {
+        let [a, b, c] = [0, 1, 2].map(|k| glam::Vec3::from_array(positions[t[k] as usize]));
+        let n = (b - a).cross(c - a).normalize_or(glam::Vec3::Z).to_array();
+        for p in [a, b, c] {
+            m.indices.push(m.positions.len() as u32);
+            m.positions.push(p.to_array());
+            m.normals.push(n);
+            m.colours.push([200, 200, 200, 255]);
+        }
+    }
+    m
+}

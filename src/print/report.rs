@@ -1,0 +1,146 @@
+//! The printability report: what a slicer would want to know first.
+
+use super::MIN_FEATURE_MM;
+use crate::geom::halfedge::HalfEdgeMesh;
+use glam::DVec3;
+use serde::Serialize;
+
+/// Measurements of the printable solid, in millimetres.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct PrintReport {
+    /// Enclosed volume (mm³).
+    pub volume_mm3: f64,
+    /// Surface area (mm²).
+    pub surface_area_mm2: f64,
+    /// Bounding-box size (mm).
+    pub bbox_mm: [f64; 3],
+    /// Connected shells of the result (1 for one printable piece).
+    pub shells: u64,
+    /// Every edge has exactly two faces, wound oppositely, and no vertex is pinched.
+    pub is_watertight: bool,
+    /// Triangles in the result.
+    pub triangles: u64,
+    /// Closed parts united.
+    pub parts: u64,
+    /// Parts left out because they are open or not manifold.
+    pub skipped_parts: u64,
+    /// Smallest bounding-box side of any part (mm): an estimate of the thinnest feature.
+    pub min_feature_mm: f64,
+    /// Model units per millimetre applied.
+    pub scale: f64,
+    /// Edges with other than two faces, or two faces wound the same way: where
+    /// parts touch only along an edge or at a point, the union is not a 2-manifold.
+    pub nonmanifold_edges: u64,
+    /// Human-readable problems (thin features, several shells, skipped parts).
+    pub warnings: Vec<String>,
+}
+
+impl PrintReport {
+    /// Adds the warnings the numbers imply.
+    pub(super) fn add_warnings(&mut self, skipped: u64) {
+        if self.min_feature_mm < MIN_FEATURE_MM {
+            self.warnings.push(format!(
+                "thinnest feature is about {:.3} mm, below {MIN_FEATURE_MM} mm: it may not print (raise size_mm)",
+                self.min_feature_mm
+            ));
+        }
+        if self.shells > 1 {
+            self.warnings.push(format!("{} separate shells: the parts do not all touch", self.shells));
+        }
+        if skipped > 0 {
+            self.warnings.push(format!("{skipped} open or non-manifold parts (e.g. free-vertex surfaces) were left out"));
+        }
+        if !self.is_watertight {
+            self.warnings.push(format!(
+                "the result is not watertight: {} edges are not shared by exactly two oppositely wound faces (parts that touch only along an edge or at a point); separate them slightly or thicken the contact",
+                self.nonmanifold_edges
+            ));
+        }
+    }
+
+    /// The report as HTTP header pairs (`X-Print-…`), for responses that carry the model.
+    pub fn headers(&self) -> Vec<(&'static str, String)> {
+        vec![
+            ("x-print-volume-mm3", format!("{:.3}", self.volume_mm3)),
+            ("x-print-surface-area-mm2", format!("{:.3}", self.surface_area_mm2)),
+            ("x-print-bbox-mm", format!("{:.3} {:.3} {:.3}", self.bbox_mm[0], self.bbox_mm[1], self.bbox_mm[2])),
+            ("x-print-shells", self.shells.to_string()),
+            ("x-print-watertight", self.is_watertight.to_string()),
+            ("x-print-min-feature-mm", format!("{:.3}", self.min_feature_mm)),
+        ]
+    }
+}
+
+/// Measures a solid given as shared positions and CCW triangles.
+pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
+    let p: Vec<DVec3> = positions.iter().map(|q| DVec3::from_array(q.map(f64::from))).collect();
+    let tris: Vec<[u32; 3]> = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+    let (mut volume, mut area) = (0.0, 0.0);
+    for t in &tris {
+        let [a, b, c] = t.map(|i| p[i as usize]);
+        volume += a.dot(b.cross(c)) / 6.0;
+        area += (b - a).cross(c - a).length() / 2.0;
+    }
+    let (lo, hi) = super::bounds(&p);
+    let bbox = if p.is_empty() { [0.0; 3] } else { (hi - lo).to_array() };
+    let (watertight, shells) = match HalfEdgeMesh::from_indexed(positions, indices) {
+        Ok(m) => (m.is_closed() && m.nonmanifold_vertices().is_empty(), shell_count(&m)),
+        Err(_) => (false, 0),
+    };
+    let nonmanifold_edges = if watertight { 0 } else { bad_edges(positions, indices) };
+    PrintReport {
+        volume_mm3: volume,
+        surface_area_mm2: area,
+        bbox_mm: bbox,
+        shells,
+        is_watertight: watertight,
+        triangles: tris.len() as u64,
+        nonmanifold_edges,
+        ..PrintReport::default()
+    }
+}
+
+/// Undirected edges (vertices welded by position) not used exactly once in each direction.
+fn bad_edges(positions: &[[f32; 3]], indices: &[u32]) -> u64 {
+    let key = |i: u32| positions.get(i as usize).map_or([0; 3], |p| p.map(f32::to_bits));
+    let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32)> = std::collections::HashMap::new();
+    for t in indices.chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));
+            let e = uses.entry((a.min(b), a.max(b))).or_default();
+            if a < b {
+                e.0 += 1;
+            } else {
+                e.1 += 1;
+            }
+        }
+    }
+    uses.values().filter(|&&(f, r)| (f, r) != (1, 1)).count() as u64
+}
+
+/// Connected components of the faces (through shared edges).
+fn shell_count(m: &HalfEdgeMesh) -> u64 {
+    let mut seen = vec![false; m.face_count()];
+    let mut shells = 0;
+    for start in 0..m.face_count() {
+        if seen[start] {
+            continue;
+        }
+        shells += 1;
+        seen[start] = true;
+        let mut stack = vec![start];
+        while let Some(f) = stack.pop() {
+            for k in 0..3 {
+                let p = m.pair((3 * f + k) as u32);
+                if p != crate::geom::halfedge::NO_PAIR {
+                    let g = HalfEdgeMesh::face(p) as usize;
+                    if !seen[g] {
+                        seen[g] = true;
+                        stack.push(g);
+                    }
+                }
+            }
+        }
+    }
+    shells
+}

@@ -1,0 +1,150 @@
+//! Parts of a model and their boolean union.
+
+use super::PrintError;
+use crate::eval::budget::Budget;
+use crate::geom::halfedge::HalfEdgeMesh;
+use crate::geom::NamedMesh;
+use glam::DVec3;
+use std::collections::HashMap;
+
+/// The closed parts of a model, and how many open ones were left out.
+pub(super) struct Parts {
+    /// Closed, outward-oriented parts.
+    pub closed: Vec<HalfEdgeMesh>,
+    /// Parts that are open or not manifold (free-vertex surfaces, for instance).
+    pub skipped: u64,
+    /// The smallest bounding-box side over the closed parts (model units):
+    /// an estimate of the thinnest feature.
+    pub min_extent: f64,
+}
+
+/// Welds each mesh by exact position (never across meshes: touching parts
+/// must stay apart) and splits its triangles into connected components, each
+/// checked as a closed manifold.
+pub(super) fn split_parts(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Parts, PrintError> {
+    let triangles: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+    budget.charge_steps(triangles)?;
+    let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
+    let mut positions: Vec<DVec3> = Vec::new();
+    let mut tris: Vec<[u32; 3]> = Vec::with_capacity(triangles as usize);
+    let mut parent: Vec<u32> = Vec::new();
+    for m in meshes {
+        ids.clear();
+        let remap: Vec<u32> = m
+            .mesh
+            .positions
+            .iter()
+            .map(|p| {
+                *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
+                    positions.push(DVec3::from_array(p.map(f64::from)));
+                    (positions.len() - 1) as u32
+                })
+            })
+            .collect();
+        for t in m.mesh.indices.chunks_exact(3) {
+            let c = [0, 1, 2].map(|k| remap.get(t[k] as usize).copied().unwrap_or(0));
+            if c[0] != c[1] && c[1] != c[2] && c[0] != c[2] {
+                tris.push(c);
+            }
+        }
+    }
+    // Union-find over vertices joined by triangles.
+    parent.extend(0..positions.len() as u32);
+    fn find(parent: &mut [u32], mut v: u32) -> u32 {
+        while parent[v as usize] != v {
+            parent[v as usize] = parent[parent[v as usize] as usize];
+            v = parent[v as usize];
+        }
+        v
+    }
+    for t in &tris {
+        let a = find(&mut parent, t[0]);
+        for &c in &t[1..] {
+            let b = find(&mut parent, c);
+            if a != b {
+                parent[b as usize] = a;
+            }
+        }
+    }
+    // Group triangles by root, in order of first appearance (deterministic).
+    let mut group_of: HashMap<u32, usize> = HashMap::new();
+    let mut groups: Vec<Vec<[u32; 3]>> = Vec::new();
+    for t in &tris {
+        let r = find(&mut parent, t[0]);
+        let g = *group_of.entry(r).or_insert_with(|| {
+            groups.push(Vec::new());
+            groups.len() - 1
+        });
+        groups[g].push(*t);
+    }
+    let mut parts = Parts { closed: Vec::new(), skipped: 0, min_extent: f64::INFINITY };
+    for g in groups {
+        let mut local: HashMap<u32, u32> = HashMap::new();
+        let mut pos = Vec::new();
+        let tris: Vec<[u32; 3]> = g
+            .iter()
+            .map(|t| {
+                t.map(|v| {
+                    *local.entry(v).or_insert_with(|| {
+                        pos.push(positions[v as usize]);
+                        (pos.len() - 1) as u32
+                    })
+                })
+            })
+            .collect();
+        let flipped: Vec<[u32; 3]> = tris.iter().map(|t| [t[0], t[2], t[1]]).collect();
+        match HalfEdgeMesh::new(pos.clone(), tris) {
+            Ok(m) if m.is_closed() && m.nonmanifold_vertices().is_empty() => {
+                let m = if m.signed_volume() < 0.0 { HalfEdgeMesh::new(pos, flipped).unwrap_or(m) } else { m };
+                let (lo, hi) = super::bounds(&m.positions);
+                parts.min_extent = parts.min_extent.min((hi - lo).min_element());
+                parts.closed.push(m);
+            }
+            _ => parts.skipped += 1,
+        }
+    }
+    if parts.closed.is_empty() {
+        return Err(PrintError::NothingPrintable(format!("none of the model's {} parts is a closed solid", parts.skipped)));
+    }
+    Ok(parts)
+}
+
+/// The union of closed parts, pairwise in a balanced tree (so no
+/// intermediate grows lopsided), as shared positions and CCW triangles.
+pub(super) fn unite(parts: &[HalfEdgeMesh], budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
+    let total: u64 = parts.iter().map(|p| p.face_count() as u64).sum();
+    // Manifold holds about 200 bytes per triangle while it works (half-edges, collider, properties).
+    let bytes = total.saturating_mul(200);
+    budget.reserve_memory(bytes)?;
+    budget.charge_steps(total.saturating_mul(8))?;
+    let mut level: Vec<manifold_rs::Manifold> = parts
+        .iter()
+        .map(|p| {
+            let verts: Vec<f32> = p.positions.iter().flat_map(|q| q.as_vec3().to_array()).collect();
+            let idx: Vec<u32> = p.triangles().iter().flatten().copied().collect();
+            manifold_rs::Manifold::from_mesh(manifold_rs::Mesh::new(&verts, &idx))
+        })
+        .collect();
+    while level.len() > 1 {
+        budget.check_deadline()?;
+        let mut next = Vec::with_capacity(level.len().div_ceil(2));
+        let mut it = level.chunks(2);
+        for pair in &mut it {
+            next.push(match pair {
+                [a, b] => a.union(b),
+                [a] => a.union(&manifold_rs::Manifold::empty()),
+                _ => manifold_rs::Manifold::empty(),
+            });
+        }
+        level = next;
+    }
+    budget.release_memory(bytes);
+    let result = level.pop().ok_or_else(|| PrintError::Union("no parts".into()))?;
+    if result.is_empty() {
+        return Err(PrintError::Union("the union is empty (a part was rejected by Manifold)".into()));
+    }
+    let mesh = result.to_mesh();
+    let props = mesh.num_props().max(3) as usize;
+    let positions: Vec<DVec3> = mesh.vertices().chunks_exact(props).map(|v| DVec3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))).collect();
+    Ok((positions, mesh.indices()))
+}

@@ -1,0 +1,122 @@
+//! `--print`: every grammar becomes one watertight solid in millimetres.
+//! admesh and trimesh (installed by scripts/test) check it independently of
+//! rulemesh's own report; the 3MF package opens in trimesh with the same
+//! triangle count as the STL.
+
+use crate::common::{admesh, grammar_files, repo, run, tempdir};
+use std::path::Path;
+use std::process::Command;
+
+/// The Python with trimesh (scripts/test installs it into .tools/venv).
+fn trimesh_python() -> String {
+    std::env::var("TRIMESH_PYTHON").unwrap_or_else(|_| repo().join(".tools/venv/bin/python").display().to_string())
+}
+
+/// (is_watertight, faces, volume) as trimesh sees a file.
+fn trimesh_check(file: &Path) -> (bool, u64, f64) {
+    let code = "import sys, trimesh\nm = trimesh.load(sys.argv[1], force='mesh')\nprint(m.is_watertight, len(m.faces), m.volume)";
+    let out = Command::new(trimesh_python()).args(["-c", code]).arg(file).output().expect("python with trimesh (run scripts/test)");
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(out.status.success(), "trimesh on {}: {text}{}", file.display(), String::from_utf8_lossy(&out.stderr));
+    let mut w = text.split_whitespace();
+    let watertight = w.next() == Some("True");
+    let faces = w.next().and_then(|f| f.parse().ok()).expect("face count");
+    let volume = w.next().and_then(|f| f.parse().ok()).expect("volume");
+    (watertight, faces, volume)
+}
+
+fn render(grammar: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec!["render", grammar.to_str().expect("utf-8"), "--print", "-o", out.to_str().expect("utf-8")];
+    args.extend_from_slice(extra);
+    run(&args, None)
+}
+
+#[test]
+fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
+    let dir = tempdir();
+    for g in grammar_files("mdg") {
+        let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
+        let json = dir.path().join(format!("{stem}.json"));
+        let out = render(&g, &json, &["--print-report", "--size-mm", "40"]);
+        if !out.status.success() {
+            // Nothing closed to print (e.g. only free-vertex surfaces): the error says so.
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(err.contains("nothing printable"), "{stem}: {err}");
+            continue;
+        }
+        let report: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).expect("report")).expect("report is JSON");
+        let stl = dir.path().join(format!("{stem}.stl"));
+        let out = render(&g, &stl, &["--size-mm", "40"]);
+        assert!(out.status.success(), "{stem}: {}", String::from_utf8_lossy(&out.stderr));
+        let a = admesh(&stl);
+        assert_eq!((a.open_edges, a.degenerate), (0, 0), "{stem}: {}", a.raw);
+        let volume = report["volume_mm3"].as_f64().expect("volume");
+        assert!((volume - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: report {volume} vs admesh {}", a.volume);
+        if report["is_watertight"] != true {
+            // Parts touching only along an edge (the Menger sponge): the report says why.
+            assert!(report["warnings"].to_string().contains("not watertight") && report["nonmanifold_edges"].as_u64() > Some(0), "{stem}: {report}");
+            continue;
+        }
+        let shells = report["shells"].as_u64().expect("shells");
+        assert_eq!(a.parts, shells, "{stem}: admesh parts vs report shells\n{}", a.raw);
+        if shells != 1 {
+            let warnings = report["warnings"].to_string();
+            assert!(warnings.contains("separate shells"), "{stem}: {report}");
+        }
+        let longest = report["bbox_mm"].as_array().expect("bbox").iter().map(|v| v.as_f64().expect("mm")).fold(0.0, f64::max);
+        assert!((longest - 40.0).abs() < 1e-3, "{stem}: longest side {longest}");
+        let (watertight, faces, _) = trimesh_check(&stl);
+        assert!(watertight, "{stem}: trimesh says not watertight");
+        assert_eq!(faces, a.facets, "{stem}");
+        let mf = dir.path().join(format!("{stem}.3mf"));
+        let out = render(&g, &mf, &["--size-mm", "40"]);
+        assert!(out.status.success(), "{stem}: {}", String::from_utf8_lossy(&out.stderr));
+        let (watertight, faces, volume3) = trimesh_check(&mf);
+        assert!(watertight, "{stem}: 3MF not watertight in trimesh");
+        assert_eq!(faces, a.facets, "{stem}: 3MF triangles");
+        assert!((volume3 - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: 3MF volume {volume3}");
+    }
+}
+
+#[test]
+fn overlapping_parts_are_united() {
+    // Two overlapping unit boxes: the union is 1.5 × 1 × 1 = 1.5 units³, one shell.
+    let dir = tempdir();
+    let src = "rule R { BOX {} BOX { x 0.5 } }";
+    let stl = dir.path().join("u.stl");
+    let out = run(&["render", "-", "--language", "mdg", "--print", "-o", stl.to_str().expect("utf-8")], Some(src.as_bytes()));
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let a = admesh(&stl);
+    assert_eq!((a.open_edges, a.degenerate, a.parts), (0, 0, 1), "{}", a.raw);
+    assert!((a.volume - 1.5).abs() < 1e-4, "{}", a.raw);
+    let out = run(&["render", "-", "--language", "mdg", "--print", "--print-report", "-o", "-"], Some(src.as_bytes()));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert_eq!(report["parts"], 2);
+    assert_eq!(report["shells"], 1);
+    // Shrunk to 1 mm overall, the 0.67 mm features warn.
+    let out = run(&["render", "-", "--language", "mdg", "--print", "--size-mm", "1", "--print-report", "-o", "-"], Some(src.as_bytes()));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert!(report["warnings"].to_string().contains("thinnest feature"), "{report}");
+    // Deterministic bytes.
+    let again = run(&["render", "-", "--language", "mdg", "--print", "--format", "3mf", "-o", "-"], Some(src.as_bytes()));
+    let twice = run(&["render", "-", "--language", "mdg", "--print", "--format", "3mf", "-o", "-"], Some(src.as_bytes()));
+    assert!(again.status.success() && again.stdout == twice.stdout && again.stdout.starts_with(b"PK"));
+    // size_mm without --print is a usage error.
+    let out = run(&["render", "-", "--language", "mdg", "--size-mm", "40", "-o", "-"], Some(src.as_bytes()));
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn every_example_in_docs_print_prints_watertight() {
+    let doc = std::fs::read_to_string(repo().join("docs/print.md")).expect("docs/print.md");
+    let examples = crate::docs::fenced_examples(&doc, "mdg");
+    assert!(examples.len() >= 2, "only {} examples", examples.len());
+    let dir = tempdir();
+    for (i, src) in examples.iter().enumerate() {
+        let stl = dir.path().join(format!("example-{i}.stl"));
+        let out = run(&["render", "-", "--language", "mdg", "--print", "--size-mm", "30", "-o", stl.to_str().expect("utf-8")], Some(src.as_bytes()));
+        assert!(out.status.success(), "example {i}:\n{src}\n{}", String::from_utf8_lossy(&out.stderr));
+        let a = admesh(&stl);
+        assert_eq!((a.open_edges, a.degenerate, a.parts), (0, 0, 1), "example {i}: {}", a.raw);
+    }
+}
