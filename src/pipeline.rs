@@ -255,6 +255,23 @@ fn mesh_with_graph(
     Ok((meshes, graph))
 }
 
+/// Renders an ETOL token stream (seed 003 appendix A) through the L-system
+/// front end; diagnostics point back into the token stream.
+fn render_etol(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
+    Budget::check_source(&req.limits, source.len() as u64)?;
+    let t = lang::etol::translate(source)?;
+    let as_lsystem = RenderRequest { language: Some(Language::Lsystem), ..req.clone() };
+    match crate::lsystem::render(t.source.as_bytes(), &as_lsystem) {
+        Ok(mut out) => {
+            out.language = Language::Etol;
+            t.map_warnings(&mut out.warnings);
+            Ok(out)
+        }
+        Err(RenderError::Parse(e)) => Err(RenderError::Parse(t.map_error(e))),
+        Err(e) => Err(e),
+    }
+}
+
 /// Renders `source` as the request says. Never panics on bad input; every
 /// failure is a typed [`RenderError`].
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
@@ -264,6 +281,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     }
     match req.language.or_else(|| Language::detect(source)) {
         Some(Language::Lsystem) => return crate::lsystem::render(source, req),
+        Some(Language::Etol) => return render_etol(source, req),
         Some(Language::Eisenscript) => return crate::eisen::render(source, req),
         _ => {}
     }

@@ -229,7 +229,7 @@ pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
         bytes: bytes::Bytes::copy_from_slice(bytes),
         etag,
         content_type: static_content_type(&header.content_type)?,
-        language: [Language::Mdg, Language::Lsystem, Language::Eisenscript, Language::Stack, Language::Ug].into_iter().find(|l| l.name() == header.language)?,
+        language: [Language::Mdg, Language::Lsystem, Language::Eisenscript, Language::Stack, Language::Ug, Language::Etol].into_iter().find(|l| l.name() == header.language)?,
         primitives: header.primitives,
         triangles: header.triangles,
         truncated: None,

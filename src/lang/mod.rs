@@ -2,6 +2,7 @@
 //! shared [`ir::Program`]. Parsers never touch geometry or output formats.
 
 pub mod eisen;
+pub mod etol;
 pub mod expr;
 pub mod ir;
 pub mod lsystem;
@@ -100,6 +101,8 @@ pub enum Language {
     Stack,
     /// Berkeley UniGrafix (seed 004 §1), the safe subset: `v f c def end i`; see `docs/modifiers.md`.
     Ug,
+    /// The ETOL token stream of seed 003 appendix A, read as an L-system; see `docs/lsystem.md`.
+    Etol,
 }
 
 impl Language {
@@ -111,6 +114,7 @@ impl Language {
             Language::Eisenscript => "eisenscript",
             Language::Stack => "stack",
             Language::Ug => "ug",
+            Language::Etol => "etol",
         }
     }
 
@@ -122,6 +126,7 @@ impl Language {
             "es" => Some(Language::Eisenscript),
             "stack" => Some(Language::Stack),
             "ug" => Some(Language::Ug),
+            "etol" => Some(Language::Etol),
             _ => None,
         }
     }
@@ -168,6 +173,11 @@ pub fn parse(language: Language, source: &[u8]) -> Result<ir::Program, ParseErro
         }
         Language::Stack => stack::parse(source),
         Language::Ug => ug::parse(source),
+        Language::Etol => {
+            let t = etol::translate(source)?;
+            lsystem::parse(t.source.as_bytes()).map_err(|e| t.map_error(e))?;
+            Err(ParseError::single(Span::new(1, 1), "ETOL streams are L-systems and do not lower into the rule IR; use lang::etol::translate"))
+        }
     }
 }
 
@@ -179,5 +189,11 @@ pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, Parse
         Language::Eisenscript => eisen::parse(source, &Default::default()).map(|s| s.warnings),
         Language::Stack => stack::parse(source).map(|p| p.warnings),
         Language::Ug => ug::parse(source).map(|p| p.warnings),
+        Language::Etol => {
+            let t = etol::translate(source)?;
+            let mut warnings = lsystem::parse(t.source.as_bytes()).map_err(|e| t.map_error(e))?.warnings;
+            t.map_warnings(&mut warnings);
+            Ok(warnings)
+        }
     }
 }

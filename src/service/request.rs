@@ -148,7 +148,8 @@ pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceErr
         Some(n) if n.eq_ignore_ascii_case("eisenscript") => Ok(Some(Language::Eisenscript)),
         Some(n) if n.eq_ignore_ascii_case("stack") => Ok(Some(Language::Stack)),
         Some(n) if n.eq_ignore_ascii_case("ug") => Ok(Some(Language::Ug)),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem, eisenscript, stack, ug)"))),
+        Some(n) if n.eq_ignore_ascii_case("etol") => Ok(Some(Language::Etol)),
+        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem, eisenscript, stack, ug, etol)"))),
     }
 }
 

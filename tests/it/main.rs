@@ -9,6 +9,7 @@ mod animation;
 mod compact;
 mod counts;
 mod directives;
+mod etol;
 mod determinism;
 mod docs;
 mod eisen;
