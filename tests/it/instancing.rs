@@ -310,3 +310,45 @@ fn cli_writes_scenes_and_flat_glb() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(!String::from_utf8_lossy(&std::fs::read(&flat).expect("written")[..2000]).contains("EXT_mesh_gpu_instancing"));
 }
+
+/// Peak RSS (bytes) and success of one CLI render under GNU time.
+fn measured(args: &[&str]) -> (u64, bool, String) {
+    let out = std::process::Command::new("/usr/bin/time")
+        .arg("-v")
+        .arg(crate::common::bin())
+        .args(args)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("GNU time runs (scripts/test installs it)");
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    let kb: u64 = err
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("Maximum resident set size (kbytes):"))
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or_else(|| panic!("no RSS in GNU time output:\n{err}"));
+    (kb * 1024, out.status.success(), err)
+}
+
+#[test]
+fn ten_million_segment_scene_stays_small_in_memory_and_hostile_growth_fails_cleanly() {
+    let dir = tempdir();
+    let out = dir.path().join("big.rmscene");
+    let src = repo().join("bench/lsystem-1e7.ls");
+    let limits = ["--max-primitives", "20000000", "--max-triangles", "1000000000"];
+    let mut args = vec!["render", src.to_str().expect("utf-8"), "-o", out.to_str().expect("utf-8")];
+    args.extend_from_slice(&limits);
+    let (rss, ok, err) = measured(&args);
+    assert!(ok, "{err}");
+    // The bound is 50 MB; the scene needs a few MB (no string, no meshes).
+    assert!(rss < 50_000_000, "peak RSS {rss} bytes");
+    // 3^60 modules: refused from the DAG's counts, in bounded memory, for every format.
+    let dir2 = tempdir();
+    let hostile = dir2.path().join("hostile.ls");
+    std::fs::write(&hostile, "iterations: 60\naxiom: A\nA -> F[+A][-A]A\n").expect("write");
+    for ext in ["rmscene", "glb", "stl"] {
+        let o = dir2.path().join(format!("out.{ext}"));
+        let (rss, ok, err) = measured(&["render", hostile.to_str().expect("utf-8"), "-o", o.to_str().expect("utf-8"), "--max-memory", "64000000"]);
+        assert!(!ok && err.contains("limit exceeded"), "{ext}: {err}");
+        assert!(rss < 128_000_000, "{ext}: peak RSS {rss}");
+    }
+}
