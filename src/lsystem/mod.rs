@@ -3,6 +3,11 @@
 //! pipeline for `language: "lsystem"`: source → derived string → Scene →
 //! meshes → bytes, under one [`Budget`].
 //!
+//! Context-free systems take the instancing route instead (issue 5, seed 001
+//! ch. 4): source → derivation DAG ([`dag`]) → object hierarchy
+//! ([`instance`]) → `format=scene` or `EXT_mesh_gpu_instancing` glTF, with
+//! no string in between; the flat formats walk the DAG through the turtle.
+//!
 //! Limits: every module rewritten counts one evaluation step (`max_steps`),
 //! every string is accounted in `max_memory` before it is allocated (so the
 //! string length is bounded by both), and every segment counts as a

@@ -352,3 +352,26 @@ fn ten_million_segment_scene_stays_small_in_memory_and_hostile_growth_fails_clea
         assert!(rss < 128_000_000, "{ext}: peak RSS {rss}");
     }
 }
+
+/// Seed 001 fig 4.6: `A → F B ] F ] F`, `B → F [ F [ F`. B pushes twice and
+/// A pops what B pushed (status n = 2), so the subtrees are not
+/// self-contained: the DAG is not balanced and the hierarchy comes from the
+/// derived string, with the segment bases at 0, 1, 2, 3, 3, 2.
+#[test]
+fn brackets_across_subtrees_fall_back_with_the_right_geometry() {
+    let src = b"iterations: 2\nshape: BOX\naxiom: A\nA -> F B ] F ] F\nB -> F [ F [ F\n";
+    let sys = parse(src).expect("parses");
+    let d = dag::build(&sys, 0, &mut Budget::new(Limits::default())).expect("dag");
+    assert!(!d.balanced());
+    let h = decode_scene(&ok(src, &req(Format::Scene)).bytes).expect("decodes");
+    let bases: Vec<f64> = leaves(&h).iter().map(|l| (l.translation.y * 1e6).round() / 1e6).collect();
+    assert_eq!(bases, [0.0, 1.0, 2.0, 3.0, 3.0, 2.0]);
+    // `]F[` pops what it did not push and `F[[` leaves pushes open: neither instances, both draw.
+    for succ in ["] F [", "F [ ["] {
+        let src = format!("iterations: 3\naxiom: F A F\nA -> {succ} A\n");
+        let sys = parse(src.as_bytes()).expect("parses");
+        assert!(!dag::build(&sys, 0, &mut Budget::new(Limits::default())).expect("dag").balanced(), "{succ}");
+        let stl = ok(src.as_bytes(), &req(Format::Stl));
+        assert_eq!(ok(src.as_bytes(), &req(Format::Scene)).primitives, stl.primitives, "{succ}");
+    }
+}
