@@ -321,12 +321,7 @@ fn measured(args: &[&str]) -> (u64, bool, String) {
         .output()
         .expect("GNU time runs (scripts/test installs it)");
     let err = String::from_utf8_lossy(&out.stderr).to_string();
-    let kb: u64 = err
-        .lines()
-        .find_map(|l| l.trim().strip_prefix("Maximum resident set size (kbytes):"))
-        .and_then(|v| v.trim().parse().ok())
-        .unwrap_or_else(|| panic!("no RSS in GNU time output:\n{err}"));
-    (kb * 1024, out.status.success(), err)
+    (crate::common::max_rss_bytes(&err), out.status.success(), err)
 }
 
 #[test]
