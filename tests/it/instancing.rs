@@ -228,6 +228,11 @@ fn ten_million_segments_render_as_a_scene_of_a_few_kilobytes() {
     let out = ok(&src, &RenderRequest { limits, ..req(Format::Scene) });
     assert_eq!(out.primitives, 10_000_000);
     assert!(out.bytes.len() < 4096, "{}", out.bytes.len());
+    let h = decode_scene(&out.bytes).expect("decodes");
+    assert_eq!((h.objects.len(), h.entry_count()), (7, 70));
+    let sys = parse(&src).expect("parses");
+    let d = dag::build(&sys, 0, &mut Budget::new(limits)).expect("dag");
+    assert_eq!((d.root().segments, d.root().modules), (10_000_000, 23_333_332));
     // Under the default limits it is refused before any expansion.
     assert_eq!(limit_of(render(&src, &req(Format::Glb))), Some(Limit::Primitives));
     assert_eq!(limit_of(render(&src, &req(Format::Stl))), Some(Limit::Steps));
