@@ -181,21 +181,25 @@ impl Hierarchy {
     }
 
     /// Calls `f` with every leaf of the expansion in world space, depth first
-    /// in entry order (the order the turtle drew them). Recursion is as deep as
-    /// the hierarchy, which its builder bounds.
+    /// in entry order (the order the turtle drew them). The walk keeps its own
+    /// stack, one frame per level, so a deep hierarchy (say, a decoded file)
+    /// cannot overflow the thread's stack; its cost is the number of leaves,
+    /// which [`Hierarchy::leaves`] tells before walking.
     pub fn walk(&self, f: &mut dyn FnMut(&PlacedLeaf)) {
-        if let Some(root) = self.objects.len().checked_sub(1) {
-            self.walk_from(root, DVec3::ZERO, DQuat::IDENTITY, f);
-        }
-    }
-
-    fn walk_from(&self, object: usize, t: DVec3, r: DQuat, f: &mut dyn FnMut(&PlacedLeaf)) {
-        let Some(o) = self.objects.get(object) else { return };
-        for e in &o.entries {
+        let Some(root) = self.objects.len().checked_sub(1) else { return };
+        // (object, next entry, object's world translation and rotation)
+        let mut stack: Vec<(usize, usize, DVec3, DQuat)> = vec![(root, 0, DVec3::ZERO, DQuat::IDENTITY)];
+        while let Some(top) = stack.last_mut() {
+            let (object, next, t, r) = *top;
+            let Some(e) = self.objects.get(object).and_then(|o| o.entries.get(next)) else {
+                stack.pop();
+                continue;
+            };
+            top.1 += 1;
             let translation = t + r * e.translation;
             let rotation = (r * e.rotation).normalize();
             match e.target {
-                Target::Object(c) if (c as usize) < object => self.walk_from(c as usize, translation, rotation, f),
+                Target::Object(c) if (c as usize) < object => stack.push((c as usize, 0, translation, rotation)),
                 Target::Object(_) => {}
                 Target::Shape(shape) => f(&PlacedLeaf { shape, translation, rotation, colour: e.colour }),
             }

@@ -696,7 +696,10 @@ pub fn write_instanced(
         let ta = push(&mut doc, "accessors", serde_json::json!({"bufferView": tv, "componentType": 5126, "count": c, "type": "VEC3"}));
         let ra = push(&mut doc, "accessors", serde_json::json!({"bufferView": rv, "componentType": 5126, "count": c, "type": "VEC4"}));
         // document() pushes the root node first, then one node per mesh in order.
-        doc["nodes"][i + 1]["extensions"] = serde_json::json!({ EXT_INSTANCING: {"attributes": {"TRANSLATION": ta, "ROTATION": ra}} });
+        let Some(node) = doc.get_mut("nodes").and_then(|n| n.get_mut(i + 1)).and_then(|n| n.as_object_mut()) else {
+            return Err(invalid("model", "the document lacks a node for an instanced mesh"));
+        };
+        node.insert("extensions".into(), serde_json::json!({ EXT_INSTANCING: {"attributes": {"TRANSLATION": ta, "ROTATION": ra}} }));
     }
     doc["extensionsUsed"] = serde_json::json!([EXT_INSTANCING]);
     doc["extensionsRequired"] = serde_json::json!([EXT_INSTANCING]);

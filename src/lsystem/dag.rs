@@ -119,15 +119,15 @@ pub struct StringDag {
 }
 
 impl StringDag {
-    /// The root node (the axiom's expansion).
+    /// The root node (the axiom's expansion; an empty node for an empty DAG).
     pub fn root(&self) -> &DagNode {
-        // build() always pushes the root last.
-        &self.nodes[self.nodes.len() - 1]
+        static EMPTY: DagNode = DagNode { items: Vec::new(), modules: 0, segments: 0, low: 0, net: 0 };
+        self.nodes.last().unwrap_or(&EMPTY)
     }
 
-    /// Index of the root node.
+    /// Index of the root node, which [`build`] always pushes last.
     pub fn root_index(&self) -> u32 {
-        (self.nodes.len() - 1) as u32
+        self.nodes.len().saturating_sub(1) as u32
     }
 
     /// The parameters of a terminal module item.

@@ -3,6 +3,11 @@
 //! pipeline for `language: "lsystem"`: source → derived string → Scene →
 //! meshes → bytes, under one [`Budget`].
 //!
+//! Context-free systems take the instancing route instead (issue 5, seed 001
+//! ch. 4): source → derivation DAG ([`dag`]) → object hierarchy
+//! ([`instance`]) → `format=scene` or `EXT_mesh_gpu_instancing` glTF, with
+//! no string in between; the flat formats walk the DAG through the turtle.
+//!
 //! Limits: every module rewritten counts one evaluation step (`max_steps`),
 //! every string is accounted in `max_memory` before it is allocated (so the
 //! string length is bounded by both), and every segment counts as a
@@ -47,8 +52,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         Some(_) => None,
         None => match dag::build(&sys, seed, &mut budget) {
             Ok(d) => Some(d),
-            // The DAG is built whole or not at all; truncation needs the string.
-            Err(EvalError::Limit(_)) if req.on_limit == OnLimit::Truncate => {
+            // The DAG is built whole or not at all; truncation needs the string
+            // (but a deadline is not restarted).
+            Err(EvalError::Limit(l)) if req.on_limit == OnLimit::Truncate && l.limit != Limit::Deadline => {
                 budget = Budget::new(req.limits);
                 None
             }
@@ -59,7 +65,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     if req.format == Format::Scene || (gltf && dag.is_some()) {
         match hierarchical(&sys, dag.as_ref(), seed, req, &mut budget, &mut stages) {
             Ok(out) => return finish(out, req, sys.warnings, budget, stages),
-            Err(RenderError::Limit(_)) if req.on_limit == OnLimit::Truncate && req.format != Format::Scene => {
+            Err(RenderError::Limit(l)) if req.on_limit == OnLimit::Truncate && req.format != Format::Scene && l.limit != Limit::Deadline => {
                 budget = Budget::new(req.limits);
             }
             Err(e) => return Err(e),
@@ -146,6 +152,7 @@ fn hierarchical(
         }
     };
     stages.lap(|p| &mut p.eval);
+    budget.check_deadline()?;
     // Refuse, before any expansion, a model whose segments or triangles exceed the limits.
     let limits = budget.limits();
     let leaves = h.leaves();
@@ -216,6 +223,8 @@ fn finish(made: Made, req: &RenderRequest, warnings: Vec<crate::lang::Diagnostic
         Made::Flat { scene, leaves } => mesh_and_export(scene, req, Language::Lsystem, leaves, warnings, budget, stages),
         Made::Bytes { bytes, leaves, triangles, truncated } => {
             stages.lap(|p| &mut p.export);
+            // Writing is not interruptible; a model finished after the deadline still fails with it.
+            budget.check_deadline()?;
             Ok(RenderOutput {
                 bytes,
                 language: Language::Lsystem,

@@ -240,7 +240,7 @@ pub fn interpret_stream(
         polygons: Vec::new(),
     };
     let result = feed(&mut |sym, p| t.module(sym, p, budget));
-    budget.release_memory((t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
+    t.release_scratch(budget);
     match result {
         Ok(()) => {}
         Err(EvalError::Limit(l)) if opts.on_limit == OnLimit::Truncate => {
@@ -327,11 +327,17 @@ impl<'a> LeafTurtle<'a> {
 
     /// Returns the memory its state stack accounted.
     pub(crate) fn release(self, budget: &mut Budget) {
-        budget.release_memory((self.t.stack.capacity() as u64).saturating_mul(STATE_BYTES));
+        self.t.release_scratch(budget);
     }
 }
 
 impl Turtle<'_> {
+    /// Returns the memory of the state stack and of polygons left open.
+    fn release_scratch(&self, budget: &mut Budget) {
+        let open: u64 = self.polygons.iter().map(|p| POLYGON_BYTES.saturating_add(VERTEX_BYTES.saturating_mul(p.len() as u64))).sum();
+        budget.release_memory((self.stack.capacity() as u64).saturating_mul(STATE_BYTES).saturating_add(open));
+    }
+
     fn module(&mut self, sym: u32, p: &[f64], budget: &mut Budget) -> Result<(), EvalError> {
         let arg = |k: usize| p.get(k).copied();
         match self.actions.get(sym as usize).copied().unwrap_or(Action::None) {

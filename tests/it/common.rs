@@ -83,6 +83,16 @@ pub fn validate_gltf(files: &[PathBuf]) -> Vec<(u64, u64, String)> {
         .collect()
 }
 
+/// Peak resident set in bytes from the stderr of `/usr/bin/time -v`.
+pub fn max_rss_bytes(gnu_time_stderr: &str) -> u64 {
+    let kb: u64 = gnu_time_stderr
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("Maximum resident set size (kbytes):"))
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or_else(|| panic!("no RSS in GNU time output:\n{gnu_time_stderr}"));
+    kb * 1024
+}
+
 /// What admesh says about an STL file (exact edge matching only, no repairs).
 #[derive(Debug, Default, PartialEq)]
 pub struct AdmeshReport {

@@ -19,11 +19,7 @@ fn run_measured(source: &[u8], extra: &[&str]) -> (u64, Option<i32>, String) {
         .stdin(Stdio::null());
     let out = cmd.output().expect("GNU time runs (scripts/test installs it)");
     let err = String::from_utf8_lossy(&out.stderr).to_string();
-    let rss_kb: u64 = err
-        .lines()
-        .find_map(|l| l.trim().strip_prefix("Maximum resident set size (kbytes):"))
-        .and_then(|v| v.trim().parse().ok())
-        .unwrap_or_else(|| panic!("no RSS in GNU time output:\n{err}"));
+    let rss = crate::common::max_rss_bytes(&err);
     // GNU time reports the child's status as "Exit status: N".
     let code = err
         .lines()
@@ -31,7 +27,7 @@ fn run_measured(source: &[u8], extra: &[&str]) -> (u64, Option<i32>, String) {
         .and_then(|v| v.trim().parse().ok());
     let signalled = err.contains("Command terminated by signal");
     assert!(!signalled, "rulemesh was killed by a signal:\n{err}");
-    (rss_kb * 1024, code, err)
+    (rss, code, err)
 }
 
 const RSS_BOUND: u64 = 128 * 1000 * 1000;

@@ -228,6 +228,11 @@ fn ten_million_segments_render_as_a_scene_of_a_few_kilobytes() {
     let out = ok(&src, &RenderRequest { limits, ..req(Format::Scene) });
     assert_eq!(out.primitives, 10_000_000);
     assert!(out.bytes.len() < 4096, "{}", out.bytes.len());
+    let h = decode_scene(&out.bytes).expect("decodes");
+    assert_eq!((h.objects.len(), h.entry_count()), (7, 70));
+    let sys = parse(&src).expect("parses");
+    let d = dag::build(&sys, 0, &mut Budget::new(limits)).expect("dag");
+    assert_eq!((d.root().segments, d.root().modules), (10_000_000, 23_333_332));
     // Under the default limits it is refused before any expansion.
     assert_eq!(limit_of(render(&src, &req(Format::Glb))), Some(Limit::Primitives));
     assert_eq!(limit_of(render(&src, &req(Format::Stl))), Some(Limit::Steps));
@@ -309,4 +314,64 @@ fn cli_writes_scenes_and_flat_glb() {
     let out = run(&["render", bush.to_str().expect("utf-8"), "--instancing", "flat", "--detail", "4", "-o", flat.to_str().expect("utf-8")], None);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(!String::from_utf8_lossy(&std::fs::read(&flat).expect("written")[..2000]).contains("EXT_mesh_gpu_instancing"));
+}
+
+/// Peak RSS (bytes) and success of one CLI render under GNU time.
+fn measured(args: &[&str]) -> (u64, bool, String) {
+    let out = std::process::Command::new("/usr/bin/time")
+        .arg("-v")
+        .arg(crate::common::bin())
+        .args(args)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("GNU time runs (scripts/test installs it)");
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    (crate::common::max_rss_bytes(&err), out.status.success(), err)
+}
+
+#[test]
+fn ten_million_segment_scene_stays_small_in_memory_and_hostile_growth_fails_cleanly() {
+    let dir = tempdir();
+    let out = dir.path().join("big.rmscene");
+    let src = repo().join("bench/lsystem-1e7.ls");
+    let limits = ["--max-primitives", "20000000", "--max-triangles", "1000000000"];
+    let mut args = vec!["render", src.to_str().expect("utf-8"), "-o", out.to_str().expect("utf-8")];
+    args.extend_from_slice(&limits);
+    let (rss, ok, err) = measured(&args);
+    assert!(ok, "{err}");
+    // The bound is 50 MB; the scene needs a few MB (no string, no meshes).
+    assert!(rss < 50_000_000, "peak RSS {rss} bytes");
+    // 3^60 modules: refused from the DAG's counts, in bounded memory, for every format.
+    let dir2 = tempdir();
+    let hostile = dir2.path().join("hostile.ls");
+    std::fs::write(&hostile, "iterations: 60\naxiom: A\nA -> F[+A][-A]A\n").expect("write");
+    for ext in ["rmscene", "glb", "stl"] {
+        let o = dir2.path().join(format!("out.{ext}"));
+        let (rss, ok, err) = measured(&["render", hostile.to_str().expect("utf-8"), "-o", o.to_str().expect("utf-8"), "--max-memory", "64000000"]);
+        assert!(!ok && err.contains("limit exceeded"), "{ext}: {err}");
+        assert!(rss < 128_000_000, "{ext}: peak RSS {rss}");
+    }
+}
+
+/// Seed 001 fig 4.6: `A → F B ] F ] F`, `B → F [ F [ F`. B pushes twice and
+/// A pops what B pushed (status n = 2), so the subtrees are not
+/// self-contained: the DAG is not balanced and the hierarchy comes from the
+/// derived string, with the segment bases at 0, 1, 2, 3, 3, 2.
+#[test]
+fn brackets_across_subtrees_fall_back_with_the_right_geometry() {
+    let src = b"iterations: 2\nshape: BOX\naxiom: A\nA -> F B ] F ] F\nB -> F [ F [ F\n";
+    let sys = parse(src).expect("parses");
+    let d = dag::build(&sys, 0, &mut Budget::new(Limits::default())).expect("dag");
+    assert!(!d.balanced());
+    let h = decode_scene(&ok(src, &req(Format::Scene)).bytes).expect("decodes");
+    let bases: Vec<f64> = leaves(&h).iter().map(|l| (l.translation.y * 1e6).round() / 1e6).collect();
+    assert_eq!(bases, [0.0, 1.0, 2.0, 3.0, 3.0, 2.0]);
+    // `]F[` pops what it did not push and `F[[` leaves pushes open: neither instances, both draw.
+    for succ in ["] F [", "F [ ["] {
+        let src = format!("iterations: 3\naxiom: F A F\nA -> {succ} A\n");
+        let sys = parse(src.as_bytes()).expect("parses");
+        assert!(!dag::build(&sys, 0, &mut Budget::new(Limits::default())).expect("dag").balanced(), "{succ}");
+        let stl = ok(src.as_bytes(), &req(Format::Stl));
+        assert_eq!(ok(src.as_bytes(), &req(Format::Scene)).primitives, stl.primitives, "{succ}");
+    }
 }
