@@ -544,23 +544,18 @@ fn bar(a: DVec3, b: DVec3, r: f64) -> Option<(PrimitiveKind, DMat3, DVec3)> {
     Some((PrimitiveKind::Box, DMat3::from_cols(d, u, v), (a + b) * 0.5))
 }
 
-/// The twelve edges of the unit cube.
-fn cube_edges() -> [(DVec3, DVec3); 12] {
-    let c = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
-    [
-        (c(0., 0., 0.), c(1., 0., 0.)),
-        (c(0., 1., 0.), c(1., 1., 0.)),
-        (c(0., 0., 1.), c(1., 0., 1.)),
-        (c(0., 1., 1.), c(1., 1., 1.)),
-        (c(0., 0., 0.), c(0., 1., 0.)),
-        (c(1., 0., 0.), c(1., 1., 0.)),
-        (c(0., 0., 1.), c(0., 1., 1.)),
-        (c(1., 0., 1.), c(1., 1., 1.)),
-        (c(0., 0., 0.), c(0., 0., 1.)),
-        (c(1., 0., 0.), c(1., 0., 1.)),
-        (c(0., 1., 0.), c(0., 1., 1.)),
-        (c(1., 1., 0.), c(1., 1., 1.)),
-    ]
+/// The twelve edges of the unit cube: along each axis, from each corner of the opposite face.
+fn cube_edges() -> impl Iterator<Item = (DVec3, DVec3)> {
+    (0..3).flat_map(|axis: usize| {
+        (0..4).map(move |k: u32| {
+            let mut a = DVec3::ZERO;
+            a[(axis + 1) % 3] = f64::from(k & 1);
+            a[(axis + 2) % 3] = f64::from(k >> 1);
+            let mut b = a;
+            b[axis] = 1.0;
+            (a, b)
+        })
+    })
 }
 
 /// The closed solid between the x = 0 unit squares of two frames, as
@@ -579,4 +574,40 @@ fn mesh_solid(from: &DMat4, to: &DMat4) -> Vec<[DVec3; 3]> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cube_edges_are_the_twelve_unit_edges() {
+        let edges: Vec<(DVec3, DVec3)> = cube_edges().collect();
+        assert_eq!(edges.len(), 12);
+        for (i, (a, b)) in edges.iter().enumerate() {
+            assert_eq!((*b - *a).length(), 1.0);
+            assert!(edges[..i].iter().all(|e| e != &(*a, *b)));
+        }
+    }
+
+    #[test]
+    fn mesh_solid_is_closed_and_outward() {
+        let from = DMat4::IDENTITY;
+        for to in [DMat4::from_translation(DVec3::X), DMat4::from_translation(-2.0 * DVec3::X), DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0))] {
+            let tris = mesh_solid(&from, &to);
+            assert_eq!(tris.len(), 12);
+            // Signed volume by the divergence theorem: positive when every face points outward.
+            let v: f64 = tris.iter().map(|[a, b, c]| a.dot(b.cross(*c)) / 6.0).sum();
+            assert!(v > 0.0, "{v}");
+        }
+    }
+
+    #[test]
+    fn bars_span_their_segment() {
+        let Some((kind, m, t)) = bar(DVec3::ZERO, DVec3::new(0.0, 0.0, 2.0), 0.1) else { panic!("no bar") };
+        assert_eq!(kind, PrimitiveKind::Box);
+        assert_eq!(t, DVec3::new(0.0, 0.0, 1.0));
+        assert!((m.determinant().abs() - 2.0 * 0.2 * 0.2).abs() < 1e-12);
+        assert!(bar(DVec3::ONE, DVec3::ONE, 0.1).is_none());
+    }
 }
