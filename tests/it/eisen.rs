@@ -4,7 +4,7 @@
 //! `structure-synth` package ships through the renderer and the Khronos
 //! glTF Validator.
 
-use crate::common::{decode_stl, signed_volume, tempdir, validate_gltf};
+use crate::common::{admesh, decode_stl, signed_volume, tempdir, validate_gltf};
 use rulemesh::eisen::{build, BuildOptions};
 use rulemesh::eval::{Limit, Limits, OnLimit, ParamValue};
 use rulemesh::export::Format;
@@ -218,6 +218,25 @@ fn affine_frames_keep_solids_closed_and_outward() {
     let v = |src: &str| signed_volume(&decode_stl(&render(src.as_bytes(), &req(Format::Stl)).unwrap().bytes));
     assert!((v("{ fx s 2 1 1 } box") - 2.0).abs() < 1e-4);
     assert!((v("{ s 2 1 1 } box") - 2.0).abs() < 1e-4);
+}
+
+#[test]
+fn lines_grids_dots_and_meshes_are_closed_solids() {
+    // Printable: every part closed, no open edges, all facing outward.
+    let src = "{ s 2 1 0.5 } grid\n{ x 3 rz 30 } line\n{ x 5 } dot\n{ y 3 s 1 2 1 } cylinder\n{ y 6 } sphere\n3 * { z 1.5 rx 10 s 0.9 } mesh\n";
+    let out = render(src.as_bytes(), &req(Format::Stl)).unwrap();
+    let dir = tempdir();
+    let path = dir.path().join("solids.stl");
+    std::fs::write(&path, &out.bytes).expect("write stl");
+    let r = admesh(&path);
+    assert_eq!((r.open_edges, r.degenerate, r.reversed), (0, 0, 0), "{}", r.raw);
+    assert!(r.volume > 0.0, "{}", r.raw);
+    // A thicker line_radius makes thicker bars.
+    let mut thick = req(Format::Stl);
+    thick.params.insert("line_radius".into(), ParamValue::Number(0.1));
+    let v = |r: &RenderRequest| signed_volume(&decode_stl(&render(b"line", r).unwrap().bytes));
+    assert!((v(&req(Format::Stl)) - 0.02 * 0.02).abs() < 1e-6);
+    assert!((v(&thick) - 0.2 * 0.2).abs() < 1e-5);
 }
 
 #[test]
