@@ -21,7 +21,8 @@ use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
 use crate::eval::rng::StreamKey;
 use crate::eval::scene::{AffineInstance, FreeVertex, Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
 use crate::eval::EvalError;
-use crate::lang::eisen::{colour, Action, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
+use crate::eval::scene::SceneCamera;
+use crate::lang::eisen::{colour, Action, CameraSetting, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
 use crate::lang::ir::PrimitiveKind;
 use glam::{DMat3, DMat4, DVec3, Mat3};
 
@@ -31,6 +32,48 @@ pub const DEFAULT_MAX_GENERATIONS: i64 = 1000;
 pub const DEFAULT_MAX_OBJECTS: i64 = 100_000;
 /// Default half-thickness of `line`, `grid` and `dot` solids, in units of the local frame.
 pub const DEFAULT_LINE_RADIUS: f64 = 0.01;
+
+/// Structure Synth's default view: the model 20 units in front of the eye.
+pub const DEFAULT_VIEW_TRANSLATION: [f64; 3] = [0.0, 0.0, -20.0];
+/// Structure Synth's default vertical field of view, degrees.
+pub const DEFAULT_PERSPECTIVE_ANGLE: f64 = 22.0;
+
+/// The viewer settings seen so far: Structure Synth's view maps a world
+/// point p to `translation + rotation · (scale · (p − pivot))`, the eye at
+/// the view-space origin looking down −Z.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct View {
+    translation: DVec3,
+    rotation: DMat3,
+    pivot: DVec3,
+    scale: f64,
+    angle: f64,
+}
+
+impl Default for View {
+    fn default() -> Self {
+        View { translation: DVec3::from_array(DEFAULT_VIEW_TRANSLATION), rotation: DMat3::IDENTITY, pivot: DVec3::ZERO, scale: 1.0, angle: DEFAULT_PERSPECTIVE_ANGLE }
+    }
+}
+
+impl View {
+    /// The eye in world space: the inverse of the view map at the view origin.
+    fn camera(&self) -> Option<SceneCamera> {
+        // Structure Synth's saved rotations are rotations up to rounding; re-orthonormalise.
+        let q = glam::DQuat::from_mat3(&self.rotation).normalize();
+        if !q.is_finite() || !(self.scale.is_finite() && self.scale > 0.0) {
+            return None;
+        }
+        let inverse = q.conjugate();
+        let position = self.pivot - (inverse * self.translation) / self.scale;
+        let fov = self.angle.clamp(1.0, 179.0).to_radians();
+        position.is_finite().then(|| SceneCamera {
+            translation: position.as_vec3().to_array(),
+            rotation: inverse.as_quat().normalize().to_array(),
+            yfov: fov as f32,
+        })
+    }
+}
 
 /// What the builder needs besides the script.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -126,6 +169,8 @@ struct Builder<'a> {
     next: Vec<RuleState<'a>>,
     next_bytes: u64,
     built: Built,
+    /// The viewer settings, once a script sets one.
+    view: Option<View>,
 }
 
 /// Runs `script` under `budget`.
@@ -147,6 +192,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
         next: Vec::new(),
         next_bytes: 0,
         built: Built::default(),
+        view: None,
     };
     b.built.scene.classes = script.classes.clone();
     let start = RuleState {
@@ -163,6 +209,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
     };
     let result = if script.depth_first { b.depth_first(start) } else { b.breadth_first(start) };
     b.budget.release_memory(b.next_bytes);
+    b.built.scene.camera = b.view.and_then(|v| v.camera());
     match result {
         Ok(()) => Ok(b.built),
         Err(e) if b.opts.on_limit == OnLimit::Truncate => {
@@ -330,6 +377,16 @@ impl<'a> Builder<'a> {
             }
             Setting::ColourPool(p) => self.pool = p.clone(),
             Setting::SyncRandom(b) => self.sync_random = *b,
+            Setting::Camera(c) => {
+                let v = self.view.get_or_insert_with(View::default);
+                match *c {
+                    CameraSetting::Translation(t) => v.translation = t,
+                    CameraSetting::Rotation(r) => v.rotation = r,
+                    CameraSetting::Pivot(p) => v.pivot = p,
+                    CameraSetting::Scale(s) => v.scale = s,
+                    CameraSetting::PerspectiveAngle(a) => v.angle = a,
+                }
+            }
             Setting::Ignored => {}
         }
     }

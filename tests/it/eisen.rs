@@ -259,6 +259,44 @@ fn classes_become_mesh_names_and_detection_works() {
     }
 }
 
+#[test]
+fn viewer_settings_become_a_gltf_camera() {
+    let camera = |settings: &str| -> serde_json::Value {
+        let src = format!("{settings}\nbox\n");
+        for format in [Format::Gltf, Format::Glb] {
+            let out = render(src.as_bytes(), &req(format)).unwrap();
+            let dir = tempdir();
+            let path = dir.path().join(format!("camera.{}", format.extension()));
+            std::fs::write(&path, &out.bytes).expect("write");
+            let (errors, _, report) = validate_gltf(&[path]).remove(0);
+            assert_eq!(errors, 0, "{report}");
+        }
+        let out = render(src.as_bytes(), &req(Format::Gltf)).unwrap();
+        let j: serde_json::Value = serde_json::from_slice(&out.bytes).unwrap();
+        let scene_nodes = j["scenes"][0]["nodes"].as_array().unwrap().clone();
+        let node = scene_nodes.iter().map(|n| &j["nodes"][n.as_u64().unwrap() as usize]).find(|n| n.get("camera").is_some());
+        node.cloned().unwrap_or(serde_json::Value::Null)
+    };
+    // No viewer settings: no camera.
+    assert!(camera("").is_null());
+    // Structure Synth's default view puts the eye 20 units in front of the model on +Z.
+    let c = camera("set scale 1");
+    assert_eq!(c["translation"], serde_json::json!([0.0, 0.0, 20.0]));
+    assert_eq!(c["rotation"], serde_json::json!([0.0, 0.0, 0.0, 1.0]));
+    // Zoom brings it closer; the pivot moves it; a rotation turns it.
+    assert_eq!(camera("set scale 2")["translation"], serde_json::json!([0.0, 0.0, 10.0]));
+    assert_eq!(camera("set pivot [1 2 3]")["translation"], serde_json::json!([1.0, 2.0, 23.0]));
+    let turned = camera("set rotation [0 0 1 0 1 0 -1 0 0]");
+    let t: Vec<f64> = turned["translation"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+    assert!((t[0] + 20.0).abs() < 1e-4 && t[1].abs() < 1e-4 && t[2].abs() < 1e-4, "{t:?}");
+    assert!(render(b"set rotation [1 0 0]\nbox", &req(Format::Glb)).is_err());
+    // Fitting the model into the unit box leaves the camera out.
+    let mut fit = req(Format::Gltf);
+    fit.export_options.fit_unit_box = true;
+    let j: serde_json::Value = serde_json::from_slice(&render(b"set scale 2\nbox", &fit).unwrap().bytes).unwrap();
+    assert!(j.get("cameras").is_none());
+}
+
 /// Every `.es` under `dir`, sorted.
 fn scripts_under(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
