@@ -296,35 +296,48 @@ impl<'a> Builder<'a> {
         self.stream.uniform(self.draws)
     }
 
+    /// Applies `target` in `state`. A retired rule's substitute runs in
+    /// place; the chain is followed in a loop (one step each), so a rule that
+    /// retires into itself forever ends at the step limit instead of
+    /// overflowing the stack.
     fn apply_target(&mut self, target: &'a Target, state: &mut State) -> Result<(), LimitExceeded> {
-        match target {
-            Target::Rule(name) => {
-                let defs = &self.script.groups[*name as usize];
-                let pick = if defs.len() == 1 {
-                    defs[0]
-                } else {
-                    let total: f64 = defs.iter().map(|&d| self.script.rules[d as usize].weight).sum();
-                    let r = total * self.uniform();
-                    let mut acc = 0.0;
-                    let mut chosen = defs[defs.len() - 1];
-                    for &d in defs {
-                        acc += self.script.rules[d as usize].weight;
-                        if r <= acc {
-                            chosen = d;
-                            break;
-                        }
+        let mut target = target;
+        loop {
+            let name = match target {
+                Target::Rule(name) => *name,
+                Target::Primitive(p, class) => return self.draw(*p, *class, state, None),
+                Target::Triangle(pts, class) => return self.draw(Primitive::Template, *class, state, Some(pts)),
+            };
+            let defs = &self.script.groups[name as usize];
+            let pick = if defs.len() == 1 {
+                defs[0]
+            } else {
+                let total: f64 = defs.iter().map(|&d| self.script.rules[d as usize].weight).sum();
+                let r = total * self.uniform();
+                let mut acc = 0.0;
+                let mut chosen = defs[defs.len() - 1];
+                for &d in defs {
+                    acc += self.script.rules[d as usize].weight;
+                    if r <= acc {
+                        chosen = d;
+                        break;
                     }
-                    chosen
-                };
-                self.apply_rule(pick, state)
+                }
+                chosen
+            };
+            match self.apply_rule(pick, state)? {
+                Some(substitute) => {
+                    self.budget.charge_step()?;
+                    target = substitute;
+                }
+                None => return Ok(()),
             }
-            Target::Primitive(p, class) => self.draw(*p, *class, state, None),
-            Target::Triangle(pts, class) => self.draw(Primitive::Template, *class, state, Some(pts)),
         }
     }
 
-    /// Structure Synth's `CustomRule::apply`, with rule retirement.
-    fn apply_rule(&mut self, index: u32, state: &mut State) -> Result<(), LimitExceeded> {
+    /// Structure Synth's `CustomRule::apply`, with rule retirement: returns
+    /// the substitute to run in place when the rule has retired.
+    fn apply_rule(&mut self, index: u32, state: &mut State) -> Result<Option<&'a Target>, LimitExceeded> {
         let def: &'a RuleDef = &self.script.rules[index as usize];
         let maxdepth = def.maxdepth.or((self.script.depth_first && self.max_generations > 0).then_some(self.max_generations));
         let mut calling = None;
@@ -334,15 +347,16 @@ impl<'a> Builder<'a> {
                 Some(d) if d <= 0 => {
                     if let Some(r) = &def.retirement {
                         state.set_depth(index, md);
-                        return self.apply_target(r, state);
+                        return Ok(Some(r));
                     }
-                    return Ok(());
+                    return Ok(None);
                 }
                 Some(d) => d - 1,
             };
             calling = Some((index, new_depth));
         }
-        self.run_actions(&def.actions, state, calling)
+        self.run_actions(&def.actions, state, calling)?;
+        Ok(None)
     }
 
     fn run_actions(&mut self, actions: &'a [Action], state: &State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {

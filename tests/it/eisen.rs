@@ -201,6 +201,13 @@ fn budget_limits_name_the_limit() {
         Err(RenderError::Limit(l)) => assert_eq!(l.limit, Limit::Primitives),
         other => panic!("{other:?}"),
     }
+    // A rule that retires into itself forever ends at the step limit, not in a stack overflow.
+    let forever = "r\nrule r md 0 > r { r }\n";
+    let few = RenderRequest { limits: Limits { max_steps: 100_000, ..Limits::default() }, ..req(Format::Glb) };
+    match render(forever.as_bytes(), &few) {
+        Err(RenderError::Limit(l)) => assert_eq!(l.limit, Limit::Steps),
+        other => panic!("{other:?}"),
+    }
     let out = render(many.as_bytes(), &RenderRequest { on_limit: OnLimit::Truncate, ..small }).unwrap();
     assert_eq!(out.truncated.map(|t| t.limit), Some(Limit::Primitives));
 }
