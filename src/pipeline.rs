@@ -202,7 +202,13 @@ pub(crate) fn mesh_and_export(
         (geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?, None)
     };
     stages.lap(|p| &mut p.mesh);
-    let meta = ExportMeta { background: scene.background, truncated: scene.truncated.is_some(), graph, material_per_mesh: !scene.classes.is_empty() };
+    let meta = ExportMeta {
+        background: scene.background,
+        truncated: scene.truncated.is_some(),
+        graph,
+        material_per_mesh: !scene.classes.is_empty(),
+        camera: scene.view,
+    };
     let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
     stages.lap(|p| &mut p.export);
     let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();

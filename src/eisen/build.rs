@@ -21,7 +21,8 @@ use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
 use crate::eval::rng::StreamKey;
 use crate::eval::scene::{AffineInstance, FreeVertex, Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
 use crate::eval::EvalError;
-use crate::lang::eisen::{colour, Action, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
+use crate::eval::scene::SceneCamera;
+use crate::lang::eisen::{colour, Action, CameraSetting, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
 use crate::lang::ir::PrimitiveKind;
 use glam::{DMat3, DMat4, DVec3, Mat3};
 
@@ -31,6 +32,48 @@ pub const DEFAULT_MAX_GENERATIONS: i64 = 1000;
 pub const DEFAULT_MAX_OBJECTS: i64 = 100_000;
 /// Default half-thickness of `line`, `grid` and `dot` solids, in units of the local frame.
 pub const DEFAULT_LINE_RADIUS: f64 = 0.01;
+
+/// Structure Synth's default view: the model 20 units in front of the eye.
+pub const DEFAULT_VIEW_TRANSLATION: [f64; 3] = [0.0, 0.0, -20.0];
+/// Structure Synth's default vertical field of view, degrees.
+pub const DEFAULT_PERSPECTIVE_ANGLE: f64 = 22.0;
+
+/// The viewer settings seen so far: Structure Synth's view maps a world
+/// point p to `translation + rotation · (scale · (p − pivot))`, the eye at
+/// the view-space origin looking down −Z.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct View {
+    translation: DVec3,
+    rotation: DMat3,
+    pivot: DVec3,
+    scale: f64,
+    angle: f64,
+}
+
+impl Default for View {
+    fn default() -> Self {
+        View { translation: DVec3::from_array(DEFAULT_VIEW_TRANSLATION), rotation: DMat3::IDENTITY, pivot: DVec3::ZERO, scale: 1.0, angle: DEFAULT_PERSPECTIVE_ANGLE }
+    }
+}
+
+impl View {
+    /// The eye in world space: the inverse of the view map at the view origin.
+    fn camera(&self) -> Option<SceneCamera> {
+        // Structure Synth's saved rotations are rotations up to rounding; re-orthonormalise.
+        let q = glam::DQuat::from_mat3(&self.rotation).normalize();
+        if !q.is_finite() || !(self.scale.is_finite() && self.scale > 0.0) {
+            return None;
+        }
+        let inverse = q.conjugate();
+        let position = self.pivot - (inverse * self.translation) / self.scale;
+        let fov = self.angle.clamp(1.0, 179.0).to_radians();
+        position.is_finite().then(|| SceneCamera {
+            translation: position.as_vec3().to_array(),
+            rotation: inverse.as_quat().normalize().to_array(),
+            yfov: fov as f32,
+        })
+    }
+}
 
 /// What the builder needs besides the script.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -126,6 +169,8 @@ struct Builder<'a> {
     next: Vec<RuleState<'a>>,
     next_bytes: u64,
     built: Built,
+    /// The viewer settings, once a script sets one.
+    view: Option<View>,
 }
 
 /// Runs `script` under `budget`.
@@ -147,6 +192,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
         next: Vec::new(),
         next_bytes: 0,
         built: Built::default(),
+        view: None,
     };
     b.built.scene.classes = script.classes.clone();
     let start = RuleState {
@@ -163,6 +209,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
     };
     let result = if script.depth_first { b.depth_first(start) } else { b.breadth_first(start) };
     b.budget.release_memory(b.next_bytes);
+    b.built.scene.view = b.view.and_then(|v| v.camera());
     match result {
         Ok(()) => Ok(b.built),
         Err(e) if b.opts.on_limit == OnLimit::Truncate => {
@@ -249,35 +296,48 @@ impl<'a> Builder<'a> {
         self.stream.uniform(self.draws)
     }
 
+    /// Applies `target` in `state`. A retired rule's substitute runs in
+    /// place; the chain is followed in a loop (one step each), so a rule that
+    /// retires into itself forever ends at the step limit instead of
+    /// overflowing the stack.
     fn apply_target(&mut self, target: &'a Target, state: &mut State) -> Result<(), LimitExceeded> {
-        match target {
-            Target::Rule(name) => {
-                let defs = &self.script.groups[*name as usize];
-                let pick = if defs.len() == 1 {
-                    defs[0]
-                } else {
-                    let total: f64 = defs.iter().map(|&d| self.script.rules[d as usize].weight).sum();
-                    let r = total * self.uniform();
-                    let mut acc = 0.0;
-                    let mut chosen = defs[defs.len() - 1];
-                    for &d in defs {
-                        acc += self.script.rules[d as usize].weight;
-                        if r <= acc {
-                            chosen = d;
-                            break;
-                        }
+        let mut target = target;
+        loop {
+            let name = match target {
+                Target::Rule(name) => *name,
+                Target::Primitive(p, class) => return self.draw(*p, *class, state, None),
+                Target::Triangle(pts, class) => return self.draw(Primitive::Template, *class, state, Some(pts)),
+            };
+            let defs = &self.script.groups[name as usize];
+            let pick = if defs.len() == 1 {
+                defs[0]
+            } else {
+                let total: f64 = defs.iter().map(|&d| self.script.rules[d as usize].weight).sum();
+                let r = total * self.uniform();
+                let mut acc = 0.0;
+                let mut chosen = defs[defs.len() - 1];
+                for &d in defs {
+                    acc += self.script.rules[d as usize].weight;
+                    if r <= acc {
+                        chosen = d;
+                        break;
                     }
-                    chosen
-                };
-                self.apply_rule(pick, state)
+                }
+                chosen
+            };
+            match self.apply_rule(pick, state)? {
+                Some(substitute) => {
+                    self.budget.charge_step()?;
+                    target = substitute;
+                }
+                None => return Ok(()),
             }
-            Target::Primitive(p, class) => self.draw(*p, *class, state, None),
-            Target::Triangle(pts, class) => self.draw(Primitive::Template, *class, state, Some(pts)),
         }
     }
 
-    /// Structure Synth's `CustomRule::apply`, with rule retirement.
-    fn apply_rule(&mut self, index: u32, state: &mut State) -> Result<(), LimitExceeded> {
+    /// Structure Synth's `CustomRule::apply`, with rule retirement: returns
+    /// the substitute to run in place when the rule has retired.
+    fn apply_rule(&mut self, index: u32, state: &mut State) -> Result<Option<&'a Target>, LimitExceeded> {
         let def: &'a RuleDef = &self.script.rules[index as usize];
         let maxdepth = def.maxdepth.or((self.script.depth_first && self.max_generations > 0).then_some(self.max_generations));
         let mut calling = None;
@@ -287,15 +347,16 @@ impl<'a> Builder<'a> {
                 Some(d) if d <= 0 => {
                     if let Some(r) = &def.retirement {
                         state.set_depth(index, md);
-                        return self.apply_target(r, state);
+                        return Ok(Some(r));
                     }
-                    return Ok(());
+                    return Ok(None);
                 }
                 Some(d) => d - 1,
             };
             calling = Some((index, new_depth));
         }
-        self.run_actions(&def.actions, state, calling)
+        self.run_actions(&def.actions, state, calling)?;
+        Ok(None)
     }
 
     fn run_actions(&mut self, actions: &'a [Action], state: &State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {
@@ -330,6 +391,16 @@ impl<'a> Builder<'a> {
             }
             Setting::ColourPool(p) => self.pool = p.clone(),
             Setting::SyncRandom(b) => self.sync_random = *b,
+            Setting::Camera(c) => {
+                let v = self.view.get_or_insert_with(View::default);
+                match *c {
+                    CameraSetting::Translation(t) => v.translation = t,
+                    CameraSetting::Rotation(r) => v.rotation = r,
+                    CameraSetting::Pivot(p) => v.pivot = p,
+                    CameraSetting::Scale(s) => v.scale = s,
+                    CameraSetting::PerspectiveAngle(a) => v.angle = a,
+                }
+            }
             Setting::Ignored => {}
         }
     }
@@ -544,23 +615,18 @@ fn bar(a: DVec3, b: DVec3, r: f64) -> Option<(PrimitiveKind, DMat3, DVec3)> {
     Some((PrimitiveKind::Box, DMat3::from_cols(d, u, v), (a + b) * 0.5))
 }
 
-/// The twelve edges of the unit cube.
-fn cube_edges() -> [(DVec3, DVec3); 12] {
-    let c = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
-    [
-        (c(0., 0., 0.), c(1., 0., 0.)),
-        (c(0., 1., 0.), c(1., 1., 0.)),
-        (c(0., 0., 1.), c(1., 0., 1.)),
-        (c(0., 1., 1.), c(1., 1., 1.)),
-        (c(0., 0., 0.), c(0., 1., 0.)),
-        (c(1., 0., 0.), c(1., 1., 0.)),
-        (c(0., 0., 1.), c(0., 1., 1.)),
-        (c(1., 0., 1.), c(1., 1., 1.)),
-        (c(0., 0., 0.), c(0., 0., 1.)),
-        (c(1., 0., 0.), c(1., 0., 1.)),
-        (c(0., 1., 0.), c(0., 1., 1.)),
-        (c(1., 1., 0.), c(1., 1., 1.)),
-    ]
+/// The twelve edges of the unit cube: along each axis, from each corner of the opposite face.
+fn cube_edges() -> impl Iterator<Item = (DVec3, DVec3)> {
+    (0..3).flat_map(|axis: usize| {
+        (0..4).map(move |k: u32| {
+            let mut a = DVec3::ZERO;
+            a[(axis + 1) % 3] = f64::from(k & 1);
+            a[(axis + 2) % 3] = f64::from(k >> 1);
+            let mut b = a;
+            b[axis] = 1.0;
+            (a, b)
+        })
+    })
 }
 
 /// The closed solid between the x = 0 unit squares of two frames, as
@@ -579,4 +645,40 @@ fn mesh_solid(from: &DMat4, to: &DMat4) -> Vec<[DVec3; 3]> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cube_edges_are_the_twelve_unit_edges() {
+        let edges: Vec<(DVec3, DVec3)> = cube_edges().collect();
+        assert_eq!(edges.len(), 12);
+        for (i, (a, b)) in edges.iter().enumerate() {
+            assert_eq!((*b - *a).length(), 1.0);
+            assert!(edges[..i].iter().all(|e| e != &(*a, *b)));
+        }
+    }
+
+    #[test]
+    fn mesh_solid_is_closed_and_outward() {
+        let from = DMat4::IDENTITY;
+        for to in [DMat4::from_translation(DVec3::X), DMat4::from_translation(-2.0 * DVec3::X), DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0))] {
+            let tris = mesh_solid(&from, &to);
+            assert_eq!(tris.len(), 12);
+            // Signed volume by the divergence theorem: positive when every face points outward.
+            let v: f64 = tris.iter().map(|[a, b, c]| a.dot(b.cross(*c)) / 6.0).sum();
+            assert!(v > 0.0, "{v}");
+        }
+    }
+
+    #[test]
+    fn bars_span_their_segment() {
+        let Some((kind, m, t)) = bar(DVec3::ZERO, DVec3::new(0.0, 0.0, 2.0), 0.1) else { panic!("no bar") };
+        assert_eq!(kind, PrimitiveKind::Box);
+        assert_eq!(t, DVec3::new(0.0, 0.0, 1.0));
+        assert!((m.determinant().abs() - 2.0 * 0.2 * 0.2).abs() < 1e-12);
+        assert!(bar(DVec3::ONE, DVec3::ONE, 0.1).is_none());
+    }
 }

@@ -428,10 +428,17 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
         root.insert("extensionsUsed".into(), json!(used));
         root.insert("extensionsRequired".into(), json!(used));
     }
+    let mut scene_nodes = vec![json!(0)];
+    if let Some(c) = meta.camera {
+        let perspective = json!({"yfov": c.yfov, "znear": super::gltf::CAMERA_ZNEAR});
+        root.insert("cameras".into(), json!([{"type": "perspective", "perspective": perspective}]));
+        scene_nodes.push(json!(nodes.len()));
+        nodes.push(json!({"camera": 0, "name": "camera", "rotation": c.rotation, "translation": c.translation}));
+    }
     root.insert("nodes".into(), Value::Array(nodes));
     root.insert("scene".into(), json!(0));
     let mut scene = Map::new();
-    scene.insert("nodes".into(), json!([0]));
+    scene.insert("nodes".into(), Value::Array(scene_nodes));
     let mut extras = Map::new();
     if let Some(bg) = meta.background {
         extras.insert("background".into(), json!(bg.map(f64::from)));

@@ -441,10 +441,38 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &E
     if !children.is_empty() {
         root.nodes[root_node.value()].children = Some(children);
     }
-    let scene = root.push(json::Scene { extensions: None, extras: scene_extras(meta)?, name: None, nodes: vec![root_node] });
+    let mut nodes = vec![root_node];
+    if let Some(c) = meta.camera {
+        let camera = root.push(json::Camera {
+            name: None,
+            orthographic: None,
+            perspective: Some(json::camera::Perspective {
+                aspect_ratio: None,
+                yfov: c.yfov,
+                zfar: None,
+                znear: CAMERA_ZNEAR,
+                extensions: None,
+                extras: Default::default(),
+            }),
+            type_: Valid(json::camera::Type::Perspective),
+            extensions: None,
+            extras: Default::default(),
+        });
+        nodes.push(root.push(json::Node {
+            camera: Some(camera),
+            name: Some("camera".to_string()),
+            rotation: Some(json::scene::UnitQuaternion(c.rotation)),
+            translation: Some(c.translation),
+            ..Default::default()
+        }));
+    }
+    let scene = root.push(json::Scene { extensions: None, extras: scene_extras(meta)?, name: None, nodes });
     root.scene = Some(scene);
     Ok(root.to_vec()?)
 }
+
+/// Near clipping distance of exported cameras (glTF requires one; the far plane is infinite).
+pub(crate) const CAMERA_ZNEAR: f32 = 0.01;
 
 /// A destination for the binary buffer's bytes.
 trait Sink {
@@ -903,10 +931,10 @@ pub(crate) mod tests {
     #[test]
     fn extras_record_background_and_truncation() {
         let meshes = meshes_of(&scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 1.0, false)]), 16, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None, material_per_mesh: false };
+        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"background": [0.25, 0.5, 1.0, 1.0], "truncated": true}));
-        let meta = ExportMeta { background: None, truncated: true, graph: None, material_per_mesh: false };
+        let meta = ExportMeta { background: None, truncated: true, graph: None, material_per_mesh: false, camera: None };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"truncated": true}));
     }
@@ -914,7 +942,7 @@ pub(crate) mod tests {
     #[test]
     fn gltf_embeds_the_same_buffer_as_glb() {
         let meshes = meshes_of(&all_nine(), 7, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None, material_per_mesh: false };
+        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None, material_per_mesh: false, camera: None };
         let glb = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let gltf = write_gltf(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let (jb, bin) = parse_glb(&glb);
@@ -959,7 +987,7 @@ pub(crate) mod tests {
     #[test]
     fn deterministic_bytes() {
         let meshes = meshes_of(&all_nine(), 16, MeshLayout::PerKind);
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None };
         let a = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let b = write_glb(&meshes_of(&all_nine(), 16, MeshLayout::PerKind), &meta, &mut Budget::new(Limits::default())).unwrap();
         assert_eq!(a, b);

@@ -110,6 +110,8 @@ pub struct ExportMeta {
     /// one shared unnamed material: EisenScript's primitive classes
     /// (`box::glass`) become meshes and materials a viewer can restyle.
     pub material_per_mesh: bool,
+    /// A viewpoint to add as a glTF perspective camera (glTF formats only).
+    pub camera: Option<crate::eval::scene::SceneCamera>,
 }
 
 /// Export failures.
@@ -192,6 +194,14 @@ pub fn export_with(
     } else {
         meshes
     };
+    // A camera placed for the model's own frame would look past a fitted one.
+    let unplaced;
+    let meta = if options.fit_unit_box && meta.camera.is_some() {
+        unplaced = ExportMeta { camera: None, ..meta.clone() };
+        &unplaced
+    } else {
+        meta
+    };
     let printable;
     let meshes = if options.print.enabled {
         let (solid, report) = crate::print::make_printable(meshes, &options.print, budget).map_err(|e| match e {
@@ -271,7 +281,7 @@ mod tests {
             let s = scene(vec![inst(kind, [0.0; 3], 1.0, false)]);
             out.push((kind.name().to_ascii_lowercase(), meshes_of(&s, 16, MeshLayout::Merged), plain.clone()));
         }
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None };
         out.push(("all-merged".into(), meshes_of(&all_nine(), 16, MeshLayout::Merged), meta.clone()));
         out.push(("all-per-kind".into(), meshes_of(&all_nine(), 5, MeshLayout::PerKind), meta));
         let mirrored = scene(vec![inst(PrimitiveKind::Cone, [1.0, 2.0, 3.0], 2.0, true)]);

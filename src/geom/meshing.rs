@@ -14,7 +14,7 @@ use super::{Mesh, NamedMesh};
 use crate::eval::budget::{Budget, Limit, LimitExceeded};
 use crate::eval::scene::{AffineInstance, FreeVertex, Instance, Scene};
 use crate::lang::ir::PrimitiveKind;
-use glam::Vec3;
+use glam::{Mat3, Vec3};
 
 /// How instances are grouped into meshes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
@@ -245,45 +245,33 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, meshes: 
     Ok(())
 }
 
-/// Appends `proto` mapped by the affine `inst` to `mesh` (normals by the
-/// inverse transpose, winding flipped for orientation-reversing maps).
+/// Appends `proto` transformed by `inst` to `mesh`.
+fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
+    append_mapped(mesh, proto, (inst.linear(), inst.normal_matrix(), inst.translation), inst.colour, inst.parity);
+}
+
+/// Appends `proto` mapped by the affine `inst` to `mesh`.
 fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
-    let normal_matrix = inst.normal_matrix();
-    let colour = inst.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    append_mapped(mesh, proto, (inst.linear, inst.normal_matrix(), inst.translation), inst.colour, inst.parity());
+}
+
+/// Appends `proto` mapped by (linear part, normal matrix, translation) to
+/// `mesh`: positions by the map, normals by the normal matrix (renormalised;
+/// +Z if one collapses, so no normal is ever zero), winding flipped when the
+/// map reverses orientation (`flip`).
+fn append_mapped(mesh: &mut Mesh, proto: &Prototype, (linear, normal_matrix, translation): (Mat3, Mat3, Vec3), colour: [f32; 4], flip: bool) {
+    let colour = colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    // Fits: the caller checked the total vertex count against u32::MAX.
     let base = mesh.positions.len() as u32;
     for (p, n) in proto.positions.iter().zip(&proto.normals) {
-        let p = inst.linear * Vec3::from_array(*p) + inst.translation;
+        let p = linear * Vec3::from_array(*p) + translation;
         let n = (normal_matrix * Vec3::from_array(*n)).try_normalize().unwrap_or(Vec3::Z);
         mesh.positions.push(p.to_array());
         mesh.normals.push(n.to_array());
         mesh.colours.push(colour);
     }
-    let flip = inst.parity();
     for t in proto.indices.chunks_exact(3) {
         if flip {
-            mesh.indices.extend_from_slice(&[base + t[0], base + t[2], base + t[1]]);
-        } else {
-            mesh.indices.extend_from_slice(&[base + t[0], base + t[1], base + t[2]]);
-        }
-    }
-}
-
-/// Appends `proto` transformed by `inst` to `mesh`.
-fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
-    let linear = inst.linear();
-    let normal_matrix = inst.normal_matrix();
-    let colour = inst.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
-    // Fits: the caller checked the total vertex count against u32::MAX.
-    let base = mesh.positions.len() as u32;
-    for (p, n) in proto.positions.iter().zip(&proto.normals) {
-        let p = linear * Vec3::from_array(*p) + inst.translation;
-        let n = (normal_matrix * Vec3::from_array(*n)).normalize_or_zero();
-        mesh.positions.push(p.to_array());
-        mesh.normals.push(n.to_array());
-        mesh.colours.push(colour);
-    }
-    for t in proto.indices.chunks_exact(3) {
-        if inst.parity {
             mesh.indices.extend_from_slice(&[base + t[0], base + t[2], base + t[1]]);
         } else {
             mesh.indices.extend_from_slice(&[base + t[0], base + t[1], base + t[2]]);

@@ -193,7 +193,7 @@ fn write_instanced(h: &Hierarchy, req: &RenderRequest, budget: &mut Budget) -> R
         }
     }
     let counts: Vec<u64> = counts.values().copied().collect();
-    let meta = export::ExportMeta { background: None, truncated: h.truncated.is_some(), graph: None, material_per_mesh: false };
+    let meta = export::ExportMeta { background: None, truncated: h.truncated.is_some(), graph: None, material_per_mesh: false, camera: None };
     let bytes = export::gltf::write_instanced(&meshes, &counts, &meta, req.format == Format::Glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };

@@ -72,7 +72,7 @@ pub enum ParamValueSchema {
 pub struct RenderBody {
     /// Grammar source.
     pub source: String,
-    /// `"mdg"`; detected from the source when absent.
+    /// `"mdg"`, `"lsystem"` or `"eisenscript"`; detected from the source when absent.
     pub language: Option<String>,
     /// Random seed.
     pub seed: Option<u64>,
@@ -122,7 +122,7 @@ pub struct RenderBody {
 pub struct CheckBody {
     /// Grammar source.
     pub source: String,
-    /// `"mdg"`; detected from the source when absent.
+    /// `"mdg"`, `"lsystem"` or `"eisenscript"`; detected from the source when absent.
     pub language: Option<String>,
 }
 

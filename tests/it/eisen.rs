@@ -4,7 +4,7 @@
 //! `structure-synth` package ships through the renderer and the Khronos
 //! glTF Validator.
 
-use crate::common::{decode_stl, signed_volume, tempdir, validate_gltf};
+use crate::common::{admesh, decode_stl, signed_volume, tempdir, validate_gltf};
 use rulemesh::eisen::{build, BuildOptions};
 use rulemesh::eval::{Limit, Limits, OnLimit, ParamValue};
 use rulemesh::export::Format;
@@ -201,6 +201,13 @@ fn budget_limits_name_the_limit() {
         Err(RenderError::Limit(l)) => assert_eq!(l.limit, Limit::Primitives),
         other => panic!("{other:?}"),
     }
+    // A rule that retires into itself forever ends at the step limit, not in a stack overflow.
+    let forever = "r\nrule r md 0 > r { r }\n";
+    let few = RenderRequest { limits: Limits { max_steps: 100_000, ..Limits::default() }, ..req(Format::Glb) };
+    match render(forever.as_bytes(), &few) {
+        Err(RenderError::Limit(l)) => assert_eq!(l.limit, Limit::Steps),
+        other => panic!("{other:?}"),
+    }
     let out = render(many.as_bytes(), &RenderRequest { on_limit: OnLimit::Truncate, ..small }).unwrap();
     assert_eq!(out.truncated.map(|t| t.limit), Some(Limit::Primitives));
 }
@@ -221,6 +228,25 @@ fn affine_frames_keep_solids_closed_and_outward() {
 }
 
 #[test]
+fn lines_grids_dots_and_meshes_are_closed_solids() {
+    // Printable: every part closed, no open edges, all facing outward.
+    let src = "{ s 2 1 0.5 } grid\n{ x 3 rz 30 } line\n{ x 5 } dot\n{ y 3 s 1 2 1 } cylinder\n{ y 6 } sphere\n3 * { z 1.5 rx 10 s 0.9 } mesh\n";
+    let out = render(src.as_bytes(), &req(Format::Stl)).unwrap();
+    let dir = tempdir();
+    let path = dir.path().join("solids.stl");
+    std::fs::write(&path, &out.bytes).expect("write stl");
+    let r = admesh(&path);
+    assert_eq!((r.open_edges, r.degenerate, r.reversed), (0, 0, 0), "{}", r.raw);
+    assert!(r.volume > 0.0, "{}", r.raw);
+    // A thicker line_radius makes thicker bars.
+    let mut thick = req(Format::Stl);
+    thick.params.insert("line_radius".into(), ParamValue::Number(0.1));
+    let v = |r: &RenderRequest| signed_volume(&decode_stl(&render(b"line", r).unwrap().bytes));
+    assert!((v(&req(Format::Stl)) - 0.02 * 0.02).abs() < 1e-6);
+    assert!((v(&thick) - 0.2 * 0.2).abs() < 1e-5);
+}
+
+#[test]
 fn classes_become_mesh_names_and_detection_works() {
     let src = "box\n{ x 2 } box::glass\n{ x 4 } sphere::glass\n{ x 6 } box::metal\n";
     let out = render(src.as_bytes(), &req(Format::Gltf)).unwrap();
@@ -238,6 +264,44 @@ fn classes_become_mesh_names_and_detection_works() {
             assert_ne!(Language::detect(&src), Some(Language::Eisenscript), "{}", f.display());
         }
     }
+}
+
+#[test]
+fn viewer_settings_become_a_gltf_camera() {
+    let camera = |settings: &str| -> serde_json::Value {
+        let src = format!("{settings}\nbox\n");
+        for format in [Format::Gltf, Format::Glb] {
+            let out = render(src.as_bytes(), &req(format)).unwrap();
+            let dir = tempdir();
+            let path = dir.path().join(format!("camera.{}", format.extension()));
+            std::fs::write(&path, &out.bytes).expect("write");
+            let (errors, _, report) = validate_gltf(&[path]).remove(0);
+            assert_eq!(errors, 0, "{report}");
+        }
+        let out = render(src.as_bytes(), &req(Format::Gltf)).unwrap();
+        let j: serde_json::Value = serde_json::from_slice(&out.bytes).unwrap();
+        let scene_nodes = j["scenes"][0]["nodes"].as_array().unwrap().clone();
+        let node = scene_nodes.iter().map(|n| &j["nodes"][n.as_u64().unwrap() as usize]).find(|n| n.get("camera").is_some());
+        node.cloned().unwrap_or(serde_json::Value::Null)
+    };
+    // No viewer settings: no camera.
+    assert!(camera("").is_null());
+    // Structure Synth's default view puts the eye 20 units in front of the model on +Z.
+    let c = camera("set scale 1");
+    assert_eq!(c["translation"], serde_json::json!([0.0, 0.0, 20.0]));
+    assert_eq!(c["rotation"], serde_json::json!([0.0, 0.0, 0.0, 1.0]));
+    // Zoom brings it closer; the pivot moves it; a rotation turns it.
+    assert_eq!(camera("set scale 2")["translation"], serde_json::json!([0.0, 0.0, 10.0]));
+    assert_eq!(camera("set pivot [1 2 3]")["translation"], serde_json::json!([1.0, 2.0, 23.0]));
+    let turned = camera("set rotation [0 0 1 0 1 0 -1 0 0]");
+    let t: Vec<f64> = turned["translation"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+    assert!((t[0] + 20.0).abs() < 1e-4 && t[1].abs() < 1e-4 && t[2].abs() < 1e-4, "{t:?}");
+    assert!(render(b"set rotation [1 0 0]\nbox", &req(Format::Glb)).is_err());
+    // Fitting the model into the unit box leaves the camera out.
+    let mut fit = req(Format::Gltf);
+    fit.export_options.fit_unit_box = true;
+    let j: serde_json::Value = serde_json::from_slice(&render(b"set scale 2\nbox", &fit).unwrap().bytes).unwrap();
+    assert!(j.get("cameras").is_none());
 }
 
 /// Every `.es` under `dir`, sorted.

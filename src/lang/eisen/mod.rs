@@ -176,8 +176,26 @@ pub enum Setting {
     ColourPool(ColourPool),
     /// `set syncrandom true|false`.
     SyncRandom(bool),
-    /// Accepted and ignored (camera, raytracer, `recursion`, `rng`, `opengl`, `template`).
+    /// A viewer camera setting, exported as a glTF camera.
+    Camera(CameraSetting),
+    /// Accepted and ignored (raytracer, `recursion`, `rng`, `opengl`, `template`).
     Ignored,
+}
+
+/// Structure Synth's viewer settings (`set translation [x y z]` and so on),
+/// as its GUI writes them to a script to save the view.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CameraSetting {
+    /// `set translation [x y z]`: the view-space offset of the model.
+    Translation(DVec3),
+    /// `set rotation [9 numbers]`: the view rotation (rows first).
+    Rotation(glam::DMat3),
+    /// `set pivot [x y z]`: the world point the view rotates and scales about.
+    Pivot(DVec3),
+    /// `set scale s`: the view zoom.
+    Scale(f64),
+    /// `set perspective-angle deg`: the vertical field of view.
+    PerspectiveAngle(f64),
 }
 
 /// One statement of a rule body or the top level.
@@ -380,6 +398,32 @@ fn number(text: &str) -> Option<(f64, bool)> {
         return Some((i as f64, true));
     }
     text.parse::<f64>().ok().filter(|v| v.is_finite()).map(|v| (v, false))
+}
+
+/// Parses a viewer setting's value: `[x y z]`, `[9 numbers]` or a number.
+fn camera_setting(key: &str, value: &str, span: Span) -> Result<CameraSetting, ParseError> {
+    let nums: Vec<f64> = value
+        .trim_matches(|c| c == '[' || c == ']')
+        .split(|c: char| c.is_whitespace() || c == ',')
+        .filter(|w| !w.is_empty())
+        .map(|w| number(w).map(|n| n.0))
+        .collect::<Option<_>>()
+        .ok_or_else(|| ParseError::single(span, format!("`set {key}`: `{value}` is not a list of numbers")))?;
+    let want = match key {
+        "rotation" => 9,
+        "translation" | "pivot" => 3,
+        _ => 1,
+    };
+    if nums.len() != want {
+        return Err(ParseError::single(span, format!("`set {key}` expects {want} number(s), found `{value}`")));
+    }
+    Ok(match key {
+        "translation" => CameraSetting::Translation(DVec3::from_slice(&nums)),
+        "pivot" => CameraSetting::Pivot(DVec3::from_slice(&nums)),
+        "rotation" => CameraSetting::Rotation(glam::DMat3::from_cols_slice(&nums).transpose()),
+        "scale" => CameraSetting::Scale(nums[0]),
+        _ => CameraSetting::PerspectiveAngle(nums[0]),
+    })
 }
 
 /// Transformation operator names and their long forms.
@@ -748,10 +792,7 @@ impl Parser {
                 Setting::Ignored
             }
             "rng" if vl == "old" || vl == "new" => Setting::Ignored,
-            "translation" | "rotation" | "pivot" | "scale" | "perspective-angle" => {
-                self.script.warnings.push(Diagnostic::warning(key.span, format!("`set {k}` is a viewer camera setting; it is ignored (no camera is exported)")));
-                Setting::Ignored
-            }
+            "translation" | "rotation" | "pivot" | "scale" | "perspective-angle" => Setting::Camera(camera_setting(&k, v, value.span)?),
             "opengl" | "template" => Setting::Ignored,
             _ if k.starts_with("raytracer::") => {
                 self.script.warnings.push(Diagnostic::warning(key.span, format!("`set {k}` configures Structure Synth's raytracer; it is ignored")));
