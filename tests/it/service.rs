@@ -841,3 +841,40 @@ async fn metrics_add_up_to_the_requests_sent() {
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn print_3mf_ug_stack_and_report_over_http() {
+    let (srv, base) = start(config()).await;
+    let source = "rule R { BOX {} BOX { x 0.5 } }";
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "size_mm": 30, "format": "3mf"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "model/3mf");
+    assert!(r.bytes().await.expect("body").starts_with(b"PK"));
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "size_mm": 30, "print_report": true})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "application/json");
+    let report: Value = r.json().await.expect("report");
+    assert_eq!(report["is_watertight"], true);
+    assert_eq!(report["shells"], 1);
+    assert!((report["bbox_mm"][0].as_f64().expect("mm") - 30.0).abs() < 1e-3, "{report}");
+    // size_mm without print is a 400, as is a nonsense size.
+    let r = post(&base, "/v1/render", &json!({"source": source, "size_mm": 30})).await;
+    assert_eq!(r.status(), 400);
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "size_mm": -1})).await;
+    assert_eq!(r.status(), 400);
+    // The other new languages and format.
+    let r = post(&base, "/v1/render", &json!({"source": "b1.5s1.4w0.1", "language": "stack", "format": "stl"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(common::decode_stl(&r.bytes().await.expect("body")).len(), 144);
+    let r = post(&base, "/v1/render", &json!({"source": source, "format": "ug"})).await;
+    assert_eq!(r.status(), 200);
+    let ug = r.text().await.expect("text");
+    let r = post(&base, "/v1/render", &json!({"source": ug, "language": "ug", "format": "stl"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(common::decode_stl(&r.bytes().await.expect("body")).len(), 24);
+    // Built-in grammars print through the models route too.
+    let r = client().get(format!("{base}/v1/models/tower.stl?print=true&size_mm=40")).send().await.expect("request");
+    assert_eq!(r.status(), 200);
+    srv.shutdown();
+    srv.wait().await.expect("clean shutdown");
+}
