@@ -857,6 +857,13 @@ async fn print_3mf_ug_stack_and_report_over_http() {
     assert_eq!(report["is_watertight"], true);
     assert_eq!(report["shells"], 1);
     assert!((report["bbox_mm"][0].as_f64().expect("mm") - 30.0).abs() < 1e-3, "{report}");
+    // STL responses carry the report as headers.
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "format": "stl"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "x-print-watertight"), "true");
+    assert_eq!(header(&r, "x-print-shells"), "1");
+    assert_eq!(header(&r, "x-print-volume-mm3"), "1.500");
+    assert_eq!(header(&r, "x-print-bbox-mm"), "1.500 1.000 1.000");
     // size_mm without print is a 400, as is a nonsense size.
     let r = post(&base, "/v1/render", &json!({"source": source, "size_mm": 30})).await;
     assert_eq!(r.status(), 400);
