@@ -33,6 +33,7 @@ fn modified_primitives_are_closed_solids_with_exact_counts() {
         ("mesh M { SPHERE | twist 90 | bend 45 }\nrule R { M {} }", 224),
         ("rule R { TRUNCATED_ICOSAHEDRON { s 3 } }", 116),
         ("rule R { SNUB_CUBE {} }", 44),
+        ("rule R { SNUB_DODECAHEDRON {} }", 116),
     ] {
         let r = stl_report(src, "mdg", &[]);
         assert_eq!(r.facets, facets, "{src}: {}", r.raw);
