@@ -385,6 +385,12 @@ async fn grpc_matches_http_and_maps_errors() {
         assert!(bytes == http.as_ref(), "{format}: streamed bytes differ");
     }
 
+    // print=true travels over gRPC too, byte-identical to HTTP.
+    let http = post(&base, "/v1/render", &json!({"source": source, "format": "3mf", "print": true, "size_mm": 40})).await.bytes().await.expect("body");
+    let req = pb::RenderRequest { source: source.clone(), format: "3mf".into(), print: Some(true), size_mm: Some(40.0), ..Default::default() };
+    let reply = g.render(req).await.expect("Render print").into_inner();
+    assert!(reply.model == http.as_ref() && http.starts_with(b"PK"), "gRPC and HTTP print bytes differ");
+
     let err = g.render(pb::RenderRequest { source: "startshape A\nrule A { BOX { x } }".into(), ..Default::default() }).await.expect_err("parse error");
     assert_eq!(err.code(), tonic::Code::InvalidArgument);
     let details: Value = serde_json::from_slice(err.details()).expect("JSON details");
