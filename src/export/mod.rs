@@ -166,6 +166,7 @@ pub struct ExportOptions {
     /// format): its longest side becomes 1, its bounding box centre the origin.
     pub fit_unit_box: bool,
     /// Printable output: one watertight solid in millimetres (`docs/print.md`).
+    /// A pipeline stage before export ([`crate::pipeline`]); exporters ignore it.
     pub print: crate::print::PrintOptions,
 }
 
@@ -187,20 +188,6 @@ pub fn export_with(
     let meshes = if options.fit_unit_box {
         fitted = crate::geom::normalize::fit_unit_box(meshes, budget)?;
         &fitted[..]
-    } else {
-        meshes
-    };
-    let printable;
-    let meshes = if options.print.enabled {
-        let (solid, report) = crate::print::make_printable(meshes, &options.print, budget).map_err(|e| match e {
-            crate::print::PrintError::Limit(l) => ExportError::Limit(l),
-            other => ExportError::Print(other),
-        })?;
-        if options.print.report {
-            return Ok(serde_json::to_vec_pretty(&report)?);
-        }
-        printable = solid;
-        &printable[..]
     } else {
         meshes
     };
