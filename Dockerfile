@@ -8,6 +8,10 @@
 # See docs/deploy.md.
 
 FROM rust:1-slim-bookworm AS build
+# manifold-rs (the boolean union of print=true) builds Manifold's C++ with CMake and Ninja.
+RUN apt-get update \
+    && apt-get install -y --no-install-recommends cmake=3.25.1-1 ninja-build=1.11.1-2~deb12u1 g++=4:12.2.0-3 \
+    && rm -rf /var/lib/apt/lists/*
 WORKDIR /src
 # Dependencies first: a stub crate with the real manifests builds every
 # dependency into this layer, reused until Cargo.toml or Cargo.lock change.

@@ -192,9 +192,21 @@ pub(crate) fn mesh_and_export(
     mut budget: Budget,
     mut stages: Stages,
 ) -> Result<RenderOutput, RenderError> {
-    let (meshes, graph) = if req.export_options.print.enabled {
+    let print = req.export_options.print;
+    let (meshes, graph) = if print.enabled {
         // Printing unites closed parts, so it needs them apart (and shows time 0).
-        (geom::meshing::build_parts(&scene, req.detail, &mut budget)?, None)
+        let parts = geom::meshing::build_parts(&scene, req.detail, &mut budget)?;
+        let (solid, report) = crate::print::make_printable(&parts, &print, &mut budget).map_err(|e| match e {
+            crate::print::PrintError::Limit(l) => RenderError::Limit(l),
+            // The model has nothing closed to print: the request's fault, not the server's.
+            e @ (crate::print::PrintError::NothingPrintable(_) | crate::print::PrintError::BadSize(_)) => RenderError::BadRequest(format!("print: {e}")),
+            other => RenderError::Export(ExportError::Print(other)),
+        })?;
+        if print.report {
+            let bytes = serde_json::to_vec_pretty(&report).map_err(|e| RenderError::Export(e.into()))?;
+            return Ok(RenderOutput { bytes, language, primitives, triangles: report.triangles, truncated: scene.truncated, warnings, elapsed: budget.elapsed(), phases: stages.phases });
+        }
+        (solid, None)
     } else if carries_graph(&scene, req) {
         let (meshes, graph) = mesh_with_graph(&scene, req, &mut budget)?;
         (meshes, Some(graph))

@@ -96,6 +96,33 @@ pub enum Instancing {
     Flat,
 }
 
+/// Welds a mesh's vertices by exact position for formats that name shared
+/// vertices (3MF, UniGrafix): the distinct positions in first-use order, and
+/// each triangle's index in the mesh with its corners as indices into them;
+/// triangles that lose a corner to welding are dropped.
+pub(crate) fn welded(mesh: &crate::geom::Mesh) -> (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>) {
+    let mut ids: std::collections::HashMap<[u32; 3], u32> = std::collections::HashMap::with_capacity(mesh.positions.len());
+    let mut points = Vec::new();
+    let remap: Vec<u32> = mesh
+        .positions
+        .iter()
+        .map(|p| {
+            *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
+                points.push(*p);
+                (points.len() - 1) as u32
+            })
+        })
+        .collect();
+    let tris = mesh
+        .indices
+        .chunks_exact(3)
+        .map(|t| [0, 1, 2].map(|i| remap.get(t[i] as usize).copied().unwrap_or(0)))
+        .enumerate()
+        .filter(|(_, [a, b, c])| a != b && b != c && a != c)
+        .collect();
+    (points, tris)
+}
+
 /// Scene-level facts an exporter may record besides geometry.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ExportMeta {
@@ -170,6 +197,7 @@ pub struct ExportOptions {
     /// `glb`/`gltf` of instanced L-systems: GPU instancing or the flat fallback.
     pub instancing: Instancing,
     /// Printable output: one watertight solid in millimetres (`docs/print.md`).
+    /// A pipeline stage before export ([`crate::pipeline`]); exporters ignore it.
     pub print: crate::print::PrintOptions,
 }
 
@@ -201,20 +229,6 @@ pub fn export_with(
         &unplaced
     } else {
         meta
-    };
-    let printable;
-    let meshes = if options.print.enabled {
-        let (solid, report) = crate::print::make_printable(meshes, &options.print, budget).map_err(|e| match e {
-            crate::print::PrintError::Limit(l) => ExportError::Limit(l),
-            other => ExportError::Print(other),
-        })?;
-        if options.print.report {
-            return Ok(serde_json::to_vec_pretty(&report)?);
-        }
-        printable = solid;
-        &printable[..]
-    } else {
-        meshes
     };
     let g = &options.gltf;
     match format {

@@ -9,7 +9,6 @@
 use super::ExportError;
 use crate::eval::budget::Budget;
 use crate::geom::NamedMesh;
-use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::io::Write as _;
 
@@ -31,22 +30,13 @@ fn model_xml(meshes: &[NamedMesh]) -> String {
         let id = k + 1;
         ids.push(id);
         let _ = writeln!(s, "<object id=\"{id}\" type=\"model\"><mesh><vertices>");
-        let mut weld: HashMap<[u32; 3], u32> = HashMap::new();
-        let mut remap = Vec::with_capacity(m.mesh.positions.len());
-        for p in &m.mesh.positions {
-            let n = weld.len() as u32;
-            let id = *weld.entry(p.map(f32::to_bits)).or_insert_with(|| {
-                let _ = writeln!(s, "<vertex x=\"{}\" y=\"{}\" z=\"{}\"/>", p[0], p[1], p[2]);
-                n
-            });
-            remap.push(id);
+        let (points, tris) = super::welded(&m.mesh);
+        for p in &points {
+            let _ = writeln!(s, "<vertex x=\"{}\" y=\"{}\" z=\"{}\"/>", p[0], p[1], p[2]);
         }
         s.push_str("</vertices><triangles>\n");
-        for t in m.mesh.indices.chunks_exact(3) {
-            let [a, b, c] = [0, 1, 2].map(|i| remap.get(t[i] as usize).copied().unwrap_or(0));
-            if a != b && b != c && a != c {
-                let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
-            }
+        for (_, [a, b, c]) in tris {
+            let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
         }
         s.push_str("</triangles></mesh></object>\n");
     }

@@ -30,22 +30,13 @@ pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, Ex
     for (k, m) in meshes.iter().enumerate() {
         let name = ident(&m.name, k);
         let _ = writeln!(s, "def {name};");
-        let mut weld: HashMap<[u32; 3], u32> = HashMap::new();
-        let mut remap = Vec::with_capacity(m.mesh.positions.len());
-        for p in &m.mesh.positions {
-            let n = weld.len() as u32;
-            let id = *weld.entry(p.map(f32::to_bits)).or_insert_with(|| {
-                let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
-                n
-            });
-            remap.push(id);
+        let (points, tris) = super::welded(&m.mesh);
+        for (n, p) in points.iter().enumerate() {
+            let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
         }
-        for t in m.mesh.indices.chunks_exact(3) {
-            let [a, b, c] = [0, 1, 2].map(|i| remap.get(t[i] as usize).copied().unwrap_or(0));
-            if a == b || b == c || a == c {
-                continue;
-            }
-            let rgba = m.mesh.colours.get(t[0] as usize).copied().unwrap_or([255; 4]);
+        for (k, [a, b, c]) in tris {
+            // The colour of the triangle's first corner (flat per face in rulemesh meshes).
+            let rgba = m.mesh.indices.get(3 * k).and_then(|&i| m.mesh.colours.get(i as usize)).copied().unwrap_or([255; 4]);
             let next = colours.len();
             let cname = colours.entry(rgba).or_insert_with(|| format!("c{next}")).clone();
             let _ = writeln!(s, "  f (v{a} v{b} v{c}) {cname};");

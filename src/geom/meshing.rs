@@ -75,9 +75,8 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
     Ok(meshes)
 }
 
-/// One mesh per placed part — every primitive instance and shape placement
-/// on its own, then the swept lines and free vertices as [`build_meshes`]
-/// makes them — for printable output, which must unite closed parts and so
+/// One mesh per placed part — every primitive instance, shape placement and
+/// swept line on its own, then the free vertices — for printable output, which must unite closed parts and so
 /// needs them apart: merged, touching parts weld into non-manifold clumps.
 pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
     let mut parts = Vec::new();
@@ -102,9 +101,15 @@ pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Ve
         append_instance(&mut mesh, proto, &inst);
         parts.push(NamedMesh { name: "part".to_string(), mesh });
     }
-    let rest = Scene { lines: scene.lines.clone(), profiles: scene.profiles.clone(), vertices: scene.vertices.clone(), ..Scene::default() };
-    let whole = build_meshes(&rest, detail, MeshLayout::Merged, budget)?;
-    parts.extend(whole);
+    // Each swept line on its own too: branches of one plant share positions.
+    for line in &scene.lines {
+        if let Some(mesh) = super::sweep::sweep_lines(std::slice::from_ref(line), &scene.profiles, detail, budget)? {
+            parts.push(NamedMesh { name: "lines".to_string(), mesh });
+        }
+    }
+    if let Some(mesh) = free_triangles(&scene.vertices, budget)? {
+        parts.push(NamedMesh { name: "vertices".to_string(), mesh });
+    }
     Ok(parts)
 }
 

@@ -13,7 +13,7 @@ use super::hull::convex_hull;
 use glam::DVec3;
 use std::collections::HashMap;
 
-/// The Archimedean solids (the snub dodecahedron is not offered yet).
+/// The thirteen Archimedean solids (the snubs in one chirality).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Solid {
     /// 3.6.6: 12 vertices, 4 triangles and 4 hexagons.
@@ -40,11 +40,13 @@ pub enum Solid {
     Rhombicosidodecahedron,
     /// 4.6.10: 120 vertices.
     TruncatedIcosidodecahedron,
+    /// 3.3.3.3.5: 60 vertices (one chirality).
+    SnubDodecahedron,
 }
 
 impl Solid {
     /// Every solid, in a fixed order.
-    pub const ALL: [Solid; 12] = [
+    pub const ALL: [Solid; 13] = [
         Solid::TruncatedTetrahedron,
         Solid::Cuboctahedron,
         Solid::TruncatedCube,
@@ -57,6 +59,7 @@ impl Solid {
         Solid::TruncatedIcosahedron,
         Solid::Rhombicosidodecahedron,
         Solid::TruncatedIcosidodecahedron,
+        Solid::SnubDodecahedron,
     ];
 
     /// The upper-case name used in grammars.
@@ -74,6 +77,7 @@ impl Solid {
             Solid::TruncatedIcosahedron => "TRUNCATED_ICOSAHEDRON",
             Solid::Rhombicosidodecahedron => "RHOMBICOSIDODECAHEDRON",
             Solid::TruncatedIcosidodecahedron => "TRUNCATED_ICOSIDODECAHEDRON",
+            Solid::SnubDodecahedron => "SNUB_DODECAHEDRON",
         }
     }
 
@@ -95,6 +99,7 @@ impl Solid {
             Solid::TruncatedDodecahedron | Solid::TruncatedIcosahedron => (60, 32),
             Solid::Rhombicosidodecahedron => (60, 62),
             Solid::TruncatedIcosidodecahedron => (120, 62),
+            Solid::SnubDodecahedron => (60, 92),
         }
     }
 
@@ -120,6 +125,7 @@ impl Solid {
             Solid::Rhombicuboctahedron => vec![(DVec3::new(1.0, 1.0, 1.0 + r2), Perm::All)],
             Solid::TruncatedCuboctahedron => vec![(DVec3::new(1.0, 1.0 + r2, 1.0 + 2.0 * r2), Perm::All)],
             Solid::SnubCube => return unit(snub_cube()),
+            Solid::SnubDodecahedron => return unit(snub_dodecahedron()),
             Solid::Icosidodecahedron => vec![(DVec3::new(0.0, 0.0, g), Perm::Cyclic), (DVec3::new(0.5, g / 2.0, g * g / 2.0), Perm::Cyclic)],
             Solid::TruncatedDodecahedron => vec![
                 (DVec3::new(0.0, 1.0 / g, 2.0 + g), Perm::Cyclic),
@@ -212,6 +218,40 @@ fn snub_cube() -> Vec<DVec3> {
             for signs in 0u32..8 {
                 let plus = 3 - signs.count_ones();
                 if plus % 2 == parity {
+                    out.push(DVec3::new(
+                        if signs & 1 != 0 { -p[0] } else { p[0] },
+                        if signs & 2 != 0 { -p[1] } else { p[1] },
+                        if signs & 4 != 0 { -p[2] } else { p[2] },
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Snub dodecahedron: even (cyclic) permutations with an even number of plus
+/// signs of five seed points in α = ξ − 1/ξ and β = ξφ + φ² + φ/ξ, where ξ is
+/// the real root of ξ³ − 2ξ = φ.
+fn snub_dodecahedron() -> Vec<DVec3> {
+    let g = (1.0 + 5f64.sqrt()) / 2.0;
+    let mut x = 1.7f64;
+    for _ in 0..60 {
+        x -= (x * x * x - 2.0 * x - g) / (3.0 * x * x - 2.0);
+    }
+    let (a, b) = (x - 1.0 / x, x * g + g * g + g / x);
+    let seeds = [
+        [2.0 * a, 2.0, 2.0 * b],
+        [a + b / g + g, -a * g + b + 1.0 / g, a / g + b * g - 1.0],
+        [-a / g + b * g + 1.0, -a + b / g - g, a * g + b - 1.0 / g],
+        [-a / g + b * g - 1.0, a - b / g - g, a * g + b + 1.0 / g],
+        [a + b / g - g, a * g - b + 1.0 / g, a / g + b * g + 1.0],
+    ];
+    let mut out = Vec::with_capacity(60);
+    for s in seeds {
+        for p in [[s[0], s[1], s[2]], [s[1], s[2], s[0]], [s[2], s[0], s[1]]] {
+            for signs in 0u32..8 {
+                if (3 - signs.count_ones()) % 2 == 0 {
                     out.push(DVec3::new(
                         if signs & 1 != 0 { -p[0] } else { p[0] },
                         if signs & 2 != 0 { -p[1] } else { p[1] },

@@ -141,6 +141,24 @@ pub enum Target {
     Mesh(u32),
 }
 
+impl Program {
+    /// A program that draws one mesh and nothing else: what the stacking
+    /// string and UniGrafix front ends lower to.
+    pub fn single_mesh(mesh: MeshDecl, warnings: Vec<super::Diagnostic>) -> Program {
+        Program {
+            start: Target::Mesh(0),
+            groups: Vec::new(),
+            directives: Directives::default(),
+            params: Vec::new(),
+            site_count: 0,
+            warnings,
+            isosurfaces: Vec::new(),
+            meshes: vec![mesh],
+            namespaces: Namespaces::default(),
+        }
+    }
+}
+
 /// `mesh NAME { BASE | modifier … | modifier … }` (docs/modifiers.md): a
 /// base shape with a chain of modifiers, built once on first use and placed
 /// like a primitive. Named solids (`SNUB_CUBE`) lower to a declaration with

@@ -7,22 +7,13 @@
 //! work unchanged. The letters are documented in `docs/modifiers.md` and
 //! [`crate::geom::modifiers::syntax::stack`].
 
-use super::ir::{Directives, MeshDecl, Program, Target};
+use super::ir::{MeshDecl, Program};
 use super::{ParseError, Span};
 
 /// Parses a stacking string (surrounding whitespace and one trailing newline are fine).
 pub fn parse(source: &[u8]) -> Result<Program, ParseError> {
     let text = std::str::from_utf8(source).map_err(|e| ParseError::single(Span::new(1, e.valid_up_to() as u32 + 1), "the stacking string is not UTF-8"))?;
     let stack = crate::geom::modifiers::syntax::stack(text.trim()).map_err(|m| ParseError::single(Span::new(1, 1), m))?;
-    Ok(Program {
-        start: Target::Mesh(0),
-        groups: Vec::new(),
-        directives: Directives::default(),
-        params: Vec::new(),
-        site_count: 0,
-        warnings: Vec::new(),
-        isosurfaces: Vec::new(),
-        meshes: vec![MeshDecl { name: "stack".into(), base: stack.base, modifiers: stack.modifiers, span: Span::new(1, 1) }],
-        namespaces: Default::default(),
-    })
+    let mesh = MeshDecl { name: "stack".into(), base: stack.base, modifiers: stack.modifiers, span: Span::new(1, 1) };
+    Ok(Program::single_mesh(mesh, Vec::new()))
 }

@@ -11,7 +11,7 @@
 //! is built. The result lowers to a program drawing one mesh, so it renders
 //! in every format and takes modifiers like any `mesh` base.
 
-use super::ir::{Directives, MeshDecl, Program, Target};
+use super::ir::{MeshDecl, Program};
 use super::{Diagnostic, ParseError, Span};
 use crate::geom::modifiers::MeshBase;
 use glam::{DMat4, DVec3};
@@ -264,17 +264,8 @@ pub fn parse(source: &[u8]) -> Result<Program, ParseError> {
         return Err(err(1, "no faces: nothing to draw (top-level `f` or `i` statements)"));
     }
     let (positions, tris) = weld(out.0, out.1);
-    Ok(Program {
-        start: Target::Mesh(0),
-        groups: Vec::new(),
-        directives: Directives::default(),
-        params: Vec::new(),
-        site_count: 0,
-        warnings,
-        isosurfaces: Vec::new(),
-        meshes: vec![MeshDecl { name: "ug".into(), base: MeshBase::Indexed { positions, triangles: tris }, modifiers: Vec::new(), span: Span::new(1, 1) }],
-        namespaces: Default::default(),
-    })
+    let mesh = MeshDecl { name: "ug".into(), base: MeshBase::Indexed { positions, triangles: tris }, modifiers: Vec::new(), span: Span::new(1, 1) };
+    Ok(Program::single_mesh(mesh, warnings))
 }
 
 #[cfg(test)]

@@ -12,7 +12,7 @@
 mod report;
 mod union;
 
-pub use report::{measure, PrintReport};
+pub use report::{measure, measure_stl, PrintReport};
 
 use crate::eval::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh};

@@ -66,9 +66,28 @@ impl PrintReport {
             ("x-print-bbox-mm", format!("{:.3} {:.3} {:.3}", self.bbox_mm[0], self.bbox_mm[1], self.bbox_mm[2])),
             ("x-print-shells", self.shells.to_string()),
             ("x-print-watertight", self.is_watertight.to_string()),
-            ("x-print-min-feature-mm", format!("{:.3}", self.min_feature_mm)),
         ]
     }
+}
+
+/// Measures a binary STL (the print output re-read, for response headers:
+/// the cached model is only bytes). `None` if the bytes are not binary STL.
+/// The part-based fields (`parts`, `min_feature_mm`) are not known from an STL and stay 0.
+pub fn measure_stl(bytes: &[u8]) -> Option<PrintReport> {
+    let n = u32::from_le_bytes(bytes.get(80..84)?.try_into().ok()?) as usize;
+    if bytes.len() != 84 + 50 * n {
+        return None;
+    }
+    let mut positions = Vec::with_capacity(3 * n);
+    for i in 0..n {
+        let f = &bytes[84 + 50 * i + 12..84 + 50 * i + 48];
+        for k in 0..3 {
+            let c = |j: usize| f32::from_le_bytes([f[(k * 3 + j) * 4], f[(k * 3 + j) * 4 + 1], f[(k * 3 + j) * 4 + 2], f[(k * 3 + j) * 4 + 3]]);
+            positions.push([c(0), c(1), c(2)]);
+        }
+    }
+    let indices: Vec<u32> = (0..positions.len() as u32).collect();
+    Some(measure(&positions, &indices))
 }
 
 /// Measures a solid given as shared positions and CCW triangles.

@@ -243,15 +243,28 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         (status = 504, description = "Deadline exceeded", body = ErrorBody)
     ))]
 async fn render_post(State(st): State<Arc<AppState>>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
-    let result: Result<(Served, bool), ServiceError> = async {
+    let result: Result<(Served, bool, bool), ServiceError> = async {
         let body = body_bytes(body, st.config.body_limit)?;
         let plan = from_json::<RenderBody>(&body)?.plan(&st.ceiling, wants_fresh(&headers))?;
         let text = is_text(plan.request.format);
-        Ok((st.engine.serve(plan).await?, text))
+        let p = plan.request.export_options.print;
+        let print_stl = p.enabled && !p.report && plan.request.format == Format::Stl;
+        Ok((st.engine.serve(plan).await?, text, print_stl))
     }
     .await;
     match result {
-        Ok((served, text)) => model_response(&served, None, text),
+        Ok((served, text, print_stl)) => {
+            let mut resp = model_response(&served, None, text);
+            if print_stl {
+                // The printability report as headers (re-measured from the STL: the cache holds bytes only).
+                if let Some(report) = crate::print::measure_stl(&served.model.bytes) {
+                    for (name, value) in report.headers() {
+                        resp.headers_mut().insert(name, header_value(&value));
+                    }
+                }
+            }
+            resp
+        }
         Err(e) => e.into_response(),
     }
 }

@@ -34,7 +34,7 @@ fn render(grammar: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
 #[test]
 fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
     let dir = tempdir();
-    for g in grammar_files("mdg") {
+    for g in grammar_files("mdg").into_iter().chain(grammar_files("ls")) {
         let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
         let json = dir.path().join(format!("{stem}.json"));
         let out = render(&g, &json, &["--print-report", "--size-mm", "40"]);

@@ -410,6 +410,12 @@ async fn grpc_matches_http_and_maps_errors() {
         assert!(bytes == http.as_ref(), "{format}: streamed bytes differ");
     }
 
+    // print=true travels over gRPC too, byte-identical to HTTP.
+    let http = post(&base, "/v1/render", &json!({"source": source, "format": "3mf", "print": true, "size_mm": 40})).await.bytes().await.expect("body");
+    let req = pb::RenderRequest { source: source.clone(), format: "3mf".into(), print: Some(true), size_mm: Some(40.0), ..Default::default() };
+    let reply = g.render(req).await.expect("Render print").into_inner();
+    assert!(reply.model == http.as_ref() && http.starts_with(b"PK"), "gRPC and HTTP print bytes differ");
+
     let err = g.render(pb::RenderRequest { source: "startshape A\nrule A { BOX { x } }".into(), ..Default::default() }).await.expect_err("parse error");
     assert_eq!(err.code(), tonic::Code::InvalidArgument);
     let details: Value = serde_json::from_slice(err.details()).expect("JSON details");
@@ -863,6 +869,50 @@ async fn metrics_add_up_to_the_requests_sent() {
     let text = c.get(format!("{base}/metrics")).send().await.expect("get").text().await.expect("text");
     assert_eq!(metric(&text, "rulemesh_renders_in_flight"), 0);
     assert_eq!(metric(&text, "rulemesh_render_queue_depth"), 0);
+    srv.shutdown();
+    srv.wait().await.expect("clean shutdown");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn print_3mf_ug_stack_and_report_over_http() {
+    let (srv, base) = start(config()).await;
+    let source = "rule R { BOX {} BOX { x 0.5 } }";
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "size_mm": 30, "format": "3mf"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "model/3mf");
+    assert!(r.bytes().await.expect("body").starts_with(b"PK"));
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "size_mm": 30, "print_report": true})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "application/json");
+    let report: Value = r.json().await.expect("report");
+    assert_eq!(report["is_watertight"], true);
+    assert_eq!(report["shells"], 1);
+    assert!((report["bbox_mm"][0].as_f64().expect("mm") - 30.0).abs() < 1e-3, "{report}");
+    // STL responses carry the report as headers.
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "format": "stl"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "x-print-watertight"), "true");
+    assert_eq!(header(&r, "x-print-shells"), "1");
+    assert_eq!(header(&r, "x-print-volume-mm3"), "1.500");
+    assert_eq!(header(&r, "x-print-bbox-mm"), "1.500 1.000 1.000");
+    // size_mm without print is a 400, as is a nonsense size.
+    let r = post(&base, "/v1/render", &json!({"source": source, "size_mm": 30})).await;
+    assert_eq!(r.status(), 400);
+    let r = post(&base, "/v1/render", &json!({"source": source, "print": true, "size_mm": -1})).await;
+    assert_eq!(r.status(), 400);
+    // The other new languages and format.
+    let r = post(&base, "/v1/render", &json!({"source": "b1.5s1.4w0.1", "language": "stack", "format": "stl"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(common::decode_stl(&r.bytes().await.expect("body")).len(), 144);
+    let r = post(&base, "/v1/render", &json!({"source": source, "format": "ug"})).await;
+    assert_eq!(r.status(), 200);
+    let ug = r.text().await.expect("text");
+    let r = post(&base, "/v1/render", &json!({"source": ug, "language": "ug", "format": "stl"})).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(common::decode_stl(&r.bytes().await.expect("body")).len(), 24);
+    // Built-in grammars print through the models route too.
+    let r = client().get(format!("{base}/v1/models/tower.stl?print=true&size_mm=40")).send().await.expect("request");
+    assert_eq!(r.status(), 200);
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }
