@@ -61,7 +61,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
             Err(e) => return Err(e.into()),
         },
     };
-    let gltf = matches!(req.format, Format::Glb | Format::Gltf);
+    // Printing takes the string path of STL (swept tubes with joints), so a
+    // printed model and its report match whatever the format.
+    let gltf = matches!(req.format, Format::Glb | Format::Gltf) && !req.export_options.print.enabled;
     if req.format == Format::Scene || (gltf && dag.is_some()) {
         match hierarchical(&sys, dag.as_ref(), seed, req, &mut budget, &mut stages) {
             Ok(out) => return finish(out, req, sys.warnings, budget, stages),
@@ -164,7 +166,8 @@ fn hierarchical(
         return Err(LimitExceeded { limit: Limit::Triangles, configured: limits.max_triangles, reached: triangles }.into());
     }
     let opts = &req.export_options;
-    let gpu = opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box;
+    // Printing unites the expanded parts into one solid, so it never instances.
+    let gpu = opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled;
     let truncated = h.truncated;
     match req.format {
         Format::Scene => Ok(Made::Bytes { bytes: export::scene::write_scene(&h, budget)?, leaves, triangles, truncated }),
