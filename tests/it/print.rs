@@ -80,14 +80,15 @@ fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
         assert!(out.status.success(), "{stem}: {err}");
         let (watertight, faces, volume3) = trimesh_check(&mf);
         assert!(watertight, "{stem}: 3MF not watertight in trimesh");
-        if faces != a.facets && !print_is_deterministic(&g, dir.path()) {
-            // Known bug (issue #7 note, `print_output_is_deterministic` below):
-            // the union of some L-systems differs run to run, so two runs
-            // cannot be compared; this run's 3MF was checked above.
-            eprintln!("{stem}: print output differs run to run (known bug); 3MF compared to a different run");
-            continue;
+        // The 3MF comes from another run than the STL. Known bug (issue #7,
+        // `print_output_is_deterministic` below): the Manifold union of some
+        // L-systems differs run to run by a few triangles in tens of
+        // thousands, so the counts agree exactly only up to that.
+        let diff = faces.abs_diff(a.facets);
+        assert!(diff == 0 || diff * 1000 <= a.facets, "{stem}: 3MF has {faces} triangles, the STL {}", a.facets);
+        if diff != 0 {
+            eprintln!("{stem}: 3MF {faces} vs STL {} triangles (known run-to-run difference)", a.facets);
         }
-        assert_eq!(faces, a.facets, "{stem}: 3MF triangles");
         assert!((volume3 - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: 3MF volume {volume3}");
     }
 }
