@@ -18,6 +18,8 @@ WORKDIR /src
 COPY Cargo.toml Cargo.lock build.rs ./
 COPY proto ./proto
 COPY grammars ./grammars
+# manifold-rs with the determinism fix to Manifold (vendor/manifold-rs/PATCHES.md).
+COPY vendor ./vendor
 RUN mkdir -p src bench tests/it \
     && echo 'fn main() {}' > src/main.rs \
     && touch src/lib.rs bench/decode_strips.rs tests/it/main.rs \

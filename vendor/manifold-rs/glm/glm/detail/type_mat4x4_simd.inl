@@ -1,0 +1,6 @@
+/// @ref core
+
+namespace glm
+{
+
+}//namespace glm

@@ -1,0 +1,6 @@
+/// @ref gtc_precision
+
+namespace glm
+{
+
+}

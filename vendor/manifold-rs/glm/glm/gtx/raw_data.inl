@@ -1,0 +1,2 @@
+/// @ref gtx_raw_data
+

@@ -1,0 +1,6 @@
+/// @ref gtx_std_based_type
+
+namespace glm
+{
+
+}

@@ -1,0 +1,6 @@
+/// @ref gtc_type_aligned
+
+namespace glm
+{
+
+}

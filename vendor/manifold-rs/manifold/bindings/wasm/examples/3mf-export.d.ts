@@ -1,0 +1,1 @@
+declare module '@jscadui/3mf-export';
