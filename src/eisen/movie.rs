@@ -14,6 +14,7 @@
 use super::build::{self, Built};
 use super::{build_options, parse_bound};
 use crate::eval::animation::{Bone, Rig, Timeline, BONE_BYTES};
+use crate::eval::scene::{AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
 use crate::eval::{Budget, EvalError, Frame, OnLimit, Scene};
 use crate::export;
 use crate::lang::eisen::js::{self, Loader};
@@ -44,6 +45,17 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         warnings.push(Diagnostic::warning(Span::new(1, 1), "the script built nothing: the model is empty"));
     }
     let mut truncated = movie.truncated;
+    let animated = graph_capable(req);
+    // Animated output splits the scene into one part per frame (a copy of
+    // every element and its frame tag): promised with the rest of meshing's memory.
+    let opts = |radius: f64| {
+        let mut o = build_options(req, overhead, radius);
+        if animated {
+            o.downstream_bytes = o.downstream_bytes.map(|b| b.saturating_add(AFFINE_INSTANCE_BYTES + 4));
+            o.vertex_bytes = o.vertex_bytes.saturating_add(FREE_VERTEX_BYTES + 4);
+        }
+        o
+    };
     let mut frames: Vec<Built> = Vec::new();
     let mut promised = 0u64;
     for (k, text) in texts.iter().enumerate() {
@@ -56,7 +68,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
                 warnings.push(w.clone());
             }
         }
-        let built = build::build(&script, &build_options(req, overhead, radius), &mut budget)?;
+        let built = build::build(&script, &opts(radius), &mut budget)?;
         promised = promised.saturating_add(built.promised);
         if let Some(l) = built.scene.truncated {
             // Under `truncate` a frame cut short is kept only when it is the first.
@@ -74,7 +86,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         truncate_or_fail(req.on_limit, e, &mut scene)?;
     }
     budget.release_memory(promised.saturating_add(overhead).saturating_add(movie.held_bytes));
-    let (mut assembled, primitives) = assemble(frames, graph_capable(req), &mut budget)?;
+    let (mut assembled, primitives) = assemble(frames, animated, &mut budget)?;
     assembled.truncated = scene.truncated.or(truncated);
     mesh_and_export(assembled, req, Language::Eisenscript, primitives, warnings, budget, stages)
 }
@@ -88,10 +100,9 @@ fn assemble(frames: Vec<Built>, animated: bool, budget: &mut Budget) -> Result<(
         return Ok(frames.into_iter().next().map(|b| (b.scene, b.objects)).unwrap_or_default());
     }
     let samples = u32::try_from(n).unwrap_or(u32::MAX);
-    // One track of n samples per frame, plus the tags.
-    let elements: u64 = frames.iter().map(|b| (b.scene.affine.len() + b.scene.vertices.len()) as u64).sum();
+    // One track of n samples per frame (the tags were promised while building).
     let track_bytes = (n as u64).saturating_mul(n as u64).saturating_mul(std::mem::size_of::<Frame>() as u64);
-    budget.reserve_memory(track_bytes.saturating_add(BONE_BYTES.saturating_mul(n as u64)).saturating_add(4 * elements))?;
+    budget.reserve_memory(track_bytes.saturating_add(BONE_BYTES.saturating_mul(n as u64)))?;
     let mut rig = Rig::new(Timeline { fps: MOVIE_FPS, samples, step: true });
     let mut objects = 0u64;
     let mut iter = frames.into_iter();

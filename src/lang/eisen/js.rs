@@ -235,9 +235,12 @@ fn define(text: &str, name: &str, value: &str) -> String {
 /// function. `Date` is removed so no output depends on the clock.
 const PRELUDE: &str = r#"(function (native) {
   const S = (v) => String(v);
+  // A number within rounding noise of a whole number is written whole, so
+  // `define("_md", 20 + c * 3000)` gives `set maxdepth` the integer it needs.
+  const N = (v) => (typeof v === "number" && isFinite(v) && Math.abs(v - Math.round(v)) <= 1e-9 * Math.max(1, Math.abs(v))) ? String(Math.round(v)) : String(v);
   const B = {
     load: (f) => native("load", S(f)),
-    define: (n, v) => native("define", S(n), S(v)),
+    define: (n, v) => native("define", S(n), N(v)),
     prepend: (t) => native("prepend", S(t)),
     append: (t) => native("append", S(t)),
     reset: () => native("reset"),
@@ -384,7 +387,11 @@ fn run_in_sandbox(source: &str, heap: u64, shared: &Rc<RefCell<Shared>>) -> Resu
             ctx.eval::<(), _>(PRELUDE)
         };
         setup().map_err(|e| script_error(format!("cannot set up the Builder: {e}")))?;
-        match ctx.eval::<(), _>(body) {
+        // Sloppy mode, as Qt Script runs them: Structure Synth's examples assign undeclared globals.
+        let mut options = rquickjs::context::EvalOptions::default();
+        options.strict = false;
+        options.filename = Some("script".into());
+        match ctx.eval_with_options::<(), _>(body, options) {
             Ok(()) => Ok(()),
             Err(rquickjs::Error::Exception) => {
                 let thrown = ctx.catch();
