@@ -207,6 +207,15 @@ fn read_source(file: &str, max: u64) -> Result<Vec<u8>, Failure> {
     Ok(buf)
 }
 
+/// The directory a JavaScript script's `Builder.load` reads from: the
+/// script's own (the working directory for stdin or a bare file name).
+fn script_dir_of(file: &str) -> std::path::PathBuf {
+    match Path::new(file).parent() {
+        Some(p) if file != "-" && !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    }
+}
+
 fn language_for(file: &str, given: Option<Language>) -> Option<Language> {
     given.or_else(|| Language::from_extension(Path::new(file)))
 }
@@ -267,6 +276,7 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
                 report: args.print_report,
             },
         },
+        script_dir: Some(script_dir_of(&args.file)),
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;
     let out = render(&source, &req).map_err(|e| render_failure(&args.file, e))?;

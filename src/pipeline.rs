@@ -32,6 +32,10 @@ pub struct RenderRequest {
     /// Encoding options of the output format (e.g. strips precision); they
     /// reach the exporter only.
     pub export_options: ExportOptions,
+    /// The directory a Structure Synth JavaScript script's `Builder.load`
+    /// reads from (the CLI passes the script's folder). `None` — the service —
+    /// reads no files: only built-in library grammars load.
+    pub script_dir: Option<std::path::PathBuf>,
 }
 
 impl Default for RenderRequest {
@@ -46,6 +50,7 @@ impl Default for RenderRequest {
             detail: geom::DEFAULT_DETAIL,
             layout: MeshLayout::Merged,
             export_options: ExportOptions::default(),
+            script_dir: None,
         }
     }
 }
@@ -240,10 +245,13 @@ pub(crate) fn mesh_and_export(
 /// carry a node hierarchy: plain glTF (the quantised and compressed writers,
 /// STL, strips and unit-box fitting show the model at time 0 instead).
 fn carries_graph(scene: &eval::Scene, req: &RenderRequest) -> bool {
-    (scene.rig.is_some() || scene.camera.is_some())
-        && matches!(req.format, Format::Glb | Format::Gltf)
-        && req.export_options.gltf.is_plain()
-        && !req.export_options.fit_unit_box
+    (scene.rig.is_some() || scene.camera.is_some()) && graph_capable(req)
+}
+
+/// True when the request's output carries a node hierarchy with animation
+/// (plain glTF, not printed); everything else shows time 0.
+pub(crate) fn graph_capable(req: &RenderRequest) -> bool {
+    matches!(req.format, Format::Glb | Format::Gltf) && req.export_options.gltf.is_plain() && !req.export_options.fit_unit_box && !req.export_options.print.enabled
 }
 
 /// Meshes each bone's geometry in the bone's own coordinates and builds the

@@ -13,6 +13,7 @@
 //! with the typed error naming it.
 
 pub mod build;
+pub mod movie;
 
 use crate::eval::{Budget, EvalError, ParamValue};
 use crate::export;
@@ -82,6 +83,9 @@ pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u
 /// Renders EisenScript `source` as the request says (the request's language is taken to be EisenScript).
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
     check_detail(req)?;
+    if lang_es::js::is_javascript(source) {
+        return movie::render(source, req);
+    }
     let mut budget = Budget::new(req.limits);
     let mut stages = Stages::start();
     Budget::check_source(&req.limits, source.len() as u64)?;
@@ -89,15 +93,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     stages.lap(|p| &mut p.parse);
     let overhead = export::estimated_size(req.format, 0, 0);
     budget.reserve_memory(overhead)?;
-    let cost = downstream(req, overhead);
-    let opts = BuildOptions {
-        seed: req.seed.unwrap_or(0),
-        detail: req.detail,
-        on_limit: req.on_limit,
-        line_radius,
-        downstream_bytes: PrimitiveKind::ALL.map(|k| cost.bytes(primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail))),
-        vertex_bytes: cost.bytes(1, 0) + cost.bytes(0, 1).div_ceil(3),
-    };
+    let opts = build_options(req, overhead, line_radius);
     let mut built = build::build(&script, &opts, &mut budget)?;
     stages.lap(|p| &mut p.eval);
     if let Err(e) = budget.check_deadline() {
@@ -105,4 +101,18 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     }
     budget.release_memory(built.promised.saturating_add(overhead));
     mesh_and_export(built.scene, req, Language::Eisenscript, built.objects, script.warnings, budget, stages)
+}
+
+/// The builder's options for `req`, with what meshing and export will need
+/// per primitive (beyond `overhead`, already reserved).
+pub(crate) fn build_options(req: &RenderRequest, overhead: u64, line_radius: f64) -> BuildOptions {
+    let cost = downstream(req, overhead);
+    BuildOptions {
+        seed: req.seed.unwrap_or(0),
+        detail: req.detail,
+        on_limit: req.on_limit,
+        line_radius,
+        downstream_bytes: PrimitiveKind::ALL.map(|k| cost.bytes(primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail))),
+        vertex_bytes: cost.bytes(1, 0) + cost.bytes(0, 1).div_ceil(3),
+    }
 }

@@ -16,7 +16,7 @@
 
 use super::budget::{Budget, LimitExceeded};
 use super::frame::Frame;
-use super::scene::{Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES, SHAPE_INSTANCE_BYTES};
+use super::scene::{Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES, SHAPE_INSTANCE_BYTES};
 use crate::lang::ir::CameraLens;
 use std::collections::BTreeMap;
 
@@ -33,6 +33,9 @@ pub struct Timeline {
     pub fps: f64,
     /// Number of samples, at times 0, 1/fps, …, (samples − 1)/fps (≥ 1).
     pub samples: u32,
+    /// Hold each sample until the next one (glTF STEP) instead of
+    /// interpolating: movie frames that switch on and off must not cross-fade.
+    pub step: bool,
 }
 
 impl Timeline {
@@ -42,7 +45,7 @@ impl Timeline {
         let fps = fps.filter(|f| *f > 0.0 && f.is_finite()).unwrap_or(DEFAULT_FPS);
         let duration = duration.filter(|d| *d >= 0.0 && d.is_finite()).unwrap_or(DEFAULT_DURATION);
         let samples = ((duration * fps).round().min(f64::from(u32::MAX - 1)) as u32).saturating_add(1);
-        Timeline { fps, samples }
+        Timeline { fps, samples, step: false }
     }
 
     /// The time of sample `k`, in seconds.
@@ -96,6 +99,8 @@ pub struct Rig {
     pub vertex_bone: Vec<u32>,
     /// Bone of each shape instance.
     pub shape_instance_bone: Vec<u32>,
+    /// Bone of each affine instance (EisenScript movie frames).
+    pub affine_bone: Vec<u32>,
 }
 
 /// Bytes accounted per bone (its record and its four tag vectors' share).
@@ -112,6 +117,7 @@ impl Rig {
             line_bone: Vec::new(),
             vertex_bone: Vec::new(),
             shape_instance_bone: Vec::new(),
+            affine_bone: Vec::new(),
         }
     }
 
@@ -133,7 +139,8 @@ impl Rig {
             .saturating_mul(INSTANCE_BYTES)
             .saturating_add(points.saturating_mul(LINE_POINT_BYTES))
             .saturating_add((scene.vertices.len() as u64).saturating_mul(FREE_VERTEX_BYTES))
-            .saturating_add((scene.shape_instances.len() as u64).saturating_mul(SHAPE_INSTANCE_BYTES));
+            .saturating_add((scene.shape_instances.len() as u64).saturating_mul(SHAPE_INSTANCE_BYTES))
+            .saturating_add((scene.affine.len() as u64).saturating_mul(AFFINE_INSTANCE_BYTES));
         budget.reserve_memory(copies)?;
         let inverse: Vec<Option<Frame>> = self.bones.iter().map(|b| b.body.inverse()).collect();
         let bone_of = |tags: &[u32], i: usize| tags.get(i).copied().unwrap_or(0);
@@ -173,6 +180,15 @@ impl Rig {
                 s.shape_instances.push(si);
             }
         }
+        for (i, a) in scene.affine.iter().enumerate() {
+            if let Some((inv, s)) = part(&mut parts, &inverse, bone_of(&self.affine_bone, i)) {
+                let mut a = *a;
+                let lin = inv.linear().as_mat3();
+                a.linear = lin * a.linear;
+                a.translation = inv.transform_point(a.translation.as_dvec3()).as_vec3();
+                s.affine.push(a);
+            }
+        }
         // Lines and shape instances index the scene's profiles and shapes: give
         // each part that uses them its own copy (charged to the budget).
         let shape_bytes: u64 = scene
@@ -190,6 +206,8 @@ impl Rig {
                 budget.reserve_memory(profile_bytes)?;
                 s.profiles = scene.profiles.clone();
             }
+            // Affine instances name their class (their mesh and material) by index.
+            s.classes = scene.classes.clone();
         }
         Ok(parts.into_iter().collect())
     }

@@ -58,6 +58,22 @@ pub enum EvalError {
         /// What is wrong.
         message: String,
     },
+    /// A Structure Synth JavaScript script failed: a syntax error or an
+    /// uncaught exception (with its line when QuickJS reports one).
+    #[error("JavaScript: {message}")]
+    Script {
+        /// QuickJS's message.
+        message: String,
+    },
+    /// `Builder.load` could not load the file it names (refused path, missing
+    /// file, or no such library grammar in the service).
+    #[error("Builder.load(\"{name}\"): {reason}")]
+    Load {
+        /// The name the script gave.
+        name: String,
+        /// Why it was refused.
+        reason: String,
+    },
     /// A `mesh` declaration's modifiers could not be applied.
     #[error("{}:{}: mesh `{name}`: {message}", span.line, span.column)]
     Mesh {

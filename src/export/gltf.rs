@@ -340,7 +340,8 @@ fn add_graph(root: &mut json::Root, g: &NodeGraph, tracks: &Tracks, buffer: Opti
         let mut out = accessor(view, tracks.count, ComponentType::F32, type_, false);
         out.byte_offset = Some(USize64(at));
         let output = root.push(out);
-        samplers.push(json::animation::Sampler { input, interpolation: Valid(json::animation::Interpolation::Linear), output, extensions: None, extras: None });
+        let interpolation = if g.step { json::animation::Interpolation::Step } else { json::animation::Interpolation::Linear };
+        samplers.push(json::animation::Sampler { input, interpolation: Valid(interpolation), output, extensions: None, extras: None });
         let node = match mover {
             Mover::Node(i) => nodes[i],
             Mover::Camera => match camera_node {

@@ -79,6 +79,8 @@ pub struct NodeGraph {
     pub times: Vec<f32>,
     /// The camera, if the grammar has one.
     pub camera: Option<GraphCamera>,
+    /// Samples hold until the next (glTF STEP interpolation) instead of LINEAR.
+    pub step: bool,
 }
 
 /// One sample when every sample is the same (a node that does not move gets no channels).
@@ -120,7 +122,8 @@ impl NodeGraph {
             zfar: c.lens.far as f32,
             samples: still_if_constant(c.frames.iter().map(Trs::of_view).collect()),
         });
-        Ok(NodeGraph { nodes, mesh_nodes: mesh_bones.iter().map(|b| b.checked_sub(1)).collect(), times, camera })
+        let step = timeline.is_some_and(|t| t.step);
+        Ok(NodeGraph { nodes, mesh_nodes: mesh_bones.iter().map(|b| b.checked_sub(1)).collect(), times, camera, step })
     }
 
     /// True when something moves (more than one sample of a node or the camera).

@@ -186,6 +186,10 @@ pub fn check(language: Language, source: &[u8]) -> Result<Vec<Diagnostic>, Parse
     match language {
         Language::Mdg => mdg::parse(source).map(|p| p.warnings),
         Language::Lsystem => lsystem::parse(source).map(|s| s.warnings),
+        // A JavaScript script is a program: it is only known what it builds by running it.
+        Language::Eisenscript if eisen::js::is_javascript(source) => {
+            Ok(vec![Diagnostic::warning(Span::new(1, 1), "a Structure Synth JavaScript script is run, not checked; render it to run it")])
+        }
         Language::Eisenscript => eisen::parse(source, &Default::default()).map(|s| s.warnings),
         Language::Stack => stack::parse(source).map(|p| p.warnings),
         Language::Ug => ug::parse(source).map(|p| p.warnings),

@@ -245,6 +245,8 @@ impl RenderBody {
                 let print = print_options(self.print, self.size_mm, self.print_report)?;
                 ExportOptions { strips, gltf, fit_unit_box, instancing, print }
             },
+            // The service reads no files: Builder.load takes library grammars only.
+            script_dir: None,
         };
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
         let key = cache_key(&source, &request);

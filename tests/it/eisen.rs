@@ -341,15 +341,15 @@ fn debian_examples_render_and_validate() {
         let source = std::fs::read(f).expect("read example");
         let name = f.strip_prefix(dir).unwrap_or(f).display().to_string();
         let r = RenderRequest { format: Format::Glb, ..RenderRequest::default() };
-        match render(&source, &RenderRequest { language: Language::from_extension(f), ..r }) {
+        // JavaScript scripts load their EisenScript beside them, as on the CLI.
+        let script_dir = f.parent().map(Path::to_path_buf);
+        match render(&source, &RenderRequest { language: Language::from_extension(f), script_dir, ..r }) {
             Ok(out) => {
                 let path = tmp.path().join(format!("{}.glb", written.len()));
                 std::fs::write(&path, &out.bytes).expect("write glb");
                 written.push((name, path));
             }
             Err(RenderError::Limit(l)) => assert!(l.to_string().contains(l.limit.name()), "{name}: {l}"),
-            // Structure Synth's JavaScript animation driver is not EisenScript.
-            Err(RenderError::Parse(e)) if source.starts_with(b"#javascript") => assert!(e.to_string().contains("JavaScript")),
             Err(e) => failures.push(format!("{name}: {e}")),
         }
     }
@@ -359,4 +359,107 @@ fn debian_examples_render_and_validate() {
     for ((name, _), (errors, _, report)) in written.iter().zip(validate_gltf(&paths)) {
         assert_eq!(errors, 0, "{name}: {report}");
     }
+}
+
+/// A three-frame movie: `frame.es` drawn with 1, 2 and 3 boxes.
+const MOVIE: &str = "#javascript\nBuilder.load(\"frame.es\");\nfor (var i = 1; i <= 3; i++) {\n  Builder.reset();\n  Builder.define(\"n\", i);\n  Builder.build();\n  Builder.raytraceToFile(\"f\" + i + \".png\", true);\n}\n";
+
+/// Renders JavaScript `js` with `frame.es` (`n * { x 2 } box`) beside it.
+fn movie(js: &str, r: RenderRequest) -> (Result<rulemesh::RenderOutput, RenderError>, tempfile::TempDir) {
+    let dir = tempdir();
+    std::fs::write(dir.path().join("frame.es"), "#define n 1\nn * { x 2 } box\n").expect("write frame.es");
+    let r = RenderRequest { script_dir: Some(dir.path().to_path_buf()), ..r };
+    (render(js.as_bytes(), &r), dir)
+}
+
+#[test]
+fn javascript_movie_frames_play_as_a_step_animation() {
+    let (out, dir) = movie(MOVIE, req(Format::Gltf));
+    let out = out.unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(out.primitives, 6);
+    let j: serde_json::Value = serde_json::from_slice(&out.bytes).unwrap();
+    let nodes = j["nodes"].as_array().unwrap();
+    let frames: Vec<&serde_json::Value> = nodes.iter().filter(|n| n["name"].as_str().is_some_and(|s| s.starts_with("frame "))).collect();
+    assert_eq!(frames.len(), 3);
+    // Only frame 0 shows before the animation plays.
+    let scales: Vec<&serde_json::Value> = frames.iter().map(|n| &n["scale"]).collect();
+    assert_eq!(scales, [&serde_json::json!([1.0, 1.0, 1.0]), &serde_json::json!([0.0, 0.0, 0.0]), &serde_json::json!([0.0, 0.0, 0.0])]);
+    let samplers = j["animations"][0]["samplers"].as_array().unwrap();
+    assert!(!samplers.is_empty());
+    assert!(samplers.iter().all(|s| s["interpolation"] == "STEP"), "{samplers:?}");
+    let input = samplers[0]["input"].as_u64().unwrap() as usize;
+    assert_eq!(j["accessors"][input]["count"], 3);
+    assert_eq!(j["accessors"][input]["max"], serde_json::json!([2.0 / 30.0_f32]));
+    // glb: the Khronos validator finds no errors, and a re-run is byte-identical.
+    let (glb, _d) = movie(MOVIE, req(Format::Glb));
+    let glb = glb.unwrap().bytes;
+    let path = dir.path().join("movie.glb");
+    std::fs::write(&path, &glb).expect("write glb");
+    let (errors, _, report) = validate_gltf(&[path]).remove(0);
+    assert_eq!(errors, 0, "{report}");
+    assert_eq!(movie(MOVIE, req(Format::Glb)).0.unwrap().bytes, glb);
+    // Outputs without animation show frame 0: one box.
+    assert_eq!(movie(MOVIE, req(Format::Stl)).0.unwrap().primitives, 1);
+    // A script that builds but pictures nothing shows its last build.
+    let built = "#javascript\nBuilder.load(\"frame.es\");\nBuilder.define(\"n\", 4);\nBuilder.build();\n";
+    assert_eq!(movie(built, req(Format::Glb)).0.unwrap().primitives, 4);
+}
+
+#[test]
+fn javascript_math_random_follows_the_request_seed() {
+    let js = "#javascript\nBuilder.load(\"frame.es\");\nBuilder.define(\"n\", 1 + Math.floor(Math.random() * 50));\nBuilder.renderToFile(\"x.png\", true);\nBuilder.define(\"n\", 1 + Math.floor(Math.random() * 50));\n";
+    let run = |seed: u64| movie(js, RenderRequest { seed: Some(seed), ..req(Format::Glb) }).0.unwrap_or_else(|e| panic!("{e}")).bytes;
+    assert_eq!(run(1), run(1));
+    let distinct: std::collections::BTreeSet<Vec<u8>> = (1..=4).map(run).collect();
+    assert!(distinct.len() > 1, "Math.random ignores the seed");
+    // `Date` is gone: no output can depend on the clock.
+    let e = movie("#javascript\nnew Date();\n", req(Format::Glb)).0.unwrap_err();
+    assert!(e.to_string().contains("Date is not defined"), "{e}");
+}
+
+#[test]
+fn javascript_sandbox_limits_are_typed() {
+    let limit = |js: &str, limits: Limits| match movie(js, RenderRequest { limits, ..req(Format::Glb) }).0 {
+        Err(RenderError::Limit(l)) => l.limit,
+        other => panic!("{other:?}"),
+    };
+    // An endless loop ends at the step limit (QuickJS polls the budget), not in a hang.
+    assert_eq!(limit("#javascript\nwhile (true) {}\n", Limits { max_steps: 1_000_000, ..Limits::default() }), Limit::Steps);
+    // Catching does not help: the interruption is uncatchable.
+    assert_eq!(limit("#javascript\nwhile (true) { try { while (true) {} } catch (e) {} }\n", Limits { max_steps: 1_000_000, ..Limits::default() }), Limit::Steps);
+    assert_eq!(limit("#javascript\nwhile (true) {}\n", Limits { timeout_ms: 0, ..Limits::default() }), Limit::Deadline);
+    // A huge allocation hits the memory limit.
+    let small = Limits { max_memory: 16 << 20, ..Limits::default() };
+    assert_eq!(limit("#javascript\nvar s = \"x\".repeat(1 << 26);\n", small), Limit::Memory);
+    assert_eq!(limit("#javascript\nvar a = []; while (true) a.push(new Float64Array(1 << 16));\n", small), Limit::Memory);
+    // Frames are charged together: three frames of 1 + 2 + 3 boxes exceed 5 primitives.
+    assert_eq!(limit(MOVIE, Limits { max_primitives: 5, ..Limits::default() }), Limit::Primitives);
+    let few = RenderRequest { limits: Limits { max_primitives: 5, ..Limits::default() }, on_limit: OnLimit::Truncate, ..req(Format::Glb) };
+    let out = movie(MOVIE, few).0.unwrap();
+    assert_eq!((out.primitives, out.truncated.map(|t| t.limit)), (3, Some(Limit::Primitives)));
+}
+
+#[test]
+fn javascript_builder_never_runs_programs_or_leaves_its_folder() {
+    let dir = tempdir();
+    let marker = dir.path().join("ran");
+    let js = format!("#javascript\nBuilder.execute(\"touch\", \"{}\", true);\nBuilder.load(\"frame.es\");\nBuilder.build();\n", marker.display());
+    let (out, _d) = movie(&js, req(Format::Glb));
+    let out = out.unwrap();
+    assert!(!marker.exists());
+    assert!(out.warnings.iter().any(|w| w.message.contains("execute")), "{:?}", out.warnings);
+    for bad in ["../frame.es", "/etc/hostname", "sub/../../frame.es"] {
+        match movie(&format!("#javascript\nBuilder.load(\"{bad}\");\n"), req(Format::Glb)).0 {
+            Err(RenderError::Eval(rulemesh::eval::EvalError::Load { name, .. })) => assert_eq!(name, bad),
+            other => panic!("{bad}: {other:?}"),
+        }
+    }
+    // Without a script directory (the service) only library grammars load.
+    match render(b"#javascript\nBuilder.load(\"frame.es\");\n", &req(Format::Glb)) {
+        Err(RenderError::Eval(rulemesh::eval::EvalError::Load { reason, .. })) => assert!(reason.contains("reads no files"), "{reason}"),
+        other => panic!("{other:?}"),
+    }
+    // Script errors carry the line.
+    let e = movie("#javascript\n\nfoo(;\n", req(Format::Glb)).0.unwrap_err();
+    assert!(matches!(&e, RenderError::Eval(rulemesh::eval::EvalError::Script { message }) if message.contains("line 3")), "{e}");
 }

@@ -16,6 +16,7 @@
 //! numbers may be written as fractions `a/b`.
 
 pub mod colour;
+pub mod js;
 pub mod preprocess;
 
 use crate::lang::{Diagnostic, ParseError, Span};
@@ -274,10 +275,10 @@ pub fn parse(source: &[u8], opts: &ParseOptions) -> Result<Script, ParseError> {
             return Err(ParseError::single(Span::new(line, col as u32 + 1), "the source is not valid UTF-8"));
         }
     };
-    if text.trim_start().to_ascii_lowercase().starts_with("#javascript") {
+    if js::is_javascript(source) {
         return Err(ParseError::single(
             Span::new(1, 1),
-            "this is a Structure Synth JavaScript animation script (#javascript), not EisenScript; it drives the Structure Synth GUI and cannot be rendered",
+            "this is a Structure Synth JavaScript script (#javascript): it is run, not parsed, when rendered (see docs/eisenscript.md)",
         ));
     }
     let pre = preprocess::preprocess(text, opts.seed, &|n| opts.params.get(n).copied())?;
