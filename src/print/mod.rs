@@ -33,6 +33,10 @@ pub struct PrintOptions {
 /// The thinnest feature most FDM printers reproduce (a 0.4 mm nozzle's two perimeters).
 pub const MIN_FEATURE_MM: f64 = 0.8;
 
+/// The thickest wall an open surface is given, as a fraction of the model's
+/// longest side.
+pub const MAX_WALL_FRACTION: f64 = 0.02;
+
 /// Why no printable solid could be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PrintError {
@@ -61,7 +65,18 @@ pub fn size_um(size_mm: f64) -> Result<u32, PrintError> {
 /// Unites every closed part of `meshes` into one solid in millimetres and
 /// measures it. The result is one mesh named "print" with flat normals.
 pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
-    let parts = union::split_parts(meshes, budget)?;
+    // Open surfaces become walls of the thinnest printable thickness at the
+    // printed size, but at most 2 % of the model (a 1-unit-is-1-mm model
+    // would otherwise turn into a blob of 0.8 mm walls).
+    let (lo, hi) = bounds_f32(meshes);
+    let extent = (hi - lo).max_element();
+    let wall = if extent > 0.0 && extent.is_finite() {
+        let scale = if options.size_um > 0 { f64::from(options.size_um) / 1000.0 / extent } else { 1.0 };
+        (MIN_FEATURE_MM / scale).min(MAX_WALL_FRACTION * extent)
+    } else {
+        0.0
+    };
+    let parts = union::split_parts(meshes, wall, budget)?;
     let (positions, indices) = union::unite(&parts.closed, budget)?;
     let (lo, hi) = bounds(&positions);
     let longest = (hi - lo).max_element();
@@ -77,6 +92,8 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     let mut report = measure(&scaled, &indices);
     report.parts = parts.closed.len() as u64;
     report.skipped_parts = parts.skipped;
+    report.thickened_parts = parts.thickened;
+    report.wall_mm = if parts.thickened > 0 { wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
     report.add_warnings(parts.skipped);
@@ -128,6 +145,12 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
         }
     }
     (welded, out)
+}
+
+/// The bounding box of every vertex of `meshes`.
+fn bounds_f32(meshes: &[NamedMesh]) -> (glam::DVec3, glam::DVec3) {
+    let all = meshes.iter().flat_map(|m| m.mesh.positions.iter()).map(|p| glam::Vec3::from_array(*p).as_dvec3());
+    all.fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(q), hi.max(q)))
 }
 
 fn bounds(p: &[glam::DVec3]) -> (glam::DVec3, glam::DVec3) {

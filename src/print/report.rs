@@ -24,6 +24,11 @@ pub struct PrintReport {
     pub parts: u64,
     /// Parts left out because they are open or not manifold.
     pub skipped_parts: u64,
+    /// Open or non-manifold parts (free-vertex surfaces, loose triangles)
+    /// thickened into walls of `wall_mm` instead of being left out.
+    pub thickened_parts: u64,
+    /// Thickness of those walls (mm); 0 when nothing was thickened.
+    pub wall_mm: f64,
     /// Smallest bounding-box side of any part (mm): an estimate of the thinnest feature.
     pub min_feature_mm: f64,
     /// Model units per millimetre applied.
@@ -45,7 +50,13 @@ impl PrintReport {
             ));
         }
         if self.shells > 1 {
-            self.warnings.push(format!("{} separate shells: the parts do not all touch", self.shells));
+            self.warnings.push(format!("{} separate shells: the parts do not all touch (or the solid has inner cavities)", self.shells));
+        }
+        if self.thickened_parts > 0 {
+            self.warnings.push(format!(
+                "the model has no solid: its {} open or non-manifold parts (surfaces without volume) were thickened into walls {:.3} mm thick",
+                self.thickened_parts, self.wall_mm
+            ));
         }
         if skipped > 0 {
             self.warnings.push(format!("{skipped} open or non-manifold parts (e.g. free-vertex surfaces) were left out"));

@@ -11,17 +11,28 @@ use std::collections::HashMap;
 pub(super) struct Parts {
     /// Closed, outward-oriented parts.
     pub closed: Vec<HalfEdgeMesh>,
-    /// Parts that are open or not manifold (free-vertex surfaces, for instance).
+    /// Parts that are open or not manifold and were left out.
     pub skipped: u64,
+    /// Parts that are open or not manifold (free-vertex surfaces, loose
+    /// triangles) and were thickened into walls, the model having no solid.
+    pub thickened: u64,
     /// The smallest bounding-box side over the closed parts (model units):
     /// an estimate of the thinnest feature.
     pub min_extent: f64,
 }
 
+/// Most triangles of open or non-manifold parts that are thickened into
+/// walls (each becomes a prism of its own for the union, eight triangles):
+/// a surface of 10⁵ free triangles must not make a union of 10⁵ prisms.
+pub const MAX_THICKENED_TRIANGLES: usize = 5_000;
+
 /// Welds each mesh by exact position (never across meshes: touching parts
 /// must stay apart) and splits its triangles into connected components, each
-/// checked as a closed manifold.
-pub(super) fn split_parts(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Parts, PrintError> {
+/// checked as a closed manifold. Components that are not (open surfaces,
+/// loose triangles) are left out, unless no component is closed: then each
+/// of their triangles becomes a prism `wall` thick, centred on the triangle,
+/// if they have at most [`MAX_THICKENED_TRIANGLES`]; `wall` 0 never thickens.
+pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) -> Result<Parts, PrintError> {
     let triangles: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     budget.charge_steps(triangles)?;
     let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
@@ -77,7 +88,10 @@ pub(super) fn split_parts(meshes: &[NamedMesh], budget: &mut Budget) -> Result<P
         });
         groups[g].push(*t);
     }
-    let mut parts = Parts { closed: Vec::new(), skipped: 0, min_extent: f64::INFINITY };
+    let mut parts = Parts { closed: Vec::new(), skipped: 0, thickened: 0, min_extent: f64::INFINITY };
+    // The open or non-manifold groups (their triangles), and why the first one is not a solid.
+    let mut open: Vec<Vec<[u32; 3]>> = Vec::new();
+    let mut why: Option<String> = None;
     for g in groups {
         let mut local: HashMap<u32, u32> = HashMap::new();
         let mut pos = Vec::new();
@@ -93,20 +107,70 @@ pub(super) fn split_parts(meshes: &[NamedMesh], budget: &mut Budget) -> Result<P
             })
             .collect();
         let flipped: Vec<[u32; 3]> = tris.iter().map(|t| [t[0], t[2], t[1]]).collect();
-        match HalfEdgeMesh::new(pos.clone(), tris) {
+        // Only open surfaces can become walls; a surface that touches itself
+        // (the Koch curve's tube) would become a hollow shell of itself.
+        let mut thickenable = false;
+        let reason = match HalfEdgeMesh::new(pos.clone(), tris) {
             Ok(m) if m.is_closed() && m.nonmanifold_vertices().is_empty() => {
                 let m = if m.signed_volume() < 0.0 { HalfEdgeMesh::new(pos, flipped).unwrap_or(m) } else { m };
                 let (lo, hi) = super::bounds(&m.positions);
                 parts.min_extent = parts.min_extent.min((hi - lo).min_element());
                 parts.closed.push(m);
+                continue;
             }
-            _ => parts.skipped += 1,
+            Ok(m) if !m.is_closed() => {
+                thickenable = true;
+                format!("it is an open surface ({} boundary edges)", m.boundary_edges().len())
+            }
+            Ok(m) => format!("its surface is pinched at {} vertices", m.nonmanifold_vertices().len()),
+            Err(e) => format!("its surface touches or crosses itself ({e})"),
+        };
+        why.get_or_insert(reason);
+        if thickenable {
+            open.push(g);
+        } else {
+            parts.skipped += 1;
         }
     }
+    // A model of surfaces only is printed as walls. Next to solids, loose
+    // surfaces are left out: they would meet the solids only along edges.
+    let open_triangles: usize = open.iter().map(Vec::len).sum();
+    if parts.closed.is_empty() && wall > 0.0 && open_triangles <= MAX_THICKENED_TRIANGLES {
+        budget.charge_steps(open_triangles as u64 * 8)?;
+        let corners = open.iter().flatten().map(|t| t.map(|v| positions[v as usize]));
+        parts.closed.extend(corners.filter_map(|t| prism(&t, wall)));
+        parts.thickened = open.len() as u64;
+        parts.min_extent = wall;
+    } else {
+        parts.skipped += open.len() as u64;
+    }
+    let total = parts.skipped + parts.thickened + parts.closed.len() as u64;
     if parts.closed.is_empty() {
-        return Err(PrintError::NothingPrintable(format!("none of the model's {} parts is a closed solid", parts.skipped)));
+        let why = why.unwrap_or_else(|| "it has no triangles".into());
+        let size = if open_triangles > MAX_THICKENED_TRIANGLES {
+            format!("; its {open_triangles} triangles are too many to thicken into walls (at most {MAX_THICKENED_TRIANGLES})")
+        } else {
+            String::new()
+        };
+        return Err(PrintError::NothingPrintable(format!("none of the model's {total} parts is a closed solid: the first is not because {why}{size}")));
     }
     Ok(parts)
+}
+
+/// The closed prism `wall` thick whose middle is the triangle `t`, wound
+/// outward; `None` for a triangle with no area (it has no normal).
+fn prism(t: &[DVec3; 3], wall: f64) -> Option<HalfEdgeMesh> {
+    let n = (t[1] - t[0]).cross(t[2] - t[0]).try_normalize()?;
+    let h = n * (wall / 2.0);
+    // 0..3 the top (+n side, wound like t), 3..6 the bottom.
+    let positions: Vec<DVec3> = t.iter().map(|p| *p + h).chain(t.iter().map(|p| *p - h)).collect();
+    let mut tris = vec![[0, 1, 2], [3, 5, 4]];
+    for i in 0..3u32 {
+        let j = (i + 1) % 3;
+        tris.push([i, i + 3, j + 3]);
+        tris.push([i, j + 3, j]);
+    }
+    HalfEdgeMesh::new(positions, tris).ok().filter(|m| m.is_closed() && m.signed_volume() > 0.0)
 }
 
 /// The union of closed parts, pairwise in a balanced tree (so no

@@ -188,3 +188,34 @@ fn print_output_does_not_depend_on_earlier_unions_in_the_process() {
     let third = render(&source, &req).expect("print grass a third time").bytes;
     assert!(first == second && second == third, "grass printed differently within one process");
 }
+
+/// A model of surfaces only is printed as walls: at phase 1 the twenty
+/// triangles of the icosahedron transformations meet only at their corners
+/// (an icosidodecahedron missing its pentagons), so each becomes a prism of
+/// its own, 0.8 mm thick at 40 mm, and the prisms fuse at the corners into
+/// one shell; a surface that touches itself is refused with the reason.
+#[test]
+fn surface_only_models_print_as_walls() {
+    let g = repo().join("grammars/icosahedron-transformations.mdg");
+    let out = run(&["render", g.to_str().expect("utf-8"), "--print", "--print-report", "--size-mm", "40", "--param", "phase=1", "-o", "-"], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert!(report["thickened_parts"].as_u64() >= Some(1), "{report}");
+    assert_eq!(report["parts"], 20, "{report}");
+    assert_eq!(report["shells"], 1, "{report}");
+    assert_eq!(report["skipped_parts"], 0, "{report}");
+    assert_eq!(report["is_watertight"], true, "{report}");
+    let wall = report["wall_mm"].as_f64().expect("wall_mm");
+    assert!((wall - 0.8).abs() < 1e-9, "{report}");
+    assert!(report["warnings"].to_string().contains("thickened into walls"), "{report}");
+    // The same surfaces next to a solid are left out, not thickened.
+    let src = "rule R { BOX {} VERTEX { x 3 } VERTEX { x 4 } VERTEX { x 3 y 1 } }";
+    let out = run(&["render", "-", "--language", "mdg", "--print", "--print-report", "-o", "-"], Some(src.as_bytes()));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert_eq!((report["parts"].as_u64(), report["skipped_parts"].as_u64(), report["thickened_parts"].as_u64()), (Some(1), Some(1), Some(0)), "{report}");
+    // The Koch curve's tube meets itself: nothing printable, and why.
+    let k = repo().join("grammars/koch.ls");
+    let out = run(&["render", k.to_str().expect("utf-8"), "--print", "-o", "-"], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("touches or crosses itself"), "{}", String::from_utf8_lossy(&out.stderr));
+}
