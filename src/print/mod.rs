@@ -35,7 +35,7 @@ pub const MIN_FEATURE_MM: f64 = 0.8;
 
 /// The thickest wall an open surface is given, as a fraction of the model's
 /// longest side.
-pub const MAX_WALL_FRACTION: f64 = 0.02;
+pub const MAX_WALL_FRACTION: f64 = 0.05;
 
 /// Why no printable solid could be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -66,13 +66,21 @@ pub fn size_um(size_mm: f64) -> Result<u32, PrintError> {
 /// measures it. The result is one mesh named "print" with flat normals.
 pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
     // Open surfaces become walls of the thinnest printable thickness at the
-    // printed size, but at most 2 % of the model (a 1-unit-is-1-mm model
+    // printed size, but at most 5 % of the model (a 1-unit-is-1-mm model
     // would otherwise turn into a blob of 0.8 mm walls).
     let (lo, hi) = bounds_f32(meshes);
     let extent = (hi - lo).max_element();
+    // The walls themselves add up to their thickness w to the longest side,
+    // so the final scale is at least size / (extent + w): w = 0.8 · (extent + w)
+    // / size keeps them at 0.8 mm or more once scaled.
     let wall = if extent > 0.0 && extent.is_finite() {
-        let scale = if options.size_um > 0 { f64::from(options.size_um) / 1000.0 / extent } else { 1.0 };
-        (MIN_FEATURE_MM / scale).min(MAX_WALL_FRACTION * extent)
+        let size = f64::from(options.size_um) / 1000.0;
+        let w = match options.size_um {
+            0 => MIN_FEATURE_MM,
+            _ if size > MIN_FEATURE_MM => MIN_FEATURE_MM * extent / (size - MIN_FEATURE_MM),
+            _ => f64::INFINITY,
+        };
+        w.min(MAX_WALL_FRACTION * extent)
     } else {
         0.0
     };
