@@ -64,8 +64,15 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
             other => other,
         })?;
         for w in &script.warnings {
-            if !warnings.contains(w) {
-                warnings.push(w.clone());
+            // The position is in the EisenScript the JavaScript built, not in
+            // the JavaScript file the caller names: say so, and point at line 1.
+            let w = Diagnostic {
+                severity: w.severity,
+                span: Span::new(1, 1),
+                message: format!("in the EisenScript the script builds, at {}:{}: {}", w.span.line, w.span.column, w.message),
+            };
+            if !warnings.contains(&w) {
+                warnings.push(w);
             }
         }
         let built = build::build(&script, &opts(radius), &mut budget)?;
