@@ -68,7 +68,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     // Open surfaces become walls of the thinnest printable thickness at the
     // printed size, but at most 5 % of the model (a 1-unit-is-1-mm model
     // would otherwise turn into a blob of 0.8 mm walls).
-    let (lo, hi) = bounds_f32(meshes);
+    let (lo, hi) = bounds(meshes.iter().flat_map(|m| m.mesh.positions.iter()).map(|p| glam::Vec3::from_array(*p).as_dvec3()));
     let extent = (hi - lo).max_element();
     // The walls themselves add up to their thickness w to the longest side,
     // so the final scale is at least size / (extent + w): w = 0.8 · (extent + w)
@@ -86,7 +86,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     };
     let parts = union::split_parts(meshes, wall, budget)?;
     let (positions, indices) = union::unite(&parts.closed, budget)?;
-    let (lo, hi) = bounds(&positions);
+    let (lo, hi) = bounds(positions.iter().copied());
     let longest = (hi - lo).max_element();
     let scale = if options.size_um > 0 && longest > 0.0 { f64::from(options.size_um) / 1000.0 / longest } else { 1.0 };
     // Rest the solid on z = 0, centred in x and y: how a slicer places it anyway.
@@ -155,14 +155,9 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
     (welded, out)
 }
 
-/// The bounding box of every vertex of `meshes`.
-fn bounds_f32(meshes: &[NamedMesh]) -> (glam::DVec3, glam::DVec3) {
-    let all = meshes.iter().flat_map(|m| m.mesh.positions.iter()).map(|p| glam::Vec3::from_array(*p).as_dvec3());
-    all.fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(q), hi.max(q)))
-}
-
-fn bounds(p: &[glam::DVec3]) -> (glam::DVec3, glam::DVec3) {
-    p.iter().fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(*q), hi.max(*q)))
+/// The bounding box (min and max corners) of `points`.
+fn bounds(points: impl IntoIterator<Item = glam::DVec3>) -> (glam::DVec3, glam::DVec3) {
+    points.into_iter().fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), q| (lo.min(q), hi.max(q)))
 }
 
 /// A flat-shaded mesh: three vertices per triangle (positions copied bit for

@@ -111,7 +111,7 @@ pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
         volume += a.dot(b.cross(c)) / 6.0;
         area += (b - a).cross(c - a).length() / 2.0;
     }
-    let (lo, hi) = super::bounds(&p);
+    let (lo, hi) = super::bounds(p.iter().copied());
     let bbox = if p.is_empty() { [0.0; 3] } else { (hi - lo).to_array() };
     let (watertight, shells) = match HalfEdgeMesh::from_indexed(positions, indices) {
         Ok(m) => (m.is_closed() && m.nonmanifold_vertices().is_empty(), shell_count(&m)),

@@ -113,7 +113,7 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
         let reason = match HalfEdgeMesh::new(pos.clone(), tris) {
             Ok(m) if m.is_closed() && m.nonmanifold_vertices().is_empty() => {
                 let m = if m.signed_volume() < 0.0 { HalfEdgeMesh::new(pos, flipped).unwrap_or(m) } else { m };
-                let (lo, hi) = super::bounds(&m.positions);
+                let (lo, hi) = super::bounds(m.positions.iter().copied());
                 parts.min_extent = parts.min_extent.min((hi - lo).min_element());
                 parts.closed.push(m);
                 continue;
