@@ -131,6 +131,22 @@ struct Shared {
 }
 
 impl Shared {
+    /// A fresh Builder state: nothing loaded, no frames, `Math.random` under `seed`.
+    fn new(budget: Budget, loader: Loader, seed: u64) -> Shared {
+        Shared {
+            budget,
+            loader,
+            loaded: String::new(),
+            original: String::new(),
+            movie: Movie::default(),
+            limit: None,
+            load_error: None,
+            random: StreamKey::root(seed).child(MATH_RANDOM_SITE, 0),
+            draws: 0,
+            warned: Vec::new(),
+        }
+    }
+
     fn warn(&mut self, message: String) {
         if self.movie.warnings.len() < MAX_WARNINGS {
             self.movie.warnings.push(Diagnostic::warning(Span::new(1, 1), message));
@@ -283,31 +299,9 @@ pub fn run(source: &str, loader: Loader, seed: u64, truncate: bool, budget: &mut
     let remaining = budget.limits().max_memory.saturating_sub(budget.memory());
     let heap = remaining / 2;
     budget.reserve_memory(heap)?;
-    let shared = Rc::new(RefCell::new(Shared {
-        budget: std::mem::replace(budget, Budget::new(*budget.limits())),
-        loader,
-        loaded: String::new(),
-        original: String::new(),
-        movie: Movie::default(),
-        limit: None,
-        load_error: None,
-        random: StreamKey::root(seed).child(MATH_RANDOM_SITE, 0),
-        draws: 0,
-        warned: Vec::new(),
-    }));
+    let shared = Rc::new(RefCell::new(Shared::new(std::mem::replace(budget, Budget::new(*budget.limits())), loader, seed)));
     let result = run_in_sandbox(source, heap, &shared);
-    let Shared { budget: mut inner, mut movie, limit, load_error, .. } = shared.replace_with(|_| Shared {
-        budget: Budget::new(*budget.limits()),
-        loader: Loader::Library,
-        loaded: String::new(),
-        original: String::new(),
-        movie: Movie::default(),
-        limit: None,
-        load_error: None,
-        random: StreamKey::root(0),
-        draws: 0,
-        warned: Vec::new(),
-    });
+    let Shared { budget: mut inner, mut movie, limit, load_error, .. } = shared.replace_with(|_| Shared::new(Budget::new(*budget.limits()), Loader::Library, 0));
     inner.release_memory(heap);
     *budget = inner;
     let failure = match (limit, load_error, result) {
