@@ -107,10 +107,10 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
             })
             .collect();
         let flipped: Vec<[u32; 3]> = tris.iter().map(|t| [t[0], t[2], t[1]]).collect();
-        // Only open surfaces can become walls; a surface that touches itself
-        // (the Koch curve's tube) would become a hollow shell of itself.
-        let mut thickenable = false;
-        let reason = match HalfEdgeMesh::new(pos.clone(), tris) {
+        // Why it is not a solid, and whether it can become a wall: only open
+        // surfaces can; one that touches itself (the Koch curve's tube)
+        // would become a hollow shell of itself.
+        let (reason, thickenable) = match HalfEdgeMesh::new(pos.clone(), tris) {
             Ok(m) if m.is_closed() && m.nonmanifold_vertices().is_empty() => {
                 let m = if m.signed_volume() < 0.0 { HalfEdgeMesh::new(pos, flipped).unwrap_or(m) } else { m };
                 let (lo, hi) = super::bounds(m.positions.iter().copied());
@@ -118,12 +118,9 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
                 parts.closed.push(m);
                 continue;
             }
-            Ok(m) if !m.is_closed() => {
-                thickenable = true;
-                format!("it is an open surface ({} boundary edges)", m.boundary_edges().len())
-            }
-            Ok(m) => format!("its surface is pinched at {} vertices", m.nonmanifold_vertices().len()),
-            Err(e) => format!("its surface touches or crosses itself ({e})"),
+            Ok(m) if !m.is_closed() => (format!("it is an open surface ({} boundary edges)", m.boundary_edges().len()), true),
+            Ok(m) => (format!("its surface is pinched at {} vertices", m.nonmanifold_vertices().len()), false),
+            Err(e) => (format!("its surface touches or crosses itself ({e})"), false),
         };
         why.get_or_insert(reason);
         if thickenable {
