@@ -14,6 +14,7 @@ mod determinism;
 mod docs;
 mod eisen;
 mod gallery;
+mod golden;
 mod grammars;
 mod hostile;
 mod instancing;

@@ -1,0 +1,2 @@
+#define n 1
+n * { x 2 } box
