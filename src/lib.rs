@@ -1,19 +1,23 @@
 //! rulemesh: shape grammars to 3D models.
 //!
-//! Data flows one way: source → [`lang`] (IR) → [`eval`] ([`eval::Scene`]) →
-//! [`geom`] (meshes) → [`export`] (bytes). [`render`] runs the whole pipeline
-//! under one [`eval::Budget`].
+//! Data flows one way: source → a front end ([`eval`] for MDG, stacking
+//! strings and UniGrafix, [`lsystem`] for L-systems and ETOL, [`eisen`] for
+//! EisenScript) → one [`model::Model`] → the stages ([`print`], [`mesh`]) →
+//! [`export`] → bytes. [`render`] ([`pipeline`]) is the only orchestrator and
+//! runs it all under one [`core::Budget`]. `ARCHITECTURE.md` has the code map.
 
 #![warn(missing_docs)]
 
 pub mod cache;
-pub mod export;
-pub mod eval;
-pub mod geom;
-pub mod grammars;
+pub mod core;
 pub mod eisen;
+pub mod eval;
+pub mod export;
+pub mod geom;
 pub mod lang;
 pub mod lsystem;
+pub mod mesh;
+pub mod model;
 pub mod pipeline;
 pub mod print;
 pub mod service;

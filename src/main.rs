@@ -3,10 +3,12 @@
 //! Exit codes: 0 ok, 2 parse or usage error, 3 limit exceeded, 1 any other failure.
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use rulemesh::eval::{Limits, OnLimit, ParamValue};
+use rulemesh::core::{Limits, OnLimit, ParamValue};
 use rulemesh::export::{Compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};
-use rulemesh::geom::{MeshLayout, DEFAULT_DETAIL};
-use rulemesh::lang::{Diagnostic, Language};
+use rulemesh::geom::DEFAULT_DETAIL;
+use rulemesh::mesh::MeshLayout;
+use rulemesh::lang::Language;
+use rulemesh::core::Diagnostic;
 use rulemesh::{render, RenderError, RenderRequest};
 use std::collections::BTreeMap;
 use std::io::{Read, Write};
@@ -325,6 +327,9 @@ fn render_failure(file: &str, e: RenderError) -> Failure {
         // those that point into the source read like parse errors (`file:line:col: …`).
         RenderError::Eval(ev) if ev.span().is_some() => Failure::new(EXIT_USAGE, format!("{file}:{ev}")),
         RenderError::Eval(ev) => Failure::new(EXIT_USAGE, format!("{file}: {ev}")),
+        // Nothing printable: the model's fault, as a usage error (the message says why).
+        e @ RenderError::Unprintable(_) => Failure::new(EXIT_USAGE, format!("{file}: {e}")),
+        e @ RenderError::TooLarge { .. } => Failure::new(EXIT_LIMIT, format!("{file}: {e}")),
         RenderError::Export(x) => Failure::new(EXIT_FAILURE, format!("{file}: {x}")),
     }
 }
@@ -359,7 +364,7 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
     let triangles = mesh.triangle_count();
     let meshes = [rulemesh::geom::NamedMesh { name: "model".into(), mesh }];
     let limits = Limits::ceiling();
-    let out = rulemesh::export::export(format, &meshes, &Default::default(), &mut rulemesh::eval::Budget::new(limits))
+    let out = rulemesh::export::export(format, &meshes, &Default::default(), &mut rulemesh::core::Budget::new(limits))
         .map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
     write_output(&args.output, &out)?;
     eprintln!("{}: {} triangles, {} bytes ({:?})", args.file, triangles, out.len(), format);

@@ -1,21 +1,45 @@
-//! The whole render pipeline for one request: parse, bind, evaluate, mesh, export.
+//! The one orchestrator: a request goes source → front end → [`Model`] →
+//! stages (print, meshing) → export → bytes, under one [`Budget`] made here.
 //!
 //! This is the one entry point the CLI and the service share, so the same
-//! request gives the same bytes whichever front door it came through.
+//! request gives the same bytes whichever front door it came through. Front
+//! ends ([`eval`](crate::eval), [`lsystem`](crate::lsystem),
+//! [`eisen`](crate::eisen)) only make models; they never call back here.
+//!
+//! Deadlines: under `on_limit: error` every stage fails with the deadline
+//! once it has passed. Under `truncate` the stages get shares of it — the
+//! front end stops at [`EVAL_SHARE`], meshing at [`MESH_SHARE`] — so that
+//! what is cut short is still meshed and written before the deadline.
 
-use crate::eval::{self, bind_params, Budget, EvalError, EvalOptions, LimitExceeded, Limits, OnLimit, ParamValue};
-use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format};
-use crate::geom::{self, MeshLayout};
-use crate::lang::{self, Diagnostic, Language, ParseError};
+use crate::core::budget::{Budget, LimitExceeded, Limits, OnLimit};
+use crate::core::timing::{Phase, StageClock};
+use crate::core::{Diagnostic, ParamValue, ParseError};
+use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instancing};
+use crate::geom;
+use crate::lang::{self, Language};
+use crate::mesh::{self, MeshLayout};
+use crate::model::{BuildError, BuildRequest, Downstream, EvalError, HierarchyUse, Model};
+use crate::print::PrintError;
 use std::collections::BTreeMap;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+pub use crate::core::timing::PhaseTimes;
+
+/// Under `on_limit: truncate`, the share of the deadline the front end may
+/// use: what it made by then is kept.
+pub const EVAL_SHARE: f64 = 0.5;
+
+/// Under `on_limit: truncate`, the share of the deadline by which meshing
+/// stops (keeping the meshes made), leaving the rest for export.
+pub const MESH_SHARE: f64 = 0.85;
 
 /// Everything that determines a render besides the source text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RenderRequest {
     /// The language; detected from the source when `None`.
     pub language: Option<Language>,
-    /// The seed; the grammar's `randseed`, else 0, when `None`.
+    /// The seed; when `None`, the language's own seed directive (MDG
+    /// `randseed`, L-system `seed:`, EisenScript `set seed`), else 0.
     pub seed: Option<u64>,
     /// Values for the grammar's `@param`s.
     pub params: BTreeMap<String, ParamValue>,
@@ -30,7 +54,7 @@ pub struct RenderRequest {
     /// One merged mesh or one per primitive kind.
     pub layout: MeshLayout,
     /// Encoding options of the output format (e.g. strips precision); they
-    /// reach the exporter only.
+    /// reach the stages after the model only.
     pub export_options: ExportOptions,
     /// The directory a Structure Synth JavaScript script's `Builder.load`
     /// reads from (the CLI passes the script's folder). `None` — the service —
@@ -76,23 +100,11 @@ pub struct RenderOutput {
     pub phases: PhaseTimes,
 }
 
-/// How long each pipeline stage took.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct PhaseTimes {
-    /// Parsing and parameter binding.
-    pub parse: Duration,
-    /// Evaluation (rule expansion) into a scene.
-    pub eval: Duration,
-    /// Tessellation and merging into meshes.
-    pub mesh: Duration,
-    /// Encoding the output bytes.
-    pub export: Duration,
-}
-
 /// Why a render failed.
 #[derive(Debug, thiserror::Error)]
 pub enum RenderError {
-    /// The request itself is malformed (bad detail, undetectable language).
+    /// The request itself is malformed (bad detail, undetectable language,
+    /// a format the language cannot make).
     #[error("{0}")]
     BadRequest(String),
     /// The source does not parse.
@@ -104,7 +116,19 @@ pub enum RenderError {
     /// Evaluation failed for a reason in the source or parameters.
     #[error(transparent)]
     Eval(EvalError),
-    /// Writing the output failed.
+    /// `print=true` was asked of a model that cannot be printed as asked
+    /// (nothing closed to print, a size out of range): the request's fault.
+    #[error("print: {0}")]
+    Unprintable(PrintError),
+    /// The model is larger than the output format can hold (glTF's 4 GiB buffers).
+    #[error("model too large for {format}: {detail}")]
+    TooLarge {
+        /// The format's name.
+        format: &'static str,
+        /// What overflowed.
+        detail: String,
+    },
+    /// Writing the output failed inside the server.
     #[error(transparent)]
     Export(ExportError),
 }
@@ -114,6 +138,15 @@ impl From<EvalError> for RenderError {
         match e {
             EvalError::Limit(l) => RenderError::Limit(l),
             other => RenderError::Eval(other),
+        }
+    }
+}
+
+impl From<BuildError> for RenderError {
+    fn from(e: BuildError) -> Self {
+        match e {
+            BuildError::Parse(p) => RenderError::Parse(p),
+            BuildError::Eval(e) => e.into(),
         }
     }
 }
@@ -128,232 +161,211 @@ impl From<ExportError> for RenderError {
     fn from(e: ExportError) -> Self {
         match e {
             ExportError::Limit(l) => RenderError::Limit(l),
+            ExportError::TooLarge { format, detail } => RenderError::TooLarge { format, detail },
+            ExportError::Print(p) => p.into(),
             other => RenderError::Export(other),
         }
     }
 }
 
-/// Parses `source` as `language` (or the detected one), enforcing the source-size limit.
+impl From<PrintError> for RenderError {
+    fn from(e: PrintError) -> Self {
+        match e {
+            PrintError::Limit(l) => RenderError::Limit(l),
+            // The model has nothing closed to print, or the size is off: the request's fault.
+            e @ (PrintError::NothingPrintable(_) | PrintError::BadSize(_)) => RenderError::Unprintable(e),
+            other => RenderError::Export(ExportError::Print(other)),
+        }
+    }
+}
+
+/// The language of `source`: the one named, else the detected one.
+fn language_of(source: &[u8], language: Option<Language>) -> Result<Language, RenderError> {
+    language
+        .or_else(|| Language::detect(source))
+        .ok_or_else(|| RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into()))
+}
+
+/// Parses `source` as `language` (or the detected one) into the rule IR,
+/// enforcing the source-size limit (the service's library listing).
 pub fn parse_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, lang::ir::Program), RenderError> {
     Budget::check_source(limits, source.len() as u64)?;
-    let language = match language.or_else(|| Language::detect(source)) {
-        Some(l) => l,
-        None => return Err(RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into())),
-    };
+    let language = language_of(source, language)?;
     Ok((language, lang::parse(language, source)?))
 }
 
 /// Parses `source` only to report its diagnostics: the language read and its warnings.
 pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<Diagnostic>), RenderError> {
     Budget::check_source(limits, source.len() as u64)?;
-    let language = match language.or_else(|| Language::detect(source)) {
-        Some(l) => l,
-        None => return Err(RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into())),
-    };
+    let language = language_of(source, language)?;
     Ok((language, lang::check(language, source)?))
 }
 
-/// Rejects a tessellation detail outside `MIN_DETAIL..=MAX_DETAIL`.
-pub(crate) fn check_detail(req: &RenderRequest) -> Result<(), RenderError> {
+/// Rejects a request whose options are out of range before any work.
+fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
-        return Err(RenderError::BadRequest(format!(
-            "detail must be in {}..={}, got {}",
-            geom::MIN_DETAIL,
-            geom::MAX_DETAIL,
-            req.detail
-        )));
+        return Err(RenderError::BadRequest(format!("detail must be in {}..={}, got {}", geom::MIN_DETAIL, geom::MAX_DETAIL, req.detail)));
+    }
+    if req.format == Format::Strips {
+        req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
     }
     Ok(())
 }
 
-/// Times the pipeline's stages: each `lap` records the time since the last one.
-pub(crate) struct Stages {
-    /// The times recorded so far.
-    pub phases: PhaseTimes,
-    mark: Instant,
-}
-
-impl Stages {
-    /// Starts timing now.
-    pub(crate) fn start() -> Stages {
-        Stages { phases: PhaseTimes::default(), mark: Instant::now() }
-    }
-
-    /// Records the time since the last lap into the slot `which` picks.
-    pub(crate) fn lap(&mut self, which: fn(&mut PhaseTimes) -> &mut Duration) {
-        *which(&mut self.phases) = self.mark.elapsed();
-        self.mark = Instant::now();
-    }
-}
-
-/// The stages every language shares after evaluation: meshing, export and
-/// the summary. `primitives` is what the language counts as its primitives.
-pub(crate) fn mesh_and_export(
-    scene: eval::Scene,
-    req: &RenderRequest,
-    language: Language,
-    primitives: u64,
-    warnings: Vec<Diagnostic>,
-    mut budget: Budget,
-    mut stages: Stages,
-) -> Result<RenderOutput, RenderError> {
-    let print = req.export_options.print;
-    let (meshes, graph) = if print.enabled {
-        // Printing unites closed parts, so it needs them apart (and shows time 0).
-        let parts = geom::meshing::build_parts(&scene, req.detail, &mut budget)?;
-        let (solid, report) = crate::print::make_printable(&parts, &print, &mut budget).map_err(|e| match e {
-            crate::print::PrintError::Limit(l) => RenderError::Limit(l),
-            // The model has nothing closed to print: the request's fault, not the server's.
-            e @ (crate::print::PrintError::NothingPrintable(_) | crate::print::PrintError::BadSize(_)) => RenderError::BadRequest(format!("print: {e}")),
-            other => RenderError::Export(ExportError::Print(other)),
-        })?;
-        if print.report {
-            let bytes = serde_json::to_vec_pretty(&report).map_err(|e| RenderError::Export(e.into()))?;
-            return Ok(RenderOutput { bytes, language, primitives, triangles: report.triangles, truncated: scene.truncated, warnings, elapsed: budget.elapsed(), phases: stages.phases });
-        }
-        (solid, None)
-    } else if carries_graph(&scene, req) {
-        let (meshes, graph) = mesh_with_graph(&scene, req, &mut budget)?;
-        (meshes, Some(graph))
-    } else {
-        (geom::build_meshes(&scene, req.detail, req.layout, &mut budget)?, None)
-    };
-    stages.lap(|p| &mut p.mesh);
-    let meta = ExportMeta {
-        background: scene.background,
-        truncated: scene.truncated.is_some(),
-        graph,
-        material_per_mesh: !scene.classes.is_empty(),
-        camera: scene.view,
-    };
-    let bytes = export::export_with(req.format, &meshes, &meta, &req.export_options, &mut budget)?;
-    stages.lap(|p| &mut p.export);
-    let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
-    Ok(RenderOutput {
-        bytes,
-        language,
-        primitives,
-        triangles,
-        truncated: scene.truncated,
-        warnings,
-        elapsed: budget.elapsed(),
-        phases: stages.phases,
-    })
-}
-
-/// True when the scene has bones or a camera and the request's format can
-/// carry a node hierarchy: plain glTF (the quantised and compressed writers,
-/// STL, strips and unit-box fitting show the model at time 0 instead).
-fn carries_graph(scene: &eval::Scene, req: &RenderRequest) -> bool {
-    (scene.rig.is_some() || scene.camera.is_some()) && graph_capable(req)
-}
-
 /// True when the request's output carries a node hierarchy with animation
 /// (plain glTF, not printed); everything else shows time 0.
-pub(crate) fn graph_capable(req: &RenderRequest) -> bool {
+fn graph_capable(req: &RenderRequest) -> bool {
     matches!(req.format, Format::Glb | Format::Gltf) && req.export_options.gltf.is_plain() && !req.export_options.fit_unit_box && !req.export_options.print.enabled
 }
 
-/// Meshes each bone's geometry in the bone's own coordinates and builds the
-/// node graph (bones, animation samples, camera) that places them.
-fn mesh_with_graph(
-    scene: &eval::Scene,
-    req: &RenderRequest,
-    budget: &mut Budget,
-) -> Result<(Vec<geom::NamedMesh>, export::graph::NodeGraph), RenderError> {
-    let mut meshes = Vec::new();
-    let mut bones = Vec::new();
-    match &scene.rig {
-        Some(rig) => {
-            for (bone, part) in rig.split(scene, budget)? {
-                for m in geom::build_meshes(&part, req.detail, req.layout, budget)? {
-                    bones.push(bone);
-                    meshes.push(m);
-                }
-            }
-        }
-        None => {
-            meshes = geom::build_meshes(scene, req.detail, req.layout, budget)?;
-            bones = vec![0; meshes.len()];
-        }
+/// Whether the request's output can use an instancing hierarchy.
+fn hierarchy_use(req: &RenderRequest) -> HierarchyUse {
+    match req.format {
+        Format::Scene => HierarchyUse::Required,
+        // Printing unites the expanded parts into one solid, so it never instances.
+        Format::Glb | Format::Gltf if !req.export_options.print.enabled => HierarchyUse::Preferred,
+        _ => HierarchyUse::Never,
     }
-    let graph = export::graph::NodeGraph::new(scene.rig.as_ref(), scene.camera.as_ref(), &bones, budget)?;
-    Ok((meshes, graph))
 }
 
-/// Renders an ETOL token stream (seed 003 appendix A) through the L-system
-/// front end; diagnostics point back into the token stream.
-fn render_etol(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
-    Budget::check_source(&req.limits, source.len() as u64)?;
-    let t = lang::etol::translate(source)?;
-    let as_lsystem = RenderRequest { language: Some(Language::Lsystem), ..req.clone() };
-    match crate::lsystem::render(t.source.as_bytes(), &as_lsystem) {
-        Ok(mut out) => {
-            out.language = Language::Etol;
-            t.map_warnings(&mut out.warnings);
-            Ok(out)
+/// Bytes the mesh buffers and the encoded output need per vertex and per
+/// triangle (both are linear in the counts beyond a fixed `overhead`).
+fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
+    let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
+    Downstream {
+        per_vertex: geom::mesh::mesh_bytes(1, 0).saturating_add(est(1, 0)),
+        per_triangle: geom::mesh::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+    }
+}
+
+/// Calls the front end of `language`.
+fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    match language {
+        Language::Mdg | Language::Stack | Language::Ug => crate::eval::build_model(language, source, req, budget, clock),
+        Language::Lsystem => crate::lsystem::build_model(source, req, budget, clock),
+        Language::Etol => crate::lsystem::build_etol_model(source, req, budget, clock),
+        Language::Eisenscript => crate::eisen::build_model(source, req, budget, clock),
+    }
+}
+
+/// Under `truncate`, records `e` as the reason the model is partial; under `error`, fails with it.
+fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, model: &mut Model) -> Result<(), RenderError> {
+    match on_limit {
+        OnLimit::Error => Err(RenderError::Limit(e)),
+        OnLimit::Truncate => {
+            model.truncate(e);
+            Ok(())
         }
-        Err(RenderError::Parse(e)) => Err(RenderError::Parse(t.map_error(e))),
-        Err(e) => Err(e),
     }
 }
 
 /// Renders `source` as the request says. Never panics on bad input; every
 /// failure is a typed [`RenderError`].
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
-    check_detail(req)?;
-    if req.format == Format::Strips {
-        req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
-    }
-    match req.language.or_else(|| Language::detect(source)) {
-        Some(Language::Lsystem) => return crate::lsystem::render(source, req),
-        Some(Language::Etol) => return render_etol(source, req),
-        Some(Language::Eisenscript) => return crate::eisen::render(source, req),
-        _ => {}
-    }
-    if req.format == Format::Scene {
+    check_request(req)?;
+    Budget::check_source(&req.limits, source.len() as u64)?;
+    let language = language_of(source, req.language)?;
+    if req.format == Format::Scene && !matches!(language, Language::Lsystem | Language::Etol) {
         return Err(RenderError::BadRequest("format `scene` writes object-instancing hierarchies, which only L-systems make".into()));
     }
+    let truncating = req.on_limit == OnLimit::Truncate;
     let mut budget = Budget::new(req.limits);
-    let mut stages = Stages::start();
-    let (language, program) = parse_source(source, req.language, &req.limits)?;
-    let params = bind_params(&program, &req.params)?;
-    stages.lap(|p| &mut p.parse);
+    let mut clock = StageClock::start();
     // Promise the memory that meshing and export will need while evaluating,
     // so the memory limit binds (or truncates) as primitives are made.
     let overhead = export::estimated_size(req.format, 0, 0);
     budget.reserve_memory(overhead)?;
-    let options = EvalOptions {
+    let build = BuildRequest {
         seed: req.seed,
+        params: &req.params,
         detail: req.detail,
         on_limit: req.on_limit,
         downstream: downstream(req, overhead),
+        hierarchy: hierarchy_use(req),
+        animated: graph_capable(req),
+        script_dir: req.script_dir.as_deref(),
     };
-    let mut scene = eval::evaluate(&program, &params, &options, &mut budget)?;
-    stages.lap(|p| &mut p.eval);
-    budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut scene))?;
-    budget.release_memory(eval::promised_bytes(&scene, &options).saturating_add(overhead));
-    let primitives = scene.instances.len() as u64;
-    mesh_and_export(scene, req, language, primitives, program.warnings, budget, stages)
+    budget.set_stage_share(truncating.then_some(EVAL_SHARE));
+    let mut model = build_model(language, source, &build, &mut budget, &mut clock)?;
+    clock.lap(Phase::Eval);
+    budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut model))?;
+    budget.release_memory(model.promised.saturating_add(overhead));
+    budget.set_stage_share(truncating.then_some(MESH_SHARE));
+    let out = stages(model, req, &mut budget, &mut clock);
+    budget.set_stage_share(None);
+    let out = out?;
+    // Writing is not interruptible: under `error` a model finished after the
+    // deadline still fails with it (under `truncate` it is whole, and kept).
+    if req.on_limit == OnLimit::Error {
+        budget.check_deadline()?;
+    }
+    Ok(RenderOutput { elapsed: budget.elapsed(), phases: clock.phases, ..out })
 }
 
-/// Under `truncate`, records `e` as the reason the scene is partial; under `error`, fails with it.
-pub(crate) fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, scene: &mut eval::Scene) -> Result<(), RenderError> {
-    match on_limit {
-        OnLimit::Error => Err(RenderError::Limit(e)),
-        OnLimit::Truncate => {
-            scene.truncated.get_or_insert(e);
-            Ok(())
+/// The stages every model goes through after its front end: the hierarchy
+/// written as it is or expanded, then printing or meshing, then export.
+fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+    let opts = &req.export_options;
+    if let Some(h) = model.hierarchy.take() {
+        let gpu = opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled;
+        let bytes = match req.format {
+            Format::Scene => Some(export::scene::write_scene(&h, budget)?),
+            Format::Glb | Format::Gltf if gpu => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, budget)?),
+            _ => None,
+        };
+        match bytes {
+            Some(bytes) => {
+                clock.lap(Phase::Export);
+                return Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated));
+            }
+            None => model.scene = h.expand(req.detail, budget)?,
         }
     }
+    let scene = &model.scene;
+    let print = opts.print;
+    let (meshes, graph, cut) = if print.enabled {
+        // Printing unites closed parts, so it needs them apart (and shows time 0).
+        let parts = mesh::build_parts(scene, req.detail, budget)?;
+        let (solid, report) = crate::print::make_printable(&parts, &print, budget)?;
+        if print.report {
+            let bytes = serde_json::to_vec_pretty(&report).map_err(|e| RenderError::Export(e.into()))?;
+            clock.lap(Phase::Mesh);
+            return Ok(summary(bytes, &model, report.triangles, scene.truncated));
+        }
+        (solid, None, None)
+    } else if (scene.rig.is_some() || scene.camera.is_some()) && graph_capable(req) {
+        let (meshes, graph) = mesh::build_with_graph(scene, req.detail, req.layout, budget)?;
+        (meshes, Some(graph), None)
+    } else {
+        let (meshes, cut) = mesh::build_meshes_until(scene, req.detail, req.layout, req.on_limit, budget)?;
+        (meshes, None, cut)
+    };
+    clock.lap(Phase::Mesh);
+    let truncated = scene.truncated.or(cut);
+    budget.set_stage_share(None);
+    let meta = ExportMeta {
+        background: scene.background,
+        truncated: truncated.is_some(),
+        graph,
+        material_per_mesh: !scene.classes.is_empty(),
+        camera: scene.view,
+    };
+    let bytes = export::export_with(req.format, &meshes, &meta, opts, budget)?;
+    clock.lap(Phase::Export);
+    let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+    Ok(summary(bytes, &model, triangles, truncated))
 }
 
-/// Bytes the mesh buffers and the encoded output need per vertex and per
-/// triangle (both are linear in the counts beyond a fixed overhead).
-pub(crate) fn downstream(req: &RenderRequest, overhead: u64) -> eval::Downstream {
-    let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
-    eval::Downstream {
-        per_vertex: crate::geom::meshing::mesh_bytes(1, 0).saturating_add(est(1, 0)),
-        per_triangle: crate::geom::meshing::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+/// The output of a render whose bytes are written (times are filled in by [`render`]).
+fn summary(bytes: Vec<u8>, model: &Model, triangles: u64, truncated: Option<LimitExceeded>) -> RenderOutput {
+    RenderOutput {
+        bytes,
+        language: model.language,
+        primitives: model.primitives,
+        triangles,
+        truncated,
+        warnings: model.warnings.clone(),
+        elapsed: Duration::ZERO,
+        phases: PhaseTimes::default(),
     }
 }

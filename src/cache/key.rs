@@ -1,9 +1,9 @@
 //! Cache keys: BLAKE3 of a canonical, length-prefixed encoding of everything
 //! that determines a model's bytes.
 
-use crate::eval::{Limits, ParamValue};
+use crate::core::{Limits, ParamValue};
 use crate::export::Format;
-use crate::geom::MeshLayout;
+use crate::mesh::MeshLayout;
 use crate::lang::Language;
 use crate::RenderRequest;
 use std::borrow::Cow;
@@ -133,7 +133,7 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
     e.u64("detail", req.detail.into());
     e.field("layout", layout_name(req.layout).as_bytes());
     encode_limits(&mut e, &req.limits);
-    e.field("on_limit", if req.on_limit == crate::eval::OnLimit::Truncate { b"truncate" } else { b"error" });
+    e.field("on_limit", if req.on_limit == crate::core::OnLimit::Truncate { b"truncate" } else { b"error" });
     CacheKey(*e.0.finalize().as_bytes())
 }
 
@@ -158,7 +158,7 @@ mod tests {
             RenderRequest { format: Format::Stl, ..base.clone() },
             RenderRequest { detail: 17, ..base.clone() },
             RenderRequest { layout: MeshLayout::PerKind, ..base.clone() },
-            RenderRequest { on_limit: crate::eval::OnLimit::Truncate, ..base.clone() },
+            RenderRequest { on_limit: crate::core::OnLimit::Truncate, ..base.clone() },
             RenderRequest { limits: Limits { max_primitives: 5, ..Limits::default() }, ..base.clone() },
             RenderRequest { params: [("n".to_string(), ParamValue::Number(1.0))].into(), ..base.clone() },
         ];

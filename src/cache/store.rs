@@ -6,7 +6,7 @@
 use super::disk::DiskTier;
 use super::redis::RedisTier;
 use super::CacheKey;
-use crate::eval::LimitExceeded;
+use crate::core::LimitExceeded;
 use crate::lang::Language;
 use moka::future::Cache;
 use std::future::Future;

@@ -17,13 +17,13 @@
 //! numbers differ, the distributions and `set seed` reproducibility are the
 //! same.)
 
-use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
-use crate::eval::rng::StreamKey;
-use crate::eval::scene::{AffineInstance, FreeVertex, Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
-use crate::eval::EvalError;
-use crate::eval::scene::SceneCamera;
+use crate::core::budget::{Budget, LimitExceeded, OnLimit};
+use crate::core::rng::StreamKey;
+use crate::model::scene::{AffineInstance, FreeVertex, Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
+use crate::model::EvalError;
+use crate::model::scene::SceneCamera;
 use crate::lang::eisen::{colour, Action, CameraSetting, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
-use crate::lang::ir::PrimitiveKind;
+use crate::core::PrimitiveKind;
 use glam::{DMat3, DMat4, DVec3, Mat3};
 
 /// Structure Synth's default `maxdepth` (generations).

@@ -1,7 +1,7 @@
-//! EisenScript (Structure Synth) rendering: [`render`] is the pipeline for
+//! EisenScript (Structure Synth): [`build_model`] is the front end for
 //! `language: "eisenscript"`: source → [`Script`](crate::lang::eisen::Script)
-//! → [`build`] (Structure Synth's breadth-first builder) → Scene → meshes → bytes,
-//! under one [`Budget`].
+//! → [`build`] (Structure Synth's breadth-first builder) → [`Model`]; a
+//! `#javascript` script runs in the [`js`] sandbox and becomes a [`movie`].
 //!
 //! EisenScript has its own builder instead of lowering into the MDG rule IR;
 //! `crate::lang::eisen` explains why. Limits: every rule state applied and
@@ -13,15 +13,16 @@
 //! with the typed error naming it.
 
 pub mod build;
+pub mod js;
 pub mod movie;
 
-use crate::eval::{Budget, EvalError, ParamValue};
-use crate::export;
+use crate::core::budget::Budget;
+use crate::core::timing::{Phase, StageClock};
+use crate::core::{ParamValue, PrimitiveKind};
 use crate::geom::primitives;
 use crate::lang::eisen::{self as lang_es, ParseOptions, Script};
-use crate::lang::ir::PrimitiveKind;
 use crate::lang::Language;
-use crate::pipeline::{check_detail, downstream, mesh_and_export, truncate_or_fail, RenderError, RenderOutput, RenderRequest, Stages};
+use crate::model::{BuildError, BuildRequest, EvalError, Model};
 use std::collections::BTreeMap;
 
 pub use build::{build, BuildOptions, Built};
@@ -69,7 +70,7 @@ fn bind(script_params: &[lang_es::GuiParam], given: &BTreeMap<String, ParamValue
 }
 
 /// Parses `source` with the request's parameters bound to its GUI defines.
-pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u64) -> Result<(Script, f64), RenderError> {
+pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u64) -> Result<(Script, f64), BuildError> {
     // The defines are only known after a first parse; request values then
     // replace their defaults in a second one.
     let first = lang_es::parse(source, &ParseOptions { params: BTreeMap::new(), seed })?;
@@ -80,33 +81,29 @@ pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u
     Ok((lang_es::parse(source, &ParseOptions { params: values, seed })?, radius))
 }
 
-/// Renders EisenScript `source` as the request says (the request's language is taken to be EisenScript).
-pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
-    check_detail(req)?;
-    if lang_es::js::is_javascript(source) {
-        return movie::render(source, req);
+/// Builds the model of EisenScript `source` under `budget`; a `#javascript`
+/// script is run as a [`movie`].
+pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    if lang_es::is_javascript(source) {
+        return movie::build_model(source, req, budget, clock);
     }
-    let mut budget = Budget::new(req.limits);
-    let mut stages = Stages::start();
-    Budget::check_source(&req.limits, source.len() as u64)?;
-    let (script, line_radius) = parse_bound(source, &req.params, req.seed.unwrap_or(0))?;
-    stages.lap(|p| &mut p.parse);
-    let overhead = export::estimated_size(req.format, 0, 0);
-    budget.reserve_memory(overhead)?;
-    let opts = build_options(req, overhead, line_radius);
-    let mut built = build::build(&script, &opts, &mut budget)?;
-    stages.lap(|p| &mut p.eval);
-    if let Err(e) = budget.check_deadline() {
-        truncate_or_fail(req.on_limit, e, &mut built.scene)?;
-    }
-    budget.release_memory(built.promised.saturating_add(overhead));
-    mesh_and_export(built.scene, req, Language::Eisenscript, built.objects, script.warnings, budget, stages)
+    let (script, line_radius) = parse_bound(source, req.params, req.seed.unwrap_or(0))?;
+    clock.lap(Phase::Parse);
+    let built = build::build(&script, &build_options(req, line_radius), budget)?;
+    Ok(Model {
+        language: Language::Eisenscript,
+        scene: built.scene,
+        hierarchy: None,
+        primitives: built.objects,
+        warnings: script.warnings,
+        promised: built.promised,
+    })
 }
 
 /// The builder's options for `req`, with what meshing and export will need
-/// per primitive (beyond `overhead`, already reserved).
-pub(crate) fn build_options(req: &RenderRequest, overhead: u64, line_radius: f64) -> BuildOptions {
-    let cost = downstream(req, overhead);
+/// per primitive.
+pub(crate) fn build_options(req: &BuildRequest<'_>, line_radius: f64) -> BuildOptions {
+    let cost = req.downstream;
     BuildOptions {
         seed: req.seed.unwrap_or(0),
         detail: req.detail,

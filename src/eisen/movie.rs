@@ -1,7 +1,7 @@
-//! Structure Synth JavaScript scripts as movies: [`render`] runs the script
-//! ([`crate::lang::eisen::js`]), builds the EisenScript text of every frame
+//! Structure Synth JavaScript scripts as movies: [`build_model`] runs the script
+//! ([`crate::eisen::js`]), builds the EisenScript text of every frame
 //! it pictured under the one request [`Budget`] (so the limits bind the sum
-//! of all frames), and assembles one [`Scene`] whose frames play in turn.
+//! of all frames), and assembles one [`Model`] whose frames play in turn.
 //!
 //! Frame k is a node of its own whose scale track is 1 at sample k and 0 at
 //! every other sample, sampled at [`MOVIE_FPS`] with STEP interpolation, so
@@ -13,43 +13,40 @@
 
 use super::build::{self, Built};
 use super::{build_options, parse_bound};
-use crate::eval::animation::{Bone, Rig, Timeline, BONE_BYTES};
-use crate::eval::scene::{AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
-use crate::eval::{Budget, EvalError, Frame, OnLimit, Scene};
-use crate::export;
-use crate::lang::eisen::js::{self, Loader};
-use crate::lang::{Diagnostic, Language, ParseError, Span};
-use crate::pipeline::{graph_capable, mesh_and_export, truncate_or_fail, RenderError, RenderOutput, RenderRequest, Stages};
+use crate::core::budget::{Budget, OnLimit};
+use crate::core::timing::{Phase, StageClock};
+use crate::core::{Diagnostic, Frame, ParseError, Span};
+use crate::lang::Language;
+use crate::model::animation::{Bone, Rig, Timeline, BONE_BYTES};
+use crate::model::scene::{AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
+use crate::model::{BuildError, BuildRequest, EvalError, Model, Scene};
+use js::Loader;
+use super::js;
 
 /// Frames per second of a movie: one frame per picture the script saved.
 pub const MOVIE_FPS: f64 = 30.0;
 
-/// Renders the JavaScript script `source` as the request says.
-pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
-    let mut budget = Budget::new(req.limits);
-    let mut stages = Stages::start();
-    Budget::check_source(&req.limits, source.len() as u64)?;
+/// Builds the model of the JavaScript script `source` under `budget`.
+pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
     let text = std::str::from_utf8(source).map_err(|_| ParseError::single(Span::new(1, 1), "the source is not valid UTF-8"))?;
-    let loader = match &req.script_dir {
-        Some(dir) => Loader::Directory(dir.clone()),
+    let loader = match req.script_dir {
+        Some(dir) => Loader::Directory(dir.to_path_buf()),
         None => Loader::Library,
     };
     let seed = req.seed.unwrap_or(0);
-    let movie = js::run(text, loader, seed, req.on_limit == OnLimit::Truncate, &mut budget)?;
-    stages.lap(|p| &mut p.parse);
-    let overhead = export::estimated_size(req.format, 0, 0);
-    budget.reserve_memory(overhead)?;
+    let movie = js::run(text, loader, seed, req.on_limit == OnLimit::Truncate, budget)?;
+    clock.lap(Phase::Parse);
     let mut warnings = movie.warnings;
     let texts: Vec<&String> = if movie.frames.is_empty() { movie.last_build.iter().collect() } else { movie.frames.iter().collect() };
     if texts.is_empty() {
         warnings.push(Diagnostic::warning(Span::new(1, 1), "the script built nothing: the model is empty"));
     }
     let mut truncated = movie.truncated;
-    let animated = graph_capable(req);
+    let animated = req.animated;
     // Animated output splits the scene into one part per frame (a copy of
     // every element and its frame tag): promised with the rest of meshing's memory.
     let opts = |radius: f64| {
-        let mut o = build_options(req, overhead, radius);
+        let mut o = build_options(req, radius);
         if animated {
             o.downstream_bytes = o.downstream_bytes.map(|b| b.saturating_add(AFFINE_INSTANCE_BYTES + 4));
             o.vertex_bytes = o.vertex_bytes.saturating_add(FREE_VERTEX_BYTES + 4);
@@ -59,8 +56,8 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let mut frames: Vec<Built> = Vec::new();
     let mut promised = 0u64;
     for (k, text) in texts.iter().enumerate() {
-        let (script, radius) = parse_bound(text.as_bytes(), &req.params, seed).map_err(|e| match e {
-            RenderError::Parse(p) => RenderError::Eval(EvalError::Script { message: format!("frame {k}: the EisenScript it builds does not parse: {p}") }),
+        let (script, radius) = parse_bound(text.as_bytes(), req.params, seed).map_err(|e| match e {
+            BuildError::Parse(p) => BuildError::Eval(EvalError::Script { message: format!("frame {k}: the EisenScript it builds does not parse: {p}") }),
             other => other,
         })?;
         for w in &script.warnings {
@@ -75,7 +72,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
                 warnings.push(w);
             }
         }
-        let built = build::build(&script, &opts(radius), &mut budget)?;
+        let built = build::build(&script, &opts(radius), budget)?;
         promised = promised.saturating_add(built.promised);
         if let Some(l) = built.scene.truncated {
             // Under `truncate` a frame cut short is kept only when it is the first.
@@ -87,21 +84,25 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         }
         frames.push(built);
     }
-    stages.lap(|p| &mut p.eval);
-    let mut scene = Scene::default();
     if let Err(e) = budget.check_deadline() {
-        truncate_or_fail(req.on_limit, e, &mut scene)?;
+        match req.on_limit {
+            OnLimit::Error => return Err(e.into()),
+            OnLimit::Truncate => {
+                truncated.get_or_insert(e);
+            }
+        }
     }
-    budget.release_memory(promised.saturating_add(overhead).saturating_add(movie.held_bytes));
-    let (mut assembled, primitives) = assemble(frames, animated, &mut budget)?;
-    assembled.truncated = scene.truncated.or(truncated);
-    mesh_and_export(assembled, req, Language::Eisenscript, primitives, warnings, budget, stages)
+    // The frames' promise is given back before assembling reserves the tracks.
+    budget.release_memory(promised.saturating_add(movie.held_bytes));
+    let (mut scene, primitives) = assemble(frames, animated, budget)?;
+    scene.truncated = truncated;
+    Ok(Model { language: Language::Eisenscript, scene, hierarchy: None, primitives, warnings, promised: 0 })
 }
 
 /// One scene of `frames`: frame 0 alone unless `animated` and there are
 /// several, else every frame under its own bone (see the module docs).
 /// Returns the scene and its object count.
-fn assemble(frames: Vec<Built>, animated: bool, budget: &mut Budget) -> Result<(Scene, u64), RenderError> {
+fn assemble(frames: Vec<Built>, animated: bool, budget: &mut Budget) -> Result<(Scene, u64), BuildError> {
     let n = frames.len();
     if n <= 1 || !animated {
         return Ok(frames.into_iter().next().map(|b| (b.scene, b.objects)).unwrap_or_default());

@@ -6,14 +6,14 @@
 //! key, its call site and its iteration index (see [`StreamKey`]), so results
 //! do not depend on the order in which work is done.
 
-use super::budget::{Budget, OnLimit};
-use super::animation::{looped, Bone, CameraPath, Rig, Timeline, BONE_BYTES};
-use super::frame::Frame;
-use super::rng::StreamKey;
-use super::scene::{
+use crate::core::budget::{Budget, OnLimit};
+use crate::model::animation::{looped, Bone, CameraPath, Rig, Timeline, BONE_BYTES};
+use crate::core::frame::Frame;
+use crate::core::rng::StreamKey;
+use crate::model::scene::{
     FreeVertex, Instance, LinePoint, Polyline, Scene, ShapeInstance, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES, SHAPE_INSTANCE_BYTES,
 };
-use super::EvalError;
+use crate::model::{Downstream, EvalError};
 use crate::geom::{primitives, sweep};
 use crate::lang::expr::{Expr, ExprEnv};
 use crate::lang::ir::{
@@ -21,7 +21,7 @@ use crate::lang::ir::{
 };
 use std::collections::HashMap;
 use std::rc::Rc;
-use crate::lang::Span;
+use crate::core::Span;
 use glam::{DQuat, DVec3};
 
 /// A frame change plus a colour change: the effect of one adjustment list.
@@ -317,22 +317,6 @@ pub struct EvalOptions {
     /// has been built. The caller releases the promise with
     /// [`promised_bytes`] before meshing.
     pub downstream: Downstream,
-}
-
-/// The cost of one output vertex and one output triangle in later stages.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct Downstream {
-    /// Bytes per vertex.
-    pub per_vertex: u64,
-    /// Bytes per triangle.
-    pub per_triangle: u64,
-}
-
-impl Downstream {
-    /// Bytes for `v` vertices and `t` triangles.
-    pub fn bytes(&self, v: u64, t: u64) -> u64 {
-        v.saturating_mul(self.per_vertex).saturating_add(t.saturating_mul(self.per_triangle))
-    }
 }
 
 /// The memory promised for later stages by `scene`'s instances under `options`.
@@ -943,7 +927,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             iso.field.eval(&mut Env { params, key, pos: DVec3::from_array(p) })
         });
         self.budget.release_memory(grid_bytes);
-        self.budget.reserve_memory(crate::geom::meshing::mesh_bytes(proto.positions.len() as u64, (proto.indices.len() / 3) as u64))?;
+        self.budget.reserve_memory(crate::geom::mesh::mesh_bytes(proto.positions.len() as u64, (proto.indices.len() / 3) as u64))?;
         self.scene.shapes.push(proto);
         let s = (self.scene.shapes.len() - 1) as u32;
         self.isosurface_shape.insert(i, s);
@@ -961,7 +945,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             crate::geom::modifiers::ModifyError::Limit(l) => EvalError::Limit(l),
             other => EvalError::Mesh { span: decl.span, name: decl.name.clone(), message: other.to_string() },
         })?;
-        self.budget.reserve_memory(crate::geom::meshing::mesh_bytes(proto.positions.len() as u64, (proto.indices.len() / 3) as u64))?;
+        self.budget.reserve_memory(crate::geom::mesh::mesh_bytes(proto.positions.len() as u64, (proto.indices.len() / 3) as u64))?;
         self.scene.shapes.push(proto);
         let s = (self.scene.shapes.len() - 1) as u32;
         self.mesh_shape.insert(i, s);
@@ -1035,7 +1019,7 @@ impl<'p, 'b> Machine<'p, 'b> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::budget::{Limit, Limits};
+    use crate::core::budget::{Limit, Limits};
     use crate::lang::ir::{Call, Directives, PrimitiveKind, Rule, RuleGroup};
 
     fn num(v: f64) -> Expr {

@@ -1,97 +1,33 @@
-//! The evaluator: frames, seeded random streams, budgets, and the
-//! depth-first expansion of the IR into a [`scene::Scene`].
+//! The MDG evaluator, which also runs stacking strings and UniGrafix (they
+//! lower into the same rule IR): binds request parameters to a program's
+//! `@param`s and expands the IR depth-first into a [`Scene`](crate::model::Scene).
+//! [`build_model`] is the front end the pipeline calls for these languages.
 
-pub mod animation;
-pub mod budget;
 pub mod evaluator;
-pub mod frame;
-pub mod hierarchy;
 pub mod params;
-pub mod rng;
-pub mod scene;
 
-pub use budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
-pub use evaluator::{evaluate, promised_bytes, Downstream, EvalOptions};
-pub use frame::Frame;
-pub use params::{bind_params, ParamValue};
-pub use scene::{Instance, Scene};
+pub use evaluator::{evaluate, promised_bytes, EvalOptions};
+pub use params::bind_params;
 
-use crate::lang::Span;
+use crate::core::budget::Budget;
+use crate::core::timing::{Phase, StageClock};
+use crate::lang::{self, Language};
+use crate::model::{BuildError, BuildRequest, Model};
 
-/// Why an evaluation failed.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum EvalError {
-    /// A budget limit ran out (and the request asked for an error, not truncation).
-    #[error(transparent)]
-    Limit(#[from] LimitExceeded),
-    /// An argument evaluated to NaN or an infinity (e.g. division by zero).
-    #[error("{}:{}: {what} is not a finite number ({value})", span.line, span.column)]
-    NonFinite {
-        /// Where the argument is written.
-        span: Span,
-        /// Which argument.
-        what: String,
-        /// The value computed.
-        value: String,
-    },
-    /// An iterator count or divisor that is not a usable number.
-    #[error("{}:{}: iteration count must be a whole number ≥ 0 and divisor > 0, got {value}", span.line, span.column)]
-    BadIteration {
-        /// Where the iterator is written.
-        span: Span,
-        /// The value computed.
-        value: String,
-    },
-    /// A request parameter the grammar does not declare.
-    #[error("unknown parameter `{name}` (declared: {declared})")]
-    UnknownParam {
-        /// The name given.
-        name: String,
-        /// The names the grammar declares, comma-separated.
-        declared: String,
-    },
-    /// A request parameter with a bad value.
-    #[error("parameter `{name}`: {message}")]
-    BadParam {
-        /// The parameter.
-        name: String,
-        /// What is wrong.
-        message: String,
-    },
-    /// A Structure Synth JavaScript script failed: a syntax error or an
-    /// uncaught exception (with its line when QuickJS reports one).
-    #[error("JavaScript: {message}")]
-    Script {
-        /// QuickJS's message.
-        message: String,
-    },
-    /// `Builder.load` could not load the file it names (refused path, missing
-    /// file, or no such library grammar in the service).
-    #[error("Builder.load(\"{name}\"): {reason}")]
-    Load {
-        /// The name the script gave.
-        name: String,
-        /// Why it was refused.
-        reason: String,
-    },
-    /// A `mesh` declaration's modifiers could not be applied.
-    #[error("{}:{}: mesh `{name}`: {message}", span.line, span.column)]
-    Mesh {
-        /// Where the mesh is declared.
-        span: Span,
-        /// The mesh's name.
-        name: String,
-        /// What went wrong.
-        message: String,
-    },
-}
-
-impl EvalError {
-    /// The source position, when the error comes from a place in the source.
-    pub fn span(&self) -> Option<Span> {
-        match self {
-            EvalError::NonFinite { span, .. } | EvalError::BadIteration { span, .. } | EvalError::Mesh { span, .. } => Some(*span),
-            _ => None,
-        }
-    }
+/// Parses `source` as `language` (MDG, a stacking string or UniGrafix),
+/// binds the request's parameters and evaluates it into a model under `budget`.
+pub fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    let program = lang::parse(language, source)?;
+    let params = bind_params(&program, req.params)?;
+    clock.lap(Phase::Parse);
+    let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit, downstream: req.downstream };
+    let scene = evaluate(&program, &params, &options, budget)?;
+    Ok(Model {
+        language,
+        primitives: scene.instances.len() as u64,
+        promised: promised_bytes(&scene, &options),
+        scene,
+        hierarchy: None,
+        warnings: program.warnings,
+    })
 }

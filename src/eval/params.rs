@@ -1,34 +1,10 @@
 //! Binding request parameters to a program's `@param` declarations.
 
-use super::EvalError;
+use crate::model::EvalError;
 use crate::lang::ir::{ParamKind, Program};
 use std::collections::BTreeMap;
 
-/// A parameter value as a request gives it.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(untagged)]
-pub enum ParamValue {
-    /// A number (ints and floats).
-    Number(f64),
-    /// A boolean.
-    Bool(bool),
-    /// Text, parsed as a number or `true`/`false` (from CLI `name=value` and URL query strings).
-    Text(String),
-}
-
-impl ParamValue {
-    fn as_number(&self) -> Option<f64> {
-        match self {
-            ParamValue::Number(v) => Some(*v),
-            ParamValue::Bool(b) => Some(if *b { 1.0 } else { 0.0 }),
-            ParamValue::Text(s) => match s.trim() {
-                "true" => Some(1.0),
-                "false" => Some(0.0),
-                t => t.parse::<f64>().ok(),
-            },
-        }
-    }
-}
+pub use crate::core::param::ParamValue;
 
 /// Returns the value of every declared parameter, in declaration order: the
 /// request's value where given, else the default. Unknown names, values of

@@ -26,7 +26,7 @@
 //! component, so under 0.5° off. Output is deterministic.
 
 use super::{ExportError, ExportMeta};
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use serde_json::{json, Map, Value};
 
@@ -516,9 +516,9 @@ pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, b
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::budget::Limits;
+    use crate::core::budget::Limits;
     use crate::export::gltf::tests::{all_nine, meshes_of};
-    use crate::geom::MeshLayout;
+    use crate::mesh::MeshLayout;
 
     fn glb_json(b: &[u8]) -> Value {
         let jl = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;

@@ -22,9 +22,9 @@
 //! Output is deterministic: every map is ordered and nothing time-dependent
 //! is written.
 
-use super::graph::{NodeGraph, Trs};
+use crate::model::graph::{NodeGraph, Trs};
 use super::{ExportError, ExportMeta};
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use gltf_json as json;
 use json::validation::{Checked::Valid, USize64};
@@ -812,12 +812,12 @@ fn find(haystack: &[u8], needle: &[u8]) -> Option<usize> {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::eval::budget::{Limit, Limits};
-    use crate::eval::scene::Scene;
+    use crate::core::budget::{Limit, Limits};
+    use crate::model::scene::Scene;
     use crate::export::{estimated_size, Format};
-    use crate::geom::meshing::tests::{inst, scene};
-    use crate::geom::{build_meshes, MeshLayout};
-    use crate::lang::ir::PrimitiveKind;
+    use crate::mesh::tests::{inst, scene};
+    use crate::mesh::{build_meshes, MeshLayout};
+    use crate::core::PrimitiveKind;
 
     pub(crate) fn meshes_of(s: &Scene, detail: u32, layout: MeshLayout) -> Vec<NamedMesh> {
         build_meshes(s, detail, layout, &mut Budget::new(Limits::default())).unwrap()

@@ -2,7 +2,7 @@
 
 pub mod compact;
 pub mod gltf;
-pub mod graph;
+pub mod instanced;
 pub mod scene;
 pub mod stl;
 pub mod strips;
@@ -12,7 +12,7 @@ pub mod ug;
 pub use compact::{Compression, GltfOptions};
 pub use strips::{decode_strips, StripsError, StripsOptions};
 
-use crate::eval::budget::{Budget, LimitExceeded};
+use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::NamedMesh;
 
 /// Output formats.
@@ -132,13 +132,13 @@ pub struct ExportMeta {
     pub truncated: bool,
     /// Bones, their animation and the camera, for the plain glTF writers;
     /// the meshes are then each in their node's coordinates.
-    pub graph: Option<graph::NodeGraph>,
+    pub graph: Option<crate::model::graph::NodeGraph>,
     /// Give each mesh its own glTF material named like the mesh, instead of
     /// one shared unnamed material: EisenScript's primitive classes
     /// (`box::glass`) become meshes and materials a viewer can restyle.
     pub material_per_mesh: bool,
     /// A viewpoint to add as a glTF perspective camera (glTF formats only).
-    pub camera: Option<crate::eval::scene::SceneCamera>,
+    pub camera: Option<crate::model::scene::SceneCamera>,
 }
 
 /// Export failures.
@@ -157,7 +157,7 @@ pub enum ExportError {
     },
     /// A mesh handed to an exporter is malformed (index out of range,
     /// attribute arrays of different lengths, non-finite positions). Meshes
-    /// from [`build_meshes`](crate::geom::build_meshes) never are; this guards
+    /// from [`build_meshes`](crate::mesh::build_meshes) never are; this guards
     /// library callers who build meshes themselves.
     #[error("invalid mesh {name:?}: {detail}")]
     InvalidMesh {
@@ -279,11 +279,11 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::budget::Limits;
+    use crate::core::budget::Limits;
     use crate::export::gltf::tests::{all_nine, meshes_of};
-    use crate::geom::meshing::tests::{inst, scene};
-    use crate::geom::MeshLayout;
-    use crate::lang::ir::PrimitiveKind;
+    use crate::mesh::tests::{inst, scene};
+    use crate::mesh::MeshLayout;
+    use crate::core::PrimitiveKind;
     use std::path::{Path, PathBuf};
 
     /// The sample models: each primitive alone, all nine merged and per kind,

@@ -9,9 +9,9 @@
 //! (for tests and clients written in Rust).
 
 use super::ExportError;
-use crate::eval::budget::Budget;
-use crate::eval::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
-use crate::lang::ir::PrimitiveKind;
+use crate::core::budget::Budget;
+use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
+use crate::core::PrimitiveKind;
 use glam::{DQuat, DVec3};
 
 /// The first four bytes of every scene file.
@@ -186,7 +186,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
         return Err(SceneError::Length("followed by trailing bytes"));
     }
     if flags & FLAG_TRUNCATED != 0 {
-        h.truncated = Some(crate::eval::LimitExceeded { limit: crate::eval::Limit::Memory, configured: 0, reached: 0 });
+        h.truncated = Some(crate::core::LimitExceeded::recorded(crate::core::Limit::Memory));
     }
     Ok(h)
 }

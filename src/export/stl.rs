@@ -7,7 +7,7 @@
 //! are accounted in the [`Budget`] before they are allocated.
 
 use super::ExportError;
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::fmt::Write as _;
 
@@ -122,13 +122,13 @@ pub fn write_ascii(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>,
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::budget::{Limit, Limits};
+    use crate::core::budget::{Limit, Limits};
     use crate::export::gltf::tests::{all_nine, meshes_of};
     use crate::export::{estimated_size, Format};
-    use crate::geom::meshing::tests::{inst, scene};
+    use crate::mesh::tests::{inst, scene};
     use crate::geom::primitives::tests::{assert_closed, signed_volume};
-    use crate::geom::MeshLayout;
-    use crate::lang::ir::PrimitiveKind;
+    use crate::mesh::MeshLayout;
+    use crate::core::PrimitiveKind;
 
     fn f32_at(b: &[u8], at: usize) -> f32 {
         f32::from_le_bytes([b[at], b[at + 1], b[at + 2], b[at + 3]])

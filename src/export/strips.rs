@@ -13,7 +13,7 @@
 //! [`strip::restrip`]) → optional zstd → header and CRC32.
 
 use super::ExportError;
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::strip::{self, RESTART};
 use crate::geom::{Mesh, NamedMesh};
 use std::collections::BTreeMap;
@@ -498,11 +498,11 @@ pub fn decode_strips_full(bytes: &[u8]) -> Result<DecodedStrips, StripsError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::budget::Limits;
+    use crate::core::budget::Limits;
 
     fn cube() -> Vec<NamedMesh> {
         use crate::export::gltf::tests::{all_nine, meshes_of};
-        meshes_of(&all_nine(), 12, crate::geom::MeshLayout::PerKind)
+        meshes_of(&all_nine(), 12, crate::mesh::MeshLayout::PerKind)
     }
 
     fn enc(opts: StripsOptions) -> Vec<u8> {

@@ -7,7 +7,7 @@
 //! gives byte-identical files.
 
 use super::ExportError;
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::fmt::Write as _;
 use std::io::Write as _;

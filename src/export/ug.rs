@@ -7,7 +7,7 @@
 //! position so faces share them, as UG faces name vertices by id.
 
 use super::ExportError;
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::collections::HashMap;
 use std::fmt::Write as _;

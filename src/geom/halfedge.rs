@@ -357,7 +357,7 @@ pub fn flat_prototype(positions: &[DVec3], tris: &[[u32; 3]]) -> super::primitiv
 mod tests {
     use super::*;
     use crate::geom::primitives::tessellate;
-    use crate::lang::ir::PrimitiveKind;
+    use crate::core::PrimitiveKind;
 
     fn he(kind: PrimitiveKind) -> HalfEdgeMesh {
         let p = tessellate(kind, 16);

@@ -34,3 +34,9 @@ pub struct NamedMesh {
     /// The geometry.
     pub mesh: Mesh,
 }
+
+/// Bytes of mesh buffers for `vertices` vertices and `triangles` triangles
+/// (position 12 + normal 12 + colour 4 per vertex, 12 per triangle).
+pub fn mesh_bytes(vertices: u64, triangles: u64) -> u64 {
+    vertices.saturating_mul(28).saturating_add(triangles.saturating_mul(12))
+}

@@ -1,11 +1,12 @@
-//! Geometry: tessellation of the built-in primitives and turning a
-//! [`Scene`](crate::eval::scene::Scene) of instances into indexed meshes.
+//! The geometry kernel: indexed meshes, tessellation of the built-in
+//! primitives, polyhedra, half-edge meshes, hulls, isosurfaces, mesh
+//! modifiers, swept tubes and triangle strips. Pure functions of their
+//! inputs: it knows nothing about languages, scenes or formats.
 
 pub mod halfedge;
 pub mod hull;
 pub mod isosurface;
 pub mod mesh;
-pub mod meshing;
 pub mod modifiers;
 pub mod normalize;
 pub mod polyhedra;
@@ -14,7 +15,6 @@ pub mod strip;
 pub mod sweep;
 
 pub use mesh::{Mesh, NamedMesh};
-pub use meshing::{build_meshes, MeshLayout};
 
 /// Default tessellation detail (segments around a round primitive).
 pub const DEFAULT_DETAIL: u32 = 16;

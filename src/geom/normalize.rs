@@ -3,7 +3,7 @@
 //! An export option, applied after meshing: the parser and evaluator never
 //! see it.
 
-use crate::eval::budget::{Budget, LimitExceeded};
+use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::NamedMesh;
 
 /// The bounding box of the vertices that triangles use, over all meshes
@@ -51,9 +51,9 @@ pub fn fit_unit_box(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<Nam
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::budget::Limits;
+    use crate::core::budget::Limits;
     use crate::export::gltf::tests::{all_nine, meshes_of};
-    use crate::geom::MeshLayout;
+    use crate::mesh::MeshLayout;
 
     #[test]
     fn fits_the_unit_box_centred() {

@@ -281,7 +281,7 @@ pub fn geodesic_size(n: u32) -> (u64, u64) {
 /// on face edges are welded by position rounded to 1e-9 of the radius.
 pub fn geodesic(n: u32) -> Result<HalfEdgeMesh, HalfEdgeError> {
     let n = n.max(1);
-    let ico = super::primitives::tessellate(crate::lang::ir::PrimitiveKind::Icosahedron, 3);
+    let ico = super::primitives::tessellate(crate::core::PrimitiveKind::Icosahedron, 3);
     let ico = HalfEdgeMesh::from_indexed(&ico.positions, &ico.indices)?;
     let mut ids: HashMap<[i64; 3], u32> = HashMap::new();
     let mut positions = Vec::new();

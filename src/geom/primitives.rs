@@ -19,7 +19,7 @@
 //! tessellating, so budgets can be checked before anything is allocated.
 
 use super::{MAX_DETAIL, MIN_DETAIL};
-use crate::lang::ir::PrimitiveKind;
+use crate::core::PrimitiveKind;
 use std::f64::consts::PI;
 
 /// A primitive's tessellated prototype in its unit local space.

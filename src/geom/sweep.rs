@@ -8,12 +8,30 @@
 //! Orientation is decided from the geometry of each segment, so mirrored
 //! frames and pens moving backwards still give outward-facing faces.
 
-use super::meshing::mesh_bytes;
+use super::mesh::mesh_bytes;
 use super::Mesh;
-use crate::eval::budget::{Budget, LimitExceeded};
-use crate::eval::scene::{LinePoint, Polyline};
+use crate::core::budget::{Budget, LimitExceeded};
+use crate::core::frame::Frame;
 use glam::DVec3;
 use std::f64::consts::TAU;
+
+/// One pen position of a swept line: the frame the profile is placed in, and its colour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinePoint {
+    /// The profile's frame (the profile lies in the frame's local XY plane).
+    pub frame: Frame,
+    /// Linear RGBA, each clamped to [0, 1].
+    pub colour: [f32; 4],
+}
+
+/// A swept line: consecutive points joined by tubes (seed 000 §4.3).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Polyline {
+    /// The pen positions in drawing order; n points make n − 1 segments.
+    pub points: Vec<LinePoint>,
+    /// Index into `Scene::profiles` of the cross-section; `None` is the default round tube.
+    pub profile: Option<u32>,
+}
 
 /// Radius of the default line profile, in the local units of each pen frame.
 pub const PROFILE_RADIUS: f64 = 0.05;
@@ -147,8 +165,16 @@ fn signed_volume6(mesh: &Mesh, indices: &[u32]) -> f64 {
 
 /// Sweeps every line into one mesh, reserving its bytes in `budget` first.
 /// `profiles` are the scene's cross-sections that lines refer to by index.
-/// Lines with fewer than two distinct rings draw nothing.
-pub fn sweep_lines(lines: &[Polyline], profiles: &[Vec<DVec3>], detail: u32, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+/// Lines with fewer than two distinct rings draw nothing. `stop` is asked
+/// before each line whether to stop there (a caller's deadline); the lines
+/// swept by then are the mesh.
+pub fn sweep_lines(
+    lines: &[Polyline],
+    profiles: &[Vec<DVec3>],
+    detail: u32,
+    budget: &mut Budget,
+    stop: &mut dyn FnMut(&Budget) -> Result<bool, LimitExceeded>,
+) -> Result<Option<Mesh>, LimitExceeded> {
     let profile_of = |l: &Polyline| profile_points(l.profile.and_then(|i| profiles.get(i as usize)).map(Vec::as_slice), detail);
     let (mut vmax, mut tmax) = (0u64, 0u64);
     for l in lines {
@@ -160,11 +186,7 @@ pub fn sweep_lines(lines: &[Polyline], profiles: &[Vec<DVec3>], detail: u32, bud
         return Ok(None);
     }
     if vmax > u64::from(u32::MAX) {
-        return Err(LimitExceeded {
-            limit: crate::eval::Limit::Memory,
-            configured: budget.limits().max_memory,
-            reached: budget.memory().saturating_add(mesh_bytes(vmax, tmax)),
-        });
+        return Err(budget.memory_refused(mesh_bytes(vmax, tmax)));
     }
     budget.reserve_memory(mesh_bytes(vmax, tmax))?;
     let mut mesh = Mesh {
@@ -174,6 +196,9 @@ pub fn sweep_lines(lines: &[Polyline], profiles: &[Vec<DVec3>], detail: u32, bud
         indices: Vec::with_capacity((tmax as usize).saturating_mul(3)),
     };
     for line in lines {
+        if stop(budget)? {
+            break;
+        }
         let profile = profile_of(line);
         // Fits: profiles come from a bounded number of VERTEX calls.
         let n32 = profile.len() as u32;

@@ -25,9 +25,9 @@
 
 use super::derive::{axiom, ModuleString, Rewriter};
 use super::turtle::ModuleSink;
-use crate::eval::budget::Budget;
-use crate::eval::rng::StreamKey;
-use crate::eval::EvalError;
+use crate::core::budget::Budget;
+use crate::core::rng::StreamKey;
+use crate::model::EvalError;
 use crate::lang::lsystem::{LSystem, SYM_POP, SYM_PUSH};
 use std::collections::HashMap;
 

@@ -10,12 +10,12 @@
 //! length of every level is predicted up front by counting symbols, and a
 //! system that would exceed a limit is refused before any rewriting.
 
-use crate::eval::budget::{Budget, Limit, LimitExceeded, OnLimit};
-use crate::eval::rng::StreamKey;
-use crate::eval::EvalError;
+use crate::core::budget::{Budget, Limit, LimitExceeded, OnLimit};
+use crate::core::rng::StreamKey;
+use crate::model::EvalError;
 use crate::lang::expr::{Expr, ExprEnv};
 use crate::lang::lsystem::{LSystem, Module, Pattern, Production, SYM_POP, SYM_PUSH};
-use crate::lang::Span;
+use crate::core::Span;
 
 /// No bracket partner (an unbalanced bracket).
 const NONE: u32 = u32::MAX;
@@ -211,14 +211,11 @@ fn predict(sys: &LSystem, iterations: u32, budget: &Budget) -> Result<(), LimitE
     for m in &sys.axiom {
         counts[m.symbol as usize] = counts[m.symbol as usize].saturating_add(1);
     }
-    let limits = *budget.limits();
     let mut steps = budget.steps();
     for _ in 0..iterations {
         let len: u64 = counts.iter().fold(0u64, |a, &c| a.saturating_add(c));
         steps = steps.saturating_add(len);
-        if steps > limits.max_steps {
-            return Err(LimitExceeded { limit: Limit::Steps, configured: limits.max_steps, reached: steps });
-        }
+        budget.check_total(Limit::Steps, steps)?;
         let mut next = vec![0u64; n];
         for (s, &c) in counts.iter().enumerate() {
             if c == 0 {
@@ -235,10 +232,7 @@ fn predict(sys: &LSystem, iterations: u32, budget: &Budget) -> Result<(), LimitE
         }
         counts = next;
         let len: u64 = counts.iter().fold(0u64, |a, &c| a.saturating_add(c));
-        let need = budget.memory().saturating_add(string_bytes(len, 0));
-        if need > limits.max_memory {
-            return Err(LimitExceeded { limit: Limit::Memory, configured: limits.max_memory, reached: need });
-        }
+        budget.check_memory(string_bytes(len, 0))?;
     }
     Ok(())
 }
@@ -493,10 +487,9 @@ impl<'a> Rewriter<'a> {
             }
             i += 1;
         }
-        let limits = *budget.limits();
         if out_params > u64::from(u32::MAX - 1) || out_len > u64::from(u32::MAX - 1) {
-            let reached = budget.memory().saturating_add(string_bytes(out_len, out_params));
-            return Err(LimitExceeded { limit: Limit::Memory, configured: limits.max_memory, reached }.into());
+            // Indices are u32: a string this long is refused as the memory it would take.
+            return Err(budget.memory_refused(string_bytes(out_len, out_params)).into());
         }
         budget.reserve_memory(string_bytes(out_len, out_params))?;
         let mut next = ModuleString::with_capacity(out_len as usize, out_params as usize);

@@ -16,9 +16,9 @@
 
 use super::dag::{Item, StringDag};
 use super::turtle::{LeafTurtle, TurtleOptions};
-use crate::eval::budget::Budget;
-use crate::eval::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target, ENTRY_BYTES};
-use crate::eval::EvalError;
+use crate::core::budget::Budget;
+use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target, ENTRY_BYTES};
+use crate::model::EvalError;
 use crate::lang::lsystem::LSystem;
 use glam::{DQuat, DVec3};
 use std::collections::HashMap;
@@ -52,7 +52,7 @@ struct Builder<'a, 'b> {
 /// [balanced](StringDag::balanced). The root draws like the whole string
 /// would (unbalanced brackets there are handled as the turtle does).
 pub fn build(sys: &LSystem, dag: &StringDag, budget: &mut Budget) -> Result<Hierarchy, EvalError> {
-    let opts = TurtleOptions { detail: 0, on_limit: crate::eval::OnLimit::Error, line_point_bytes: 0, downstream_bytes: [0; 9] };
+    let opts = TurtleOptions { detail: 0, on_limit: crate::core::OnLimit::Error, line_point_bytes: 0, downstream_bytes: [0; 9] };
     let mut b = Builder { sys, opts: &opts, dag, out: Hierarchy::default(), shapes: HashMap::new(), memo: HashMap::new(), budget };
     let built = b.object(dag.root_index(), sys.width, super::turtle::DEFAULT_COLOUR, true)?;
     if built.object.is_none() || built.object != Some((b.out.objects.len() as u32).wrapping_sub(1)) {

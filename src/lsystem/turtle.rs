@@ -13,15 +13,15 @@
 //! centred on the segment.
 
 use super::derive::ModuleString;
-use crate::eval::budget::{Budget, LimitExceeded, OnLimit};
-use crate::eval::frame::Frame;
-use crate::eval::hierarchy::LeafShape;
-use crate::lang::ir::PrimitiveKind;
-use crate::eval::scene::{FreeVertex, Instance, LinePoint, Polyline, Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES};
-use crate::eval::EvalError;
+use crate::core::budget::{Budget, LimitExceeded, OnLimit};
+use crate::core::frame::Frame;
+use crate::model::hierarchy::LeafShape;
+use crate::core::PrimitiveKind;
+use crate::model::scene::{FreeVertex, Instance, LinePoint, Polyline, Scene, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES};
+use crate::model::EvalError;
 use crate::geom::{primitives, sweep};
 use crate::lang::lsystem::{LSystem, Shape};
-use crate::lang::Span;
+use crate::core::Span;
 use glam::{DQuat, DVec3};
 
 /// Default colour of segments (linear RGBA): a bark brown.

@@ -14,7 +14,7 @@ mod union;
 
 pub use report::{measure, measure_stl, PrintReport};
 
-use crate::eval::budget::{Budget, LimitExceeded};
+use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh};
 use serde::{Deserialize, Serialize};
 

@@ -1,7 +1,7 @@
 //! Parts of a model and their boolean union.
 
 use super::PrintError;
-use crate::eval::budget::Budget;
+use crate::core::budget::Budget;
 use crate::geom::halfedge::HalfEdgeMesh;
 use crate::geom::NamedMesh;
 use glam::DVec3;

@@ -3,7 +3,7 @@
 //! with defaults that need nothing else. Precedence: flag > environment
 //! variable > file > default ([`ServeConfig::resolve`]).
 
-use crate::eval::Limits;
+use crate::core::Limits;
 use clap::parser::ValueSource;
 use serde::{Deserialize, Serialize};
 use std::net::SocketAddr;

@@ -1,12 +1,14 @@
 //! One error type for the service, mapped to an HTTP status with a JSON body
 //! and to a gRPC status with the same JSON as details.
 
-use crate::eval::{EvalError, Limit, LimitExceeded};
-use crate::lang::ParseError;
+use crate::core::{Limit, LimitExceeded};
+
+use crate::model::EvalError;
+use crate::core::ParseError;
 use crate::RenderError;
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use crate::lang::Diagnostic;
+use crate::core::Diagnostic;
 use serde::Serialize;
 use serde_json::Value;
 use utoipa::ToSchema;
@@ -64,6 +66,16 @@ pub enum ServiceError {
     /// A limit ran out.
     #[error(transparent)]
     Limit(LimitExceeded),
+    /// The model cannot be made as asked although the request is well formed:
+    /// nothing in it can be printed, or it is larger than the output format
+    /// holds (`code` says which: `unprintable`, `output_too_large`).
+    #[error("{message}")]
+    Unprocessable {
+        /// The stable code.
+        code: &'static str,
+        /// What is wrong.
+        message: String,
+    },
     /// No such grammar or route.
     #[error("not found: {0}")]
     NotFound(String),
@@ -104,6 +116,10 @@ impl From<RenderError> for ServiceError {
             RenderError::Parse(p) => ServiceError::Parse(p),
             RenderError::Limit(l) => ServiceError::Limit(l),
             RenderError::Eval(e) => ServiceError::Eval(e),
+            // A size out of range is a bad parameter; a model with nothing to print is unprocessable.
+            RenderError::Unprintable(p @ crate::print::PrintError::BadSize(_)) => ServiceError::BadRequest(format!("print: {p}")),
+            e @ RenderError::Unprintable(_) => ServiceError::Unprocessable { code: "unprintable", message: e.to_string() },
+            e @ RenderError::TooLarge { .. } => ServiceError::Unprocessable { code: "output_too_large", message: e.to_string() },
             RenderError::Export(x) => ServiceError::Internal(x.to_string()),
         }
     }
@@ -115,7 +131,7 @@ impl ServiceError {
         match self {
             ServiceError::BadRequest(_) | ServiceError::Parse(_) | ServiceError::Eval(_) => StatusCode::BAD_REQUEST,
             ServiceError::Limit(l) if l.limit == Limit::Deadline => StatusCode::GATEWAY_TIMEOUT,
-            ServiceError::Limit(_) => StatusCode::UNPROCESSABLE_ENTITY,
+            ServiceError::Limit(_) | ServiceError::Unprocessable { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             ServiceError::NotFound(_) => StatusCode::NOT_FOUND,
             ServiceError::PayloadTooLarge { .. } => StatusCode::PAYLOAD_TOO_LARGE,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => StatusCode::SERVICE_UNAVAILABLE,
@@ -130,6 +146,7 @@ impl ServiceError {
             ServiceError::BadRequest(_) | ServiceError::Parse(_) | ServiceError::Eval(_) => tonic::Code::InvalidArgument,
             ServiceError::Limit(l) if l.limit == Limit::Deadline => tonic::Code::DeadlineExceeded,
             ServiceError::Limit(_) => tonic::Code::ResourceExhausted,
+            ServiceError::Unprocessable { .. } => tonic::Code::FailedPrecondition,
             ServiceError::NotFound(_) => tonic::Code::NotFound,
             ServiceError::PayloadTooLarge { .. } => tonic::Code::ResourceExhausted,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => tonic::Code::Unavailable,
@@ -146,6 +163,7 @@ impl ServiceError {
             ServiceError::Eval(_) => "eval_error",
             ServiceError::Limit(l) if l.limit == Limit::Deadline => "deadline_exceeded",
             ServiceError::Limit(_) => "limit_exceeded",
+            ServiceError::Unprocessable { code, .. } => code,
             ServiceError::NotFound(_) => "not_found",
             ServiceError::PayloadTooLarge { .. } => "payload_too_large",
             ServiceError::Overloaded { .. } => "overloaded",

@@ -3,7 +3,7 @@
 use super::request::{CheckBody, LimitsBody, RenderBody};
 use super::{library, AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
-use crate::eval::ParamValue;
+use crate::core::ParamValue;
 use std::pin::Pin;
 use std::sync::Arc;
 use tonic::{Request, Response, Status};
@@ -165,8 +165,8 @@ impl Rulemesh for GrpcService {
                 .into_iter()
                 .map(|d| pb::Diagnostic {
                     severity: match d.severity {
-                        crate::lang::Severity::Error => "error".into(),
-                        crate::lang::Severity::Warning => "warning".into(),
+                        crate::core::Severity::Error => "error".into(),
+                        crate::core::Severity::Warning => "warning".into(),
                     },
                     line: d.span.line,
                     column: d.span.column,

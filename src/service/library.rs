@@ -1,13 +1,13 @@
 //! The built-in grammar library: every `grammars/*.mdg`, embedded at build
 //! time so the server needs no files.
 
-use crate::eval::Limits;
+use crate::core::Limits;
 use crate::lang::ir::ParamKind;
 use crate::lang::Language;
 use serde::Serialize;
 use utoipa::ToSchema;
 
-use crate::grammars::BUILTIN;
+use crate::core::library::BUILTIN;
 
 /// One built-in grammar.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

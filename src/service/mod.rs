@@ -20,7 +20,7 @@ pub use error::ServiceError;
 pub use metrics::Metrics;
 pub use request::{RenderBody, RenderPlan};
 
-use crate::eval::Limits;
+use crate::core::Limits;
 use std::future::Future;
 use std::net::SocketAddr;
 use std::sync::atomic::{AtomicBool, Ordering};

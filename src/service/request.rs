@@ -5,9 +5,10 @@
 use super::ServiceError;
 use crate::cache::key::{cache_key, normalize_source};
 use crate::cache::CacheKey;
-use crate::eval::{Limits, OnLimit, ParamValue};
+use crate::core::{Limits, OnLimit, ParamValue};
 use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};
-use crate::geom::{MeshLayout, DEFAULT_DETAIL};
+use crate::geom::DEFAULT_DETAIL;
+use crate::mesh::MeshLayout;
 use crate::lang::Language;
 use crate::RenderRequest;
 use serde::Deserialize;

@@ -2,7 +2,9 @@
 
 use crate::common::{decode_stl, render_source, repo, signed_volume};
 use glam::Vec3;
-use rulemesh::eval::{bind_params, evaluate, Budget, EvalOptions, Limits, Scene};
+use rulemesh::eval::{bind_params, evaluate, EvalOptions};
+use rulemesh::core::{Budget, Limits};
+use rulemesh::model::Scene;
 use rulemesh::lang::{ir::PrimitiveKind, parse, Language};
 use std::collections::BTreeMap;
 

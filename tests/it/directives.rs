@@ -3,7 +3,9 @@
 //! `@presets`, `color`/`weight` renaming, `stacksize`, and their errors.
 
 use crate::common::run;
-use rulemesh::eval::{bind_params, evaluate, Budget, EvalOptions, Limits, ParamValue, Scene};
+use rulemesh::eval::{bind_params, evaluate, EvalOptions};
+use rulemesh::core::{Budget, Limits, ParamValue};
+use rulemesh::model::Scene;
 use rulemesh::lang::{parse, Language};
 use std::collections::BTreeMap;
 

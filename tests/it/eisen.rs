@@ -6,10 +6,10 @@
 
 use crate::common::{admesh, decode_stl, signed_volume, tempdir, validate_gltf};
 use rulemesh::eisen::{build, BuildOptions};
-use rulemesh::eval::{Limit, Limits, OnLimit, ParamValue};
+use rulemesh::core::{Limit, Limits, OnLimit, ParamValue};
 use rulemesh::export::Format;
 use rulemesh::lang::eisen::{parse, ParseOptions};
-use rulemesh::lang::ir::PrimitiveKind;
+use rulemesh::core::PrimitiveKind;
 use rulemesh::lang::Language;
 use rulemesh::{render, RenderError, RenderRequest};
 use std::path::{Path, PathBuf};
@@ -19,7 +19,7 @@ fn req(format: Format) -> RenderRequest {
 }
 
 /// The scene `src` builds with seed `seed`.
-fn scene(src: &str, seed: u64) -> rulemesh::eval::Scene {
+fn scene(src: &str, seed: u64) -> rulemesh::model::Scene {
     let script = parse(src.as_bytes(), &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
     let opts = BuildOptions {
         seed,
@@ -29,7 +29,7 @@ fn scene(src: &str, seed: u64) -> rulemesh::eval::Scene {
         downstream_bytes: [0; 9],
         vertex_bytes: 0,
     };
-    let mut budget = rulemesh::eval::Budget::new(Limits::default());
+    let mut budget = rulemesh::core::Budget::new(Limits::default());
     build(&script, &opts, &mut budget).unwrap_or_else(|e| panic!("{e}")).scene
 }
 
@@ -450,16 +450,16 @@ fn javascript_builder_never_runs_programs_or_leaves_its_folder() {
     assert!(out.warnings.iter().any(|w| w.message.contains("execute")), "{:?}", out.warnings);
     for bad in ["../frame.es", "/etc/hostname", "sub/../../frame.es"] {
         match movie(&format!("#javascript\nBuilder.load(\"{bad}\");\n"), req(Format::Glb)).0 {
-            Err(RenderError::Eval(rulemesh::eval::EvalError::Load { name, .. })) => assert_eq!(name, bad),
+            Err(RenderError::Eval(rulemesh::model::EvalError::Load { name, .. })) => assert_eq!(name, bad),
             other => panic!("{bad}: {other:?}"),
         }
     }
     // Without a script directory (the service) only library grammars load.
     match render(b"#javascript\nBuilder.load(\"frame.es\");\n", &req(Format::Glb)) {
-        Err(RenderError::Eval(rulemesh::eval::EvalError::Load { reason, .. })) => assert!(reason.contains("reads no files"), "{reason}"),
+        Err(RenderError::Eval(rulemesh::model::EvalError::Load { reason, .. })) => assert!(reason.contains("reads no files"), "{reason}"),
         other => panic!("{other:?}"),
     }
     // Script errors carry the line.
     let e = movie("#javascript\n\nfoo(;\n", req(Format::Glb)).0.unwrap_err();
-    assert!(matches!(&e, RenderError::Eval(rulemesh::eval::EvalError::Script { message }) if message.contains("line 3")), "{e}");
+    assert!(matches!(&e, RenderError::Eval(rulemesh::model::EvalError::Script { message }) if message.contains("line 3")), "{e}");
 }

@@ -2,7 +2,9 @@
 //! notes work out, and isosurfaces are closed solids.
 
 use crate::common::{admesh, repo, run, tempdir};
-use rulemesh::eval::{bind_params, evaluate, Budget, EvalOptions, Limits, Scene};
+use rulemesh::eval::{bind_params, evaluate, EvalOptions};
+use rulemesh::core::{Budget, Limits};
+use rulemesh::model::Scene;
 use rulemesh::lang::{parse, Language};
 use std::collections::BTreeMap;
 
@@ -99,7 +101,7 @@ fn listing_4_1_dies_out_at_its_gallery_seed_and_grows_otherwise() {
 #[test]
 fn sphereflake_switches_detail_by_scale() {
     let scene = scene_of_file("sphereflake.mdg");
-    use rulemesh::lang::ir::PrimitiveKind;
+    use rulemesh::core::PrimitiveKind;
     let spheres = scene.instances.iter().filter(|i| i.kind == PrimitiveKind::Sphere).count();
     let octas = scene.instances.iter().filter(|i| i.kind == PrimitiveKind::Octahedron).count();
     // Scales 1, 0.42, 0.176 draw spheres (1 + 8 + 64); 0.074 and 0.031 draw octahedra (512 + 4096)…

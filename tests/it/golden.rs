@@ -66,7 +66,7 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
     let base = RenderRequest {
         language: Some(language),
         // Generous: a deadline hit on a loaded machine would make the table flaky.
-        limits: rulemesh::eval::Limits { timeout_ms: 600_000, ..Default::default() },
+        limits: rulemesh::core::Limits { timeout_ms: 600_000, ..Default::default() },
         ..RenderRequest::default()
     };
     let with = |format: Format, f: &dyn Fn(&mut RenderRequest)| {
@@ -94,7 +94,7 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
         ),
         ("gltf-quantize", with(Format::Gltf, &|r| r.export_options.gltf.quantize = true)),
         ("glb-fit", with(Format::Glb, &|r| r.export_options.fit_unit_box = true)),
-        ("glb-per-kind", with(Format::Glb, &|r| r.layout = rulemesh::geom::MeshLayout::PerKind)),
+        ("glb-per-kind", with(Format::Glb, &|r| r.layout = rulemesh::mesh::MeshLayout::PerKind)),
         ("glb-detail-4", with(Format::Glb, &|r| r.detail = 4)),
     ];
     if matches!(language, Language::Lsystem | Language::Etol) {
@@ -121,6 +121,8 @@ fn cell(result: Result<rulemesh::RenderOutput, RenderError>) -> String {
         Err(RenderError::Eval(_)) => "error:eval".into(),
         Err(RenderError::Export(_)) => "error:export".into(),
         Err(RenderError::BadRequest(_)) => "error:bad-request".into(),
+        Err(RenderError::Unprintable(_)) => "error:unprintable".into(),
+        Err(RenderError::TooLarge { .. }) => "error:too-large".into(),
     }
 }
 

@@ -2,7 +2,7 @@
 //! and to STL that admesh reads; single primitives are closed solids.
 
 use crate::common::{admesh, grammar_files, run, tempdir, validate_gltf};
-use rulemesh::lang::ir::PrimitiveKind;
+use rulemesh::core::PrimitiveKind;
 
 #[test]
 fn there_are_at_least_eight_mdg_grammars() {

@@ -4,8 +4,8 @@
 //! the DAG walk against the string derivation, `variety: k`, and budgets.
 
 use crate::common::{grammar_files, repo, run, tempdir, validate_gltf};
-use rulemesh::eval::hierarchy::{Hierarchy, PlacedLeaf};
-use rulemesh::eval::{Budget, Limit, Limits, OnLimit};
+use rulemesh::model::hierarchy::{Hierarchy, PlacedLeaf};
+use rulemesh::core::{Budget, Limit, Limits, OnLimit};
 use rulemesh::export::scene::decode_scene;
 use rulemesh::export::{ExportOptions, Format, Instancing};
 use rulemesh::lang::lsystem::parse;

@@ -3,7 +3,9 @@
 
 use crate::common::{admesh, decode_stl, repo, run, signed_volume, tempdir};
 use glam::DVec3;
-use rulemesh::eval::{bind_params, evaluate, Budget, EvalOptions, Limits, Scene};
+use rulemesh::eval::{bind_params, evaluate, EvalOptions};
+use rulemesh::core::{Budget, Limits};
+use rulemesh::model::Scene;
 use rulemesh::lang::{parse, Language};
 use std::collections::BTreeMap;
 

@@ -4,7 +4,7 @@
 //! `grammars/*.ls` through the glTF validator.
 
 use crate::common::{grammar_files, run, tempdir, validate_gltf};
-use rulemesh::eval::{Budget, Limit, Limits, OnLimit};
+use rulemesh::core::{Budget, Limit, Limits, OnLimit};
 use rulemesh::export::Format;
 use rulemesh::lang::lsystem::parse;
 use rulemesh::lang::Language;

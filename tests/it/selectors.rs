@@ -3,7 +3,9 @@
 //! ran at each call.
 
 use glam::Vec3;
-use rulemesh::eval::{bind_params, evaluate, Budget, EvalOptions, Limits, Scene};
+use rulemesh::eval::{bind_params, evaluate, EvalOptions};
+use rulemesh::core::{Budget, Limits};
+use rulemesh::model::Scene;
 use rulemesh::lang::{ir::PrimitiveKind, parse, Language};
 use std::collections::BTreeMap;
 use PrimitiveKind::{Box as B, Cone, Icosahedron as Ico, Octahedron as Oct, Sphere, Tetrahedron as Tet};

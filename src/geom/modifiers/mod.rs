@@ -23,9 +23,9 @@ pub use subdivide::loop_beta;
 use super::halfedge::{halfedge_bytes, HalfEdgeError, HalfEdgeMesh};
 use super::polyhedra::{self, Solid};
 use super::primitives::{self, Prototype};
-use crate::lang::ir::PrimitiveKind;
-use crate::eval::budget::{Budget, Limit, LimitExceeded};
-use crate::eval::rng::StreamKey;
+use crate::core::PrimitiveKind;
+use crate::core::budget::{Budget, Limit, LimitExceeded};
+use crate::core::rng::StreamKey;
 use glam::DVec3;
 
 /// A coordinate axis of the primitive's local frame.
@@ -246,10 +246,7 @@ pub fn output_size(m: &Modifier, v: u64, e: u64, f: u64) -> (u64, u64, u64) {
 /// Checks an output of `v` vertices and `f` faces against the budget and
 /// reserves its memory; the caller releases it when the mesh is dropped.
 fn admit(budget: &mut Budget, v: u64, f: u64) -> Result<u64, LimitExceeded> {
-    let max = budget.limits().max_triangles;
-    if f > max {
-        return Err(LimitExceeded { limit: Limit::Triangles, configured: max, reached: f });
-    }
+    budget.check_total(Limit::Triangles, f)?;
     // Work is linear in the output: charge it as steps so time stays bounded and deterministic.
     budget.charge_steps(f.saturating_add(v))?;
     let bytes = halfedge_bytes(v, f);

@@ -6,7 +6,7 @@
 //! definition of each modifier's parameters and errors.
 
 use super::{Axis, Extrude, FaceSelect, MeshBase, Modifier};
-use crate::lang::ir::PrimitiveKind;
+use crate::core::PrimitiveKind;
 use glam::DVec3;
 
 /// One word of a stage after the modifier's name.

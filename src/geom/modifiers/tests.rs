@@ -2,7 +2,7 @@
 
 use super::syntax::{stack, stage, Word};
 use super::*;
-use crate::eval::budget::Limits;
+use crate::core::budget::Limits;
 use crate::geom::primitives::tessellate;
 
 fn base(kind: PrimitiveKind) -> HalfEdgeMesh {

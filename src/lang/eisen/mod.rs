@@ -16,13 +16,19 @@
 //! numbers may be written as fractions `a/b`.
 
 pub mod colour;
-pub mod js;
 pub mod preprocess;
 
-use crate::lang::{Diagnostic, ParseError, Span};
+use crate::core::{Diagnostic, ParseError, Span};
 use glam::{DMat4, DVec3};
 
 pub use preprocess::GuiParam;
+
+/// True when `text` is a Structure Synth JavaScript script (its first
+/// non-blank line starts with `#javascript`).
+pub fn is_javascript(text: &[u8]) -> bool {
+    let start = text.iter().position(|b| !b.is_ascii_whitespace()).unwrap_or(text.len());
+    text[start..].get(..11).is_some_and(|p| p.eq_ignore_ascii_case(b"#javascript"))
+}
 
 /// Guesses whether `text` is EisenScript (used when no language is named).
 /// Looks for what MDG and L-systems never write: `#define`/`#javascript`
@@ -275,7 +281,7 @@ pub fn parse(source: &[u8], opts: &ParseOptions) -> Result<Script, ParseError> {
             return Err(ParseError::single(Span::new(line, col as u32 + 1), "the source is not valid UTF-8"));
         }
     };
-    if js::is_javascript(source) {
+    if is_javascript(source) {
         return Err(ParseError::single(
             Span::new(1, 1),
             "this is a Structure Synth JavaScript script (#javascript): it is run, not parsed, when rendered (see docs/eisenscript.md)",

@@ -13,8 +13,8 @@
 //! Define lines become empty lines, so line numbers of later diagnostics
 //! stay those of the source.
 
-use crate::eval::rng::StreamKey;
-use crate::lang::{ParseError, Span};
+use crate::core::rng::StreamKey;
+use crate::core::{ParseError, Span};
 
 /// Most substitutions in one line (Structure Synth's guard against recursive defines).
 const MAX_SUBSTITUTIONS: usize = 100;

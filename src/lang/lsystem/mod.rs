@@ -12,7 +12,7 @@ pub use parser::parse;
 
 use super::expr::Expr;
 use super::{Diagnostic, Span};
-use crate::lang::ir::PrimitiveKind;
+use crate::core::PrimitiveKind;
 
 /// Symbol id of `[` (push the turtle state); interned first in every system.
 pub const SYM_PUSH: u32 = 0;

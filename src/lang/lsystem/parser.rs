@@ -8,8 +8,8 @@
 
 use super::{LSystem, Module, Pattern, Production, Shape, SYM_POP, SYM_PUSH};
 use crate::lang::expr::{BinOp, Expr, Func};
-use crate::lang::ir::PrimitiveKind;
-use crate::lang::{ParseError, Span};
+use crate::core::PrimitiveKind;
+use crate::core::{ParseError, Span};
 use std::collections::HashMap;
 
 /// Deepest expression nesting accepted (keeps evaluation recursion bounded).

@@ -6,7 +6,7 @@
 //! punctuation. A `-` is always its own token; the parser handles signs.
 
 use super::preprocess::Preprocessed;
-use crate::lang::{ParseError, Span};
+use crate::core::{ParseError, Span};
 
 /// A token kind.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -13,7 +13,7 @@ use crate::geom::modifiers::MeshBase;
 use crate::geom::polyhedra::Solid;
 use crate::lang::ir::{MeshDecl, PrimitiveKind};
 use crate::lang::mdg::lexer::Tok;
-use crate::lang::Span;
+use crate::core::Span;
 
 /// Largest geodesic frequency a grammar may name (20·256² = 1.3M triangles;
 /// the budget usually stops far earlier).

@@ -8,7 +8,7 @@ use crate::lang::ir::{
     Adjust, AdjustOp, AngleMode, Axis, Call, Directives, Item, Iterate, ParamDecl, ParamKind, PrimitiveKind,
     Program, Rule, RuleGroup, Target,
 };
-use crate::lang::{Diagnostic, ParseError, Span};
+use crate::core::{Diagnostic, ParseError, Span};
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_PI_2, PI};
 

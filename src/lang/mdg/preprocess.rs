@@ -7,7 +7,7 @@
 //! them, because their values are expressions); the preprocessor only records
 //! their names so that `@ifdef` can test them.
 
-use crate::lang::{Diagnostic, ParseError, Span};
+use crate::core::{Diagnostic, ParseError, Span};
 use std::collections::{HashMap, HashSet};
 
 /// Maximum nesting of `@expand` inside macro bodies.
@@ -314,7 +314,7 @@ pub const MAX_IMPORT_DEPTH: usize = 8;
 fn import(st: &mut State, name: &str, span: Span, depth: usize) -> Result<(), ParseError> {
     let stem = name.strip_suffix(".mdg").unwrap_or(name);
     let builtin = (!stem.is_empty() && stem.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_'))
-        .then(|| crate::grammars::source(stem))
+        .then(|| crate::core::library::source(stem))
         .flatten();
     let Some(source) = builtin else {
         // The thesis imports its own projects (C.5: `@import projects/basic-shaders`,

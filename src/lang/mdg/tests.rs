@@ -3,7 +3,7 @@
 use super::parse;
 use crate::lang::expr::{BinOp, Expr, ExprEnv};
 use crate::lang::ir::*;
-use crate::lang::{Severity, Span};
+use crate::core::{Severity, Span};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 struct Env;

@@ -4,9 +4,9 @@
 //! the language it came from. Instances are stored compactly in f32 (the
 //! precision of every output format) so a million of them fit in ~52 MB.
 
-use crate::eval::budget::LimitExceeded;
-use crate::eval::frame::Frame;
-use crate::lang::ir::PrimitiveKind;
+use crate::core::budget::LimitExceeded;
+use crate::core::frame::Frame;
+use crate::core::PrimitiveKind;
 use glam::{Mat3, Quat, Vec3};
 
 /// One placed primitive.
@@ -134,23 +134,7 @@ pub struct SceneCamera {
 /// Bytes accounted per stored affine instance.
 pub const AFFINE_INSTANCE_BYTES: u64 = std::mem::size_of::<AffineInstance>() as u64;
 
-/// One pen position of a swept line: the frame the profile is placed in, and its colour.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LinePoint {
-    /// The profile's frame (the profile lies in the frame's local XY plane).
-    pub frame: Frame,
-    /// Linear RGBA, each clamped to [0, 1].
-    pub colour: [f32; 4],
-}
-
-/// A swept line: consecutive points joined by tubes (seed 000 §4.3).
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Polyline {
-    /// The pen positions in drawing order; n points make n − 1 segments.
-    pub points: Vec<LinePoint>,
-    /// Index into [`Scene::profiles`] of the cross-section; `None` is the default round tube.
-    pub profile: Option<u32>,
-}
+pub use crate::geom::sweep::{LinePoint, Polyline};
 
 /// A free vertex from `VERTEX {}`: every three consecutive ones make a triangle.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -212,9 +196,9 @@ pub struct Scene {
     pub truncated: Option<LimitExceeded>,
     /// Animation bones (calls of animated rules) and which bone each piece
     /// of geometry belongs to; `None` when the grammar animates nothing.
-    pub rig: Option<crate::eval::animation::Rig>,
+    pub rig: Option<crate::model::animation::Rig>,
     /// The camera path of `camerarule`, if the grammar has one.
-    pub camera: Option<crate::eval::animation::CameraPath>,
+    pub camera: Option<crate::model::animation::CameraPath>,
 }
 
 /// Bytes accounted per stored instance (for the memory budget).

@@ -9,11 +9,13 @@
 //! pipeline's up-front projection (mesh bytes + output size) does not include
 //! them either.
 
-use super::primitives::{self, Prototype};
-use super::{Mesh, NamedMesh};
-use crate::eval::budget::{Budget, Limit, LimitExceeded};
-use crate::eval::scene::{AffineInstance, FreeVertex, Instance, Scene};
-use crate::lang::ir::PrimitiveKind;
+use crate::geom::primitives::{self, Prototype};
+use crate::geom::mesh::mesh_bytes;
+use crate::geom::{Mesh, NamedMesh};
+use crate::core::budget::{Budget, LimitExceeded, OnLimit};
+use crate::model::graph::NodeGraph;
+use crate::model::scene::{AffineInstance, FreeVertex, Instance, Scene};
+use crate::core::PrimitiveKind;
 use glam::{Mat3, Vec3};
 
 /// How instances are grouped into meshes.
@@ -51,6 +53,57 @@ pub fn is_drawable(instance: &Instance) -> bool {
 /// Fails with a memory [`LimitExceeded`] before allocating a mesh that does
 /// not fit, or whose vertex count would not fit 32-bit indices.
 pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
+    Ok(build_meshes_until(scene, detail, layout, OnLimit::Error, budget)?.0)
+}
+
+/// Stops meshing once the deadline has passed: under `truncate` by keeping
+/// the meshes made so far and recording why, under `error` by failing.
+/// Checked once every [`Cutoff::EVERY`] pieces, so it costs nothing.
+struct Cutoff {
+    on_limit: OnLimit,
+    count: u32,
+    cut: Option<LimitExceeded>,
+}
+
+impl Cutoff {
+    /// Pieces (instances, lines) meshed between two looks at the clock.
+    const EVERY: u32 = 256;
+
+    fn new(on_limit: OnLimit) -> Cutoff {
+        Cutoff { on_limit, count: 0, cut: None }
+    }
+
+    /// True when meshing must stop here (the deadline passed under `truncate`).
+    fn stop(&mut self, budget: &Budget) -> Result<bool, LimitExceeded> {
+        if self.cut.is_some() {
+            return Ok(true);
+        }
+        self.count = self.count.wrapping_add(1);
+        if self.count % Self::EVERY != 0 {
+            return Ok(false);
+        }
+        match (budget.check_deadline(), self.on_limit) {
+            (Ok(()), _) => Ok(false),
+            (Err(e), OnLimit::Error) => Err(e),
+            (Err(e), OnLimit::Truncate) => {
+                self.cut = Some(e);
+                Ok(true)
+            }
+        }
+    }
+}
+
+/// [`build_meshes`], stopping at the deadline: under `on_limit: truncate`
+/// the meshes made by then are kept and the deadline is returned as the
+/// reason they are partial; under `error` the deadline fails the call.
+pub fn build_meshes_until(
+    scene: &Scene,
+    detail: u32,
+    layout: MeshLayout,
+    on_limit: OnLimit,
+    budget: &mut Budget,
+) -> Result<(Vec<NamedMesh>, Option<LimitExceeded>), LimitExceeded> {
+    let mut cutoff = Cutoff::new(on_limit);
     let drawable = |i: &&Instance| is_drawable(i);
     // Which kinds are present, and the prototypes' sizes (computed without tessellating).
     let mut present = [false; PrimitiveKind::ALL.len()];
@@ -59,20 +112,44 @@ pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut
     }
     let mut meshes = Vec::new();
     if present.iter().any(|&p| p) {
-        build_instance_meshes(scene, detail, layout, &present, budget, &mut meshes)?;
+        build_instance_meshes(scene, detail, layout, &present, budget, &mut cutoff, &mut meshes)?;
     }
-    build_affine_meshes(scene, detail, budget, &mut meshes)?;
+    build_affine_meshes(scene, detail, budget, &mut cutoff, &mut meshes)?;
     // Swept lines are their own mesh in either layout.
-    if let Some(mesh) = super::sweep::sweep_lines(&scene.lines, &scene.profiles, detail, budget)? {
+    if let Some(mesh) = crate::geom::sweep::sweep_lines(&scene.lines, &scene.profiles, detail, budget, &mut |b| cutoff.stop(b))? {
         meshes.push(NamedMesh { name: "lines".to_string(), mesh });
     }
     if let Some(mesh) = free_triangles(&scene.vertices, budget)? {
         meshes.push(NamedMesh { name: "vertices".to_string(), mesh });
     }
-    if let Some(mesh) = placed_shapes(scene, budget)? {
+    if let Some(mesh) = placed_shapes(scene, budget, &mut cutoff)? {
         meshes.push(NamedMesh { name: "isosurfaces".to_string(), mesh });
     }
-    Ok(meshes)
+    Ok((meshes, cutoff.cut))
+}
+
+/// Meshes each bone's geometry in the bone's own coordinates and builds the
+/// node graph (bones, animation samples, camera) that places them, for the
+/// outputs that carry a node hierarchy.
+pub fn build_with_graph(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<(Vec<NamedMesh>, NodeGraph), LimitExceeded> {
+    let mut meshes = Vec::new();
+    let mut bones = Vec::new();
+    match &scene.rig {
+        Some(rig) => {
+            for (bone, part) in rig.split(scene, budget)? {
+                for m in build_meshes(&part, detail, layout, budget)? {
+                    bones.push(bone);
+                    meshes.push(m);
+                }
+            }
+        }
+        None => {
+            meshes = build_meshes(scene, detail, layout, budget)?;
+            bones = vec![0; meshes.len()];
+        }
+    }
+    let graph = NodeGraph::new(scene.rig.as_ref(), scene.camera.as_ref(), &bones, budget)?;
+    Ok((meshes, graph))
 }
 
 /// One mesh per placed part — every primitive instance, shape placement and
@@ -103,7 +180,7 @@ pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Ve
     }
     // Each swept line on its own too: branches of one plant share positions.
     for line in &scene.lines {
-        if let Some(mesh) = super::sweep::sweep_lines(std::slice::from_ref(line), &scene.profiles, detail, budget)? {
+        if let Some(mesh) = crate::geom::sweep::sweep_lines(std::slice::from_ref(line), &scene.profiles, detail, budget, &mut |_| Ok(false))? {
             parts.push(NamedMesh { name: "lines".to_string(), mesh });
         }
     }
@@ -114,8 +191,8 @@ pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Ve
 }
 
 /// The scene's own shapes (isosurfaces) at each placement, in one mesh.
-fn placed_shapes(scene: &Scene, budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
-    let sizes = |s: &crate::eval::scene::ShapeInstance| {
+fn placed_shapes(scene: &Scene, budget: &mut Budget, cutoff: &mut Cutoff) -> Result<Option<Mesh>, LimitExceeded> {
+    let sizes = |s: &crate::model::scene::ShapeInstance| {
         scene.shapes.get(s.shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, p.indices.len() as u64 / 3))
     };
     let (v, t) = scene.shape_instances.iter().map(sizes).fold((0u64, 0u64), |(a, b), (v, t)| (a.saturating_add(v), b.saturating_add(t)));
@@ -123,7 +200,7 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget) -> Result<Option<Mesh>, Lim
         return Ok(None);
     }
     if v > u64::from(u32::MAX) {
-        return Err(LimitExceeded { limit: Limit::Memory, configured: budget.limits().max_memory, reached: budget.memory().saturating_add(mesh_bytes(v, t)) });
+        return Err(budget.memory_refused(mesh_bytes(v, t)));
     }
     budget.reserve_memory(mesh_bytes(v, t))?;
     let mut mesh = Mesh {
@@ -133,6 +210,9 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget) -> Result<Option<Mesh>, Lim
         indices: Vec::with_capacity(3 * t as usize),
     };
     for s in &scene.shape_instances {
+        if cutoff.stop(budget)? {
+            break;
+        }
         let Some(proto) = scene.shapes.get(s.shape as usize) else { continue };
         let placed = Instance::new(PrimitiveKind::Box, &s.frame, s.colour.map(f64::from));
         if is_drawable(&placed) {
@@ -167,6 +247,7 @@ fn build_instance_meshes(
     layout: MeshLayout,
     present: &[bool; PrimitiveKind::ALL.len()],
     budget: &mut Budget,
+    cutoff: &mut Cutoff,
     meshes: &mut Vec<NamedMesh>,
 ) -> Result<(), LimitExceeded> {
     let drawable = |i: &&Instance| is_drawable(i);
@@ -188,7 +269,7 @@ fn build_instance_meshes(
         if v > u64::from(u32::MAX) {
             // 32-bit indices cannot address this many vertices; report it as the
             // memory limit it would in practice exceed.
-            return Err(LimitExceeded { limit: Limit::Memory, configured: budget.limits().max_memory, reached: budget.memory().saturating_add(bytes) });
+            return Err(budget.memory_refused(bytes));
         }
         budget.reserve_memory(bytes)?;
         // Both counts are ≤ u32::MAX (t ≤ 2v for every primitive) after the check above.
@@ -200,10 +281,13 @@ fn build_instance_meshes(
             indices: Vec::with_capacity(iu),
         };
         for inst in members() {
+            if cutoff.stop(budget)? {
+                break;
+            }
             let proto = protos[inst.kind as usize].get_or_insert_with(|| primitives::tessellate(inst.kind, detail));
             append_instance(&mut mesh, proto, inst);
         }
-        debug_assert_eq!(mesh.byte_size(), bytes);
+        debug_assert!(cutoff.cut.is_some() || mesh.byte_size() == bytes);
         meshes.push(NamedMesh { name, mesh });
     }
     Ok(())
@@ -212,7 +296,7 @@ fn build_instance_meshes(
 /// Meshes of the scene's affine instances: one per class present, in class
 /// order, named `model` for the default class and by the class name otherwise
 /// (so `box::glass` ends up in a mesh and material called `glass`).
-fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, meshes: &mut Vec<NamedMesh>) -> Result<(), LimitExceeded> {
+fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, cutoff: &mut Cutoff, meshes: &mut Vec<NamedMesh>) -> Result<(), LimitExceeded> {
     if scene.affine.is_empty() {
         return Ok(());
     }
@@ -228,7 +312,7 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, meshes: 
         }
         let bytes = mesh_bytes(v, t);
         if v > u64::from(u32::MAX) {
-            return Err(LimitExceeded { limit: Limit::Memory, configured: budget.limits().max_memory, reached: budget.memory().saturating_add(bytes) });
+            return Err(budget.memory_refused(bytes));
         }
         budget.reserve_memory(bytes)?;
         let mut mesh = Mesh {
@@ -238,6 +322,9 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, meshes: 
             indices: Vec::with_capacity((t as usize).saturating_mul(3)),
         };
         for inst in members() {
+            if cutoff.stop(budget)? {
+                break;
+            }
             let proto = protos[inst.kind as usize].get_or_insert_with(|| primitives::tessellate(inst.kind, detail));
             append_affine(&mut mesh, proto, inst);
         }
@@ -284,16 +371,11 @@ fn append_mapped(mesh: &mut Mesh, proto: &Prototype, (linear, normal_matrix, tra
     }
 }
 
-/// Bytes of mesh buffers for `vertices` vertices and `triangles` triangles
-/// (position 12 + normal 12 + colour 4 per vertex, 12 per triangle).
-pub fn mesh_bytes(vertices: u64, triangles: u64) -> u64 {
-    vertices.saturating_mul(28).saturating_add(triangles.saturating_mul(12))
-}
 
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::eval::budget::Limits;
+    use crate::core::budget::{Limit, Limits};
     use crate::geom::primitives::tests::{assert_closed, signed_volume};
     use glam::Quat;
 

@@ -46,6 +46,19 @@ impl Default for Limits {
 }
 
 impl Limits {
+    /// The configured value of `limit` (the deadline in milliseconds).
+    pub fn value(&self, limit: Limit) -> u64 {
+        match limit {
+            Limit::Depth => self.max_depth.into(),
+            Limit::Primitives => self.max_primitives,
+            Limit::Triangles => self.max_triangles,
+            Limit::Memory => self.max_memory,
+            Limit::Deadline => self.timeout_ms,
+            Limit::SourceBytes => self.max_source_bytes,
+            Limit::Steps => self.max_steps,
+        }
+    }
+
     /// The largest value any request may ask for.
     pub fn ceiling() -> Limits {
         Limits {
@@ -141,6 +154,33 @@ pub struct Budget {
     triangles: u64,
     memory: u64,
     steps: u64,
+    /// Where the current stage's share of the deadline ends, when the
+    /// pipeline gave it one (under `on_limit: truncate`, so the stages after
+    /// a truncated one still finish within the deadline).
+    stage_deadline: Option<Instant>,
+}
+
+/// The counters of a [`Budget`] at one moment, to [`Budget::rewind`] to.
+///
+/// A front end that abandons one route for another (an L-system whose
+/// instancing DAG did not fit falls back to its string) refunds the work
+/// it threw away; the clock is never rewound, so the deadline still holds
+/// for the whole request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct BudgetMark {
+    primitives: u64,
+    triangles: u64,
+    memory: u64,
+    steps: u64,
+}
+
+
+impl LimitExceeded {
+    /// A limit read back from a file that records only that a limit cut the
+    /// model short (the `scene` format's truncated flag), not the values.
+    pub fn recorded(limit: Limit) -> LimitExceeded {
+        LimitExceeded { limit, configured: 0, reached: 0 }
+    }
 }
 
 impl Budget {
@@ -155,7 +195,67 @@ impl Budget {
             triangles: 0,
             memory: 0,
             steps: 0,
+            stage_deadline: None,
         }
+    }
+
+    /// The counters now, to rewind to when a route is abandoned.
+    pub fn mark(&self) -> BudgetMark {
+        BudgetMark { primitives: self.primitives, triangles: self.triangles, memory: self.memory, steps: self.steps }
+    }
+
+    /// Puts the counters back to `mark` (the work since was thrown away and
+    /// its memory freed). The clock and the deadline are not touched.
+    pub fn rewind(&mut self, mark: BudgetMark) {
+        self.primitives = mark.primitives;
+        self.triangles = mark.triangles;
+        self.memory = mark.memory;
+        self.steps = mark.steps;
+    }
+
+    /// Fails when a total the caller computed (segments of a derivation, steps
+    /// it will take, memory it will need) exceeds the configured `limit`,
+    /// before the work is done. Nothing is charged.
+    pub fn check_total(&self, limit: Limit, reached: u64) -> Result<(), LimitExceeded> {
+        Self::check_value(limit, self.limits.value(limit), reached)
+    }
+
+    /// Fails when `reached` exceeds `configured` for `limit`: for limits the
+    /// caller derives from the configured ones (a JavaScript script's loaded
+    /// text shares the source-size limit).
+    pub fn check_value(limit: Limit, configured: u64, reached: u64) -> Result<(), LimitExceeded> {
+        if reached > configured {
+            return Err(Self::exceeded(limit, configured, reached));
+        }
+        Ok(())
+    }
+
+    /// Fails when reserving `bytes` more would exceed the memory limit,
+    /// without reserving them (for callers that allocate in pieces).
+    pub fn check_memory(&self, bytes: u64) -> Result<(), LimitExceeded> {
+        self.check_total(Limit::Memory, self.memory.saturating_add(bytes))
+    }
+
+    /// The memory limit, refused for `bytes` more whatever the limit: for
+    /// allocations that cannot be made at all (more vertices than 32-bit
+    /// indices address) and for an engine with its own allocator (the
+    /// JavaScript sandbox) that ran out of what it was given. The value
+    /// reached is what the allocation would have brought, at least one byte
+    /// over the limit.
+    pub fn memory_refused(&self, bytes: u64) -> LimitExceeded {
+        let reached = self.memory.saturating_add(bytes).max(self.limits.max_memory.saturating_add(1));
+        Self::exceeded(Limit::Memory, self.limits.max_memory, reached)
+    }
+
+    /// Gives the stage that runs next only the time until `fraction` of the
+    /// deadline has passed (`None`: the whole deadline again). The pipeline
+    /// does this under `on_limit: truncate`, so that evaluation cut short at
+    /// its share still leaves meshing and export the time to finish.
+    pub fn set_stage_share(&mut self, fraction: Option<f64>) {
+        self.stage_deadline = fraction.and_then(|f| {
+            let ms = (self.limits.timeout_ms as f64 * f.clamp(0.0, 1.0)) as u64;
+            self.started.checked_add(Duration::from_millis(ms))
+        });
     }
 
     /// The limits this budget enforces.
@@ -257,13 +357,16 @@ impl Budget {
     }
 
     /// Fails once the wall-clock deadline has passed.
+    ///
+    /// Under a stage share ([`Budget::set_stage_share`]) the share's end
+    /// counts as the deadline, and the error names the share in milliseconds.
     pub fn check_deadline(&self) -> Result<(), LimitExceeded> {
-        match self.deadline {
-            Some(d) if Instant::now() >= d => Err(Self::exceeded(
-                Limit::Deadline,
-                self.limits.timeout_ms,
-                self.elapsed().as_millis().try_into().unwrap_or(u64::MAX),
-            )),
+        let (end, configured) = match (self.deadline, self.stage_deadline) {
+            (Some(d), Some(s)) if s < d => (Some(s), s.saturating_duration_since(self.started).as_millis().try_into().unwrap_or(u64::MAX)),
+            (d, _) => (d, self.limits.timeout_ms),
+        };
+        match end {
+            Some(d) if Instant::now() >= d => Err(Self::exceeded(Limit::Deadline, configured, self.elapsed().as_millis().try_into().unwrap_or(u64::MAX))),
             _ => Ok(()),
         }
     }

@@ -14,9 +14,9 @@
 //! `round(duration · fps) + 1` samples (both ends), a stream shorter than
 //! that loops, and static outputs show time 0.
 
-use super::budget::{Budget, LimitExceeded};
-use super::frame::Frame;
-use super::scene::{Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES, SHAPE_INSTANCE_BYTES};
+use crate::core::budget::{Budget, LimitExceeded};
+use crate::core::frame::Frame;
+use crate::model::scene::{Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES, INSTANCE_BYTES, LINE_POINT_BYTES, SHAPE_INSTANCE_BYTES};
 use crate::lang::ir::CameraLens;
 use std::collections::BTreeMap;
 
@@ -194,7 +194,7 @@ impl Rig {
         let shape_bytes: u64 = scene
             .shapes
             .iter()
-            .map(|p| crate::geom::meshing::mesh_bytes(p.positions.len() as u64, (p.indices.len() / 3) as u64))
+            .map(|p| crate::geom::mesh::mesh_bytes(p.positions.len() as u64, (p.indices.len() / 3) as u64))
             .sum();
         let profile_bytes: u64 = scene.profiles.iter().map(|p| 24 * p.len() as u64).sum();
         for s in parts.values_mut() {

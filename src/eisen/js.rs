@@ -20,10 +20,10 @@
 //! with the typed steps (or deadline) limit error — QuickJS makes that
 //! interruption uncatchable by the script.
 
-use crate::eval::budget::{Budget, Limit, LimitExceeded};
-use crate::eval::rng::StreamKey;
-use crate::eval::EvalError;
-use crate::lang::{Diagnostic, Span};
+use crate::core::budget::{Budget, Limit, LimitExceeded};
+use crate::core::rng::StreamKey;
+use crate::model::EvalError;
+use crate::core::{Diagnostic, Span};
 use rquickjs::prelude::Opt;
 use rquickjs::{Context, Ctx, Exception, Function, Runtime};
 use std::cell::RefCell;
@@ -44,12 +44,7 @@ const MAX_WARNINGS: usize = 100;
 /// The stream site of `Math.random` under the request's seed (no EisenScript action uses it).
 const MATH_RANDOM_SITE: u32 = u32::MAX - 1;
 
-/// True when `text` is a Structure Synth JavaScript script (its first
-/// non-blank line starts with `#javascript`).
-pub fn is_javascript(text: &[u8]) -> bool {
-    let start = text.iter().position(|b| !b.is_ascii_whitespace()).unwrap_or(text.len());
-    text[start..].get(..11).is_some_and(|p| p.eq_ignore_ascii_case(b"#javascript"))
-}
+pub use crate::lang::eisen::is_javascript;
 
 /// Where `Builder.load(name)` reads EisenScript from.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
@@ -70,7 +65,7 @@ impl Loader {
         match self {
             Loader::Library => {
                 let stem = name.strip_suffix(".es").unwrap_or(name);
-                match crate::grammars::source(stem).filter(|s| super::looks_like_eisenscript(s)) {
+                match crate::core::library::source(stem).filter(|s| crate::lang::eisen::looks_like_eisenscript(s)) {
                     Some(s) => Ok(s.to_string()),
                     None => Err(fail(
                         "the render service reads no files; Builder.load only loads built-in library grammars written in EisenScript, and there is none of that name".into(),
@@ -87,9 +82,7 @@ impl Loader {
                 if !meta.is_file() {
                     return Err(fail("not a file".into()));
                 }
-                if meta.len() > max_bytes {
-                    return Err(EvalError::Limit(LimitExceeded { limit: Limit::SourceBytes, configured: max_bytes, reached: meta.len() }));
-                }
+                Budget::check_value(Limit::SourceBytes, max_bytes, meta.len())?;
                 let bytes = std::fs::read(&path).map_err(|e| fail(e.to_string()))?;
                 String::from_utf8(bytes).map_err(|_| fail("the file is not valid UTF-8".into()))
             }
@@ -205,9 +198,7 @@ impl Shared {
             "info" => self.warn(format!("Debug: {a}")),
             _ => {}
         }
-        if self.loaded.len() as u64 > max {
-            return Err(EvalError::Limit(LimitExceeded { limit: Limit::SourceBytes, configured: max, reached: self.loaded.len() as u64 }));
-        }
+        Budget::check_value(Limit::SourceBytes, max, self.loaded.len() as u64)?;
         Ok(())
     }
 }
@@ -401,8 +392,10 @@ fn run_in_sandbox(source: &str, heap: u64, shared: &Rc<RefCell<Shared>>) -> Resu
                     Err(_) => format!("uncaught {:?}", thrown.type_name()),
                 };
                 if text.contains("out of memory") {
-                    let configured = shared.try_borrow().map(|s| s.budget.limits().max_memory).unwrap_or(0);
-                    return Err(EvalError::Limit(LimitExceeded { limit: Limit::Memory, configured, reached: configured.saturating_add(1) }));
+                    // The sandbox's allocator ran out of the memory budget it was given.
+                    if let Ok(s) = shared.try_borrow() {
+                        return Err(EvalError::Limit(s.budget.memory_refused(0)));
+                    }
                 }
                 Err(script_error(text))
             }

@@ -6,9 +6,9 @@
 //! Meshes are attached to nodes by index, so the meshes themselves stay
 //! plain (each in its node's local coordinates).
 
-use crate::eval::animation::{CameraPath, Rig};
-use crate::eval::budget::{Budget, LimitExceeded};
-use crate::eval::Frame;
+use crate::model::animation::{CameraPath, Rig};
+use crate::core::budget::{Budget, LimitExceeded};
+use crate::core::Frame;
 
 /// Translation, rotation and scale of a glTF node (rotation unit, x y z w).
 #[derive(Debug, Clone, Copy, PartialEq)]

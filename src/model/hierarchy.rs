@@ -2,7 +2,7 @@
 //! lists of (child object or leaf shape, rigid transform, colour).
 //!
 //! A [`Hierarchy`] is what an instanced L-system evaluates to instead of a flat
-//! [`Scene`](super::Scene): each distinct subtree of the derivation is one
+//! [`Scene`](crate::model::Scene): each distinct subtree of the derivation is one
 //! object, placed wherever the subtree occurs, so the hierarchy grows with the
 //! number of distinct subtrees (the b-grammar), not with the number of
 //! segments. Exporters either write it as it is (`format=scene`), walk it to
@@ -13,9 +13,11 @@
 //! objects `j < i` (the thesis's ordering condition), so the hierarchy is
 //! acyclic by construction and the root is the last object.
 
-use super::budget::LimitExceeded;
+use crate::core::budget::{Budget, LimitExceeded};
+use crate::core::frame::Frame;
+use crate::model::scene::{Scene, ShapeInstance, SHAPE_INSTANCE_BYTES};
 use crate::geom::primitives::{self, Prototype};
-use crate::lang::ir::PrimitiveKind;
+use crate::core::PrimitiveKind;
 use glam::{DQuat, DVec3};
 use std::collections::BTreeMap;
 
@@ -127,6 +129,22 @@ pub struct Hierarchy {
 pub const ENTRY_BYTES: u64 = std::mem::size_of::<Entry>() as u64;
 
 impl Hierarchy {
+    /// Expands the hierarchy into a flat scene, each leaf shape once and
+    /// placed at every leaf, for outputs that cannot instance. The placements
+    /// are charged to `budget` first.
+    pub fn expand(&self, detail: u32, budget: &mut Budget) -> Result<Scene, LimitExceeded> {
+        let mut scene = Scene::default();
+        budget.reserve_memory(self.leaves().saturating_mul(SHAPE_INSTANCE_BYTES))?;
+        scene.shapes = self.shapes.iter().map(|s| s.prototype(detail)).collect();
+        scene.shape_instances.reserve_exact(self.leaves() as usize);
+        self.walk(&mut |leaf| {
+            let frame = Frame { translation: leaf.translation, rotation: leaf.rotation, scale: 1.0, parity: false };
+            scene.shape_instances.push(ShapeInstance { shape: leaf.shape, frame, colour: leaf.colour.map(|c| f32::from(c) / 255.0) });
+        });
+        scene.truncated = self.truncated;
+        Ok(scene)
+    }
+
     /// Leaves in the full expansion (0 when there is no root).
     pub fn leaves(&self) -> u64 {
         self.objects.last().map_or(0, |o| o.leaves)

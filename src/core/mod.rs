@@ -1,0 +1,19 @@
+//! The leaf layer every other module may use: budgets and limits, seeded
+//! random streams, similarity frames, primitive kinds, request parameter
+//! values, source positions and diagnostics, and the embedded grammar
+//! library. Nothing here knows about languages, scenes or formats.
+
+pub mod budget;
+pub mod diagnostic;
+pub mod frame;
+pub mod library;
+pub mod param;
+pub mod primitive;
+pub mod rng;
+pub mod timing;
+
+pub use budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
+pub use diagnostic::{Diagnostic, ParseError, Severity, Span};
+pub use frame::Frame;
+pub use param::ParamValue;
+pub use primitive::PrimitiveKind;

@@ -1,0 +1,62 @@
+//! What a front end is asked for: the parts of a render request that shape
+//! the model (seed, parameters, detail, what to do at a limit), what the
+//! stages after it will need, and nothing about output formats.
+
+use crate::core::{OnLimit, ParamValue};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// The cost of one output vertex and one output triangle in later stages
+/// (mesh buffers and encoded output). Front ends charge it to the memory
+/// budget as geometry is made, so the memory limit binds (or truncates)
+/// during evaluation instead of after a model too big to mesh is built.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Downstream {
+    /// Bytes per vertex.
+    pub per_vertex: u64,
+    /// Bytes per triangle.
+    pub per_triangle: u64,
+}
+
+impl Downstream {
+    /// Bytes for `v` vertices and `t` triangles.
+    pub fn bytes(&self, v: u64, t: u64) -> u64 {
+        v.saturating_mul(self.per_vertex).saturating_add(t.saturating_mul(self.per_triangle))
+    }
+}
+
+/// Whether the stages can use an instancing [`Hierarchy`](crate::model::Hierarchy).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HierarchyUse {
+    /// Flat geometry only (STL, strips, printing, …).
+    Never,
+    /// A hierarchy where the language builds one cheaply (glTF: instanced or
+    /// expanded), else flat geometry.
+    Preferred,
+    /// Only a hierarchy will do (`format=scene`).
+    Required,
+}
+
+/// One front end call: everything besides the source that decides the model.
+#[derive(Debug, Clone, Copy)]
+pub struct BuildRequest<'a> {
+    /// The request's seed; `None` lets the language choose (its own seed
+    /// directive, else 0).
+    pub seed: Option<u64>,
+    /// Values for the source's parameters.
+    pub params: &'a BTreeMap<String, ParamValue>,
+    /// Tessellation detail, for counting triangles against the budget.
+    pub detail: u32,
+    /// Fail or truncate at a limit.
+    pub on_limit: OnLimit,
+    /// What later stages need per vertex and triangle (see [`Downstream`]).
+    pub downstream: Downstream,
+    /// Whether a hierarchy is wanted.
+    pub hierarchy: HierarchyUse,
+    /// Whether the output plays animation (plain glTF): a Structure Synth
+    /// movie then keeps every frame instead of showing the first.
+    pub animated: bool,
+    /// The folder a Structure Synth JavaScript script's `Builder.load` reads
+    /// from; `None` (the service) loads built-in library grammars only.
+    pub script_dir: Option<&'a Path>,
+}
