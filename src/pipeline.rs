@@ -333,7 +333,7 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
             return Ok(summary(bytes, &model, report.triangles, scene.truncated));
         }
         (solid, None, None)
-    } else if (scene.rig.is_some() || scene.camera.is_some()) && graph_capable(req) {
+    } else if (scene.rig.is_some() || scene.camera.as_ref().is_some_and(|c| c.is_path())) && graph_capable(req) {
         let (meshes, graph) = mesh::build_with_graph(scene, req.detail, req.layout, budget)?;
         (meshes, Some(graph), None)
     } else {
@@ -343,12 +343,14 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
     clock.lap(Phase::Mesh);
     let truncated = scene.truncated.or(cut);
     budget.set_stage_share(None);
+    let in_graph = graph.is_some();
     let meta = ExportMeta {
         background: scene.background,
         truncated: truncated.is_some(),
         graph,
         material_per_mesh: !scene.classes.is_empty(),
-        camera: scene.view,
+        // A camera path plays in the node graph; otherwise the camera is shown at time 0.
+        camera: scene.camera.clone().filter(|c| !(c.is_path() && in_graph)),
     };
     let bytes = export::export_with(req.format, &meshes, &meta, opts, budget)?;
     clock.lap(Phase::Export);

@@ -21,7 +21,7 @@ use crate::core::budget::{Budget, LimitExceeded, OnLimit};
 use crate::core::rng::StreamKey;
 use crate::model::scene::{AffineInstance, FreeVertex, Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
 use crate::model::EvalError;
-use crate::model::scene::SceneCamera;
+use crate::model::Camera;
 use crate::lang::eisen::{colour, Action, CameraSetting, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
 use crate::core::PrimitiveKind;
 use glam::{DMat3, DMat4, DVec3, Mat3};
@@ -58,7 +58,7 @@ impl Default for View {
 
 impl View {
     /// The eye in world space: the inverse of the view map at the view origin.
-    fn camera(&self) -> Option<SceneCamera> {
+    fn camera(&self) -> Option<Camera> {
         // Structure Synth's saved rotations are rotations up to rounding; re-orthonormalise.
         let q = glam::DQuat::from_mat3(&self.rotation).normalize();
         if !q.is_finite() || !(self.scale.is_finite() && self.scale > 0.0) {
@@ -67,11 +67,7 @@ impl View {
         let inverse = q.conjugate();
         let position = self.pivot - (inverse * self.translation) / self.scale;
         let fov = self.angle.clamp(1.0, 179.0).to_radians();
-        position.is_finite().then(|| SceneCamera {
-            translation: position.as_vec3().to_array(),
-            rotation: inverse.as_quat().normalize().to_array(),
-            yfov: fov as f32,
-        })
+        position.is_finite().then(|| Camera::still(position.as_vec3().to_array(), inverse.as_quat().normalize().to_array(), fov as f32))
     }
 }
 
@@ -209,7 +205,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
     };
     let result = if script.depth_first { b.depth_first(start) } else { b.breadth_first(start) };
     b.budget.release_memory(b.next_bytes);
-    b.built.scene.view = b.view.and_then(|v| v.camera());
+    b.built.scene.camera = b.view.and_then(|v| v.camera());
     match result {
         Ok(()) => Ok(b.built),
         Err(e) if b.opts.on_limit == OnLimit::Truncate => {

@@ -115,7 +115,7 @@ fn assemble(frames: Vec<Built>, animated: bool, budget: &mut Budget) -> Result<(
     let mut objects = 0u64;
     let mut iter = frames.into_iter();
     let Some(first) = iter.next() else { return Ok((Scene::default(), 0)) };
-    let mut scene = Scene { classes: first.scene.classes.clone(), view: first.scene.view, background: first.scene.background, ..Scene::default() };
+    let mut scene = Scene { classes: first.scene.classes.clone(), camera: first.scene.camera.clone(), background: first.scene.background, ..Scene::default() };
     for (k, built) in std::iter::once(first).chain(iter).enumerate() {
         let bone = (k + 1) as u32;
         rig.bones.push(Bone { name: format!("frame {k}"), parent: 0, local: Frame::IDENTITY, body: Frame::IDENTITY, track: bone });

@@ -366,7 +366,7 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
     let mut result = m.run(ev.program.start, root);
     if result.is_ok() {
         match m.camera() {
-            Ok(c) => m.scene.camera = c,
+            Ok(c) => m.scene.camera = c.as_ref().map(crate::model::Camera::from_path),
             Err(e) => result = Err(e),
         }
     }

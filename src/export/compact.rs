@@ -429,11 +429,19 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
         root.insert("extensionsRequired".into(), json!(used));
     }
     let mut scene_nodes = vec![json!(0)];
-    if let Some(c) = meta.camera {
-        let perspective = json!({"yfov": c.yfov, "znear": super::gltf::CAMERA_ZNEAR});
-        root.insert("cameras".into(), json!([{"type": "perspective", "perspective": perspective}]));
+    if let Some(c) = &meta.camera {
+        let mut perspective = json!({"yfov": c.yfov, "znear": c.znear});
+        if let Some(far) = c.zfar {
+            perspective["zfar"] = json!(far);
+        }
+        let mut camera = json!({"type": "perspective", "perspective": perspective});
+        if let Some(name) = &c.name {
+            camera["name"] = json!(name);
+        }
+        root.insert("cameras".into(), json!([camera]));
+        let at = c.first();
         scene_nodes.push(json!(nodes.len()));
-        nodes.push(json!({"camera": 0, "name": "camera", "rotation": c.rotation, "translation": c.translation}));
+        nodes.push(json!({"camera": 0, "name": "camera", "rotation": at.rotation, "translation": at.translation}));
     }
     root.insert("nodes".into(), Value::Array(nodes));
     root.insert("scene".into(), json!(0));

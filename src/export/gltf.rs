@@ -304,9 +304,9 @@ fn add_graph(root: &mut json::Root, g: &NodeGraph, tracks: &Tracks, buffer: Opti
     }
     let camera_node = g.camera.as_ref().map(|c| {
         let camera = root.push(json::Camera {
-            name: Some("camerarule".to_string()),
+            name: c.name.clone(),
             orthographic: None,
-            perspective: Some(json::camera::Perspective { aspect_ratio: None, yfov: c.yfov, zfar: Some(c.zfar), znear: c.znear, extensions: None, extras: None }),
+            perspective: Some(json::camera::Perspective { aspect_ratio: None, yfov: c.yfov, zfar: c.zfar, znear: c.znear, extensions: None, extras: None }),
             type_: Valid(json::camera::Type::Perspective),
             extensions: None,
             extras: None,
@@ -443,15 +443,16 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &E
         root.nodes[root_node.value()].children = Some(children);
     }
     let mut nodes = vec![root_node];
-    if let Some(c) = meta.camera {
+    if let Some(c) = &meta.camera {
+        let at = c.first();
         let camera = root.push(json::Camera {
-            name: None,
+            name: c.name.clone(),
             orthographic: None,
             perspective: Some(json::camera::Perspective {
                 aspect_ratio: None,
                 yfov: c.yfov,
-                zfar: None,
-                znear: CAMERA_ZNEAR,
+                zfar: c.zfar,
+                znear: c.znear,
                 extensions: None,
                 extras: Default::default(),
             }),
@@ -462,8 +463,8 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &E
         nodes.push(root.push(json::Node {
             camera: Some(camera),
             name: Some("camera".to_string()),
-            rotation: Some(json::scene::UnitQuaternion(c.rotation)),
-            translation: Some(c.translation),
+            rotation: Some(json::scene::UnitQuaternion(at.rotation)),
+            translation: Some(at.translation),
             ..Default::default()
         }));
     }
@@ -472,8 +473,6 @@ fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &E
     Ok(root.to_vec()?)
 }
 
-/// Near clipping distance of exported cameras (glTF requires one; the far plane is infinite).
-pub(crate) const CAMERA_ZNEAR: f32 = 0.01;
 
 /// A destination for the binary buffer's bytes.
 trait Sink {

@@ -138,7 +138,7 @@ pub struct ExportMeta {
     /// (`box::glass`) become meshes and materials a viewer can restyle.
     pub material_per_mesh: bool,
     /// A viewpoint to add as a glTF perspective camera (glTF formats only).
-    pub camera: Option<crate::model::scene::SceneCamera>,
+    pub camera: Option<crate::model::Camera>,
 }
 
 /// Export failures.
@@ -215,20 +215,15 @@ pub fn export_with(
     options: &ExportOptions,
     budget: &mut Budget,
 ) -> Result<Vec<u8>, ExportError> {
-    let fitted;
-    let meshes = if options.fit_unit_box {
+    let (fitted, moved);
+    let (meshes, meta) = if options.fit_unit_box {
+        // The camera moves with the model, so the fitted model is seen as the original was.
+        let map = crate::geom::normalize::unit_box_map(meshes);
         fitted = crate::geom::normalize::fit_unit_box(meshes, budget)?;
-        &fitted[..]
+        moved = ExportMeta { camera: meta.camera.as_ref().map(|c| map.map_or_else(|| c.clone(), |(centre, scale)| c.fitted(centre, scale))), ..meta.clone() };
+        (&fitted[..], &moved)
     } else {
-        meshes
-    };
-    // A camera placed for the model's own frame would look past a fitted one.
-    let unplaced;
-    let meta = if options.fit_unit_box && meta.camera.is_some() {
-        unplaced = ExportMeta { camera: None, ..meta.clone() };
-        &unplaced
-    } else {
-        meta
+        (meshes, meta)
     };
     let g = &options.gltf;
     match format {

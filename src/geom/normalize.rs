@@ -23,6 +23,16 @@ pub fn bounds(meshes: &[NamedMesh]) -> Option<([f64; 3], [f64; 3])> {
     (lo.iter().chain(&hi).all(|c| c.is_finite())).then_some((lo, hi))
 }
 
+/// The map `p ↦ (p − centre) · scale` that [`fit_unit_box`] applies:
+/// the bounding box's centre and the inverse of its longest side (1 for a
+/// flat or empty model). `None` when the meshes have no finite bounds.
+pub fn unit_box_map(meshes: &[NamedMesh]) -> Option<([f64; 3], f64)> {
+    let (lo, hi) = bounds(meshes)?;
+    let centre = [0, 1, 2].map(|a| (lo[a] + hi[a]) * 0.5);
+    let ext = (0..3).map(|a| hi[a] - lo[a]).fold(0.0f64, f64::max);
+    Some((centre, if ext > 0.0 { 1.0 / ext } else { 1.0 }))
+}
+
 /// A copy of `meshes` scaled uniformly so the longest side of the bounding
 /// box is 1 and moved so its centre is the origin: every position ends up in
 /// `[-0.5, 0.5]³`. Normals are unchanged (the scale is uniform and positive,
@@ -30,12 +40,9 @@ pub fn bounds(meshes: &[NamedMesh]) -> Option<([f64; 3], [f64; 3])> {
 /// moved. The copy's bytes are reserved in `budget` first.
 pub fn fit_unit_box(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
     budget.reserve_memory(meshes.iter().map(|m| m.mesh.byte_size()).sum())?;
-    let Some((lo, hi)) = bounds(meshes) else {
+    let Some((centre, scale)) = unit_box_map(meshes) else {
         return Ok(meshes.to_vec());
     };
-    let centre = [0, 1, 2].map(|a| (lo[a] + hi[a]) * 0.5);
-    let ext = (0..3).map(|a| hi[a] - lo[a]).fold(0.0f64, f64::max);
-    let scale = if ext > 0.0 { 1.0 / ext } else { 1.0 };
     Ok(meshes
         .iter()
         .map(|m| {

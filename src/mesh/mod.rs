@@ -148,7 +148,8 @@ pub fn build_with_graph(scene: &Scene, detail: u32, layout: MeshLayout, budget: 
             bones = vec![0; meshes.len()];
         }
     }
-    let graph = NodeGraph::new(scene.rig.as_ref(), scene.camera.as_ref(), &bones, budget)?;
+    // A still camera is no node of the graph: it is written at time 0 like every other still.
+    let graph = NodeGraph::new(scene.rig.as_ref(), scene.camera.as_ref().filter(|c| c.is_path()), &bones, budget)?;
     Ok((meshes, graph))
 }
 

@@ -6,7 +6,8 @@
 //! Meshes are attached to nodes by index, so the meshes themselves stay
 //! plain (each in its node's local coordinates).
 
-use crate::model::animation::{CameraPath, Rig};
+use crate::model::animation::Rig;
+use crate::model::Camera;
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::core::Frame;
 
@@ -58,12 +59,14 @@ pub struct GraphNode {
 /// A camera with its placement per sample.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GraphCamera {
+    /// The glTF camera's name.
+    pub name: Option<String>,
     /// Vertical field of view, radians.
     pub yfov: f32,
     /// Near plane.
     pub znear: f32,
-    /// Far plane.
-    pub zfar: f32,
+    /// Far plane (`None`: infinite).
+    pub zfar: Option<f32>,
     /// The camera node's transform per sample (one entry: a still camera).
     pub samples: Vec<Trs>,
 }
@@ -95,8 +98,8 @@ impl NodeGraph {
     /// Builds the graph of `rig` (bones → nodes; bone 0, the root, becomes no
     /// node) and `camera`, for meshes made per bone in the order `mesh_bones`.
     /// Sampled transforms are charged to `budget` first.
-    pub fn new(rig: Option<&Rig>, camera: Option<&CameraPath>, mesh_bones: &[u32], budget: &mut Budget) -> Result<NodeGraph, LimitExceeded> {
-        let timeline = rig.map(|r| r.timeline).or(camera.map(|c| c.timeline));
+    pub fn new(rig: Option<&Rig>, camera: Option<&Camera>, mesh_bones: &[u32], budget: &mut Budget) -> Result<NodeGraph, LimitExceeded> {
+        let timeline = rig.map(|r| r.timeline).or(camera.and_then(|c| c.timeline));
         let samples = timeline.map_or(1, |t| t.samples as usize);
         let bones = rig.map_or(0, |r| r.bones.len().saturating_sub(1));
         let trs_bytes = std::mem::size_of::<Trs>() as u64;
@@ -116,12 +119,7 @@ impl NodeGraph {
                 });
             }
         }
-        let camera = camera.map(|c| GraphCamera {
-            yfov: c.lens.fov_degrees.to_radians() as f32,
-            znear: c.lens.near as f32,
-            zfar: c.lens.far as f32,
-            samples: still_if_constant(c.frames.iter().map(Trs::of_view).collect()),
-        });
+        let camera = camera.map(|c| GraphCamera { name: c.name.clone(), yfov: c.yfov, znear: c.znear, zfar: c.zfar, samples: still_if_constant(c.placements.clone()) });
         let step = timeline.is_some_and(|t| t.step);
         Ok(NodeGraph { nodes, mesh_nodes: mesh_bones.iter().map(|b| b.checked_sub(1)).collect(), times, camera, step })
     }

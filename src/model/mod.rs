@@ -5,12 +5,14 @@
 //! and how it fails ([`BuildError`]).
 
 pub mod animation;
+pub mod camera;
 pub mod error;
 pub mod graph;
 pub mod hierarchy;
 pub mod request;
 pub mod scene;
 
+pub use camera::Camera;
 pub use error::EvalError;
 pub use hierarchy::Hierarchy;
 pub use request::{BuildRequest, Downstream, HierarchyUse};

@@ -120,17 +120,6 @@ impl AffineInstance {
     }
 }
 
-/// A viewpoint to export with the model (a glTF perspective camera).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SceneCamera {
-    /// The camera's position in world space.
-    pub translation: [f32; 3],
-    /// The camera's orientation, a unit quaternion (x, y, z, w); it looks down its local −Z.
-    pub rotation: [f32; 4],
-    /// Vertical field of view, radians.
-    pub yfov: f32,
-}
-
 /// Bytes accounted per stored affine instance.
 pub const AFFINE_INSTANCE_BYTES: u64 = std::mem::size_of::<AffineInstance>() as u64;
 
@@ -187,9 +176,6 @@ pub struct Scene {
     /// Names of the classes [`AffineInstance::class`] indexes (`box::shiny` → `shiny`);
     /// index 0 is the default class. Empty when no language uses classes.
     pub classes: Vec<String>,
-    /// A still viewpoint the source set (EisenScript's camera settings),
-    /// exported as a glTF camera. MDG's `camerarule` path is [`Scene::camera`].
-    pub view: Option<SceneCamera>,
     /// Clear colour from `background`, if the grammar set one.
     pub background: Option<[f32; 4]>,
     /// Set when evaluation stopped at a limit and `on_limit = truncate` kept the partial result.
@@ -197,8 +183,8 @@ pub struct Scene {
     /// Animation bones (calls of animated rules) and which bone each piece
     /// of geometry belongs to; `None` when the grammar animates nothing.
     pub rig: Option<crate::model::animation::Rig>,
-    /// The camera path of `camerarule`, if the grammar has one.
-    pub camera: Option<crate::model::animation::CameraPath>,
+    /// The camera: MDG's `camerarule` path or Structure Synth's viewer settings.
+    pub camera: Option<crate::model::Camera>,
 }
 
 /// Bytes accounted per stored instance (for the memory budget).

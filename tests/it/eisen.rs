@@ -297,11 +297,14 @@ fn viewer_settings_become_a_gltf_camera() {
     let t: Vec<f64> = turned["translation"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
     assert!((t[0] + 20.0).abs() < 1e-4 && t[1].abs() < 1e-4 && t[2].abs() < 1e-4, "{t:?}");
     assert!(render(b"set rotation [1 0 0]\nbox", &req(Format::Glb)).is_err());
-    // Fitting the model into the unit box leaves the camera out.
+    // Fitting the model into the unit box moves the camera with it: Structure
+    // Synth's box spans 0..1, so the fit moves everything by −0.5 (scale 1).
     let mut fit = req(Format::Gltf);
     fit.export_options.fit_unit_box = true;
     let j: serde_json::Value = serde_json::from_slice(&render(b"set scale 2\nbox", &fit).unwrap().bytes).unwrap();
-    assert!(j.get("cameras").is_none());
+    assert_eq!(j["cameras"].as_array().map(Vec::len), Some(1));
+    let node = j["nodes"].as_array().unwrap().iter().find(|n| n.get("camera").is_some()).unwrap();
+    assert_eq!(node["translation"], serde_json::json!([-0.5, -0.5, 9.5]));
 }
 
 /// Every `.es` under `dir`, sorted.

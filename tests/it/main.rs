@@ -5,6 +5,7 @@
 mod common;
 
 mod cli;
+mod camera;
 mod animation;
 mod compact;
 mod counts;
