@@ -238,6 +238,7 @@ pub fn interpret_stream(
         point_tris: sweep::per_point_bound(sweep::profile_sides(opts.detail)).1,
         leaves: None,
         polygons: Vec::new(),
+        read: 0,
     };
     let result = feed(&mut |sym, p| t.module(sym, p, budget));
     t.release_scratch(budget);
@@ -263,6 +264,9 @@ struct Turtle<'a> {
     leaves: Option<Vec<Leaf>>,
     /// Open polygons (`{`), innermost last: the vertices recorded by `.` so far.
     polygons: Vec<Vec<DVec3>>,
+    /// Modules read so far, to look at the deadline every 1024 of them
+    /// (reading is not charged as steps; only the clock bounds it).
+    read: u32,
 }
 
 /// A turtle in leaf mode: it records each segment as a [`Leaf`] in its own
@@ -286,6 +290,7 @@ impl<'a> LeafTurtle<'a> {
                 point_tris: 0,
                 leaves: Some(Vec::new()),
                 polygons: Vec::new(),
+                read: 0,
             },
         }
     }
@@ -339,6 +344,10 @@ impl Turtle<'_> {
     }
 
     fn module(&mut self, sym: u32, p: &[f64], budget: &mut Budget) -> Result<(), EvalError> {
+        self.read = self.read.wrapping_add(1);
+        if self.read % 1024 == 0 {
+            budget.check_deadline()?;
+        }
         let arg = |k: usize| p.get(k).copied();
         match self.actions.get(sym as usize).copied().unwrap_or(Action::None) {
             Action::Draw => {
