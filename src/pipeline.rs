@@ -8,8 +8,10 @@
 //!
 //! Deadlines: under `on_limit: error` every stage fails with the deadline
 //! once it has passed. Under `truncate` the stages get shares of it — the
-//! front end stops at [`EVAL_SHARE`], meshing at [`MESH_SHARE`] — so that
-//! what is cut short is still meshed and written before the deadline.
+//! front end stops at [`EVAL_SHARE`] of the deadline, meshing after
+//! [`MESH_SHARE`] of what is left — so that what is cut short is still
+//! meshed and written before the deadline (writing takes about twice as
+//! long as meshing the same triangles, and cannot be cut).
 
 use crate::core::budget::{Budget, LimitExceeded, Limits, OnLimit};
 use crate::core::timing::{Phase, StageClock};
@@ -29,9 +31,10 @@ pub use crate::core::timing::PhaseTimes;
 /// use: what it made by then is kept.
 pub const EVAL_SHARE: f64 = 0.5;
 
-/// Under `on_limit: truncate`, the share of the deadline by which meshing
-/// stops (keeping the meshes made), leaving the rest for export.
-pub const MESH_SHARE: f64 = 0.85;
+/// Under `on_limit: truncate`, the share of the time left after the front
+/// end that meshing may use (keeping the meshes made by then); the rest is
+/// for export, which is not interruptible.
+pub const MESH_SHARE: f64 = 1.0 / 3.0;
 
 /// Everything that determines a render besides the source text.
 #[derive(Debug, Clone, PartialEq)]
@@ -248,6 +251,17 @@ fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, budget
     }
 }
 
+/// The share of the whole deadline at which meshing stops under `truncate`:
+/// now plus [`MESH_SHARE`] of the time left.
+fn mesh_share(budget: &Budget) -> f64 {
+    let timeout = budget.limits().timeout_ms as f64;
+    if timeout <= 0.0 {
+        return 0.0;
+    }
+    let now = (budget.elapsed().as_secs_f64() * 1000.0 / timeout).min(1.0);
+    now + (1.0 - now) * MESH_SHARE
+}
+
 /// Under `truncate`, records `e` as the reason the model is partial; under `error`, fails with it.
 fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, model: &mut Model) -> Result<(), RenderError> {
     match on_limit {
@@ -290,7 +304,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     clock.lap(Phase::Eval);
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut model))?;
     budget.release_memory(model.promised.saturating_add(overhead));
-    budget.set_stage_share(truncating.then_some(MESH_SHARE));
+    budget.set_stage_share(truncating.then(|| mesh_share(&budget)));
     let out = stages(model, req, &mut budget, &mut clock);
     budget.set_stage_share(None);
     let out = out?;

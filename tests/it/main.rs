@@ -9,6 +9,7 @@ mod camera;
 mod animation;
 mod compact;
 mod counts;
+mod deadline;
 mod directives;
 mod etol;
 mod determinism;

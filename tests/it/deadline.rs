@@ -1,0 +1,119 @@
+//! The deadline is kept (issue #14): a render ends within 1.2 × its
+//! deadline in both `on_limit` modes, for a slow stochastic L-system, a slow
+//! MDG grammar and a slow EisenScript script, with every other limit far
+//! away. Under `error` the failure names the deadline; under `truncate` the
+//! partial model says it was cut at the deadline.
+//!
+//! This is a bound, not a benchmark: each case must stay under the bound,
+//! and the cases run one after another so they do not share the cores.
+
+use crate::common::bin;
+use rulemesh::core::{Limit, Limits, OnLimit};
+use rulemesh::lang::Language;
+use rulemesh::pipeline::{render, RenderError, RenderRequest};
+use std::time::{Duration, Instant};
+
+/// Every limit but the deadline far away.
+fn limits(timeout_ms: u64) -> Limits {
+    Limits {
+        max_depth: 100_000,
+        max_primitives: 50_000_000,
+        max_triangles: 1_000_000_000,
+        max_memory: 8_000_000_000,
+        timeout_ms,
+        max_source_bytes: 1 << 20,
+        max_steps: 2_000_000_000,
+    }
+}
+
+/// ABOP's stochastic plant at 12 iterations: derivation and turtle run for seconds.
+fn slow_lsystem() -> String {
+    include_str!("../../grammars/stochastic-plant.ls").replace("iterations: 5", "iterations: 12")
+}
+
+/// A billion iteration copies, one in a thousand drawing a box.
+const SLOW_MDG: &str = "startshape A\nrule A { 1000000000 * { x 1 } B {} }\nrule B 0.999 { }\nrule B 0.001 { BOX {} }\n";
+
+/// A breadth-first explosion that rarely draws.
+const SLOW_ES: &str = "set maxdepth 2000\nset maxobjects 100000000\nr\nrule r { { x 1 ry 1 } r { y 1 rx 1 } r }\nrule r w 0.001 { box }\n";
+
+/// A depth-first explosion that draws two primitives per call: hundreds of
+/// megabytes of glTF, so meshing and export must leave time for each other.
+const BIG_MDG: &str = "startshape A\nrule A { B {} A { x 1 ry 1 } A { y 1 rx 1 } }\nrule B { BOX { s 0.5 } SPHERE { x 0.3 s 0.2 } }\n";
+
+fn cases() -> Vec<(&'static str, Language, String)> {
+    vec![
+        ("stochastic L-system", Language::Lsystem, slow_lsystem()),
+        ("MDG iterator", Language::Mdg, SLOW_MDG.to_string()),
+        ("EisenScript", Language::Eisenscript, SLOW_ES.to_string()),
+    ]
+}
+
+const DEADLINE: Duration = Duration::from_millis(1000);
+/// 1.2 × the deadline.
+const BOUND: Duration = Duration::from_millis(1200);
+
+#[test]
+fn renders_end_within_the_deadline_in_both_modes() {
+    for (name, language, source) in cases() {
+        for on_limit in [OnLimit::Error, OnLimit::Truncate] {
+            let req = RenderRequest { language: Some(language), limits: limits(DEADLINE.as_millis() as u64), on_limit, ..RenderRequest::default() };
+            let start = Instant::now();
+            let result = render(source.as_bytes(), &req);
+            let took = start.elapsed();
+            assert!(took <= BOUND, "{name} ({on_limit:?}) took {took:?}");
+            match (on_limit, result) {
+                (OnLimit::Error, Err(RenderError::Limit(l))) => assert_eq!(l.limit, Limit::Deadline, "{name}: {l}"),
+                (OnLimit::Truncate, Ok(out)) => {
+                    let l = out.truncated.unwrap_or_else(|| panic!("{name}: not truncated"));
+                    assert_eq!(l.limit, Limit::Deadline, "{name}: {l}");
+                    assert!(!out.bytes.is_empty());
+                }
+                (mode, other) => panic!("{name} ({mode:?}): {:?}", other.map(|o| (o.primitives, o.truncated))),
+            }
+        }
+    }
+}
+
+#[test]
+fn a_truncated_model_too_big_to_write_in_time_is_cut_in_meshing() {
+    let req = RenderRequest { language: Some(Language::Mdg), limits: limits(1000), on_limit: OnLimit::Truncate, ..RenderRequest::default() };
+    let start = Instant::now();
+    let out = render(BIG_MDG.as_bytes(), &req).expect("a partial model");
+    let took = start.elapsed();
+    assert!(took <= BOUND, "took {took:?} ({:?})", out.phases);
+    assert!(out.truncated.is_some());
+    assert!(out.triangles > 0);
+}
+
+#[test]
+fn the_cli_keeps_the_deadline_in_both_modes() {
+    let dir = crate::common::tempdir();
+    for (name, language, source) in cases() {
+        let src = dir.path().join("slow.txt");
+        std::fs::write(&src, &source).expect("write source");
+        for mode in ["error", "truncate"] {
+            let out_path = dir.path().join(format!("out-{mode}.glb"));
+            let start = Instant::now();
+            let out = std::process::Command::new(bin())
+                .args(["render", src.to_str().expect("utf-8"), "--language", language.name(), "--timeout", "1000", "--on-limit", mode])
+                .args(["--max-memory", "8000000000", "--max-primitives", "50000000", "--max-triangles", "1000000000"])
+                .args(["--max-steps", "2000000000", "--max-depth", "100000", "-o", out_path.to_str().expect("utf-8")])
+                .output()
+                .expect("run rulemesh");
+            let took = start.elapsed();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert!(took <= BOUND, "{name} ({mode}) took {took:?}: {stderr}");
+            match mode {
+                "error" => {
+                    assert_eq!(out.status.code(), Some(3), "{name}: {stderr}");
+                    assert!(stderr.contains("deadline"), "{name}: {stderr}");
+                }
+                _ => {
+                    assert!(out.status.success(), "{name}: {stderr}");
+                    assert!(stderr.contains("TRUNCATED at deadline"), "{name}: {stderr}");
+                }
+            }
+        }
+    }
+}
