@@ -363,9 +363,7 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
     let mesh = rulemesh::export::decode_strips(&bytes).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
     let triangles = mesh.triangle_count();
     let meshes = [rulemesh::geom::NamedMesh { name: "model".into(), mesh }];
-    let limits = Limits::ceiling();
-    let out = rulemesh::export::export(format, &meshes, &Default::default(), &mut rulemesh::core::Budget::new(limits))
-        .map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
+    let out = rulemesh::pipeline::write_meshes(format, &meshes, &Limits::ceiling()).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
     write_output(&args.output, &out)?;
     eprintln!("{}: {} triangles, {} bytes ({:?})", args.file, triangles, out.len(), format);
     Ok(())

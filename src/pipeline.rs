@@ -273,6 +273,18 @@ fn truncate_or_fail(on_limit: OnLimit, e: LimitExceeded, model: &mut Model) -> R
     }
 }
 
+/// The budget of one request: the only place one is made (outside tests),
+/// so every stage of a request charges the same counters and one clock.
+fn budget_for(limits: Limits) -> Budget {
+    Budget::new(limits)
+}
+
+/// Writes meshes that come from outside a render (the CLI's `decode` of a
+/// strips file) in `format`, under a budget of `limits`.
+pub fn write_meshes(format: Format, meshes: &[geom::NamedMesh], limits: &Limits) -> Result<Vec<u8>, RenderError> {
+    Ok(export::export(format, meshes, &ExportMeta::default(), &mut budget_for(*limits))?)
+}
+
 /// Renders `source` as the request says. Never panics on bad input; every
 /// failure is a typed [`RenderError`].
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
@@ -283,7 +295,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         return Err(RenderError::BadRequest("format `scene` writes object-instancing hierarchies, which only L-systems make".into()));
     }
     let truncating = req.on_limit == OnLimit::Truncate;
-    let mut budget = Budget::new(req.limits);
+    let mut budget = budget_for(req.limits);
     let mut clock = StageClock::start();
     // Promise the memory that meshing and export will need while evaluating,
     // so the memory limit binds (or truncates) as primitives are made.

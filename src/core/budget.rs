@@ -199,6 +199,31 @@ impl Budget {
         }
     }
 
+    /// Moves this budget out (to an engine that must own it, like the
+    /// JavaScript sandbox's shared state), leaving behind a spent budget with
+    /// the same limits whose deadline has already passed, so that nothing can
+    /// mistake the placeholder for a fresh budget. Put the budget back with
+    /// plain assignment when the engine is done.
+    pub fn take(&mut self) -> Budget {
+        let spent = self.spent();
+        std::mem::replace(self, spent)
+    }
+
+    /// A placeholder for this budget while it is lent out (see
+    /// [`Budget::take`]): the same limits and start, a deadline already passed.
+    pub fn spent(&self) -> Budget {
+        Budget {
+            limits: self.limits,
+            started: self.started,
+            deadline: Some(self.started),
+            primitives: 0,
+            triangles: 0,
+            memory: 0,
+            steps: 0,
+            stage_deadline: None,
+        }
+    }
+
     /// The counters now, to rewind to when a route is abandoned.
     pub fn mark(&self) -> BudgetMark {
         BudgetMark { primitives: self.primitives, triangles: self.triangles, memory: self.memory, steps: self.steps }

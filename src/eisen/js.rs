@@ -290,9 +290,9 @@ pub fn run(source: &str, loader: Loader, seed: u64, truncate: bool, budget: &mut
     let remaining = budget.limits().max_memory.saturating_sub(budget.memory());
     let heap = remaining / 2;
     budget.reserve_memory(heap)?;
-    let shared = Rc::new(RefCell::new(Shared::new(std::mem::replace(budget, Budget::new(*budget.limits())), loader, seed)));
+    let shared = Rc::new(RefCell::new(Shared::new(budget.take(), loader, seed)));
     let result = run_in_sandbox(source, heap, &shared);
-    let Shared { budget: mut inner, mut movie, limit, load_error, .. } = shared.replace_with(|_| Shared::new(Budget::new(*budget.limits()), Loader::Library, 0));
+    let Shared { budget: mut inner, mut movie, limit, load_error, .. } = shared.replace_with(|s| Shared::new(s.budget.spent(), Loader::Library, 0));
     inner.release_memory(heap);
     *budget = inner;
     let failure = match (limit, load_error, result) {

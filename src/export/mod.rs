@@ -101,25 +101,9 @@ pub enum Instancing {
 /// each triangle's index in the mesh with its corners as indices into them;
 /// triangles that lose a corner to welding are dropped.
 pub(crate) fn welded(mesh: &crate::geom::Mesh) -> (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>) {
-    let mut ids: std::collections::HashMap<[u32; 3], u32> = std::collections::HashMap::with_capacity(mesh.positions.len());
-    let mut points = Vec::new();
-    let remap: Vec<u32> = mesh
-        .positions
-        .iter()
-        .map(|p| {
-            *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
-                points.push(*p);
-                (points.len() - 1) as u32
-            })
-        })
-        .collect();
-    let tris = mesh
-        .indices
-        .chunks_exact(3)
-        .map(|t| [0, 1, 2].map(|i| remap.get(t[i] as usize).copied().unwrap_or(0)))
-        .enumerate()
-        .filter(|(_, [a, b, c])| a != b && b != c && a != c)
-        .collect();
+    use crate::geom::weld;
+    let (points, remap) = weld::weld_by(mesh.positions.iter().copied(), weld::f32_key);
+    let tris = weld::welded_triangles(&mesh.indices, &remap).collect();
     (points, tris)
 }
 

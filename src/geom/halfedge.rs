@@ -121,17 +121,8 @@ impl HalfEdgeMesh {
     /// vertices at bit-identical positions first: flat-shaded prototypes repeat
     /// each corner once per face, and the connectivity lives in the shared positions.
     pub fn from_indexed(positions: &[[f32; 3]], indices: &[u32]) -> Result<HalfEdgeMesh, HalfEdgeError> {
-        let mut ids: HashMap<[u32; 3], u32> = HashMap::with_capacity(positions.len());
-        let mut welded: Vec<DVec3> = Vec::new();
-        let remap: Vec<u32> = positions
-            .iter()
-            .map(|p| {
-                *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
-                    welded.push(DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2])));
-                    (welded.len() - 1) as u32
-                })
-            })
-            .collect();
+        let (distinct, remap) = super::weld::weld_by(positions.iter().copied(), super::weld::f32_key);
+        let welded: Vec<DVec3> = distinct.iter().map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))).collect();
         let mut tris = Vec::with_capacity(indices.len() / 3);
         for (f, t) in indices.chunks_exact(3).enumerate() {
             let mut c = [0u32; 3];

@@ -13,6 +13,7 @@ pub mod polyhedra;
 pub mod primitives;
 pub mod strip;
 pub mod sweep;
+pub mod weld;
 
 pub use mesh::{Mesh, NamedMesh};
 

@@ -238,17 +238,7 @@ fn expand(
 
 /// Welds the expanded corners by exact position, so faces that share a UG vertex share a mesh vertex.
 fn weld(corners: Vec<DVec3>, tris: Vec<[u32; 3]>) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-    let mut ids: HashMap<[u64; 3], u32> = HashMap::new();
-    let mut pos = Vec::new();
-    let remap: Vec<u32> = corners
-        .iter()
-        .map(|p| {
-            *ids.entry(p.to_array().map(|c| (c + 0.0).to_bits())).or_insert_with(|| {
-                pos.push(*p);
-                (pos.len() - 1) as u32
-            })
-        })
-        .collect();
+    let (pos, remap) = crate::geom::weld::weld_by(corners, |p| crate::geom::weld::f64_key(&p.to_array()));
     let tris = tris.into_iter().map(|t| t.map(|i| remap[i as usize])).filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2]).collect();
     (pos, tris)
 }

@@ -134,23 +134,11 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
             }
         }
     }
-    let mut ids: std::collections::HashMap<[u32; 3], u32> = std::collections::HashMap::with_capacity(positions.len());
-    let mut welded = Vec::with_capacity(positions.len());
-    let remap: Vec<u32> = (0..positions.len() as u32)
-        .map(|v| {
-            let p = positions[find(&mut root, v) as usize];
-            *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
-                welded.push(p);
-                (welded.len() - 1) as u32
-            })
-        })
-        .collect();
+    let merged: Vec<[f32; 3]> = (0..positions.len() as u32).map(|v| positions[find(&mut root, v) as usize]).collect();
+    let (welded, remap) = crate::geom::weld::weld_by(merged, crate::geom::weld::f32_key);
     let mut out = Vec::with_capacity(indices.len());
-    for t in indices.chunks_exact(3) {
-        let [a, b, c] = [0, 1, 2].map(|k| remap.get(t[k] as usize).copied().unwrap_or(0));
-        if a != b && b != c && a != c {
-            out.extend_from_slice(&[a, b, c]);
-        }
+    for (_, t) in crate::geom::weld::welded_triangles(indices, &remap) {
+        out.extend_from_slice(&t);
     }
     (welded, out)
 }

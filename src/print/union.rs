@@ -35,29 +35,16 @@ pub const MAX_THICKENED_TRIANGLES: usize = 5_000;
 pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) -> Result<Parts, PrintError> {
     let triangles: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     budget.charge_steps(triangles)?;
-    let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
     let mut positions: Vec<DVec3> = Vec::new();
     let mut tris: Vec<[u32; 3]> = Vec::with_capacity(triangles as usize);
     let mut parent: Vec<u32> = Vec::new();
     for m in meshes {
-        ids.clear();
-        let remap: Vec<u32> = m
-            .mesh
-            .positions
-            .iter()
-            .map(|p| {
-                *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
-                    positions.push(DVec3::from_array(p.map(f64::from)));
-                    (positions.len() - 1) as u32
-                })
-            })
-            .collect();
-        for t in m.mesh.indices.chunks_exact(3) {
-            let c = [0, 1, 2].map(|k| remap.get(t[k] as usize).copied().unwrap_or(0));
-            if c[0] != c[1] && c[1] != c[2] && c[0] != c[2] {
-                tris.push(c);
-            }
-        }
+        // Each mesh welds on its own: touching parts of different meshes stay apart.
+        let (distinct, remap) = crate::geom::weld::weld_by(m.mesh.positions.iter().copied(), crate::geom::weld::f32_key);
+        // Fits: the vertex total is bounded by the meshes' u32 indices.
+        let base = positions.len() as u32;
+        positions.extend(distinct.iter().map(|p| DVec3::from_array(p.map(f64::from))));
+        tris.extend(crate::geom::weld::welded_triangles(&m.mesh.indices, &remap).map(|(_, t)| t.map(|i| i + base)));
     }
     // Union-find over vertices joined by triangles.
     parent.extend(0..positions.len() as u32);

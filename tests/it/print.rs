@@ -25,8 +25,11 @@ fn trimesh_check(file: &Path) -> (bool, u64, f64) {
     (watertight, faces, volume)
 }
 
+/// Renders `grammar` with `--print`. The deadline is the ceiling's: unions of
+/// thousands of parts take seconds, more on a loaded machine, and the
+/// pipeline keeps the deadline (these tests are about solids, not time).
 fn render(grammar: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
-    let mut args = vec!["render", grammar.to_str().expect("utf-8"), "--print", "-o", out.to_str().expect("utf-8")];
+    let mut args = vec!["render", grammar.to_str().expect("utf-8"), "--print", "--timeout", "600000", "-o", out.to_str().expect("utf-8")];
     args.extend_from_slice(extra);
     run(&args, None)
 }

@@ -1,0 +1,54 @@
+//! The exact-position vertex weld every caller shares: exporters that name
+//! shared vertices (3MF, UniGrafix), the UniGrafix reader, the half-edge
+//! mesh and the print stage. Two corners are one vertex exactly when their
+//! keys are equal (bit-identical coordinates); nothing is snapped, so
+//! welding never moves a point and the same input always welds the same way.
+//!
+//! Written by hand: it is a first-use-ordered dedup over a hash map, which
+//! mesh crates offer only with tolerance or reordering (meshopt's remap
+//! tables reorder by first occurrence too, but on whole vertices, not
+//! positions), and the order is part of the output bytes.
+
+use std::collections::HashMap;
+use std::hash::Hash;
+
+/// The distinct points of `points` in first-use order, and for every input
+/// point the index of its distinct point. `key` decides which points are the
+/// same (see [`f32_key`], [`f64_key`]).
+pub fn weld_by<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K) -> (Vec<P>, Vec<u32>) {
+    let points = points.into_iter();
+    let mut ids: HashMap<K, u32> = HashMap::with_capacity(points.size_hint().0);
+    let mut distinct = Vec::new();
+    let remap = points
+        .map(|p| {
+            *ids.entry(key(&p)).or_insert_with(|| {
+                distinct.push(p);
+                // Fits: callers weld meshes whose vertex counts are u32 indices.
+                (distinct.len() - 1) as u32
+            })
+        })
+        .collect();
+    (distinct, remap)
+}
+
+/// The exact key of an f32 point: its coordinates' bit patterns.
+pub fn f32_key(p: &[f32; 3]) -> [u32; 3] {
+    p.map(f32::to_bits)
+}
+
+/// The exact key of an f64 point, with −0 taken as +0 (so a coordinate
+/// computed as −0.0 welds with 0.0).
+pub fn f64_key(p: &[f64; 3]) -> [u64; 3] {
+    p.map(|c| (c + 0.0).to_bits())
+}
+
+/// The triangles of `indices` (three per triangle) through `remap`, with
+/// their index in `indices`, leaving out those that welding made degenerate
+/// (two corners on one vertex). An index past `remap` reads as vertex 0.
+pub fn welded_triangles<'a>(indices: &'a [u32], remap: &'a [u32]) -> impl Iterator<Item = (usize, [u32; 3])> + 'a {
+    indices
+        .chunks_exact(3)
+        .map(move |t| [0, 1, 2].map(|k| remap.get(t[k] as usize).copied().unwrap_or(0)))
+        .enumerate()
+        .filter(|(_, [a, b, c])| a != b && b != c && a != c)
+}
