@@ -240,3 +240,21 @@ impl IntoResponse for ServiceError {
         resp
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::print::PrintError;
+
+    #[test]
+    fn request_faults_are_typed_and_never_500() {
+        let too_large: ServiceError = RenderError::TooLarge { format: "glb", detail: "buffer over 4 GiB".into() }.into();
+        assert_eq!((too_large.http_status(), too_large.code(), too_large.grpc_code()), (StatusCode::UNPROCESSABLE_ENTITY, "output_too_large", tonic::Code::FailedPrecondition));
+        assert!(too_large.to_string().contains("buffer over 4 GiB"), "{too_large}");
+        let unprintable: ServiceError = RenderError::Unprintable(PrintError::NothingPrintable("only open surfaces".into())).into();
+        assert_eq!((unprintable.http_status(), unprintable.code()), (StatusCode::UNPROCESSABLE_ENTITY, "unprintable"));
+        assert!(unprintable.to_string().starts_with("print: "), "{unprintable}");
+        let size: ServiceError = RenderError::Unprintable(PrintError::BadSize(0.0)).into();
+        assert_eq!((size.http_status(), size.code()), (StatusCode::BAD_REQUEST, "bad_request"));
+    }
+}
