@@ -3,8 +3,14 @@
 //! `@param`s and expands the IR depth-first into a [`Scene`](crate::model::Scene).
 //! [`build_model`] is the front end the pipeline calls for these languages.
 
+mod adjust;
 pub mod evaluator;
+mod lines;
+mod machine;
 pub mod params;
+mod paths;
+mod select;
+mod shapes;
 
 pub use evaluator::{evaluate, promised_bytes, EvalOptions};
 pub use params::bind_params;

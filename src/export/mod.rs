@@ -2,6 +2,10 @@
 
 pub mod compact;
 pub mod gltf;
+mod gltf_buffer;
+mod gltf_document;
+mod gltf_graph;
+mod gltf_instanced;
 pub mod instanced;
 pub mod scene;
 pub mod stl;
