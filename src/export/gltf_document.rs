@@ -116,21 +116,7 @@ pub(super) fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Track
     let mut nodes = vec![root_node];
     if let Some(c) = &meta.camera {
         let at = c.first();
-        let camera = root.push(json::Camera {
-            name: c.name.clone(),
-            orthographic: None,
-            perspective: Some(json::camera::Perspective {
-                aspect_ratio: None,
-                yfov: c.yfov,
-                zfar: c.zfar,
-                znear: c.znear,
-                extensions: None,
-                extras: Default::default(),
-            }),
-            type_: Valid(json::camera::Type::Perspective),
-            extensions: None,
-            extras: Default::default(),
-        });
+        let camera = root.push(super::gltf_graph::perspective(c.name.clone(), c.yfov, c.znear, c.zfar));
         nodes.push(root.push(json::Node {
             camera: Some(camera),
             name: Some("camera".to_string()),

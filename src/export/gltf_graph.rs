@@ -9,6 +9,19 @@ use crate::model::graph::{NodeGraph, Trs};
 use gltf_json as json;
 use json::validation::{Checked::Valid, USize64};
 
+/// The glTF perspective camera both the still camera node and the node
+/// graph's camera use (the aspect ratio is left to the viewer).
+pub(super) fn perspective(name: Option<String>, yfov: f32, znear: f32, zfar: Option<f32>) -> json::Camera {
+    json::Camera {
+        name,
+        orthographic: None,
+        perspective: Some(json::camera::Perspective { aspect_ratio: None, yfov, zfar, znear, extensions: None, extras: None }),
+        type_: Valid(json::camera::Type::Perspective),
+        extensions: None,
+        extras: None,
+    }
+}
+
 /// A glTF node with the transform `trs`.
 fn trs_node(name: &str, trs: &Trs) -> json::Node {
     json::Node {
@@ -35,14 +48,7 @@ pub(super) fn add_graph(root: &mut json::Root, g: &NodeGraph, tracks: &Tracks, b
         }
     }
     let camera_node = g.camera.as_ref().map(|c| {
-        let camera = root.push(json::Camera {
-            name: c.name.clone(),
-            orthographic: None,
-            perspective: Some(json::camera::Perspective { aspect_ratio: None, yfov: c.yfov, zfar: c.zfar, znear: c.znear, extensions: None, extras: None }),
-            type_: Valid(json::camera::Type::Perspective),
-            extensions: None,
-            extras: None,
-        });
+        let camera = root.push(perspective(c.name.clone(), c.yfov, c.znear, c.zfar));
         let mut node = trs_node("camera", c.samples.first().unwrap_or(&identity));
         node.scale = None;
         node.camera = Some(camera);
