@@ -26,3 +26,4 @@ mod strips;
 mod unigrafix;
 mod scaleout;
 mod service;
+mod harden;
