@@ -23,6 +23,8 @@ async fn schemathesis_finds_no_server_error_and_no_schema_mismatch() {
         .args(["--checks", "all", "--exclude-checks", "positive_data_acceptance"])
         .args(["--max-examples", "40", "--seed", "17", "--workers", "2", "--request-timeout", "30", "--no-color"])
         .args(["--phases", "examples,coverage,fuzzing"])
+        // No example database left in the work tree.
+        .args(["--generation-database", "none"])
         .arg("--report-dir")
         .arg(report.path())
         .env("SCHEMATHESIS_HOOKS", "");
