@@ -2,6 +2,7 @@
 //! and to a gRPC status with the same JSON as details.
 
 use crate::eval::{EvalError, Limit, LimitExceeded};
+use crate::export::ExportError;
 use crate::lang::ParseError;
 use crate::RenderError;
 use axum::http::{header, HeaderValue, StatusCode};
@@ -118,6 +119,11 @@ impl From<RenderError> for ServiceError {
             RenderError::Parse(p) => ServiceError::Parse(p),
             RenderError::Limit(l) => ServiceError::Limit(l),
             RenderError::Eval(e) => ServiceError::Eval(e),
+            // Options the format cannot honour for this request (the scene
+            // format for a language that makes meshes, found by the
+            // `http_request` fuzz target as a 500) are the client's error.
+            RenderError::Export(x @ ExportError::InvalidOptions { .. }) => ServiceError::BadRequest(x.to_string()),
+            RenderError::Export(ExportError::Limit(l)) => ServiceError::Limit(l),
             RenderError::Export(x) => ServiceError::Internal(x.to_string()),
         }
     }

@@ -58,7 +58,10 @@ fn check(what: &str, took: Duration, truncate: bool, outcome: &str, on_error: &s
     if truncate {
         assert!(outcome == "deadline_exceeded" || outcome.starts_with("truncated:"), "{what}: {outcome}");
     } else {
-        assert_eq!(outcome, on_error, "{what}");
+        // Which limit ends a render first depends on how fast the machine
+        // is (EisenScript may reach its primitive limit just before the
+        // deadline): a limit error either way, never a model.
+        assert!(outcome == on_error || outcome == "limit_exceeded", "{what}: {outcome}");
     }
 }
 

@@ -38,3 +38,27 @@ async fn mdg_preprocessor_multibyte_macro_body_over_http_is_400_with_position() 
     assert_eq!(sample(&m, "rulemesh_requests_total{protocol=\"http\",route=\"/v1/render\",status=\"500\"}"), 0.0, "{m}");
     stop(srv).await;
 }
+
+/// Found by the `http_request` fuzz target: `format: "scene"` for a source
+/// detected as EisenScript (only L-systems make object hierarchies) was a
+/// 500 `internal`; it is the client's request that cannot be honoured, a
+/// 400 `bad_request` (gRPC InvalidArgument).
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn http_request_scene_format_for_a_mesh_language_is_400_not_500() {
+    let (srv, base) = start(config()).await;
+    let fuzzed = "#define _nF -6 Fngumessage3333333333333333333330000m00000000000000se~e89161220]()475278678lrystem";
+    for source in [fuzzed, "box\n"] {
+        let r = client().post(format!("{base}/v1/render")).json(&json!({"source": source, "format": "scene"})).send().await.expect("post");
+        assert_eq!(r.status(), 400, "{source}");
+        let e = error_of(r).await;
+        assert_eq!(e["code"], "bad_request", "{e}");
+        assert!(e["message"].as_str().is_some_and(|m| m.contains("only L-systems make")), "{e}");
+    }
+    let err = grpc(&srv)
+        .await
+        .render(rulemesh::service::grpc::pb::RenderRequest { source: "box\n".into(), language: "eisenscript".into(), format: "scene".into(), ..Default::default() })
+        .await
+        .expect_err("a bad request");
+    assert_eq!(err.code(), tonic::Code::InvalidArgument);
+    stop(srv).await;
+}
