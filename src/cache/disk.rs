@@ -3,10 +3,16 @@
 //! rename) and read back when the in-process store misses. It survives a
 //! restart; the in-process store does not.
 //!
-//! File layout: the magic `RMCACHE1`, a little-endian `u32` header length,
-//! a JSON header (content type, language, counts, ETag), then the model
-//! bytes. A file that does not check out (bad magic, unknown content type or
-//! language, ETag not the BLAKE3 of the bytes) is ignored and re-rendered.
+//! File layout: the magic `RMCACHE2`, a little-endian `u32` header length,
+//! a JSON header (content type, language, counts, ETag), the model bytes,
+//! then a 32-byte BLAKE3 content hash of the cache key followed by
+//! everything before the hash. An entry that does not check out (bad magic,
+//! hash mismatch, unknown content type or language, ETag not the BLAKE3 of
+//! the bytes) is a miss: never served, removed, and counted in
+//! `rulemesh_cache_corrupt_total`. Hashing the key in binds an entry to the
+//! request it answers, so a valid entry copied under another key is refused
+//! too. (A content hash catches damage and careless copies, not a writer who
+//! can compute BLAKE3: Redis and the cache directory must still be private.)
 
 use super::{CacheKey, Rendered};
 use crate::export::Format;
@@ -17,7 +23,9 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
-const MAGIC: &[u8; 8] = b"RMCACHE1";
+const MAGIC: &[u8; 8] = b"RMCACHE2";
+/// Bytes of the trailing content hash.
+const HASH_BYTES: usize = 32;
 /// Largest accepted header, in bytes.
 const MAX_HEADER: u32 = 4096;
 /// Prefix of files being written (removed at startup if a crash left them).
@@ -56,6 +64,7 @@ pub struct DiskTier {
     hits: AtomicU64,
     writes: AtomicU64,
     skipped: AtomicU64,
+    corrupt: AtomicU64,
 }
 
 fn is_key_name(name: &str) -> bool {
@@ -88,6 +97,7 @@ impl DiskTier {
             hits: AtomicU64::new(0),
             writes: AtomicU64::new(0),
             skipped: AtomicU64::new(0),
+            corrupt: AtomicU64::new(0),
         })
     }
 
@@ -116,6 +126,11 @@ impl DiskTier {
         self.skipped.load(Ordering::Relaxed)
     }
 
+    /// Files that did not verify (removed, re-rendered, never served).
+    pub fn corrupt(&self) -> u64 {
+        self.corrupt.load(Ordering::Relaxed)
+    }
+
     /// Reads `key`'s model, if a valid file holds it (on the blocking pool).
     pub async fn read(self: &Arc<Self>, key: CacheKey) -> Option<Rendered> {
         let me = self.clone();
@@ -133,10 +148,13 @@ impl DiskTier {
             return None;
         }
         let data = std::fs::read(&path).ok()?;
-        let r = decode(&data);
-        if r.is_none() && std::fs::remove_file(&path).is_ok() {
-            self.used.fetch_sub(len.min(self.used_bytes()), Ordering::AcqRel);
-            tracing::warn!(path = %path.display(), "removed a damaged cache file");
+        let r = decode(key, &data);
+        if r.is_none() {
+            self.corrupt.fetch_add(1, Ordering::Relaxed);
+            if std::fs::remove_file(&path).is_ok() {
+                self.used.fetch_sub(len.min(self.used_bytes()), Ordering::AcqRel);
+            }
+            tracing::warn!(path = %path.display(), "removed a cache file that did not verify");
         }
         r
     }
@@ -156,7 +174,7 @@ impl DiskTier {
         if path.exists() {
             return;
         }
-        let Some(data) = encode(model) else {
+        let Some(data) = encode(key, model) else {
             self.skipped.fetch_add(1, Ordering::Relaxed);
             return;
         };
@@ -190,7 +208,16 @@ impl DiskTier {
     }
 }
 
-pub(super) fn encode(model: &Rendered) -> Option<Vec<u8>> {
+/// The entry's content hash: BLAKE3 of the key, then of `body` (all but the hash).
+fn content_hash(key: &CacheKey, body: &[u8]) -> [u8; HASH_BYTES] {
+    let mut h = blake3::Hasher::new();
+    h.update(&key.0);
+    h.update(body);
+    *h.finalize().as_bytes()
+}
+
+/// Encodes `model` as `key`'s entry (shared with the Redis tier).
+pub(super) fn encode(key: &CacheKey, model: &Rendered) -> Option<Vec<u8>> {
     let header = serde_json::to_vec(&Header {
         content_type: model.content_type.to_string(),
         language: model.language.name().to_string(),
@@ -200,11 +227,13 @@ pub(super) fn encode(model: &Rendered) -> Option<Vec<u8>> {
     })
     .ok()?;
     let header_len = u32::try_from(header.len()).ok().filter(|&n| n <= MAX_HEADER)?;
-    let mut out = Vec::with_capacity(12 + header.len() + model.bytes.len());
+    let mut out = Vec::with_capacity(12 + header.len() + model.bytes.len() + HASH_BYTES);
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&header_len.to_le_bytes());
     out.extend_from_slice(&header);
     out.extend_from_slice(&model.bytes);
+    let hash = content_hash(key, &out);
+    out.extend_from_slice(&hash);
     Some(out)
 }
 
@@ -212,8 +241,14 @@ fn static_content_type(s: &str) -> Option<&'static str> {
     <Format as clap::ValueEnum>::value_variants().iter().map(|f| f.content_type()).chain(["application/json"]).find(|c| *c == s)
 }
 
-pub(super) fn decode(data: &[u8]) -> Option<Rendered> {
-    let rest = data.strip_prefix(MAGIC)?;
+/// Decodes `key`'s entry; `None` unless every check passes (shared with the Redis tier).
+pub(super) fn decode(key: &CacheKey, data: &[u8]) -> Option<Rendered> {
+    let (body, hash) = data.split_at_checked(data.len().checked_sub(HASH_BYTES)?)?;
+    // blake3::Hash compares in constant time.
+    if blake3::Hash::from(content_hash(key, body)) != blake3::Hash::from(<[u8; HASH_BYTES]>::try_from(hash).ok()?) {
+        return None;
+    }
+    let rest = body.strip_prefix(MAGIC)?;
     let (len, rest) = rest.split_first_chunk::<4>()?;
     let len = u32::from_le_bytes(*len);
     if len > MAX_HEADER {
@@ -256,19 +291,23 @@ mod tests {
     #[test]
     fn round_trip_and_damage() {
         let m = model();
-        let data = encode(&m).expect("encodes");
-        assert_eq!(decode(&data), Some(m));
+        let k = CacheKey([7; 32]);
+        let data = encode(&k, &m).expect("encodes");
+        assert_eq!(decode(&k, &data), Some(m));
         for cut in [0, 7, 11, 20, data.len() - 1] {
-            assert_eq!(decode(&data[..cut]), None, "cut at {cut}");
+            assert_eq!(decode(&k, &data[..cut]), None, "cut at {cut}");
         }
-        let mut flipped = data.clone();
-        if let Some(b) = flipped.last_mut() {
-            *b ^= 1;
+        // Any flipped bit anywhere (magic, header counts, model bytes, hash) is refused.
+        for at in [0, 9, 14, data.len() - 40, data.len() - 33, data.len() - 1] {
+            let mut flipped = data.clone();
+            flipped[at] ^= 1;
+            assert_eq!(decode(&k, &flipped), None, "bit flipped at {at}");
         }
-        assert_eq!(decode(&flipped), None);
+        // A valid entry under another key is refused.
+        assert_eq!(decode(&CacheKey([8; 32]), &data), None);
         // Every language round-trips (the Redis tier shares this encoding).
         let l = Rendered { language: Language::Lsystem, ..model() };
-        assert_eq!(encode(&l).as_deref().and_then(decode), Some(l));
+        assert_eq!(encode(&k, &l).and_then(|d| decode(&k, &d)), Some(l));
     }
 
     #[tokio::test]

@@ -10,7 +10,9 @@
 //! logged once when it goes down and once when it comes back.
 //!
 //! Values use the disk tier's self-checking encoding (magic, JSON header,
-//! bytes; the ETag is verified on read), under `rulemesh:m:<hex key>` with a
+//! bytes, and a BLAKE3 content hash over the key and all of it, verified on
+//! read: a value that does not verify is a miss, counted in
+//! `rulemesh_cache_corrupt_total`), under `rulemesh:m:<hex key>` with a
 //! TTL (`SET … PX`). Values over the size cap are not written.
 //!
 //! With the lock enabled, a worker that misses everywhere takes
@@ -87,6 +89,7 @@ pub struct RedisTier {
     skipped: AtomicU64,
     errors: AtomicU64,
     lock_waits: AtomicU64,
+    corrupt: AtomicU64,
 }
 
 impl std::fmt::Debug for RedisTier {
@@ -134,6 +137,7 @@ impl RedisTier {
             skipped: AtomicU64::new(0),
             errors: AtomicU64::new(0),
             lock_waits: AtomicU64::new(0),
+            corrupt: AtomicU64::new(0),
         })
     }
 
@@ -165,6 +169,11 @@ impl RedisTier {
     /// Redis commands that failed or timed out (each one degraded a request to local caching).
     pub fn errors(&self) -> u64 {
         self.errors.load(Ordering::Relaxed)
+    }
+
+    /// Values that were present but did not verify (counted as misses too; never served).
+    pub fn corrupt(&self) -> u64 {
+        self.corrupt.load(Ordering::Relaxed)
     }
 
     /// Renders that waited on another worker's lock.
@@ -264,13 +273,20 @@ impl RedisTier {
     /// Reads `key`'s model; `None` on a miss, an invalid value, or any failure.
     pub async fn read(&self, key: CacheKey) -> Option<Rendered> {
         let data: Option<Vec<u8>> = self.run("GET", ::redis::cmd("GET").arg(Self::value_key(&key))).await?;
-        match data.as_deref().and_then(super::disk::decode) {
+        let Some(data) = data else {
+            self.misses.fetch_add(1, Ordering::Relaxed);
+            return None;
+        };
+        match super::disk::decode(&key, &data) {
             Some(r) => {
                 self.hits.fetch_add(1, Ordering::Relaxed);
                 Some(r)
             }
             None => {
+                // Present but not verifying: a miss, never served; counted and logged.
                 self.misses.fetch_add(1, Ordering::Relaxed);
+                self.corrupt.fetch_add(1, Ordering::Relaxed);
+                tracing::warn!(key = %key.hex(), "a Redis cache value did not verify; ignored");
                 None
             }
         }
@@ -282,7 +298,7 @@ impl RedisTier {
         if !model.cacheable() {
             return;
         }
-        let Some(data) = super::disk::encode(model).filter(|d| d.len() as u64 <= self.settings.max_value_bytes) else {
+        let Some(data) = super::disk::encode(&key, model).filter(|d| d.len() as u64 <= self.settings.max_value_bytes) else {
             self.skipped.fetch_add(1, Ordering::Relaxed);
             return;
         };

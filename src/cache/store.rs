@@ -196,6 +196,11 @@ impl ModelCache {
         }
     }
 
+    /// Disk and Redis entries that did not verify (misses, never served).
+    pub fn corrupt(&self) -> u64 {
+        self.disk.as_ref().map_or(0, |d| d.corrupt()) + self.redis.as_ref().map_or(0, |r| r.corrupt())
+    }
+
     /// Stored models.
     pub fn entry_count(&self) -> u64 {
         self.inner.entry_count()

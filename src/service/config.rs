@@ -3,6 +3,7 @@
 //! with defaults that need nothing else. Precedence: flag > environment
 //! variable > file > default ([`ServeConfig::resolve`]).
 
+use super::access::ApiKeys;
 use crate::core::Limits;
 use clap::parser::ValueSource;
 use serde::{Deserialize, Serialize};
@@ -80,6 +81,24 @@ pub struct ServeConfig {
     /// After SIGTERM/SIGINT, time /readyz answers 503 while requests are still served (so load balancers stop sending), in milliseconds.
     #[arg(long, env = "RULEMESH_DRAIN_MS", default_value_t = 0)]
     pub drain_ms: u64,
+    /// Longest an HTTP client may take to send a request's headers, in milliseconds, counted from when the connection is ready for a request (accepted, or its previous response sent); then the connection is closed.
+    #[arg(long, env = "RULEMESH_HEADER_TIMEOUT_MS", default_value_t = 10_000)]
+    pub header_timeout_ms: u64,
+    /// Longest an HTTP keep-alive connection may sit with no request in flight, in milliseconds (the header timeout also bounds it).
+    #[arg(long, env = "RULEMESH_IDLE_TIMEOUT_MS", default_value_t = 10_000)]
+    pub idle_timeout_ms: u64,
+    /// Most HTTP connections open at once; further clients wait in the listen backlog until one closes.
+    #[arg(long, env = "RULEMESH_MAX_CONNECTIONS", default_value_t = 1024)]
+    pub max_connections: usize,
+    /// API keys as a JSON array of `{"name", "key", "rate_per_sec"?, "burst"?, "max_concurrency"?, "ceiling_*"?}` (the config file takes `[[api_keys]]` tables). Empty: no keys, the service is open.
+    #[arg(long, env = "RULEMESH_API_KEYS", value_parser = ApiKeys::parse, default_value = "", hide_default_value = true)]
+    pub api_keys: ApiKeys,
+    /// Origins browsers may call the HTTP API from (comma-separated; `*` for any). Empty: no CORS headers.
+    #[arg(long, env = "RULEMESH_CORS_ORIGINS", value_delimiter = ',')]
+    pub cors_origins: Vec<String>,
+    /// Run `#javascript` EisenScript scripts (user JavaScript in the server process, sandboxed in QuickJS). Off by default: see docs/service.md.
+    #[arg(long, env = "RULEMESH_ALLOW_JAVASCRIPT", default_value_t = false, action = clap::ArgAction::Set)]
+    pub allow_javascript: bool,
 }
 
 /// Serialises a Redis URL with its password hidden.
@@ -164,6 +183,18 @@ pub struct ConfigFile {
     pub worker_id: Option<String>,
     /// [`ServeConfig::drain_ms`]
     pub drain_ms: Option<u64>,
+    /// [`ServeConfig::header_timeout_ms`]
+    pub header_timeout_ms: Option<u64>,
+    /// [`ServeConfig::idle_timeout_ms`]
+    pub idle_timeout_ms: Option<u64>,
+    /// [`ServeConfig::max_connections`]
+    pub max_connections: Option<usize>,
+    /// [`ServeConfig::api_keys`]: `[[api_keys]]` tables.
+    pub api_keys: Option<ApiKeys>,
+    /// [`ServeConfig::cors_origins`]
+    pub cors_origins: Option<Vec<String>>,
+    /// [`ServeConfig::allow_javascript`]
+    pub allow_javascript: Option<bool>,
 }
 
 impl ConfigFile {
@@ -178,11 +209,15 @@ impl ConfigFile {
             return Err(ConfigError::TooLarge { path: path.to_path_buf() });
         }
         let parse_err = |message: String| ConfigError::Parse { path: path.to_path_buf(), message };
-        if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) {
-            serde_json::from_str(&text).map_err(|e| parse_err(e.to_string()))
+        let file: ConfigFile = if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) {
+            serde_json::from_str(&text).map_err(|e| parse_err(e.to_string()))?
         } else {
-            toml::from_str(&text).map_err(|e| parse_err(e.to_string()))
+            toml::from_str(&text).map_err(|e| parse_err(e.to_string()))?
+        };
+        if let Some(keys) = &file.api_keys {
+            keys.validate().map_err(parse_err)?;
         }
+        Ok(file)
     }
 }
 
@@ -210,6 +245,12 @@ impl Default for ServeConfig {
             cache_redis_lock_ms: 0,
             worker_id: None,
             drain_ms: 0,
+            header_timeout_ms: 10_000,
+            idle_timeout_ms: 10_000,
+            max_connections: 1024,
+            api_keys: ApiKeys::default(),
+            cors_origins: Vec::new(),
+            allow_javascript: false,
         }
     }
 }
@@ -250,7 +291,13 @@ impl ServeConfig {
             cache_redis_timeout_ms,
             cache_redis_lock_ms,
             worker_id,
-            drain_ms
+            drain_ms,
+            header_timeout_ms,
+            idle_timeout_ms,
+            max_connections,
+            api_keys,
+            cors_origins,
+            allow_javascript
         );
         self
     }
@@ -298,6 +345,16 @@ impl ServeConfig {
     /// How long readiness is false before the listeners close on shutdown.
     pub fn drain(&self) -> Duration {
         Duration::from_millis(self.drain_ms)
+    }
+
+    /// The HTTP header-read timeout (at least 1 ms).
+    pub fn header_timeout(&self) -> Duration {
+        Duration::from_millis(self.header_timeout_ms.max(1))
+    }
+
+    /// The HTTP keep-alive idle timeout (at least 1 ms).
+    pub fn idle_timeout(&self) -> Duration {
+        Duration::from_millis(self.idle_timeout_ms.max(1))
     }
 
     /// The shutdown grace period.

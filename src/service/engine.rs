@@ -4,6 +4,7 @@
 
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
 use crate::cache::{CacheOutcome, DiskTier, ModelCache, RedisTier, Rendered};
+use crate::core::{Limit, LimitExceeded};
 use crate::lang::Language;
 use crate::RenderRequest;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -28,6 +29,7 @@ pub struct Engine {
     queue_limit: usize,
     waiting: AtomicUsize,
     queue_timeout: Duration,
+    allow_javascript: bool,
     metrics: Arc<Metrics>,
 }
 
@@ -62,6 +64,7 @@ impl Engine {
             queue_limit: config.queue,
             waiting: AtomicUsize::new(0),
             queue_timeout: config.queue_timeout(),
+            allow_javascript: config.allow_javascript,
             metrics,
         })
     }
@@ -81,6 +84,10 @@ impl Engine {
         span.record("key", tracing::field::display(key.hex()));
         let language = plan.request.language.or_else(|| Language::detect(&plan.source));
         span.record("language", tracing::field::display(language.map_or("unknown", Language::name)));
+        if !self.allow_javascript && language == Some(Language::Eisenscript) && crate::eisen::js::is_javascript(&plan.source) {
+            self.metrics.access_rejected("javascript_disabled");
+            return Err(ServiceError::JavaScriptDisabled);
+        }
         let (model, cache) = self.cache.get_or_render(key, fresh, || self.run(plan)).await?;
         self.metrics.cache(cache == CacheOutcome::Hit);
         span.record("cache", tracing::field::display(if cache == CacheOutcome::Hit { "hit" } else { "miss" }));
@@ -115,15 +122,28 @@ impl Engine {
         metrics.in_flight(1);
         let started = Instant::now();
         let RenderPlan { source, request, .. } = plan;
+        let timeout_ms = request.limits.timeout_ms;
         let task = tokio::task::spawn_blocking(move || {
             let result = render_blocking(&source, &request);
             drop(permit);
             result
         });
-        let result = task.await;
+        let watched = tokio::time::timeout(watchdog_after(timeout_ms), task).await;
         metrics.in_flight(-1);
         metrics.render_done(started.elapsed());
-        let result = result.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?;
+        let result = match watched {
+            Ok(joined) => joined.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?,
+            Err(_) => {
+                // The pipeline ran past its deadline without noticing. The
+                // request ends now with the typed deadline error; the
+                // blocking thread finishes on its own and keeps its render
+                // slot until then, so overload protection still counts it.
+                metrics.watchdog_fired();
+                tracing::warn!(timeout_ms, "render ran past its deadline; ended by the watchdog");
+                let reached = u64::try_from(started.elapsed().as_millis()).unwrap_or(u64::MAX).max(timeout_ms.saturating_add(1));
+                Err(ServiceError::Limit(LimitExceeded { limit: Limit::Deadline, configured: timeout_ms, reached }))
+            }
+        };
         match &result {
             Err(ServiceError::Limit(l)) => metrics.rejected(l.limit.name()),
             Ok(r) => {
@@ -135,6 +155,16 @@ impl Engine {
         }
         result
     }
+}
+
+/// When the watchdog ends a render whose deadline is `timeout_ms`: a little
+/// after the deadline (a tenth of it, 10 ms to 1 s), so that a pipeline that
+/// does check its deadline answers first, with its own error or, under
+/// `on_limit=truncate`, its truncated model. Either way the request ends
+/// within 1.1× its deadline plus the time to send the answer.
+pub fn watchdog_after(timeout_ms: u64) -> Duration {
+    let deadline = Duration::from_millis(timeout_ms);
+    deadline.saturating_add((deadline / 10).clamp(Duration::from_millis(10), Duration::from_secs(1)))
 }
 
 /// The pipeline itself, exactly as the CLI runs it.

@@ -1,10 +1,9 @@
 //! One error type for the service, mapped to an HTTP status with a JSON body
 //! and to a gRPC status with the same JSON as details.
 
-use crate::core::{Limit, LimitExceeded};
-
+use crate::core::{Limit, LimitExceeded, ParseError};
+use crate::export::ExportError;
 use crate::model::EvalError;
-use crate::core::ParseError;
 use crate::RenderError;
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
@@ -104,6 +103,20 @@ pub enum ServiceError {
     /// The server is shutting down.
     #[error("shutting down")]
     ShuttingDown,
+    /// API keys are configured and the request presents none that is known.
+    #[error("a valid API key is required (Authorization: Bearer KEY, or X-Api-Key: KEY)")]
+    Unauthorized,
+    /// The caller's key is over its rate or its concurrency share.
+    #[error("rate limited: {reason}; retry after {retry_after_secs} s")]
+    RateLimited {
+        /// Which allowance ran out.
+        reason: String,
+        /// Seconds until the request would be let in.
+        retry_after_secs: u64,
+    },
+    /// The operator turned off `#javascript` EisenScript in the service.
+    #[error("this server does not run #javascript EisenScript scripts (allow_javascript is off)")]
+    JavaScriptDisabled,
     /// A failure inside the server.
     #[error("internal error: {0}")]
     Internal(String),
@@ -120,6 +133,11 @@ impl From<RenderError> for ServiceError {
             RenderError::Unprintable(p @ crate::print::PrintError::BadSize(_)) => ServiceError::BadRequest(format!("print: {p}")),
             e @ RenderError::Unprintable(_) => ServiceError::Unprocessable { code: "unprintable", message: e.to_string() },
             e @ RenderError::TooLarge { .. } => ServiceError::Unprocessable { code: "output_too_large", message: e.to_string() },
+            // Options the format cannot honour for this request (the scene
+            // format for a language that makes meshes, found by the
+            // `http_request` fuzz target as a 500) are the client's error.
+            RenderError::Export(x @ ExportError::InvalidOptions { .. }) => ServiceError::BadRequest(x.to_string()),
+            RenderError::Export(ExportError::Limit(l)) => ServiceError::Limit(l),
             RenderError::Export(x) => ServiceError::Internal(x.to_string()),
         }
     }
@@ -136,6 +154,9 @@ impl ServiceError {
             ServiceError::PayloadTooLarge { .. } => StatusCode::PAYLOAD_TOO_LARGE,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => StatusCode::SERVICE_UNAVAILABLE,
             ServiceError::QueueTimeout { .. } => StatusCode::GATEWAY_TIMEOUT,
+            ServiceError::Unauthorized => StatusCode::UNAUTHORIZED,
+            ServiceError::RateLimited { .. } => StatusCode::TOO_MANY_REQUESTS,
+            ServiceError::JavaScriptDisabled => StatusCode::FORBIDDEN,
             ServiceError::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
         }
     }
@@ -151,6 +172,9 @@ impl ServiceError {
             ServiceError::PayloadTooLarge { .. } => tonic::Code::ResourceExhausted,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => tonic::Code::Unavailable,
             ServiceError::QueueTimeout { .. } => tonic::Code::DeadlineExceeded,
+            ServiceError::Unauthorized => tonic::Code::Unauthenticated,
+            ServiceError::RateLimited { .. } => tonic::Code::ResourceExhausted,
+            ServiceError::JavaScriptDisabled => tonic::Code::PermissionDenied,
             ServiceError::Internal(_) => tonic::Code::Internal,
         }
     }
@@ -169,6 +193,9 @@ impl ServiceError {
             ServiceError::Overloaded { .. } => "overloaded",
             ServiceError::QueueTimeout { .. } => "queue_timeout",
             ServiceError::ShuttingDown => "shutting_down",
+            ServiceError::Unauthorized => "unauthorized",
+            ServiceError::RateLimited { .. } => "rate_limited",
+            ServiceError::JavaScriptDisabled => "javascript_disabled",
             ServiceError::Internal(_) => "internal",
         }
     }
@@ -176,7 +203,7 @@ impl ServiceError {
     /// Seconds a client should wait before retrying, for overload errors.
     pub fn retry_after(&self) -> Option<u64> {
         match self {
-            ServiceError::Overloaded { retry_after_secs, .. } => Some(*retry_after_secs),
+            ServiceError::Overloaded { retry_after_secs, .. } | ServiceError::RateLimited { retry_after_secs, .. } => Some(*retry_after_secs),
             ServiceError::ShuttingDown => Some(1),
             _ => None,
         }
@@ -226,6 +253,9 @@ impl ServiceError {
         if let ServiceError::Limit(l) = self {
             md.insert("x-rulemesh-limit", tonic::metadata::MetadataValue::from_static(l.limit.name()));
         }
+        if let Some(r) = self.retry_after() {
+            md.insert("retry-after", tonic::metadata::MetadataValue::from(r));
+        }
         status
     }
 }
@@ -237,6 +267,9 @@ impl IntoResponse for ServiceError {
             resp.headers_mut().insert(header::RETRY_AFTER, HeaderValue::from(r));
         }
         resp.headers_mut().insert("x-rulemesh-error", HeaderValue::from_static(self.code()));
+        if matches!(self, ServiceError::Unauthorized) {
+            resp.headers_mut().insert(header::WWW_AUTHENTICATE, HeaderValue::from_static("Bearer realm=\"rulemesh\""));
+        }
         resp
     }
 }

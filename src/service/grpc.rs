@@ -85,8 +85,21 @@ fn meta(served: &Served) -> pb::RenderMeta {
     }
 }
 
+/// Admits a gRPC call by its metadata (`authorization: Bearer KEY` or `x-api-key: KEY`).
+fn admit(state: &AppState, metadata: &tonic::metadata::MetadataMap) -> Result<super::access::Admission, ServiceError> {
+    state.admit(super::access::presented_key(|name| metadata.get(name).and_then(|v| v.to_str().ok())))
+}
+
 impl GrpcService {
-    async fn serve(&self, method: &str, req: pb::RenderRequest) -> Result<Served, Status> {
+    async fn serve(&self, method: &str, request: Request<pb::RenderRequest>) -> Result<Served, Status> {
+        let admission = match admit(&self.state, request.metadata()) {
+            Ok(a) => a,
+            Err(e) => {
+                self.count(method, &Err::<(), _>(e.clone()));
+                return Err(e.to_status());
+            }
+        };
+        let req = request.into_inner();
         let no_cache = req.no_cache;
         let id = super::http::next_request_id();
         let span = tracing::info_span!(
@@ -98,9 +111,9 @@ impl GrpcService {
             cache = tracing::field::Empty
         );
         let started = Instant::now();
-        let result = async { RenderBody::from(req).plan(&self.state.ceiling, no_cache)?.pipe_serve(&self.state).await }
-            .instrument(span.clone())
-            .await;
+        let ceiling = admission.ceiling;
+        let result = async { RenderBody::from(req).plan(&ceiling, no_cache)?.pipe_serve(&self.state).await }.instrument(span.clone()).await;
+        drop(admission);
         self.count(method, &result);
         span.in_scope(|| {
             let code = match &result {
@@ -132,14 +145,14 @@ type ChunkStream = Pin<Box<dyn tokio_stream::Stream<Item = Result<pb::RenderChun
 #[tonic::async_trait]
 impl Rulemesh for GrpcService {
     async fn render(&self, request: Request<pb::RenderRequest>) -> Result<Response<pb::RenderReply>, Status> {
-        let served = self.serve("Render", request.into_inner()).await?;
+        let served = self.serve("Render", request).await?;
         Ok(Response::new(pb::RenderReply { meta: Some(meta(&served)), model: served.model.bytes.to_vec() }))
     }
 
     type RenderStreamStream = ChunkStream;
 
     async fn render_stream(&self, request: Request<pb::RenderRequest>) -> Result<Response<ChunkStream>, Status> {
-        let served = self.serve("RenderStream", request.into_inner()).await?;
+        let served = self.serve("RenderStream", request).await?;
         let bytes = served.model.bytes.clone();
         let mut first = Some(meta(&served));
         let count = bytes.len().div_ceil(CHUNK_BYTES).max(1);
@@ -152,9 +165,10 @@ impl Rulemesh for GrpcService {
     }
 
     async fn check(&self, request: Request<pb::CheckRequest>) -> Result<Response<pb::CheckReply>, Status> {
+        let admission = admit(&self.state, request.metadata());
         let r = request.into_inner();
         let body = CheckBody { source: r.source, language: if r.language.is_empty() { None } else { Some(r.language) } };
-        let result = super::http::check(body, &self.state.ceiling);
+        let result = admission.and_then(|a| super::http::check(body, &a.ceiling));
         self.count("Check", &result);
         let report = result.map_err(|e| e.to_status())?;
         Ok(Response::new(pb::CheckReply {
@@ -176,8 +190,10 @@ impl Rulemesh for GrpcService {
         }))
     }
 
-    async fn list_grammars(&self, _request: Request<pb::ListGrammarsRequest>) -> Result<Response<pb::ListGrammarsReply>, Status> {
-        self.state.metrics.request("grpc", "ListGrammars", 0);
+    async fn list_grammars(&self, request: Request<pb::ListGrammarsRequest>) -> Result<Response<pb::ListGrammarsReply>, Status> {
+        let admitted = admit(&self.state, request.metadata()).map(|_| ());
+        self.count("ListGrammars", &admitted);
+        admitted.map_err(|e| e.to_status())?;
         let grammars = library::all()
             .map(|b| {
                 let info = b.info();

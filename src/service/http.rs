@@ -13,7 +13,7 @@ use axum::extract::{DefaultBodyLimit, MatchedPath, Path, RawQuery, Request, Stat
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
-use axum::{Json, Router};
+use axum::{Extension, Json, Router};
 use serde::Serialize;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, OnceLock};
@@ -35,13 +35,79 @@ pub const CACHE_SHORT: &str = "public, max-age=300";
 /// and request metrics.
 pub fn router(state: Arc<AppState>) -> Router {
     let (routes, _doc) = api_router().split_for_parts();
-    routes
+    let router = routes
         .fallback(|| async { ServiceError::NotFound("no such route".into()) })
         .layer(DefaultBodyLimit::max(state.config.body_limit))
+        .layer(middleware::from_fn_with_state(state.clone(), access))
         .layer(CompressionLayer::new().compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(TextBodies)))
         .layer(middleware::from_fn(etag_per_encoding))
-        .layer(middleware::from_fn_with_state(state.clone(), observe))
-        .with_state(state)
+        .layer(middleware::from_fn_with_state(state.clone(), observe));
+    // Outermost, so that preflights are answered before access control and
+    // error responses (401, 429) carry the CORS headers browsers need to read them.
+    let router = match cors(&state.config.cors_origins) {
+        Some(layer) => router.layer(layer),
+        None => router,
+    };
+    router.with_state(state)
+}
+
+/// The CORS policy for `origins` (`*` for any); `None` when empty (no CORS headers at all).
+fn cors(origins: &[String]) -> Option<tower_http::cors::CorsLayer> {
+    use tower_http::cors::{AllowOrigin, CorsLayer};
+    if origins.is_empty() {
+        return None;
+    }
+    let allow = if origins.iter().any(|o| o.trim() == "*") {
+        AllowOrigin::any()
+    } else {
+        AllowOrigin::list(origins.iter().filter_map(|o| HeaderValue::from_str(o.trim()).ok()))
+    };
+    let name = header::HeaderName::from_static;
+    Some(
+        CorsLayer::new()
+            .allow_origin(allow)
+            .allow_methods([axum::http::Method::GET, axum::http::Method::POST])
+            .allow_headers([header::CONTENT_TYPE, header::AUTHORIZATION, name("x-api-key"), header::CACHE_CONTROL, header::IF_NONE_MATCH])
+            .expose_headers([
+                header::ETAG,
+                header::RETRY_AFTER,
+                name("x-request-id"),
+                name("x-rulemesh-cache"),
+                name("x-rulemesh-error"),
+                name("x-rulemesh-primitives"),
+                name("x-rulemesh-triangles"),
+                name("x-rulemesh-truncated"),
+                name("x-rulemesh-truncated-limit"),
+            ])
+            .max_age(std::time::Duration::from_secs(600)),
+    )
+}
+
+/// Who is calling: the ceiling their limits are clamped to (the server's,
+/// lowered by their API key's). Inserted by [`access`] into every request.
+#[derive(Debug, Clone, Copy)]
+pub struct Caller {
+    /// The ceiling for this request.
+    pub ceiling: Limits,
+}
+
+/// Admits `/v1/…` requests by API key (401, 429), holding the key's
+/// concurrency share until the response is ready; other routes (probes,
+/// metrics, the OpenAPI document) stay open.
+async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -> Response {
+    if !req.uri().path().starts_with("/v1/") {
+        req.extensions_mut().insert(Caller { ceiling: st.ceiling });
+        return next.run(req).await;
+    }
+    let key = super::access::presented_key(|n| req.headers().get(n).and_then(|v| v.to_str().ok()));
+    let admission = match st.admit(key) {
+        Ok(a) => a,
+        Err(e) => return e.into_response(),
+    };
+    req.extensions_mut().insert(Caller { ceiling: admission.ceiling });
+    let resp = next.run(req).await;
+    drop(admission);
+    resp
 }
 
 /// Every documented route: each handler registered once, for both the
@@ -239,13 +305,16 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
         (status = 413, description = "Request body too large", body = ErrorBody),
         (status = 422, description = "A limit was exceeded", body = ErrorBody),
+        (status = 401, description = "API keys are configured and none valid was presented", body = ErrorBody),
+        (status = 403, description = "A #javascript EisenScript script, which this server does not run", body = ErrorBody),
+        (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody),
         (status = 503, description = "Overloaded or shutting down (with Retry-After)", body = ErrorBody),
         (status = 504, description = "Deadline exceeded", body = ErrorBody)
     ))]
-async fn render_post(State(st): State<Arc<AppState>>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
+async fn render_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
     let result: Result<(Served, bool, bool), ServiceError> = async {
         let body = body_bytes(body, st.config.body_limit)?;
-        let plan = from_json::<RenderBody>(&body)?.plan(&st.ceiling, wants_fresh(&headers))?;
+        let plan = from_json::<RenderBody>(&body)?.plan(&caller.ceiling, wants_fresh(&headers))?;
         let text = is_text(plan.request.format);
         let p = plan.request.export_options.print;
         let print_stl = p.enabled && !p.report && plan.request.format == Format::Stl;
@@ -308,10 +377,18 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
         (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
         (status = 413, description = "Request body too large", body = ErrorBody),
         (status = 422, description = "A limit was exceeded", body = ErrorBody),
+        (status = 401, description = "API keys are configured and none valid was presented", body = ErrorBody),
+        (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody),
         (status = 503, description = "Overloaded or shutting down (with Retry-After)", body = ErrorBody),
         (status = 504, description = "Deadline exceeded", body = ErrorBody)
     ))]
-async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, RawQuery(query): RawQuery, headers: HeaderMap) -> Response {
+async fn model_get(
+    State(st): State<Arc<AppState>>,
+    Extension(caller): Extension<Caller>,
+    Path(file): Path<String>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Response {
     let result = async {
         let Some((name, ext)) = file.rsplit_once('.') else {
             return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf or NAME.stl")));
@@ -350,7 +427,7 @@ async fn model_get(State(st): State<Arc<AppState>>, Path(file): Path<String>, Ra
         }
         let pinned = body.seed.is_some();
         let text = ext == "gltf";
-        let plan = body.plan(&Limits::default().clamped_to(&st.ceiling), wants_fresh(&headers))?;
+        let plan = body.plan(&Limits::default().clamped_to(&caller.ceiling), wants_fresh(&headers))?;
         let served = st.engine.serve(plan).await?;
         Ok((served, pinned, text))
     }
@@ -380,7 +457,11 @@ fn serde_urlencoded_pairs(query: &str) -> Result<Vec<(String, String)>, ServiceE
 
 /// `GET /v1/grammars`.
 #[utoipa::path(get, path = "/v1/grammars", tag = "grammars",
-    responses((status = 200, description = "Every built-in grammar", body = GrammarList)))]
+    responses(
+        (status = 200, description = "Every built-in grammar", body = GrammarList),
+        (status = 401, description = "API keys are configured and none valid was presented", body = ErrorBody),
+        (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
+    ))]
 async fn grammars_list() -> Json<GrammarList> {
     Json(GrammarList { grammars: library::all().map(|b| b.info()).collect() })
 }
@@ -397,7 +478,9 @@ pub struct GrammarList {
     params(("name" = String, Path, description = "A built-in grammar's name (optionally with .mdg)")),
     responses(
         (status = 200, description = "The grammar's source", content_type = "text/plain", body = String),
-        (status = 404, description = "No such grammar", body = ErrorBody)
+        (status = 401, description = "API keys are configured and none valid was presented", body = ErrorBody),
+        (status = 404, description = "No such grammar", body = ErrorBody),
+        (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
 async fn grammar_source(Path(name): Path<String>) -> Response {
     let name = name.strip_suffix(".mdg").unwrap_or(&name);
@@ -456,10 +539,12 @@ pub fn check(body: CheckBody, ceiling: &Limits) -> Result<CheckReport, ServiceEr
     responses(
         (status = 200, description = "Diagnostics with line and column (no evaluation)", body = CheckReport),
         (status = 400, description = "Malformed request", body = ErrorBody),
-        (status = 413, description = "Request body too large", body = ErrorBody)
+        (status = 401, description = "API keys are configured and none valid was presented", body = ErrorBody),
+        (status = 413, description = "Request body too large", body = ErrorBody),
+        (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
-async fn check_post(State(st): State<Arc<AppState>>, body: Result<Bytes, BytesRejection>) -> Response {
-    let result = body_bytes(body, st.config.body_limit).and_then(|b| from_json::<CheckBody>(&b)).and_then(|b| check(b, &st.ceiling));
+async fn check_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, body: Result<Bytes, BytesRejection>) -> Response {
+    let result = body_bytes(body, st.config.body_limit).and_then(|b| from_json::<CheckBody>(&b)).and_then(|b| check(b, &caller.ceiling));
     match result {
         Ok(report) => Json(report).into_response(),
         Err(e) => e.into_response(),

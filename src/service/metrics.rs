@@ -25,6 +25,10 @@ pub struct Metrics {
     in_flight: AtomicI64,
     queued: AtomicI64,
     shed: AtomicU64,
+    connections: AtomicI64,
+    connections_closed: Mutex<BTreeMap<&'static str, u64>>,
+    access_rejections: Mutex<BTreeMap<&'static str, u64>>,
+    watchdog: AtomicU64,
     worker: Option<String>,
 }
 
@@ -93,6 +97,35 @@ impl Metrics {
         self.shed.fetch_add(1, Ordering::Relaxed);
     }
 
+    /// Adjusts the open HTTP connections gauge.
+    pub fn connection(&self, delta: i64) {
+        self.connections.fetch_add(delta, Ordering::Relaxed);
+    }
+
+    /// Open HTTP connections now.
+    pub fn connections_open(&self) -> i64 {
+        self.connections.load(Ordering::Relaxed)
+    }
+
+    /// Counts an HTTP connection the server closed, by reason (`header_timeout`, `idle`).
+    pub fn connection_closed(&self, reason: &'static str) {
+        if let Ok(mut m) = self.connections_closed.lock() {
+            *m.entry(reason).or_default() += 1;
+        }
+    }
+
+    /// Counts a request refused by access control, by reason (`unauthorized`, `rate_limited`, `javascript_disabled`).
+    pub fn access_rejected(&self, reason: &'static str) {
+        if let Ok(mut m) = self.access_rejections.lock() {
+            *m.entry(reason).or_default() += 1;
+        }
+    }
+
+    /// Counts a render the deadline watchdog ended (the pipeline ran past its deadline).
+    pub fn watchdog_fired(&self) {
+        self.watchdog.fetch_add(1, Ordering::Relaxed);
+    }
+
     /// The Prometheus text exposition.
     pub fn render_text(&self, cache: &ModelCache) -> String {
         let mut s = String::new();
@@ -153,6 +186,21 @@ impl Metrics {
         gauge(s, "rulemesh_renders_in_flight", "Renders running now.", self.in_flight.load(Ordering::Relaxed))?;
         gauge(s, "rulemesh_render_queue_depth", "Renders waiting for a slot.", self.queued.load(Ordering::Relaxed))?;
         counter(s, "rulemesh_shed_total", "Requests refused for overload.", self.shed.load(Ordering::Relaxed))?;
+        gauge(s, "rulemesh_http_connections_open", "HTTP connections open now.", self.connections_open())?;
+        let labelled = |s: &mut String, name: &str, help: &str, label: &str, m: &Mutex<BTreeMap<&'static str, u64>>| -> std::fmt::Result {
+            writeln!(s, "# HELP {name} {help}")?;
+            writeln!(s, "# TYPE {name} counter")?;
+            if let Ok(m) = m.lock() {
+                for (l, n) in m.iter() {
+                    writeln!(s, "{name}{{{label}=\"{l}\"}} {n}")?;
+                }
+            }
+            Ok(())
+        };
+        labelled(s, "rulemesh_http_connections_closed_total", "HTTP connections the server closed, by reason.", "reason", &self.connections_closed)?;
+        labelled(s, "rulemesh_access_rejections_total", "Requests refused by access control, by reason.", "reason", &self.access_rejections)?;
+        counter(s, "rulemesh_deadline_watchdog_total", "Renders the service ended at their deadline because the pipeline ran past it.", self.watchdog.load(Ordering::Relaxed))?;
+        counter(s, "rulemesh_cache_corrupt_total", "Disk or Redis cache entries whose content hash did not match (treated as misses, never served).", cache.corrupt())?;
         if let Some(r) = cache.redis() {
             counter(s, "rulemesh_redis_hits_total", "Models read from the shared Redis tier.", r.hits())?;
             counter(s, "rulemesh_redis_misses_total", "Redis lookups without a model.", r.misses())?;

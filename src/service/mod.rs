@@ -5,7 +5,9 @@
 //! Workers are stateless: any worker answers any request, and nothing but
 //! the cache outlives a request.
 
+pub mod access;
 pub mod config;
+pub mod conn;
 pub mod engine;
 pub mod error;
 pub mod grpc;
@@ -38,6 +40,8 @@ pub struct AppState {
     pub config: ServeConfig,
     /// The server-side ceiling on client limits.
     pub ceiling: Limits,
+    /// API keys, their rates, shares and ceilings (open when none are configured).
+    pub access: access::Access,
     ready: AtomicBool,
 }
 
@@ -46,13 +50,21 @@ impl AppState {
     /// opened or the Redis URL is invalid.
     pub fn new(config: ServeConfig) -> Result<AppState, ServeError> {
         let metrics = Arc::new(Metrics::for_worker(config.worker_id.clone()));
+        let ceiling = config.ceiling();
         Ok(AppState {
             engine: Engine::new(&config, metrics.clone())?,
             metrics,
-            ceiling: config.ceiling(),
+            access: access::Access::new(&config.api_keys, &ceiling),
+            ceiling,
             config,
             ready: AtomicBool::new(true),
         })
+    }
+
+    /// Admits a request presenting `key` (see [`access::Access::admit`]),
+    /// counting refusals in `/metrics`.
+    pub fn admit(&self, key: Option<&str>) -> Result<access::Admission, ServiceError> {
+        self.access.admit(key, &self.ceiling).inspect_err(|e| self.metrics.access_rejected(e.code()))
     }
 
     /// False once shutdown has begun.
@@ -157,10 +169,7 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
     };
 
     let app = http::router(state.clone());
-    let http_stop = stopped(stop.subscribe());
-    let http = tokio::spawn(async move {
-        axum::serve(http_listener, app).with_graceful_shutdown(http_stop).await.map_err(ServeError::Http)
-    });
+    let http = tokio::spawn(conn::serve_http(http_listener, app, state.clone(), stop.subscribe()));
 
     let (health, health_service) = tonic_health::server::health_reporter();
     health.set_serving::<grpc::pb::rulemesh_server::RulemeshServer<grpc::GrpcService>>().await;

@@ -36,22 +36,19 @@ fn glb_json(bytes: &[u8]) -> Value {
     serde_json::from_slice(&bytes[20..20 + jl]).expect("GLB JSON chunk")
 }
 
-/// Runs the three.js harness on `files` in one browser session. `None` when
-/// Chromium or three is missing and the test is not required to run.
-fn three_check(files: &[PathBuf]) -> Option<Vec<Value>> {
+/// Runs the three.js harness on `files` in one browser session. Fails when
+/// Chromium or three is missing (scripts/test installs both): a skipped check
+/// would pass without checking anything.
+fn three_check(files: &[PathBuf]) -> Vec<Value> {
     let out = Command::new("node").arg(repo().join("scripts/three-check/check.mjs")).args(files).output().expect("node runs");
-    let required = std::env::var_os("THREE_CHECK_REQUIRED").is_some();
     let stderr = String::from_utf8_lossy(&out.stderr).to_string();
-    if out.status.code() == Some(2) && !required {
-        eprintln!("skipping the three.js check: {stderr}");
-        return None;
-    }
+    assert_ne!(out.status.code(), Some(2), "the three.js check cannot run (scripts/test installs Chromium, three and playwright-core): {stderr}");
     let reports: Vec<Value> = String::from_utf8_lossy(&out.stdout)
         .lines()
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("three-check line {l:?}: {e}")))
         .collect();
     assert_eq!(reports.len(), files.len(), "one report per file; stderr:\n{stderr}");
-    Some(reports)
+    reports
 }
 
 #[test]
@@ -92,7 +89,7 @@ fn every_grammar_validates_and_loads_in_three_in_every_variant() {
         assert_eq!(*errors, 0, "{name}: {report}");
         assert_eq!(*warnings, 0, "{name}: {report}");
     }
-    let Some(reports) = three_check(&files) else { return };
+    let reports = three_check(&files);
     for (r, (name, plain, animations)) in reports.iter().zip(&expected) {
         assert_eq!(r["ok"], true, "{name} does not load in three.js: {r}");
         // Animated grammars (windmill) keep their animation through GLTFLoader.

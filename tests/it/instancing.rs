@@ -6,7 +6,7 @@
 use crate::common::{grammar_files, repo, run, tempdir, validate_gltf};
 use rulemesh::model::hierarchy::{Hierarchy, PlacedLeaf};
 use rulemesh::core::{Budget, Limit, Limits, OnLimit};
-use rulemesh::export::scene::decode_scene;
+use rulemesh::export::scene::{decode_scene, SceneError};
 use rulemesh::export::{ExportOptions, Format, Instancing};
 use rulemesh::lang::lsystem::parse;
 use rulemesh::lang::Language;
@@ -127,20 +127,21 @@ fn scene_round_trips_to_the_flat_paths_leaves() {
 #[test]
 fn malformed_scene_files_are_errors_not_panics() {
     let good = ok(&grammar("sierpinski-tetrahedron.ls"), &req(Format::Scene)).bytes;
-    assert!(decode_scene(&good[..good.len() - 1]).is_err());
-    assert!(decode_scene(b"RMSC").is_err());
-    assert!(decode_scene(b"").is_err());
+    let truncated = Err(SceneError::Length("truncated"));
+    assert_eq!(decode_scene(&good[..good.len() - 1]).map(|_| ()), truncated);
+    assert_eq!(decode_scene(b"RMSC").map(|_| ()), truncated);
+    assert_eq!(decode_scene(b"").map(|_| ()), truncated);
     let mut bad = good.clone();
     bad[0] = b'X';
-    assert!(decode_scene(&bad).is_err());
+    assert_eq!(decode_scene(&bad).map(|_| ()), Err(SceneError::NotScene));
     let mut extra = good.clone();
     extra.push(0);
-    assert!(decode_scene(&extra).is_err());
+    assert_eq!(decode_scene(&extra).map(|_| ()), Err(SceneError::Length("followed by trailing bytes")));
     // A reference to a later object.
     let mut forward = good;
     let first_entry = 24 + 28 + 4;
     forward[first_entry..first_entry + 4].copy_from_slice(&5u32.to_le_bytes());
-    assert!(decode_scene(&forward).is_err());
+    assert_eq!(decode_scene(&forward).map(|_| ()), Err(SceneError::Reference { object: 0, target: 5 }));
 }
 
 /// Walking the DAG through the turtle draws exactly what the derived string does.

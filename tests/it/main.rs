@@ -29,3 +29,4 @@ mod strips;
 mod unigrafix;
 mod scaleout;
 mod service;
+mod harden;

@@ -184,13 +184,12 @@ async fn error_statuses() {
         assert_eq!(r.status(), 400, "{bad}");
         assert_eq!(error_body(r).await["code"], "bad_request", "{bad}");
     }
-    // A Structure Synth JavaScript script cannot load files in the service: a clear 400.
+    // A Structure Synth JavaScript script is refused unless the operator allows
+    // it (harden::access::javascript_switch_over_http_and_grpc has both cases).
     let js = json!({"source": "#javascript\nBuilder.load(\"NouveauMovie.es\");\nBuilder.build();\n", "language": "eisenscript"});
     let r = post(&base, "/v1/render", &js).await;
-    assert_eq!(r.status(), 400);
-    let e = error_body(r).await;
-    assert_eq!(e["code"], "eval_error", "{e}");
-    assert!(e["message"].as_str().is_some_and(|m| m.contains("Builder.load(\"NouveauMovie.es\")") && m.contains("reads no files")), "{e}");
+    assert_eq!(r.status(), 403);
+    assert_eq!(error_body(r).await["code"], "javascript_disabled");
     let r = post(&base, "/v1/render", &json!({"source": "startshape A\nrule A {\n  BOX { x }\n}\n"})).await;
     assert_eq!(r.status(), 400);
     let e = error_body(r).await;

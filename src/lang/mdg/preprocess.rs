@@ -228,7 +228,7 @@ fn run(st: &mut State, lines: &[(u32, ColMap, &str)], depth: usize) -> Result<()
                     let (l2, m2, r2) = lines[i];
                     i += 1;
                     let t = r2.trim_start();
-                    if t.len() >= 9 && t[..9].eq_ignore_ascii_case("@endmacro") {
+                    if starts_with_ignore_case(t, "@endmacro") {
                         closed = true;
                         emit(st, l2, m2, "", dspan)?;
                         break;
@@ -252,7 +252,7 @@ fn run(st: &mut State, lines: &[(u32, ColMap, &str)], depth: usize) -> Result<()
                     i += 1;
                     emit(st, l2, m2, "", dspan)?;
                     let t = r2.trim_start();
-                    if t.len() >= 10 && t[..10].eq_ignore_ascii_case("@endshader") {
+                    if starts_with_ignore_case(t, "@endshader") {
                         closed = true;
                         break;
                     }
@@ -343,6 +343,13 @@ fn import(st: &mut State, name: &str, span: Span, depth: usize) -> Result<(), Pa
     let result = run(st, &lines, depth);
     st.imports.pop();
     result
+}
+
+/// Whether `line` starts with the ASCII word `prefix`, ignoring case. Compares
+/// bytes, so a multi-byte character straddling `prefix.len()` is simply not a
+/// match (slicing the `str` there panicked: issue 17).
+fn starts_with_ignore_case(line: &str, prefix: &str) -> bool {
+    line.as_bytes().get(..prefix.len()).is_some_and(|b| b.eq_ignore_ascii_case(prefix.as_bytes()))
 }
 
 fn parse_macro_header(h: &str, span: Span) -> Result<(String, Vec<String>), ParseError> {
@@ -548,6 +555,20 @@ mod tests {
         src.push_str("@expand M15()\n");
         let e = preprocess(&src).unwrap_err();
         assert_eq!(e.diagnostics[0].message, "macro expansion too large");
+    }
+
+    #[test]
+    fn mdg_preprocessor_multibyte_macro_body() {
+        // Issue 17: the ninth byte of a body line inside `é` panicked.
+        let e = preprocess("@macro A()\nabcdefgh\u{e9}").unwrap_err();
+        assert_eq!(e.diagnostics[0].message, "`@macro A` is not closed by `@endmacro`");
+        assert_eq!(e.diagnostics[0].span, Span::new(1, 1));
+        // The same for the shader blocks' ten-byte terminator.
+        let e = preprocess("@fragmentshader\nabcdefghi\u{e9}").unwrap_err();
+        assert_eq!(e.diagnostics[0].message, "`@fragmentshader` is not closed by `@endshader`");
+        // And a closed macro whose body has such a line still works.
+        let p = preprocess("@macro A()\nabcdefgh\u{e9}\n@ENDMACRO\nx").unwrap();
+        assert_eq!(p.text, "\n\n\nx");
     }
 
     #[test]

@@ -1,9 +1,9 @@
 //! The container image and deployment files against the binary they ship:
 //! ports, probe paths, environment variable names and memory sizing must
-//! match what `rulemesh serve` actually uses. When `scripts/test` has
-//! installed them (`HADOLINT`, `KUBERNETES_VALIDATE` point at the tools),
-//! hadolint lints the Dockerfile and kubernetes-validate checks the
-//! manifests against the Kubernetes schemas.
+//! match what `rulemesh serve` actually uses. hadolint lints the Dockerfile
+//! and kubernetes-validate checks the manifests against the Kubernetes
+//! schemas; both are required (`scripts/test` installs them into
+//! `.tools/venv`; `HADOLINT` and `KUBERNETES_VALIDATE` may point elsewhere).
 
 use crate::common;
 use rulemesh::service::ServeConfig;
@@ -81,10 +81,13 @@ fn dockerfile_matches_the_binary() {
     for name in env_names_in(&text) {
         assert!(known.contains(&name), "Dockerfile sets {name}, which rulemesh does not read");
     }
-    if let Some(hadolint) = std::env::var_os("HADOLINT") {
-        let out = Command::new(hadolint).arg(common::repo().join("Dockerfile")).output().expect("run hadolint");
-        assert!(out.status.success(), "hadolint:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    }
+    let out = Command::new(tool("HADOLINT", "hadolint")).arg(common::repo().join("Dockerfile")).output().expect("run hadolint (scripts/test installs it)");
+    assert!(out.status.success(), "hadolint:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+}
+
+/// A PyPI tool: `$var`, else `.tools/venv/bin/NAME` where `scripts/test` installs it.
+fn tool(var: &str, name: &str) -> std::path::PathBuf {
+    std::env::var_os(var).map_or_else(|| common::repo().join(".tools/venv/bin").join(name), Into::into)
 }
 
 #[test]
@@ -137,11 +140,13 @@ fn manifests_match_the_binary() {
     let term: u64 = dep.lines().find_map(|l| l.trim().strip_prefix("terminationGracePeriodSeconds: ")).and_then(|v| v.parse().ok()).expect("terminationGracePeriodSeconds");
     assert!(term * 1000 > num("RULEMESH_DRAIN_MS") + num("RULEMESH_GRACE_MS"));
 
-    if let Some(validate) = std::env::var_os("KUBERNETES_VALIDATE") {
-        let files: Vec<_> = K8S.iter().map(|f| common::repo().join(f)).collect();
-        let out = Command::new(validate).arg("--strict").args(&files).output().expect("run kubernetes-validate");
-        assert!(out.status.success(), "kubernetes-validate:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    }
+    let files: Vec<_> = K8S.iter().map(|f| common::repo().join(f)).collect();
+    let out = Command::new(tool("KUBERNETES_VALIDATE", "kubernetes-validate"))
+        .arg("--strict")
+        .args(&files)
+        .output()
+        .expect("run kubernetes-validate (scripts/test installs it)");
+    assert!(out.status.success(), "kubernetes-validate:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
     assert!(Path::new(&common::repo().join("deploy/nginx.conf")).exists());
 }
 

@@ -1,6 +1,6 @@
 //! Scale-out end to end: a real `redis-server` and two real `rulemesh serve`
 //! processes on loopback sharing it. `scripts/test` installs redis-server
-//! and sets `REDIS_REQUIRED=1`, so there this test never skips. The
+//! and these tests fail (never skip) where it is missing. The
 //! container image and deployment files are checked in [`deploy`].
 
 mod deploy;
@@ -12,29 +12,26 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// A free loopback port (bound, then released).
-fn free_port() -> u16 {
+pub(crate) fn free_port() -> u16 {
     let l = TcpListener::bind("127.0.0.1:0").expect("bind 127.0.0.1:0");
     l.local_addr().expect("addr").port()
 }
 
-fn redis_server() -> Option<&'static str> {
+/// Fails the calling test when `redis-server` is not installed: a test that
+/// silently passed without it would check nothing (issue 17).
+pub(crate) fn require_redis_server() {
     let found = Command::new("redis-server").arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok_and(|s| s.success());
-    if found {
-        return Some("redis-server");
-    }
-    assert!(std::env::var_os("REDIS_REQUIRED").is_none(), "redis-server is not installed (scripts/test installs it)");
-    eprintln!("scaleout: redis-server not installed; skipped (run scripts/test)");
-    None
+    assert!(found, "redis-server is not installed (scripts/test installs it: apt-get install redis-server)");
 }
 
 /// A `redis-server` on a loopback port, without persistence; killed on drop.
-struct Redis {
+pub(crate) struct Redis {
     port: u16,
     child: Option<Child>,
 }
 
 impl Redis {
-    fn start(port: u16) -> Redis {
+    pub(crate) fn start(port: u16) -> Redis {
         Redis::start_with(port, &[])
     }
 
@@ -84,7 +81,7 @@ impl Redis {
         String::from_utf8_lossy(&out).into_owned()
     }
 
-    fn url(&self) -> String {
+    pub(crate) fn url(&self) -> String {
         format!("redis://127.0.0.1:{}/", self.port)
     }
 
@@ -176,9 +173,7 @@ fn client() -> reqwest::Client {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn two_workers_share_redis_and_survive_its_loss() {
-    if redis_server().is_none() {
-        return;
-    }
+    require_redis_server();
     let port = free_port();
     let mut redis = Redis::start(port);
     let a = Worker::start("a", &redis.url(), false, &[]);
@@ -277,9 +272,7 @@ async fn burst(a: &Worker, b: &Worker, tag: &str) -> u64 {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn fifty_identical_misses_render_at_most_twice_and_once_with_the_lock() {
-    if redis_server().is_none() {
-        return;
-    }
+    require_redis_server();
     let redis = Redis::start(free_port());
     {
         let a = Worker::start("a", &redis.url(), false, &[]);
@@ -298,9 +291,7 @@ async fn fifty_identical_misses_render_at_most_twice_and_once_with_the_lock() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn redis_values_have_a_ttl_and_a_size_cap_and_a_full_or_slow_redis_is_survived() {
-    if redis_server().is_none() {
-        return;
-    }
+    require_redis_server();
     let c = client();
     // TTL: the stored model expires (PX) within the configured lifetime.
     let redis = Redis::start(free_port());
