@@ -51,6 +51,25 @@ pub struct ApiKeySpec {
     pub ceiling_steps: Option<u64>,
 }
 
+impl ApiKeySpec {
+    /// The key `key` named `name`, with no rate, share or ceilings of its
+    /// own (the server's apply); set those with struct update syntax.
+    pub fn new(name: impl Into<String>, key: impl Into<String>) -> ApiKeySpec {
+        ApiKeySpec {
+            name: name.into(),
+            key: key.into(),
+            rate_per_sec: None,
+            burst: None,
+            max_concurrency: None,
+            ceiling_primitives: None,
+            ceiling_triangles: None,
+            ceiling_memory: None,
+            ceiling_timeout_ms: None,
+            ceiling_steps: None,
+        }
+    }
+}
+
 fn redacted<S: serde::Serializer>(_: &str, s: S) -> Result<S::Ok, S::Error> {
     s.serialize_str("***")
 }
@@ -238,18 +257,7 @@ mod tests {
     use std::time::Duration;
 
     fn spec(key: &str) -> ApiKeySpec {
-        ApiKeySpec {
-            name: format!("n-{key}"),
-            key: key.into(),
-            rate_per_sec: None,
-            burst: None,
-            max_concurrency: None,
-            ceiling_primitives: None,
-            ceiling_triangles: None,
-            ceiling_memory: None,
-            ceiling_timeout_ms: None,
-            ceiling_steps: None,
-        }
+        ApiKeySpec::new(format!("n-{key}"), key)
     }
 
     #[test]

@@ -13,18 +13,7 @@ const SLOW: &str = "startshape A\nrule A { 100000 * { x 1 } B {} }\nrule B { 100
 const JS: &str = "#javascript\nBuilder.load(\"NouveauMovie.es\");\nBuilder.build();\n";
 
 fn key(name: &str, secret: &str) -> ApiKeySpec {
-    ApiKeySpec {
-        name: name.into(),
-        key: secret.into(),
-        rate_per_sec: None,
-        burst: None,
-        max_concurrency: None,
-        ceiling_primitives: None,
-        ceiling_triangles: None,
-        ceiling_memory: None,
-        ceiling_timeout_ms: None,
-        ceiling_steps: None,
-    }
+    ApiKeySpec::new(name, secret)
 }
 
 fn keyed() -> ServeConfig {
