@@ -212,8 +212,8 @@ impl Tracks {
                 movers.push((Mover::Node(i), &n.samples, true));
             }
         }
-        if let Some(c) = g.camera.as_ref().filter(|c| c.samples.len() == count) {
-            movers.push((Mover::Camera, &c.samples, false));
+        if let Some(c) = g.camera.as_ref().filter(|c| c.placements.len() == count) {
+            movers.push((Mover::Camera, &c.placements, false));
         }
         for (mover, samples, with_scale) in movers {
             t.channels.push((mover, Property::Translation, t.bytes.len() as u64));

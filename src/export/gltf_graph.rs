@@ -49,7 +49,7 @@ pub(super) fn add_graph(root: &mut json::Root, g: &NodeGraph, tracks: &Tracks, b
     }
     let camera_node = g.camera.as_ref().map(|c| {
         let camera = root.push(perspective(c.name.clone(), c.yfov, c.znear, c.zfar));
-        let mut node = trs_node("camera", c.samples.first().unwrap_or(&identity));
+        let mut node = trs_node("camera", c.placements.first().unwrap_or(&identity));
         node.scale = None;
         node.camera = Some(camera);
         let n = root.push(node);

@@ -56,21 +56,6 @@ pub struct GraphNode {
     pub samples: Vec<Trs>,
 }
 
-/// A camera with its placement per sample.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GraphCamera {
-    /// The glTF camera's name.
-    pub name: Option<String>,
-    /// Vertical field of view, radians.
-    pub yfov: f32,
-    /// Near plane.
-    pub znear: f32,
-    /// Far plane (`None`: infinite).
-    pub zfar: Option<f32>,
-    /// The camera node's transform per sample (one entry: a still camera).
-    pub samples: Vec<Trs>,
-}
-
 /// Nodes (parents before children), where each mesh hangs, sample times and a camera.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct NodeGraph {
@@ -80,8 +65,9 @@ pub struct NodeGraph {
     pub mesh_nodes: Vec<Option<u32>>,
     /// Sample times in seconds (strictly increasing, starting at 0).
     pub times: Vec<f32>,
-    /// The camera, if the grammar has one.
-    pub camera: Option<GraphCamera>,
+    /// The camera path, if the grammar has one: a placement per sample, or a
+    /// single one when it does not move.
+    pub camera: Option<Camera>,
     /// Samples hold until the next (glTF STEP interpolation) instead of LINEAR.
     pub step: bool,
 }
@@ -119,14 +105,14 @@ impl NodeGraph {
                 });
             }
         }
-        let camera = camera.map(|c| GraphCamera { name: c.name.clone(), yfov: c.yfov, znear: c.znear, zfar: c.zfar, samples: still_if_constant(c.placements.clone()) });
+        let camera = camera.map(|c| Camera { placements: still_if_constant(c.placements.clone()), ..c.clone() });
         let step = timeline.is_some_and(|t| t.step);
         Ok(NodeGraph { nodes, mesh_nodes: mesh_bones.iter().map(|b| b.checked_sub(1)).collect(), times, camera, step })
     }
 
     /// True when something moves (more than one sample of a node or the camera).
     pub fn is_animated(&self) -> bool {
-        self.times.len() > 1 && (self.nodes.iter().any(|n| n.samples.len() > 1) || self.camera.as_ref().is_some_and(|c| c.samples.len() > 1))
+        self.times.len() > 1 && (self.nodes.iter().any(|n| n.samples.len() > 1) || self.camera.as_ref().is_some_and(|c| c.placements.len() > 1))
     }
 }
 
