@@ -206,8 +206,8 @@ pub fn export_with(
     let (fitted, moved);
     let (meshes, meta) = if options.fit_unit_box {
         // The camera moves with the model, so the fitted model is seen as the original was.
-        let map = crate::geom::normalize::unit_box_map(meshes);
-        fitted = crate::geom::normalize::fit_unit_box(meshes, budget)?;
+        let map;
+        (fitted, map) = crate::geom::normalize::fit_unit_box(meshes, budget)?;
         moved = ExportMeta { camera: meta.camera.as_ref().map(|c| map.map_or_else(|| c.clone(), |(centre, scale)| c.fitted(centre, scale))), ..meta.clone() };
         (&fitted[..], &moved)
     } else {

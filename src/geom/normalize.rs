@@ -37,13 +37,16 @@ pub fn unit_box_map(meshes: &[NamedMesh]) -> Option<([f64; 3], f64)> {
 /// box is 1 and moved so its centre is the origin: every position ends up in
 /// `[-0.5, 0.5]³`. Normals are unchanged (the scale is uniform and positive,
 /// so winding too). A model without triangles, or of zero extent, is only
-/// moved. The copy's bytes are reserved in `budget` first.
-pub fn fit_unit_box(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
+/// moved. The copy's bytes are reserved in `budget` first. Also returns the
+/// map it applied ([`unit_box_map`]), so whatever is placed with the model
+/// (a camera) can be moved alike without measuring the bounds again.
+pub fn fit_unit_box(meshes: &[NamedMesh], budget: &mut Budget) -> Result<(Vec<NamedMesh>, Option<([f64; 3], f64)>), LimitExceeded> {
     budget.reserve_memory(meshes.iter().map(|m| m.mesh.byte_size()).sum())?;
-    let Some((centre, scale)) = unit_box_map(meshes) else {
-        return Ok(meshes.to_vec());
+    let map = unit_box_map(meshes);
+    let Some((centre, scale)) = map else {
+        return Ok((meshes.to_vec(), None));
     };
-    Ok(meshes
+    let fitted = meshes
         .iter()
         .map(|m| {
             let mut m = m.clone();
@@ -52,7 +55,8 @@ pub fn fit_unit_box(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<Nam
             }
             m
         })
-        .collect())
+        .collect();
+    Ok((fitted, map))
 }
 
 #[cfg(test)]
@@ -65,7 +69,7 @@ mod tests {
     #[test]
     fn fits_the_unit_box_centred() {
         let meshes = meshes_of(&all_nine(), 8, MeshLayout::PerKind);
-        let fitted = fit_unit_box(&meshes, &mut Budget::new(Limits::default())).expect("fits");
+        let (fitted, _) = fit_unit_box(&meshes, &mut Budget::new(Limits::default())).expect("fits");
         let (lo, hi) = bounds(&fitted).expect("triangles");
         let ext = (0..3).map(|a| hi[a] - lo[a]).fold(0.0f64, f64::max);
         assert!((ext - 1.0).abs() < 1e-6, "{ext}");

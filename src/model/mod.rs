@@ -42,14 +42,6 @@ pub struct Model {
 }
 
 impl Model {
-    /// Why the model is partial, if a limit cut it short.
-    pub fn truncated(&self) -> Option<LimitExceeded> {
-        match &self.hierarchy {
-            Some(h) => h.truncated,
-            None => self.scene.truncated,
-        }
-    }
-
     /// Records `e` as the reason the model is partial (the first reason wins).
     pub fn truncate(&mut self, e: LimitExceeded) {
         match &mut self.hierarchy {
