@@ -16,6 +16,7 @@
 //! reported by [`HalfEdgeMesh::boundary_edges`]; vertices whose fan is not a
 //! single disc (a "bow tie") are reported by [`HalfEdgeMesh::nonmanifold_vertices`].
 
+use super::STOP_EVERY;
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -52,6 +53,9 @@ pub enum HalfEdgeError {
         /// End vertex.
         to: u32,
     },
+    /// The caller's `stop` callback asked to give up (its deadline passed).
+    #[error("stopped before the mesh was built")]
+    Stopped,
     /// The mesh is larger than 32-bit half-edge indices can address.
     #[error("mesh too large for a half-edge structure ({triangles} triangles)")]
     TooLarge {
@@ -82,11 +86,22 @@ pub fn halfedge_bytes(v: u64, f: u64) -> u64 {
 impl HalfEdgeMesh {
     /// Builds the structure from positions and CCW triangles in O(n).
     pub fn new(positions: Vec<DVec3>, tris: Vec<[u32; 3]>) -> Result<HalfEdgeMesh, HalfEdgeError> {
+        Self::new_until(positions, tris, &|| false)
+    }
+
+    /// [`HalfEdgeMesh::new`] that asks `stop` every [`STOP_EVERY`] triangles
+    /// whether to give up ([`HalfEdgeError::Stopped`]): building the edge map
+    /// of a mesh of millions of triangles takes seconds, longer than a
+    /// request's deadline may allow.
+    pub fn new_until(positions: Vec<DVec3>, tris: Vec<[u32; 3]>, stop: &dyn Fn() -> bool) -> Result<HalfEdgeMesh, HalfEdgeError> {
         if tris.len() >= (u32::MAX / 3) as usize || positions.len() >= u32::MAX as usize {
             return Err(HalfEdgeError::TooLarge { triangles: tris.len() });
         }
         let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(tris.len() * 3);
         for (f, t) in tris.iter().enumerate() {
+            if f % STOP_EVERY == STOP_EVERY - 1 && stop() {
+                return Err(HalfEdgeError::Stopped);
+            }
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);
                 if a as usize >= positions.len() {
@@ -103,6 +118,9 @@ impl HalfEdgeMesh {
         let mut pair = vec![NO_PAIR; tris.len() * 3];
         let mut out = vec![NO_PAIR; positions.len()];
         for (f, t) in tris.iter().enumerate() {
+            if f % STOP_EVERY == STOP_EVERY - 1 && stop() {
+                return Err(HalfEdgeError::Stopped);
+            }
             for k in 0..3 {
                 let h = 3 * f + k;
                 let (a, b) = (t[k], t[(k + 1) % 3]);
@@ -326,13 +344,23 @@ impl HalfEdgeMesh {
 /// models may share edges between touching parts): three vertices per face
 /// with its normal, positions rounded to f32 once per source vertex.
 pub fn flat_prototype(positions: &[DVec3], tris: &[[u32; 3]]) -> super::primitives::Prototype {
+    let never = || false;
+    flat_prototype_until(positions, tris, &never).unwrap_or_default()
+}
+
+/// [`flat_prototype`] that asks `stop` every [`STOP_EVERY`] triangles
+/// whether to give up (`None`), for imported models of millions of faces.
+pub fn flat_prototype_until(positions: &[DVec3], tris: &[[u32; 3]], stop: &dyn Fn() -> bool) -> Option<super::primitives::Prototype> {
     let pos32: Vec<[f32; 3]> = positions.iter().map(|p| p.as_vec3().to_array()).collect();
     let mut proto = super::primitives::Prototype {
         positions: Vec::with_capacity(tris.len() * 3),
         normals: Vec::with_capacity(tris.len() * 3),
         indices: Vec::with_capacity(tris.len() * 3),
     };
-    for t in tris {
+    for (f, t) in tris.iter().enumerate() {
+        if f % STOP_EVERY == STOP_EVERY - 1 && stop() {
+            return None;
+        }
         let Some(c) = t.iter().map(|&i| positions.get(i as usize).copied()).collect::<Option<Vec<DVec3>>>() else { continue };
         let n = (c[1] - c[0]).cross(c[2] - c[0]).normalize_or(DVec3::Z).as_vec3().to_array();
         for &i in t {
@@ -341,7 +369,7 @@ pub fn flat_prototype(positions: &[DVec3], tris: &[[u32; 3]]) -> super::primitiv
             proto.normals.push(n);
         }
     }
-    proto
+    Some(proto)
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 //! modifiers, swept tubes and triangle strips. Pure functions of their
 //! inputs: it knows nothing about languages, scenes or formats.
 
+pub mod assembly;
 pub mod halfedge;
 pub mod hull;
 pub mod isosurface;
@@ -16,6 +17,13 @@ pub mod sweep;
 pub mod weld;
 
 pub use mesh::{Mesh, NamedMesh};
+
+/// How many items a long loop handles between two calls of its `stop`
+/// callback (the kernel's way to keep a caller's deadline without knowing
+/// about budgets): often enough that a deadline is kept within
+/// milliseconds, rarely enough that asking the clock costs nothing
+/// measurable.
+pub const STOP_EVERY: usize = 1 << 16;
 
 /// Default tessellation detail (segments around a round primitive).
 pub const DEFAULT_DETAIL: u32 = 16;

@@ -9,6 +9,7 @@
 //! tables reorder by first occurrence too, but on whole vertices, not
 //! positions), and the order is part of the output bytes.
 
+use super::STOP_EVERY;
 use std::collections::HashMap;
 use std::hash::Hash;
 
@@ -16,19 +17,37 @@ use std::hash::Hash;
 /// point the index of its distinct point. `key` decides which points are the
 /// same (see [`f32_key`], [`f64_key`]).
 pub fn weld_by<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K) -> (Vec<P>, Vec<u32>) {
+    let never = || false;
+    let (distinct, remap, _) = weld_while(points, key, &never);
+    (distinct, remap)
+}
+
+/// [`weld_by`] that asks `stop` every [`STOP_EVERY`] points whether to give
+/// up (`None`): welding millions of corners takes longer than a request's
+/// deadline may allow.
+pub fn weld_by_until<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K, stop: &dyn Fn() -> bool) -> Option<(Vec<P>, Vec<u32>)> {
+    let (distinct, remap, stopped) = weld_while(points, key, stop);
+    (!stopped).then_some((distinct, remap))
+}
+
+/// The weld itself; the flag says whether `stop` ended it early.
+fn weld_while<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K, stop: &dyn Fn() -> bool) -> (Vec<P>, Vec<u32>, bool) {
     let points = points.into_iter();
     let mut ids: HashMap<K, u32> = HashMap::with_capacity(points.size_hint().0);
     let mut distinct = Vec::new();
-    let remap = points
-        .map(|p| {
-            *ids.entry(key(&p)).or_insert_with(|| {
-                distinct.push(p);
-                // Fits: callers weld meshes whose vertex counts are u32 indices.
-                (distinct.len() - 1) as u32
-            })
-        })
-        .collect();
-    (distinct, remap)
+    let mut remap = Vec::with_capacity(points.size_hint().0);
+    for (i, p) in points.enumerate() {
+        if i % STOP_EVERY == STOP_EVERY - 1 && stop() {
+            return (distinct, remap, true);
+        }
+        let id = *ids.entry(key(&p)).or_insert_with(|| {
+            distinct.push(p);
+            // Fits: callers weld meshes whose vertex counts are u32 indices.
+            (distinct.len() - 1) as u32
+        });
+        remap.push(id);
+    }
+    (distinct, remap, false)
 }
 
 /// The exact key of an f32 point: its coordinates' bit patterns.

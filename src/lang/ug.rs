@@ -13,13 +13,16 @@
 
 use super::ir::{MeshDecl, Program};
 use super::{Diagnostic, ParseError, Span};
+use crate::geom::assembly::{Assembly, Part};
 use crate::geom::modifiers::MeshBase;
 use glam::{DMat4, DVec3};
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// Deepest instance nesting accepted.
 const MAX_DEPTH: usize = 32;
-/// Most triangles the expansion may produce (the render's budget applies after).
+/// Most triangles the expansion may produce (the render's budget, which
+/// admits the expansion before it is built, is usually lower).
 const MAX_TRIANGLES: u64 = 10_000_000;
 /// Deepest comment nesting accepted.
 const MAX_COMMENT_DEPTH: usize = 64;
@@ -200,61 +203,84 @@ fn read(text: &str, warnings: &mut Vec<Diagnostic>) -> Result<(Def, HashMap<Stri
     Ok((world, defs))
 }
 
-/// Triangles of `d` expanded through its instances, transformed by `m`.
-fn expand(
-    d: &Def,
-    m: DMat4,
-    defs: &HashMap<String, Def>,
-    stack: &mut Vec<String>,
-    out: &mut (Vec<DVec3>, Vec<[u32; 3]>),
-) -> Result<(), ParseError> {
-    for (ids, line) in &d.faces {
-        let base = out.0.len() as u32;
-        for id in ids {
-            let p = d.verts.get(id).ok_or_else(|| err(*line, format!("face names vertex `{id}`, which this definition does not have")))?;
-            out.0.push(m.transform_point3(*p));
-        }
-        for k in 1..ids.len() as u32 - 1 {
-            out.1.push([base, base + k, base + k + 1]);
-        }
-        if out.1.len() as u64 > MAX_TRIANGLES {
-            return Err(err(*line, format!("instances expand to more than {MAX_TRIANGLES} triangles")));
-        }
-    }
-    for (name, t, line) in &d.instances {
-        if stack.len() >= MAX_DEPTH {
-            return Err(err(*line, format!("instances nested deeper than {MAX_DEPTH}")));
-        }
-        if stack.contains(name) {
-            return Err(err(*line, format!("instance cycle through `{name}`")));
-        }
-        let sub = defs.get(name).ok_or_else(|| err(*line, format!("instance of unknown definition `{name}`")))?;
-        stack.push(name.clone());
-        expand(sub, m * *t, defs, stack, out)?;
-        stack.pop();
-    }
-    Ok(())
+/// Definitions resolved into [`Part`]s: vertex names into positions,
+/// instance names into part indices, in the order the expansion meets them.
+struct Resolver<'a> {
+    defs: &'a HashMap<String, Def>,
+    parts: Vec<Part>,
+    /// Part index and instance height (deepest nesting below) of each resolved definition.
+    resolved: HashMap<&'a str, (usize, usize)>,
+    /// Names being resolved, outermost first (for cycles and the depth limit).
+    stack: Vec<&'a str>,
 }
 
-/// Welds the expanded corners by exact position, so faces that share a UG vertex share a mesh vertex.
-fn weld(corners: Vec<DVec3>, tris: Vec<[u32; 3]>) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-    let (pos, remap) = crate::geom::weld::weld_by(corners, |p| crate::geom::weld::f64_key(&p.to_array()));
-    let tris = tris.into_iter().map(|t| t.map(|i| remap[i as usize])).filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2]).collect();
-    (pos, tris)
+impl<'a> Resolver<'a> {
+    /// Resolves `d` (reached through `stack`) into a new part; returns its
+    /// index and its instance height.
+    fn resolve(&mut self, d: &'a Def) -> Result<(usize, usize), ParseError> {
+        let mut polygons = Vec::with_capacity(d.faces.len());
+        for (ids, line) in &d.faces {
+            let corners = ids
+                .iter()
+                .map(|id| d.verts.get(id).copied().ok_or_else(|| err(*line, format!("face names vertex `{id}`, which this definition does not have"))))
+                .collect::<Result<Vec<DVec3>, ParseError>>()?;
+            polygons.push(corners);
+        }
+        let index = self.parts.len();
+        self.parts.push(Part::default());
+        let mut children = Vec::with_capacity(d.instances.len());
+        let mut height = 0;
+        for (name, t, line) in &d.instances {
+            let level = self.stack.len();
+            let too_deep = || err(*line, format!("instances nested deeper than {MAX_DEPTH}"));
+            if level >= MAX_DEPTH {
+                return Err(too_deep());
+            }
+            if self.stack.contains(&name.as_str()) {
+                return Err(err(*line, format!("instance cycle through `{name}`")));
+            }
+            let (child, below) = match self.resolved.get(name.as_str()) {
+                Some(&(child, below)) => {
+                    if below > 0 && level + below >= MAX_DEPTH {
+                        return Err(too_deep());
+                    }
+                    (child, below)
+                }
+                None => {
+                    let (key, sub) = self.defs.get_key_value(name).ok_or_else(|| err(*line, format!("instance of unknown definition `{name}`")))?;
+                    self.stack.push(key);
+                    let resolved = self.resolve(sub)?;
+                    self.stack.pop();
+                    self.resolved.insert(key, resolved);
+                    resolved
+                }
+            };
+            height = height.max(below + 1);
+            children.push((child, *t));
+        }
+        self.parts[index] = Part { polygons, children };
+        Ok((index, height))
+    }
 }
 
 /// Parses UniGrafix source into a program drawing its geometry as one mesh.
+/// The instances stay a tree ([`Assembly`]); meshing expands them under
+/// the request's budget and deadline.
 pub fn parse(source: &[u8]) -> Result<Program, ParseError> {
     let text = std::str::from_utf8(source).map_err(|_| err(1, "UniGrafix source is not UTF-8"))?;
     let mut warnings = Vec::new();
     let (world, defs) = read(text, &mut warnings)?;
-    let mut out = (Vec::new(), Vec::new());
-    expand(&world, DMat4::IDENTITY, &defs, &mut Vec::new(), &mut out)?;
-    if out.1.is_empty() {
+    let mut resolver = Resolver { defs: &defs, parts: Vec::new(), resolved: HashMap::new(), stack: Vec::new() };
+    let (root, _) = resolver.resolve(&world)?;
+    let assembly = Assembly::new(resolver.parts, root).map_err(|e| err(1, format!("instances: {e}")))?;
+    let (_, triangles) = assembly.size();
+    if triangles > MAX_TRIANGLES {
+        return Err(err(1, format!("instances expand to more than {MAX_TRIANGLES} triangles ({triangles})")));
+    }
+    if triangles == 0 {
         return Err(err(1, "no faces: nothing to draw (top-level `f` or `i` statements)"));
     }
-    let (positions, tris) = weld(out.0, out.1);
-    let mesh = MeshDecl { name: "ug".into(), base: MeshBase::Indexed { positions, triangles: tris }, modifiers: Vec::new(), span: Span::new(1, 1) };
+    let mesh = MeshDecl { name: "ug".into(), base: MeshBase::Assembly(Arc::new(assembly)), modifiers: Vec::new(), span: Span::new(1, 1) };
     Ok(Program::single_mesh(mesh, warnings))
 }
 
@@ -275,7 +301,10 @@ i (cube -sa 0.5 -tx 2);
 
     fn mesh(p: &Program) -> (usize, usize) {
         match &p.meshes[0].base {
-            MeshBase::Indexed { positions, triangles } => (positions.len(), triangles.len()),
+            MeshBase::Assembly(a) => {
+                let (positions, triangles) = a.expand_until(&|| false).expect("not stopped");
+                (positions.len(), triangles.len())
+            }
             other => panic!("{other:?}"),
         }
     }

@@ -20,6 +20,7 @@ pub mod syntax;
 pub use extrude::{Extrude, FaceSelect};
 pub use subdivide::loop_beta;
 
+use super::assembly::Assembly;
 use super::halfedge::{halfedge_bytes, HalfEdgeError, HalfEdgeMesh};
 use super::polyhedra::{self, Solid};
 use super::primitives::{self, Prototype};
@@ -27,6 +28,7 @@ use crate::core::PrimitiveKind;
 use crate::core::budget::{Budget, Limit, LimitExceeded};
 use crate::core::rng::StreamKey;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// A coordinate axis of the primitive's local frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -122,13 +124,16 @@ pub enum MeshBase {
     /// A geodesic sphere of this frequency (icosahedron, each face split
     /// into frequency² triangles, pushed onto the sphere).
     Geodesic(u32),
-    /// Indexed triangles given by the source (UniGrafix import).
+    /// Indexed triangles given by the source.
     Indexed {
         /// Vertex positions.
         positions: Vec<DVec3>,
         /// CCW triangles.
         triangles: Vec<[u32; 3]>,
     },
+    /// Nested instances of polygons (UniGrafix import), expanded only once
+    /// the budget has admitted their counted size.
+    Assembly(Arc<Assembly>),
 }
 
 impl MeshBase {
@@ -139,10 +144,11 @@ impl MeshBase {
             MeshBase::Solid(s) => s.size(),
             MeshBase::Geodesic(n) => polyhedra::geodesic_size(*n),
             MeshBase::Indexed { positions, triangles } => (positions.len() as u64, triangles.len() as u64),
+            MeshBase::Assembly(a) => a.size(),
         }
     }
 
-    /// Builds the base as a half-edge mesh.
+    /// Builds the base as a half-edge mesh (an assembly is expanded first; see [`build`]).
     fn build(&self, detail: u32) -> Result<HalfEdgeMesh, HalfEdgeError> {
         match self {
             MeshBase::Primitive(k) => {
@@ -152,6 +158,10 @@ impl MeshBase {
             MeshBase::Solid(s) => s.mesh(),
             MeshBase::Geodesic(n) => polyhedra::geodesic(*n),
             MeshBase::Indexed { positions, triangles } => HalfEdgeMesh::new(positions.clone(), triangles.clone()),
+            MeshBase::Assembly(a) => {
+                let (positions, triangles) = a.expand_until(&|| false).ok_or(HalfEdgeError::Stopped)?;
+                HalfEdgeMesh::new(positions, triangles)
+            }
         }
     }
 }
@@ -159,6 +169,35 @@ impl MeshBase {
 /// Builds `base` and applies `modifiers`, all under `budget`; returns the
 /// flat-shaded prototype (its memory is not reserved: the caller keeps it).
 pub fn build(base: &MeshBase, modifiers: &[Modifier], detail: u32, budget: &mut Budget) -> Result<Prototype, ModifyError> {
+    if let MeshBase::Assembly(a) = base {
+        // Admitted at its counted size, with what the expansion really
+        // holds at its peak and the flat mesh the caller will keep; then
+        // expanded under the deadline.
+        let (corners, f) = a.size();
+        budget.check_total(Limit::Triangles, f)?;
+        budget.charge_steps(corners.saturating_add(f))?;
+        let bytes = crate::geom::assembly::expansion_bytes(corners, f);
+        budget.check_memory(bytes.saturating_add(crate::geom::mesh::mesh_bytes(f.saturating_mul(3), f)))?;
+        budget.reserve_memory(bytes)?;
+        let expanded = a.expand_until(&|| budget.check_deadline().is_err());
+        budget.release_memory(bytes);
+        let Some((positions, triangles)) = expanded else {
+            budget.check_deadline()?;
+            return Err(ModifyError::Stopped);
+        };
+        if modifiers.is_empty() {
+            let flat = super::halfedge::flat_prototype_until(&positions, &triangles, &|| budget.check_deadline().is_err());
+            return match flat {
+                Some(p) => Ok(p),
+                None => {
+                    budget.check_deadline()?;
+                    Err(ModifyError::Stopped)
+                }
+            };
+        }
+        let mesh = HalfEdgeMesh::new(positions, triangles).map_err(|source| ModifyError::Mesh { modifier: "base", source })?;
+        return Ok(apply_all(mesh, modifiers, budget)?.to_prototype());
+    }
     let (v, f) = base.size(detail);
     let bytes = admit(budget, v, f)?;
     if let (MeshBase::Indexed { positions, triangles }, []) = (base, modifiers) {
@@ -206,6 +245,10 @@ pub enum ModifyError {
         /// What is wrong.
         source: HalfEdgeError,
     },
+    /// The caller's `stop` callback asked to give up part-way
+    /// ([`apply_until`]); [`apply_all`] turns it into the deadline error.
+    #[error("stopped before the modifier finished")]
+    Stopped,
     /// A parameter is out of range.
     #[error("{modifier}: {message}")]
     Invalid {
@@ -265,10 +308,20 @@ pub fn apply_all(mesh: HalfEdgeMesh, ops: &[Modifier], budget: &mut Budget) -> R
         budget.check_deadline()?;
         let (v, _, f) = output_size(op, mesh.vertex_count() as u64, mesh.edge_count() as u64, mesh.face_count() as u64);
         let bytes = admit(budget, v, f)?;
-        let out = apply(&mesh, op);
+        let out = apply_until(&mesh, op, &|| budget.check_deadline().is_err());
         budget.release_memory(held);
         held = bytes;
-        mesh = out?;
+        mesh = match out {
+            Ok(next) => next,
+            Err(e) => {
+                budget.release_memory(held);
+                if e == ModifyError::Stopped {
+                    // Stopped by the deadline: say so as the budget's own error.
+                    budget.check_deadline()?;
+                }
+                return Err(e);
+            }
+        };
     }
     budget.release_memory(held);
     Ok(mesh)
@@ -276,9 +329,22 @@ pub fn apply_all(mesh: HalfEdgeMesh, ops: &[Modifier], budget: &mut Budget) -> R
 
 /// Applies one modifier (no budget check: use [`apply_all`] on untrusted input).
 pub fn apply(mesh: &HalfEdgeMesh, op: &Modifier) -> Result<HalfEdgeMesh, ModifyError> {
+    apply_until(mesh, op, &|| false)
+}
+
+/// [`apply`] that asks `stop` now and then, inside the long loops, whether
+/// to give up ([`ModifyError::Stopped`]): one subdivision of a mesh of
+/// millions of triangles takes seconds, so checking the deadline only
+/// between modifiers overran it threefold (issue 17's stacking string).
+pub fn apply_until(mesh: &HalfEdgeMesh, op: &Modifier, stop: &dyn Fn() -> bool) -> Result<HalfEdgeMesh, ModifyError> {
     let name = op.name();
     let invalid = |message: String| ModifyError::Invalid { modifier: name, message };
-    let rebuild = |positions: Vec<DVec3>, tris: Vec<[u32; 3]>| HalfEdgeMesh::new(positions, tris).map_err(|source| ModifyError::Mesh { modifier: name, source });
+    let rebuild = |positions: Vec<DVec3>, tris: Vec<[u32; 3]>| {
+        HalfEdgeMesh::new_until(positions, tris, stop).map_err(|source| match source {
+            HalfEdgeError::Stopped => ModifyError::Stopped,
+            source => ModifyError::Mesh { modifier: name, source },
+        })
+    };
     match op {
         Modifier::Subdivide { levels, weight, smooth } => {
             if !weight.is_finite() {
@@ -286,7 +352,7 @@ pub fn apply(mesh: &HalfEdgeMesh, op: &Modifier) -> Result<HalfEdgeMesh, ModifyE
             }
             let mut m = mesh.clone();
             for _ in 0..*levels {
-                let (p, t) = subdivide::subdivide_once(&m, *weight, *smooth);
+                let (p, t) = subdivide::subdivide_once(&m, *weight, *smooth, stop).ok_or(ModifyError::Stopped)?;
                 m = rebuild(p, t)?;
             }
             Ok(m)

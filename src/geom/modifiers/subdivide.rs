@@ -1,6 +1,7 @@
 //! Loop subdivision with seed 003's weight (eqs 2.4–2.6).
 
 use crate::geom::halfedge::{HalfEdgeMesh, NO_PAIR};
+use crate::geom::STOP_EVERY;
 use glam::DVec3;
 
 /// β of seed 003 eq 2.6 for a vertex of valence `n`:
@@ -19,7 +20,9 @@ pub fn loop_beta(n: usize) -> f64 {
 /// vertices are not smoothed (seed 003 gives no boundary rules), so open
 /// meshes keep their rims. Without `smooth` new vertices are exact midpoints
 /// and old vertices stay put (seed 003 L486, recommendation of §9).
-pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+/// `stop` is asked every [`STOP_EVERY`] edges and faces whether to give up
+/// (`None`): one step of a large mesh takes longer than a deadline may allow.
+pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool, stop: &dyn Fn() -> bool) -> Option<(Vec<DVec3>, Vec<[u32; 3]>)> {
     let nv = m.vertex_count();
     let mut positions: Vec<DVec3> = Vec::with_capacity(nv + m.edge_count());
     // Old vertices (eq 2.4).
@@ -38,6 +41,9 @@ pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool) -> (Ve
     // Edge vertices (eq 2.5), one per undirected edge, indexed per half-edge.
     let mut edge_vertex = vec![u32::MAX; m.halfedge_count()];
     for h in 0..m.halfedge_count() as u32 {
+        if h as usize % STOP_EVERY == STOP_EVERY - 1 && stop() {
+            return None;
+        }
         let p = m.pair(h);
         if p != NO_PAIR && p < h {
             continue;
@@ -60,6 +66,9 @@ pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool) -> (Ve
     }
     let mut tris = Vec::with_capacity(m.face_count() * 4);
     for (f, t) in m.triangles().iter().enumerate() {
+        if f % STOP_EVERY == STOP_EVERY - 1 && stop() {
+            return None;
+        }
         let h = 3 * f;
         let [mab, mbc, mca] = [edge_vertex[h], edge_vertex[h + 1], edge_vertex[h + 2]];
         tris.push([t[0], mab, mca]);
@@ -67,5 +76,5 @@ pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool) -> (Ve
         tris.push([t[2], mca, mbc]);
         tris.push([mab, mbc, mca]);
     }
-    (positions, tris)
+    Some((positions, tris))
 }
