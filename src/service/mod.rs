@@ -11,6 +11,7 @@ pub mod conn;
 pub mod engine;
 pub mod error;
 pub mod grpc;
+pub mod grpc_conn;
 pub mod http;
 pub mod library;
 pub mod metrics;
@@ -183,13 +184,19 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
     let reflection_alpha = reflection().build_v1alpha()?;
     let reflection = reflection().build_v1()?;
     let grpc_stop = stopped(stop.subscribe());
+    let incoming = grpc_conn::capped_incoming(grpc_listener, state.config.max_connections, state.config.header_timeout());
+    // Pings find peers that went away or stopped answering; a connection
+    // that never sent its preface is closed by `grpc_conn` instead.
+    let (ping_every, ping_answer) = (state.config.idle_timeout(), state.config.header_timeout());
     let grpc = tokio::spawn(async move {
         tonic::transport::Server::builder()
+            .http2_keepalive_interval(Some(ping_every))
+            .http2_keepalive_timeout(Some(ping_answer))
             .add_service(health_service)
             .add_service(reflection)
             .add_service(reflection_alpha)
             .add_service(grpc_service)
-            .serve_with_incoming_shutdown(tonic::transport::server::TcpIncoming::from(grpc_listener), grpc_stop)
+            .serve_with_incoming_shutdown(incoming, grpc_stop)
             .await
             .map_err(ServeError::Grpc)
     });

@@ -139,3 +139,49 @@ where
     }
     out
 }
+
+/// Waits up to `limit` for the server to send anything on `s` (its HTTP/2
+/// SETTINGS, sent as soon as a connection is accepted); the bytes read.
+async fn first_bytes(s: &mut TcpStream, limit: Duration) -> usize {
+    let mut buf = [0u8; 256];
+    match tokio::time::timeout(limit, s.read(&mut buf)).await {
+        Ok(Ok(n)) => n,
+        Ok(Err(_)) | Err(_) => 0,
+    }
+}
+
+/// The gRPC port has the same hygiene: a connection that sends no HTTP/2
+/// preface is closed at the header timeout, the open-connection cap holds
+/// (the connection past it is not even accepted until one closes), and a
+/// real gRPC call is answered afterwards.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn grpc_connections_without_a_preface_are_closed_and_the_cap_holds() {
+    let cap = 8;
+    let timeout = Duration::from_millis(1000);
+    let (srv, _base) = start(ServeConfig { header_timeout_ms: 1000, idle_timeout_ms: 5000, max_connections: cap, ..config() }).await;
+    let addr = srv.grpc_addr;
+    let mut held = Vec::new();
+    for _ in 0..cap {
+        let t = Instant::now();
+        let mut s = TcpStream::connect(addr).await.expect("connect");
+        assert!(first_bytes(&mut s, Duration::from_secs(2)).await > 0, "an accepted connection gets the server's SETTINGS");
+        held.push((s, t));
+    }
+    // One past the cap: connected by the kernel, not accepted by the server.
+    let t_extra = Instant::now();
+    let mut extra = TcpStream::connect(addr).await.expect("connect");
+    assert_eq!(first_bytes(&mut extra, Duration::from_millis(400)).await, 0, "the connection past the cap was accepted");
+    let waits = futures_join(held.into_iter().map(|s| closed_within(s, Duration::from_secs(5)))).await;
+    for w in &waits {
+        assert!(*w >= timeout - Duration::from_millis(20) && *w <= timeout + Duration::from_millis(1500), "closed after {w:?}");
+    }
+    // Now a slot is free: the waiting connection is accepted, and it too is
+    // closed for saying nothing, a timeout after its acceptance.
+    assert!(first_bytes(&mut extra, Duration::from_secs(2)).await > 0, "accepted once a slot was free");
+    let w = closed_within((extra, t_extra), Duration::from_secs(6)).await;
+    assert!(w >= timeout, "closed after {w:?}");
+    let mut g = grpc(&srv).await;
+    let r = g.render(rulemesh::service::grpc::pb::RenderRequest { source: small("grpc-after-stall"), ..Default::default() }).await;
+    assert!(r.is_ok(), "{r:?}");
+    stop(srv).await;
+}
