@@ -174,10 +174,13 @@ pub(super) fn unite(parts: &[HalfEdgeMesh], budget: &mut Budget) -> Result<(Vec<
         })
         .collect();
     while level.len() > 1 {
-        budget.check_deadline()?;
         let mut next = Vec::with_capacity(level.len().div_ceil(2));
         let mut it = level.chunks(2);
         for pair in &mut it {
+            // Before every union, not only every level: the first level of
+            // thousands of parts takes seconds. (One union itself, inside
+            // Manifold, cannot be interrupted.)
+            budget.check_deadline()?;
             next.push(match pair {
                 [a, b] => a.union(b),
                 [a] => a.union(&manifold_rs::Manifold::empty()),
