@@ -19,16 +19,25 @@
 //!    fallback buffer (buffer 1, no data, `"fallback": true`) that only
 //!    gives the decoded layout; the extension is then required.
 //!
+//! The document is built by the one glTF builder (`gltf_document::Doc`),
+//! as the plain writer's is: same asset, root node, material, camera and
+//! scene `extras`; this module only lays out its buffers and views.
+//!
 //! Quantised positions are dequantised by the mesh node's `translation`
 //! (the grid origin) and uniform `scale` (the grid step, the largest extent
 //! over 65535), so the model's world coordinates are the plain export's
 //! within half a grid step per axis. Normals are within 0.5/127 per
 //! component, so under 0.5° off. Output is deterministic.
 
+use super::gltf_buffer::{accessor, view};
+use super::gltf_document::{Attributes, Doc, MeshoptView, EXT_MESHOPT, KHR_QUANT};
 use super::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
-use serde_json::{json, Map, Value};
+use gltf_json as json;
+use json::accessor::{ComponentType, Type};
+use json::buffer::Target;
+use serde_json::Value;
 
 /// Compression of the glTF buffer.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
@@ -71,10 +80,6 @@ pub fn parse_compression(name: &str) -> Result<Compression, String> {
 }
 
 const QUANT_MAX: f64 = 65535.0;
-const ARRAY_BUFFER: u32 = 34962;
-const ELEMENT_ARRAY_BUFFER: u32 = 34963;
-const EXT_MESHOPT: &str = "EXT_meshopt_compression";
-const KHR_QUANT: &str = "KHR_mesh_quantization";
 
 /// One attribute or index stream of one mesh, uncompressed.
 struct Stream {
@@ -82,19 +87,18 @@ struct Stream {
     /// Bytes per element (also the view's byteStride for attributes).
     stride: usize,
     count: usize,
-    component: u32,
-    type_: &'static str,
+    component: ComponentType,
+    type_: Type,
     normalized: bool,
-    /// None for indices.
-    semantic: Option<&'static str>,
+    /// POSITION bounds (glTF requires them on POSITION only).
     min: Option<Value>,
     max: Option<Value>,
 }
 
-/// A mesh ready to be written.
+/// A mesh ready to be written: POSITION, NORMAL and COLOR_0, then the indices.
 struct Prepared {
     name: String,
-    streams: Vec<Stream>,
+    attributes: [Stream; 3],
     indices: Stream,
 }
 
@@ -171,7 +175,8 @@ fn int_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
             hi[a] = hi[a].max(q);
         }
     }
-    (json!(lo), json!(hi))
+    let v = |x: [u16; 3]| Value::Array(x.iter().map(|&c| Value::from(c)).collect());
+    (v(lo), v(hi))
 }
 
 fn float_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
@@ -188,8 +193,8 @@ fn float_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
     (v(lo), v(hi))
 }
 
-fn attribute(bytes: Vec<u8>, stride: usize, count: usize, component: u32, type_: &'static str, normalized: bool, semantic: &'static str) -> Stream {
-    Stream { bytes, stride, count, component, type_, normalized, semantic: Some(semantic), min: None, max: None }
+fn attribute(bytes: Vec<u8>, stride: usize, count: usize, component: ComponentType, type_: Type, normalized: bool) -> Stream {
+    Stream { bytes, stride, count, component, type_, normalized, min: None, max: None }
 }
 
 fn index_stream(list: &[u32], vertices: usize) -> Stream {
@@ -204,10 +209,9 @@ fn index_stream(list: &[u32], vertices: usize) -> Stream {
         bytes,
         stride: if short { 2 } else { 4 },
         count: list.len(),
-        component: if short { 5123 } else { 5125 },
-        type_: "SCALAR",
+        component: if short { ComponentType::U16 } else { ComponentType::U32 },
+        type_: Type::Scalar,
         normalized: false,
-        semantic: None,
         min: None,
         max: None,
     }
@@ -219,7 +223,7 @@ fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Pr
     if mesh.indices.is_empty() {
         return Ok(None);
     }
-    let (streams, indices) = match quantize {
+    let (attributes, indices) = match quantize {
         Some((lo, step)) => {
             let records: Vec<[u8; 16]> = (0..mesh.positions.len())
                 .map(|i| {
@@ -240,11 +244,11 @@ fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Pr
                 return Ok(None);
             }
             let (min, max) = int_bounds(&v);
-            let mut pos = attribute(column(&v, 0, 8), 8, v.len(), 5123, "VEC3", false, "POSITION");
+            let mut pos = attribute(column(&v, 0, 8), 8, v.len(), ComponentType::U16, Type::Vec3, false);
             (pos.min, pos.max) = (Some(min), Some(max));
-            let nrm = attribute(column(&v, 8, 12), 4, v.len(), 5120, "VEC3", true, "NORMAL");
-            let col = attribute(column(&v, 12, 16), 4, v.len(), 5121, "VEC4", true, "COLOR_0");
-            (vec![pos, nrm, col], index_stream(&list, v.len()))
+            let nrm = attribute(column(&v, 8, 12), 4, v.len(), ComponentType::I8, Type::Vec3, true);
+            let col = attribute(column(&v, 12, 16), 4, v.len(), ComponentType::U8, Type::Vec4, true);
+            ([pos, nrm, col], index_stream(&list, v.len()))
         }
         None => {
             let records: Vec<[u8; 28]> = (0..mesh.positions.len())
@@ -263,14 +267,14 @@ fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Pr
                 return Ok(None);
             }
             let (min, max) = float_bounds(&v);
-            let mut pos = attribute(column(&v, 0, 12), 12, v.len(), 5126, "VEC3", false, "POSITION");
+            let mut pos = attribute(column(&v, 0, 12), 12, v.len(), ComponentType::F32, Type::Vec3, false);
             (pos.min, pos.max) = (Some(min), Some(max));
-            let nrm = attribute(column(&v, 12, 24), 12, v.len(), 5126, "VEC3", false, "NORMAL");
-            let col = attribute(column(&v, 24, 28), 4, v.len(), 5121, "VEC4", true, "COLOR_0");
-            (vec![pos, nrm, col], index_stream(&list, v.len()))
+            let nrm = attribute(column(&v, 12, 24), 12, v.len(), ComponentType::F32, Type::Vec3, false);
+            let col = attribute(column(&v, 24, 28), 4, v.len(), ComponentType::U8, Type::Vec4, true);
+            ([pos, nrm, col], index_stream(&list, v.len()))
         }
     };
-    Ok(Some(Prepared { name: m.name.clone(), streams, indices }))
+    Ok(Some(Prepared { name: m.name.clone(), attributes, indices }))
 }
 
 fn align4(v: &mut Vec<u8>) {
@@ -289,24 +293,26 @@ struct Layout {
     /// Compressed bytes (meshopt).
     packed: Vec<u8>,
     meshopt: bool,
-    views: Vec<Value>,
 }
 
+/// Buffer 0 holds the data (raw, or meshopt-encoded); with meshopt, buffer 1
+/// is the fallback whose layout the views describe. Both are added last,
+/// when their lengths are known.
+const DATA_BUFFER: u32 = 0;
+const FALLBACK_BUFFER: u32 = 1;
+
 impl Layout {
-    /// Places a stream and returns its view index.
-    fn place(&mut self, s: &Stream, vertex: bool) -> Result<usize, ExportError> {
+    /// Places a stream, adds its view to `doc` and returns the view.
+    fn place(&mut self, doc: &mut Doc, s: &Stream, vertex: bool) -> Result<json::Index<json::buffer::View>, ExportError> {
         self.raw_len = self.raw_len.next_multiple_of(4);
         let offset = self.raw_len;
         self.raw_len += s.bytes.len();
-        let mut view = Map::new();
-        view.insert("buffer".into(), json!(if self.meshopt { 1 } else { 0 }));
-        view.insert("byteOffset".into(), json!(offset));
-        view.insert("byteLength".into(), json!(s.bytes.len()));
+        let buffer = json::Index::new(if self.meshopt { FALLBACK_BUFFER } else { DATA_BUFFER });
+        let mut v = view(buffer, offset as u64, s.bytes.len() as u64, Some(if vertex { Target::ArrayBuffer } else { Target::ElementArrayBuffer }));
         if vertex {
-            view.insert("byteStride".into(), json!(s.stride));
+            v.byte_stride = Some(json::buffer::Stride(s.stride));
         }
-        view.insert("target".into(), json!(if vertex { ARRAY_BUFFER } else { ELEMENT_ARRAY_BUFFER }));
-        if self.meshopt {
+        let meshopt = if self.meshopt {
             align4(&mut self.packed);
             let encoded = if vertex {
                 encode_vertices(&s.bytes, s.stride)?
@@ -319,25 +325,33 @@ impl Layout {
                 let vertex_count = list.iter().max().map_or(0, |&m| m as usize + 1);
                 meshopt::encode_index_buffer(&list, vertex_count).map_err(|e| too_large(format!("meshopt index codec: {e:?}")))?
             };
-            let ext = json!({
-                "buffer": 0,
-                "byteOffset": self.packed.len(),
-                "byteLength": encoded.len(),
-                "byteStride": s.stride,
-                "count": s.count,
-                "mode": if vertex { "ATTRIBUTES" } else { "TRIANGLES" },
-            });
+            let ext = MeshoptView {
+                buffer: DATA_BUFFER,
+                byte_offset: self.packed.len() as u64,
+                byte_length: encoded.len() as u64,
+                byte_stride: s.stride as u64,
+                count: s.count as u64,
+                mode: if vertex { "ATTRIBUTES" } else { "TRIANGLES" },
+            };
             self.packed.extend_from_slice(&encoded);
-            view.insert("extensions".into(), json!({ EXT_MESHOPT: ext }));
+            Some(ext)
         } else {
             self.raw.resize(offset, 0);
             self.raw.extend_from_slice(&s.bytes);
-        }
+            None
+        };
         if self.raw_len > u32::MAX as usize || self.packed.len() > u32::MAX as usize {
             return Err(too_large("buffer exceeds the 4 GiB limit"));
         }
-        self.views.push(Value::Object(view));
-        Ok(self.views.len() - 1)
+        doc.view(v, meshopt)
+    }
+
+    /// Places a stream and adds its view and accessor to `doc`.
+    fn accessor(&mut self, doc: &mut Doc, s: &Stream, vertex: bool) -> Result<json::Index<json::Accessor>, ExportError> {
+        let v = self.place(doc, s, vertex)?;
+        let mut a = accessor(v, s.count, s.component, s.type_, s.normalized);
+        (a.min, a.max) = (s.min.clone(), s.max.clone());
+        Ok(doc.root.push(a))
     }
 }
 
@@ -354,7 +368,7 @@ fn encode_vertices(bytes: &[u8], stride: usize) -> Result<Vec<u8>, ExportError> 
 
 /// The finished document and its binary buffer.
 struct Built {
-    json: Value,
+    root: json::Root,
     bin: Vec<u8>,
 }
 
@@ -367,124 +381,45 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
             prepared.push(p);
         }
     }
-    let mut layout = Layout { raw: Vec::new(), raw_len: 0, packed: Vec::new(), meshopt, views: Vec::new() };
-    let mut accessors = Vec::new();
-    let mut json_meshes = Vec::new();
-    let mut nodes = vec![json!({"name": "rulemesh"})];
-    let mut children = Vec::new();
+    let mut layout = Layout { raw: Vec::new(), raw_len: 0, packed: Vec::new(), meshopt };
+    let mut doc = Doc::new();
+    // The grid origin and step, as the node's dequantising transform.
+    let placement = grid.map(|(lo, step)| (lo.map(|c| c as f32), step as f32));
     for p in &prepared {
-        let mut attributes = Map::new();
-        for s in &p.streams {
-            let view = layout.place(s, true)?;
-            attributes.insert(s.semantic.unwrap_or("POSITION").to_string(), json!(accessors.len()));
-            accessors.push(accessor(view, s));
-        }
-        let view = layout.place(&p.indices, false)?;
-        let indices = accessors.len();
-        accessors.push(accessor(view, &p.indices));
-        json_meshes.push(json!({
-            "name": p.name,
-            "primitives": [{"attributes": attributes, "indices": indices, "material": if meta.material_per_mesh { json_meshes.len() } else { 0 }, "mode": 4}],
-        }));
-        let mut node = Map::new();
-        node.insert("mesh".into(), json!(json_meshes.len() - 1));
-        node.insert("name".into(), json!(p.name));
-        if let Some((lo, step)) = grid {
-            node.insert("translation".into(), json!(lo.map(|c| c as f32)));
-            node.insert("scale".into(), json!([step as f32, step as f32, step as f32]));
-        }
-        children.push(nodes.len());
-        nodes.push(Value::Object(node));
+        let [position, normal, colour] = &p.attributes;
+        let attributes = Attributes {
+            position: layout.accessor(&mut doc, position, true)?,
+            normal: layout.accessor(&mut doc, normal, true)?,
+            colour: layout.accessor(&mut doc, colour, true)?,
+        };
+        let indices = layout.accessor(&mut doc, &p.indices, false)?;
+        doc.mesh(&p.name, attributes, indices, meta, placement, None);
     }
-    let mut root = Map::new();
-    root.insert("asset".into(), json!({"generator": format!("rulemesh {}", crate::ENGINE_VERSION), "version": "2.0"}));
-    let mut used = Vec::new();
     if !prepared.is_empty() {
-        nodes[0]["children"] = json!(children);
         if meshopt {
-            used.push(EXT_MESHOPT);
+            doc.require(EXT_MESHOPT);
         }
         if opts.quantize {
-            used.push(KHR_QUANT);
+            doc.require(KHR_QUANT);
         }
-        let bin = if meshopt { &layout.packed } else { &layout.raw };
-        let mut buffers = vec![json!({"byteLength": bin.len()})];
+        let data = doc.buffer(if meshopt { layout.packed.len() } else { layout.raw.len() } as u64, None);
+        debug_assert_eq!(data.value(), DATA_BUFFER as usize);
         if meshopt {
-            buffers.push(json!({"byteLength": layout.raw_len, "extensions": {EXT_MESHOPT: {"fallback": true}}}));
+            let fallback = doc.meshopt_fallback_buffer(layout.raw_len as u64)?;
+            debug_assert_eq!(fallback.value(), FALLBACK_BUFFER as usize);
         }
-        root.insert("accessors".into(), Value::Array(accessors));
-        root.insert("bufferViews".into(), Value::Array(layout.views));
-        root.insert("buffers".into(), Value::Array(buffers));
-        let material = json!({"pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.8}});
-        let materials: Vec<Value> = if meta.material_per_mesh {
-            prepared.iter().map(|p| { let mut m = material.clone(); m["name"] = json!(p.name); m }).collect()
-        } else {
-            vec![material]
-        };
-        root.insert("materials".into(), Value::Array(materials));
-        root.insert("meshes".into(), Value::Array(json_meshes));
     }
-    if !used.is_empty() {
-        root.insert("extensionsUsed".into(), json!(used));
-        root.insert("extensionsRequired".into(), json!(used));
-    }
-    let mut scene_nodes = vec![json!(0)];
-    if let Some(c) = &meta.camera {
-        let mut perspective = json!({"yfov": c.yfov, "znear": c.znear});
-        if let Some(far) = c.zfar {
-            perspective["zfar"] = json!(far);
-        }
-        let mut camera = json!({"type": "perspective", "perspective": perspective});
-        if let Some(name) = &c.name {
-            camera["name"] = json!(name);
-        }
-        root.insert("cameras".into(), json!([camera]));
-        let at = c.first();
-        scene_nodes.push(json!(nodes.len()));
-        nodes.push(json!({"camera": 0, "name": "camera", "rotation": at.rotation, "translation": at.translation}));
-    }
-    root.insert("nodes".into(), Value::Array(nodes));
-    root.insert("scene".into(), json!(0));
-    let mut scene = Map::new();
-    scene.insert("nodes".into(), Value::Array(scene_nodes));
-    let mut extras = Map::new();
-    if let Some(bg) = meta.background {
-        extras.insert("background".into(), json!(bg.map(f64::from)));
-    }
-    if meta.truncated {
-        extras.insert("truncated".into(), json!(true));
-    }
-    if !extras.is_empty() {
-        scene.insert("extras".into(), Value::Object(extras));
-    }
-    root.insert("scenes".into(), json!([scene]));
     let bin = if meshopt { layout.packed } else { layout.raw };
-    Ok(Built { json: Value::Object(root), bin })
-}
-
-fn accessor(view: usize, s: &Stream) -> Value {
-    let mut a = Map::new();
-    a.insert("bufferView".into(), json!(view));
-    a.insert("componentType".into(), json!(s.component));
-    a.insert("count".into(), json!(s.count));
-    a.insert("type".into(), json!(s.type_));
-    if s.normalized {
-        a.insert("normalized".into(), json!(true));
-    }
-    if let (Some(lo), Some(hi)) = (&s.min, &s.max) {
-        a.insert("min".into(), lo.clone());
-        a.insert("max".into(), hi.clone());
-    }
-    Value::Object(a)
+    Ok(Built { root: doc.finish(meta)?, bin })
 }
 
 /// Writes a compact binary glTF (.glb) as `opts` say. Reserves the output
 /// size in `budget` before assembling it.
 pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let built = build(meshes, meta, opts)?;
-    let json_bytes = serde_json::to_vec(&built.json)?;
+    let json_bytes = built.root.to_vec()?;
     let json_len = json_bytes.len().next_multiple_of(4);
-    let has_bin = built.json.get("buffers").is_some();
+    let has_bin = !built.root.buffers.is_empty();
     let bin_len = built.bin.len().next_multiple_of(4);
     let total = 12 + 8 + json_len + if has_bin { 8 + bin_len } else { 0 };
     let total32 = u32::try_from(total).map_err(|_| too_large(format!("file of {total} bytes exceeds the 4 GiB limit")))?;
@@ -510,13 +445,13 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, bu
 /// Writes a compact JSON glTF with buffer 0 embedded as a base64 data URI.
 pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let mut built = build(meshes, meta, opts)?;
-    if let Some(b0) = built.json.get_mut("buffers").and_then(|b| b.get_mut(0)) {
-        let mut uri = b"data:application/octet-stream;base64,".to_vec();
+    if let Some(b0) = built.root.buffers.get_mut(DATA_BUFFER as usize) {
+        let mut uri = super::gltf_buffer::DATA_URI.as_bytes().to_vec();
         uri.extend_from_slice(&super::gltf::base64(&built.bin));
         // Base64 text is ASCII.
-        b0["uri"] = Value::String(String::from_utf8_lossy(&uri).into_owned());
+        b0.uri = Some(String::from_utf8_lossy(&uri).into_owned());
     }
-    let out = serde_json::to_vec(&built.json)?;
+    let out = built.root.to_vec()?;
     budget.reserve_memory(out.len() as u64)?;
     Ok(out)
 }
@@ -554,8 +489,8 @@ mod tests {
             last = a.len();
             let j = glb_json(&a);
             let used = j["extensionsUsed"].as_array().cloned().unwrap_or_default();
-            assert_eq!(used.contains(&json!(KHR_QUANT)), opts.quantize);
-            assert_eq!(used.contains(&json!(EXT_MESHOPT)), opts.compress == Compression::Meshopt);
+            assert_eq!(used.contains(&Value::from(KHR_QUANT)), opts.quantize);
+            assert_eq!(used.contains(&Value::from(EXT_MESHOPT)), opts.compress == Compression::Meshopt);
             assert_eq!(j["extensionsRequired"], j["extensionsUsed"]);
         }
     }
@@ -565,7 +500,7 @@ mod tests {
         let meshes = meshes_of(&all_nine(), 8, MeshLayout::Merged);
         let (lo, step) = grid(&meshes);
         let p = prepare(&meshes[0], Some((lo, step))).expect("ok").expect("mesh");
-        let pos = &p.streams[0].bytes;
+        let pos = &p.attributes[0].bytes;
         let q: Vec<[f64; 3]> = pos
             .chunks_exact(8)
             .map(|c| [0, 1, 2].map(|a| lo[a] + f64::from(u16::from_le_bytes([c[2 * a], c[2 * a + 1]])) * step))

@@ -25,7 +25,8 @@
 //! This module holds the two container writers ([`write_glb`],
 //! [`write_gltf`]) and keeps the paths other code uses; the parts are in
 //! sibling modules: `gltf_buffer` (buffer layout, limits, sinks),
-//! `gltf_document` (meshes, materials, cameras, scene), `gltf_graph`
+//! `gltf_document` (the one document builder: meshes, materials, cameras,
+//! scene, extensions; also behind `compact` and instancing), `gltf_graph`
 //! (bones, camera node, animation) and `gltf_instanced` ([`write_instanced`]).
 
 use super::gltf_buffer::{

@@ -133,14 +133,14 @@ pub(super) fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), E
 }
 
 /// A buffer view of `length` bytes at `offset` of `buffer`.
-pub(super) fn view(buffer: json::Index<json::Buffer>, offset: u64, length: u64, target: json::buffer::Target) -> json::buffer::View {
+pub(super) fn view(buffer: json::Index<json::Buffer>, offset: u64, length: u64, target: Option<json::buffer::Target>) -> json::buffer::View {
     json::buffer::View {
         buffer,
         byte_length: USize64(length),
         byte_offset: Some(USize64(offset)),
         byte_stride: None,
         name: None,
-        target: Some(Valid(target)),
+        target: target.map(Valid),
         extensions: None,
         extras: None,
     }

@@ -5,15 +5,15 @@
 //! behind `format=glb`/`gltf` of instancing L-systems (`super::instanced`).
 
 use super::gltf_buffer::{
-    align4, base64_len, find, invalid, place, write_buffer, Base64, Sink, Tracks, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
+    accessor, align4, base64_len, find, invalid, place, view, write_buffer, Base64, Sink, Tracks, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
 };
-use super::gltf_document::document;
+use super::gltf_document::plain;
+pub use super::gltf_document::EXT_INSTANCING;
 use super::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
-
-/// The glTF extension instanced models require.
-pub const EXT_INSTANCING: &str = "EXT_mesh_gpu_instancing";
+use gltf_json as json;
+use json::accessor::{ComponentType, Type};
 
 /// Receives one instance: the index of its mesh, its translation and its unit rotation (x, y, z, w).
 pub type InstanceSink<'s> = dyn FnMut(usize, [f32; 3], [f32; 4]) + 's;
@@ -54,30 +54,17 @@ pub fn write_instanced(
         return Err(ExportError::TooLarge { format: "glTF", detail: format!("buffer of {end} bytes exceeds the 4 GiB limit") });
     }
     let uri = (!glb).then(|| DATA_URI.to_string());
-    let mut doc: serde_json::Value = serde_json::from_slice(&document(&placed, end, &Tracks::default(), meta, uri)?)?;
-    let push = |doc: &mut serde_json::Value, key: &str, v: serde_json::Value| -> usize {
-        match doc[key].as_array_mut() {
-            Some(a) => {
-                a.push(v);
-                a.len() - 1
-            }
-            None => 0,
-        }
+    let (mut doc, nodes, Some(buffer)) = plain(&placed, end, &Tracks::default(), meta, uri) else {
+        return Err(invalid("model", "an instanced model needs a buffer"));
     };
-    for (i, (&c, &(t, r))) in counts.iter().zip(&regions).enumerate() {
-        let tv = push(&mut doc, "bufferViews", serde_json::json!({"buffer": 0, "byteOffset": t, "byteLength": 12 * c}));
-        let rv = push(&mut doc, "bufferViews", serde_json::json!({"buffer": 0, "byteOffset": r, "byteLength": 16 * c}));
-        let ta = push(&mut doc, "accessors", serde_json::json!({"bufferView": tv, "componentType": 5126, "count": c, "type": "VEC3"}));
-        let ra = push(&mut doc, "accessors", serde_json::json!({"bufferView": rv, "componentType": 5126, "count": c, "type": "VEC4"}));
-        // document() pushes the root node first, then one node per mesh in order.
-        let Some(node) = doc.get_mut("nodes").and_then(|n| n.get_mut(i + 1)).and_then(|n| n.as_object_mut()) else {
-            return Err(invalid("model", "the document lacks a node for an instanced mesh"));
-        };
-        node.insert("extensions".into(), serde_json::json!({ EXT_INSTANCING: {"attributes": {"TRANSLATION": ta, "ROTATION": ra}} }));
+    for ((&c, &(t, r)), &node) in counts.iter().zip(&regions).zip(&nodes) {
+        let tv = doc.root.push(view(buffer, t, 12 * c, None));
+        let rv = doc.root.push(view(buffer, r, 16 * c, None));
+        let ta = doc.root.push(accessor(tv, c as usize, ComponentType::F32, Type::Vec3, false));
+        let ra = doc.root.push(accessor(rv, c as usize, ComponentType::F32, Type::Vec4, false));
+        doc.instance(node, ta, ra)?;
     }
-    doc["extensionsUsed"] = serde_json::json!([EXT_INSTANCING]);
-    doc["extensionsRequired"] = serde_json::json!([EXT_INSTANCING]);
-    let json_bytes = serde_json::to_vec(&doc)?;
+    let json_bytes = doc.finish(meta)?.to_vec()?;
     let bin_len = end as usize;
     let (total, bin_at) = if glb {
         let json_len = align4(json_bytes.len() as u64);

@@ -256,12 +256,13 @@ fn hostile_sources_fail_cleanly() {
     // A rule with an empty successor erases A: an empty model, not an error.
     let out = r("iterations: 2\naxiom: A\nA -> : 0\n").expect("renders");
     assert_eq!((out.primitives, out.triangles, out.truncated), (0, 0, None));
-    // Nesting past the expression parser's bound is a parse error, not a stack overflow.
-    let deep = format!("axiom: F{}1{}\n", "(".repeat(69), ")".repeat(69));
+    // Nesting past the shared expression grammar's bound (256) is a parse
+    // error at the 257th parenthesis inside the argument list, not a stack overflow.
+    let deep = format!("axiom: F{}1{}\n", "(".repeat(300), ")".repeat(300));
     match r(&deep) {
         Err(RenderError::Parse(p)) => {
-            assert_eq!((p.diagnostics[0].span.line, p.diagnostics[0].span.column), (1, 18), "{p}");
-            assert!(p.diagnostics[0].message.contains("expression nested more than 64 deep"), "{p}");
+            assert_eq!((p.diagnostics[0].span.line, p.diagnostics[0].span.column), (1, 9 + 257), "{p}");
+            assert_eq!(p.diagnostics[0].message, "nesting deeper than 256", "{p}");
         }
         other => panic!("expected a parse error, got {other:?}"),
     }

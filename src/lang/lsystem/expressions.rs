@@ -1,31 +1,28 @@
 //! Expressions in module arguments, conditions, probabilities, settings and
-//! `#define` bodies: a small lexer and a recursive-descent parser, one level
-//! per precedence: `||` (or `|`), `&&` (or `&`), comparisons (`<`, `<=`, `>`,
-//! `>=`, `==` or `=`, `!=`), `+ -`, `* /`, unary `- + !`, then `^`. Names are
-//! the production's parameters, `#define`s (each use gets fresh `rand()`
-//! sites) and `pi`; calls are `rand()`, `ran(x)` and the shared functions.
-//! Nesting is bounded by [`MAX_EXPR_DEPTH`].
+//! `#define` bodies. The grammar is the shared one
+//! (`crate::lang::expr::grammar`); this module is the L-system's lexer and
+//! [`Host`] for it: `|` and `=` also spell `||` and `==`, `&` spells `&&`;
+//! names are the production's parameters, `#define`s (each use gets fresh
+//! `rand()` sites) and `pi`; `ran(x)` is `x * rand()`.
 
 use super::statements::{is_ident, is_ident_start, span_of, text_of};
 use super::{err, Chars, Parser};
-use crate::lang::expr::{BinOp, Expr, Func};
 use crate::core::{ParseError, Span};
+use crate::lang::expr::grammar::{self, Host, Op, Parsed, Token, MAX_NESTING};
+use crate::lang::expr::{BinOp, Expr};
 use std::collections::HashMap;
-
-/// Deepest expression nesting accepted (keeps evaluation recursion bounded).
-const MAX_EXPR_DEPTH: u32 = 64;
 
 impl Parser {
     /// Parses `s` as one expression whose names are `formals` (the matched
     /// production's parameters) or `#define`s; `at` locates an empty `s`.
     pub(super) fn expr(&mut self, s: &Chars, formals: &[String], at: Span) -> Result<Expr, ParseError> {
         let toks = lex_expr(s)?;
-        let mut ep = ExprParser { toks: &toks, pos: 0, formals, defines: &self.defines, sites: &mut self.sys.site_count, end: span_of(s, at) };
-        let e = ep.or(0)?;
-        if let Some(t) = toks.get(ep.pos) {
+        let mut h = LsysHost { toks: &toks, pos: 0, formals, defines: &self.defines, sites: &mut self.sys.site_count, end: span_of(s, at), nesting: 0 };
+        let e = grammar::expression(&mut h)?;
+        if let Some(t) = toks.get(h.pos) {
             return err(t.span, format!("unexpected `{}` in an expression", t.text));
         }
-        Ok(e)
+        Ok(e.expr)
     }
 }
 
@@ -34,7 +31,7 @@ impl Parser {
 enum Kind {
     Num(f64),
     Ident(String),
-    Op,
+    Op(Op),
 }
 
 /// An expression token with its text and position.
@@ -87,140 +84,56 @@ fn lex_expr(s: &Chars) -> Result<Vec<Tok>, ParseError> {
             continue;
         }
         let two: String = s[i..].iter().take(2).map(|c| c.0).collect();
-        let text = if ["<=", ">=", "==", "!=", "&&", "||"].contains(&two.as_str()) {
-            two
-        } else if "+-*/^()<>=!&|,".contains(c) {
-            c.to_string()
-        } else {
-            return err(at, format!("unexpected `{c}` in an expression"));
+        let (op, text) = match operator(&two) {
+            Some(op) => (op, two),
+            None => match operator(&c.to_string()) {
+                Some(op) => (op, c.to_string()),
+                None => return err(at, format!("unexpected `{c}` in an expression")),
+            },
         };
         i += text.chars().count();
-        out.push(Tok { kind: Kind::Op, text, span: at });
+        out.push(Tok { kind: Kind::Op(op), text, span: at });
     }
     Ok(out)
 }
 
-/// A parser over one expression's tokens.
-struct ExprParser<'a> {
+/// The operator `text` spells, if any.
+fn operator(text: &str) -> Option<Op> {
+    Some(match text {
+        "||" | "|" => Op::Or,
+        "&&" | "&" => Op::And,
+        "<" => Op::Lt,
+        "<=" => Op::Le,
+        ">" => Op::Gt,
+        ">=" => Op::Ge,
+        "==" | "=" => Op::Eq,
+        "!=" => Op::Ne,
+        "+" => Op::Add,
+        "-" => Op::Sub,
+        "*" => Op::Mul,
+        "/" => Op::Div,
+        "^" => Op::Pow,
+        "!" => Op::Not,
+        "(" => Op::Open,
+        ")" => Op::Close,
+        "," => Op::Comma,
+        _ => return None,
+    })
+}
+
+/// One expression's tokens as the shared grammar's host.
+struct LsysHost<'a> {
     toks: &'a [Tok],
     pos: usize,
     formals: &'a [String],
     defines: &'a HashMap<String, Expr>,
     sites: &'a mut u32,
+    /// Where the expression ends (locates errors at its end).
     end: Span,
+    nesting: u32,
 }
 
-/// `a op b` as an expression.
-fn bin(op: BinOp, a: Expr, b: Expr) -> Expr {
-    Expr::Binary(op, Box::new(a), Box::new(b))
-}
-
-impl ExprParser<'_> {
-    fn peek_op(&self) -> Option<&str> {
-        match self.toks.get(self.pos) {
-            Some(Tok { kind: Kind::Op, text, .. }) => Some(text.as_str()),
-            _ => None,
-        }
-    }
-
-    fn here(&self) -> Span {
-        self.toks.get(self.pos).map_or(self.end, |t| t.span)
-    }
-
-    fn check_depth(&self, depth: u32) -> Result<(), ParseError> {
-        if depth > MAX_EXPR_DEPTH {
-            return err(self.here(), format!("expression nested more than {MAX_EXPR_DEPTH} deep"));
-        }
-        Ok(())
-    }
-
-    fn binary_level(
-        &mut self,
-        depth: u32,
-        ops: &[(&str, BinOp)],
-        next: fn(&mut Self, u32) -> Result<Expr, ParseError>,
-    ) -> Result<Expr, ParseError> {
-        self.check_depth(depth)?;
-        let mut a = next(self, depth + 1)?;
-        while let Some(op) = self.peek_op().and_then(|t| ops.iter().find(|(s, _)| *s == t).map(|o| o.1)) {
-            self.pos += 1;
-            let b = next(self, depth + 1)?;
-            a = bin(op, a, b);
-        }
-        Ok(a)
-    }
-
-    fn or(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.binary_level(depth, &[("||", BinOp::Or), ("|", BinOp::Or)], Self::and)
-    }
-
-    fn and(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.binary_level(depth, &[("&&", BinOp::And), ("&", BinOp::And)], Self::cmp)
-    }
-
-    fn cmp(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.binary_level(
-            depth,
-            &[
-                ("<", BinOp::Lt),
-                ("<=", BinOp::Le),
-                (">", BinOp::Gt),
-                (">=", BinOp::Ge),
-                ("==", BinOp::Eq),
-                ("=", BinOp::Eq),
-                ("!=", BinOp::Ne),
-            ],
-            Self::add,
-        )
-    }
-
-    fn add(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.binary_level(depth, &[("+", BinOp::Add), ("-", BinOp::Sub)], Self::mul)
-    }
-
-    fn mul(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.binary_level(depth, &[("*", BinOp::Mul), ("/", BinOp::Div)], Self::unary)
-    }
-
-    fn unary(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.check_depth(depth)?;
-        match self.peek_op() {
-            Some("-") => {
-                self.pos += 1;
-                Ok(Expr::Neg(Box::new(self.unary(depth + 1)?)))
-            }
-            Some("+") => {
-                self.pos += 1;
-                self.unary(depth + 1)
-            }
-            Some("!") => {
-                self.pos += 1;
-                Ok(bin(BinOp::Eq, self.unary(depth + 1)?, Expr::Num(0.0)))
-            }
-            _ => self.power(depth + 1),
-        }
-    }
-
-    fn power(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.check_depth(depth)?;
-        let base = self.primary(depth + 1)?;
-        if self.peek_op() == Some("^") {
-            self.pos += 1;
-            let exp = self.unary(depth + 1)?;
-            return Ok(bin(BinOp::Pow, base, exp));
-        }
-        Ok(base)
-    }
-
-    fn expect(&mut self, op: &str) -> Result<(), ParseError> {
-        if self.peek_op() == Some(op) {
-            self.pos += 1;
-            Ok(())
-        } else {
-            err(self.here(), format!("expected `{op}`"))
-        }
-    }
-
+impl LsysHost<'_> {
     fn new_site(&mut self) -> u32 {
         let s = *self.sites;
         *self.sites = self.sites.saturating_add(1);
@@ -229,80 +142,83 @@ impl ExprParser<'_> {
 
     /// A copy of a `#define` body whose `rand()` sites are fresh, so each use draws its own numbers.
     fn renumber(&mut self, e: &Expr) -> Expr {
-        // Defines are bounded in depth by MAX_EXPR_DEPTH (each was parsed under it).
+        // Defines are bounded in depth by MAX_NESTING (each was parsed under it).
         match e {
             Expr::Rand(_) => Expr::Rand(self.new_site()),
             Expr::Neg(a) => Expr::Neg(Box::new(self.renumber(a))),
             Expr::Binary(op, a, b) => {
                 let a = self.renumber(a);
-                bin(*op, a, self.renumber(b))
+                Expr::Binary(*op, Box::new(a), Box::new(self.renumber(b)))
             }
             Expr::Func(f, args) => Expr::Func(*f, args.iter().map(|a| self.renumber(a)).collect()),
             other => other.clone(),
         }
     }
+}
 
-    fn primary(&mut self, depth: u32) -> Result<Expr, ParseError> {
-        self.check_depth(depth)?;
-        let Some(t) = self.toks.get(self.pos).cloned() else { return err(self.end, "expression ends too early") };
-        self.pos += 1;
-        match t.kind {
-            Kind::Num(v) => Ok(Expr::Num(v)),
-            Kind::Op if t.text == "(" => {
-                let e = self.or(depth + 1)?;
-                self.expect(")")?;
-                Ok(e)
-            }
-            Kind::Op => err(t.span, format!("unexpected `{}` in an expression", t.text)),
-            Kind::Ident(name) => {
-                if self.peek_op() == Some("(") {
-                    self.pos += 1;
-                    let mut args = Vec::new();
-                    if self.peek_op() != Some(")") {
-                        loop {
-                            args.push(self.or(depth + 1)?);
-                            if self.peek_op() == Some(",") {
-                                self.pos += 1;
-                            } else {
-                                break;
-                            }
-                        }
-                    }
-                    self.expect(")")?;
-                    return self.call(&name, args, t.span);
-                }
-                if let Some(i) = self.formals.iter().position(|f| *f == name) {
-                    return Ok(Expr::Param(i as u32));
-                }
-                if let Some(e) = self.defines.get(&name) {
-                    let e = e.clone();
-                    return Ok(self.renumber(&e));
-                }
-                match name.as_str() {
-                    "pi" | "PI" => Ok(Expr::Num(std::f64::consts::PI)),
-                    _ => err(t.span, format!("unknown name `{name}` (not a parameter or #define)")),
-                }
+impl<'a> Host<'a> for LsysHost<'a> {
+    fn peek(&self) -> (Token<'a>, Span) {
+        let toks: &'a [Tok] = self.toks;
+        match toks.get(self.pos) {
+            None => (Token::Other, self.end),
+            Some(t) => {
+                let tok = match &t.kind {
+                    Kind::Num(v) => Token::Num(*v),
+                    Kind::Ident(name) => Token::Name(name.as_str()),
+                    Kind::Op(op) => Token::Op(*op),
+                };
+                (tok, t.span)
             }
         }
     }
 
-    fn call(&mut self, name: &str, args: Vec<Expr>, at: Span) -> Result<Expr, ParseError> {
-        match name {
-            "rand" if args.is_empty() => Ok(Expr::Rand(self.new_site())),
-            "ran" if args.len() == 1 => {
-                let site = self.new_site();
-                let mut args = args;
-                Ok(bin(BinOp::Mul, args.remove(0), Expr::Rand(site)))
-            }
-            "rand" | "ran" => err(at, format!("`{name}` takes {} argument(s)", if name == "rand" { 0 } else { 1 })),
-            _ => {
-                let Some(f) = Func::from_name(name) else { return err(at, format!("unknown function `{name}`")) };
-                let (lo, hi) = f.arity();
-                if args.len() < lo || hi.is_some_and(|h| args.len() > h) {
-                    return err(at, format!("`{name}` takes {lo}{} argument(s), got {}", hi.map_or("+".to_string(), |h| if h == lo { String::new() } else { format!("..{h}") }), args.len()));
-                }
-                Ok(Expr::Func(f, args))
-            }
+    fn bump(&mut self) {
+        self.pos += 1;
+    }
+
+    fn describe(&self) -> String {
+        self.toks.get(self.pos).map_or_else(|| "the end of the expression".to_string(), |t| format!("`{}`", t.text))
+    }
+
+    fn enter(&mut self, at: Span) -> Result<(), ParseError> {
+        self.nesting += 1;
+        if self.nesting > MAX_NESTING {
+            return err(at, format!("nesting deeper than {MAX_NESTING}"));
         }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
+        self.nesting = self.nesting.saturating_sub(1);
+    }
+
+    fn name(&mut self, name: &'a str, at: Span) -> Result<Parsed, ParseError> {
+        if let Some(i) = self.formals.iter().position(|f| f == name) {
+            return Ok(Parsed::leaf(Expr::Param(i as u32)));
+        }
+        if let Some(e) = self.defines.get(name) {
+            let e = self.renumber(e);
+            return Ok(Parsed::measure(e));
+        }
+        match name {
+            "pi" | "PI" => Ok(Parsed::leaf(Expr::Num(std::f64::consts::PI))),
+            _ => err(at, format!("unknown name `{name}` (not a parameter or #define)")),
+        }
+    }
+
+    fn rand_site(&mut self, _at: Span) -> Result<u32, ParseError> {
+        Ok(self.new_site())
+    }
+
+    fn own_call(&mut self, name: &str, args: &mut Vec<Parsed>, at: Span) -> Option<Result<Parsed, ParseError>> {
+        if name != "ran" {
+            return None;
+        }
+        if args.len() != 1 {
+            return Some(err(at, format!("`ran` takes 1 argument(s), {} given", args.len())));
+        }
+        let site = self.new_site();
+        let x = args.remove(0);
+        Some(grammar::combine(BinOp::Mul, x, Parsed::leaf(Expr::Rand(site)), at))
     }
 }

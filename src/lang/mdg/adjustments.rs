@@ -40,7 +40,7 @@ impl<'a> Parser<'a> {
             // Colour and weight adjustments go by their (renamable) names first.
             if let Some(channel) = self.colour_names.iter().position(|n| *n == word) {
                 let d = self.arg(Ctx::Plain, What::After(word))?;
-                out.push(Adjust { op: AdjustOp::Colour { channel: channel as u8, delta: d.e }, span });
+                out.push(Adjust { op: AdjustOp::Colour { channel: channel as u8, delta: d.expr }, span });
                 continue;
             }
             if self.weight_names.contains(&word) {
@@ -49,7 +49,7 @@ impl<'a> Parser<'a> {
                 continue;
             }
             let mut push = |op: AdjustOp| out.push(Adjust { op, span });
-            let rot = |axis, angle: E| AdjustOp::Rotate { axis, angle: angle.e };
+            let rot = |axis, angle: E| AdjustOp::Rotate { axis, angle: angle.expr };
             match word {
                 "x" => {
                     let a = self.arg(Ctx::Plain, What::After("x"))?;
@@ -58,15 +58,15 @@ impl<'a> Parser<'a> {
                         b = v;
                         c = self.opt_arg(Ctx::Plain, What::After("x"))?.unwrap_or_else(|| num(0.0));
                     }
-                    push(AdjustOp::Translate([a.e, b.e, c.e]));
+                    push(AdjustOp::Translate([a.expr, b.expr, c.expr]));
                 }
                 "y" => {
                     let a = self.arg(Ctx::Plain, What::After("y"))?;
-                    push(AdjustOp::Translate([Expr::Num(0.0), a.e, Expr::Num(0.0)]));
+                    push(AdjustOp::Translate([Expr::Num(0.0), a.expr, Expr::Num(0.0)]));
                 }
                 "z" => {
                     let a = self.arg(Ctx::Plain, What::After("z"))?;
-                    push(AdjustOp::Translate([Expr::Num(0.0), Expr::Num(0.0), a.e]));
+                    push(AdjustOp::Translate([Expr::Num(0.0), Expr::Num(0.0), a.expr]));
                 }
                 "r" | "rotate" => {
                     push(rot(Axis::X, self.angle_arg(word)?));
@@ -92,9 +92,9 @@ impl<'a> Parser<'a> {
                     let angle = if self.starts_arg() {
                         let a = self.angle_arg(word)?;
                         if negative {
-                            Expr::Neg(Box::new(a.e))
+                            Expr::Neg(Box::new(a.expr))
                         } else {
-                            a.e
+                            a.expr
                         }
                     } else {
                         Expr::Num(if negative { -FRAC_PI_2 } else { FRAC_PI_2 })
@@ -106,13 +106,13 @@ impl<'a> Parser<'a> {
                     if self.starts_arg() {
                         return Err(err(self.peek().span, "not supported yet: non-uniform scale `s x y z`"));
                     }
-                    push(AdjustOp::Scale(k.e));
+                    push(AdjustOp::Scale(k.expr));
                 }
                 "f" => {
                     let a = self.arg(Ctx::Plain, What::After("f"))?;
                     let b = self.arg(Ctx::Plain, What::After("f"))?;
                     let c = self.arg(Ctx::Plain, What::After("f"))?;
-                    push(AdjustOp::Reflect([a.e, b.e, c.e]));
+                    push(AdjustOp::Reflect([a.expr, b.expr, c.expr]));
                 }
                 "fx" | "fy" | "fz" => {
                     let n = match word {

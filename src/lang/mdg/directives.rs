@@ -269,7 +269,7 @@ impl<'a> Parser<'a> {
         self.coords = false;
         let e = e?;
         self.expect_punct('}', || "to close the function body".to_string())?;
-        Ok(e.e)
+        Ok(e.expr)
     }
 
     /// Skips `{ … }` with balanced braces (no recursion).

@@ -1,28 +1,26 @@
 //! Numbers and expressions: call and adjustment arguments, `@define`
 //! values, function bodies, and the constant values directives require.
 //!
-//! An argument outside parentheses is a primary (a number, a name, a
-//! function call or a parenthesised expression) after any `-` signs, so
-//! `x 1 -2` reads as two arguments; inside parentheses the full grammar
-//! `+ - * / ^` applies. Every tree is built with its depth and node count,
-//! so depth stays under [`MAX_NESTING`] and `@define` substitution under the
-//! parser's copy budget.
+//! The grammar is the shared one (`crate::lang::expr::grammar`); this
+//! module is MDG's [`Host`] for it: MDG's tokens (its lexer has `+ - * / ^`
+//! but no comparison or logical operators), `d`/`t` literal suffixes and
+//! angle units, `@param` and `@define` names (each substitution charged to
+//! the parser's copy budget), `x`/`y`/`z` in function bodies, and `rand()`
+//! call sites. An argument outside parentheses is a primary (a number, a
+//! name, a function call or a parenthesised expression) after any `-`
+//! signs, so `x 1 -2` reads as two arguments; inside parentheses the full
+//! grammar applies.
 
-use super::{err, PResult, Parser, MAX_NESTING};
+use super::{err, PResult, Parser};
+use crate::core::{ParseError, Span};
+use crate::lang::expr::grammar::{self, Host, Op, Parsed, Token};
 use crate::lang::expr::{BinOp, Expr, ExprEnv, Func};
 use crate::lang::ir::AngleMode;
 use crate::lang::mdg::lexer::Tok;
-use crate::core::Span;
 use std::f64::consts::PI;
 
 /// An expression with its tree depth and node count.
-#[derive(Clone)]
-pub(super) struct E {
-    /// The expression.
-    pub(super) e: Expr,
-    depth: u32,
-    nodes: usize,
-}
+pub(super) type E = Parsed;
 
 /// Which angle unit literals are interpreted in.
 #[derive(Clone, Copy, PartialEq)]
@@ -65,7 +63,86 @@ impl ExprEnv for NaNEnv {
 
 /// A number literal as an expression tree of one node.
 pub(super) fn num(v: f64) -> E {
-    E { e: Expr::Num(v), depth: 1, nodes: 1 }
+    Parsed::leaf(Expr::Num(v))
+}
+
+/// The parser as the shared grammar's host, reading literals in `ctx`
+/// (call arguments are plain numbers: trigonometry works in radians).
+struct MdgHost<'p, 'a> {
+    p: &'p mut Parser<'a>,
+    /// The literal context, innermost last.
+    ctx: Vec<Ctx>,
+}
+
+impl<'a> Host<'a> for MdgHost<'_, 'a> {
+    fn peek(&self) -> (Token<'a>, Span) {
+        let t = self.p.peek();
+        let tok = match t.tok {
+            Tok::Num { value, suffix, .. } => Token::Num(self.p.literal(value, suffix, *self.ctx.last().unwrap_or(&Ctx::Plain))),
+            Tok::Ident(w) => Token::Name(w),
+            Tok::Punct(c) => match c {
+                '(' => Token::Op(Op::Open),
+                ')' => Token::Op(Op::Close),
+                ',' => Token::Op(Op::Comma),
+                '+' => Token::Op(Op::Add),
+                '-' => Token::Op(Op::Sub),
+                '*' => Token::Op(Op::Mul),
+                '/' => Token::Op(Op::Div),
+                '^' => Token::Op(Op::Pow),
+                _ => Token::Other,
+            },
+            _ => Token::Other,
+        };
+        (tok, t.span)
+    }
+
+    fn bump(&mut self) {
+        self.p.bump();
+    }
+
+    fn describe(&self) -> String {
+        self.p.peek().tok.to_string()
+    }
+
+    fn enter(&mut self, at: Span) -> Result<(), ParseError> {
+        self.p.enter(at)
+    }
+
+    fn leave(&mut self) {
+        self.p.leave();
+    }
+
+    fn name(&mut self, name: &'a str, at: Span) -> Result<Parsed, ParseError> {
+        if self.p.coords {
+            if let Some(axis) = ["x", "y", "z"].iter().position(|c| *c == name) {
+                return Ok(Parsed::leaf(Expr::Coord(axis as u8)));
+            }
+        }
+        if let Some(&i) = self.p.param_index.get(name) {
+            return Ok(Parsed::leaf(Expr::Param(i)));
+        }
+        if let Some(d) = self.p.defines.get(name) {
+            let e = d.expr.clone();
+            if e.nodes > self.p.subst_budget {
+                return Err(err(at, "@define substitution too large"));
+            }
+            self.p.subst_budget -= e.nodes;
+            return Ok(e);
+        }
+        Err(err(at, format!("unknown name `{name}`")))
+    }
+
+    fn rand_site(&mut self, at: Span) -> Result<u32, ParseError> {
+        self.p.next_site(at)
+    }
+
+    fn begin_args(&mut self) {
+        self.ctx.push(Ctx::Plain);
+    }
+
+    fn end_args(&mut self) {
+        self.ctx.pop();
+    }
 }
 
 fn is_const(e: &Expr) -> bool {
@@ -83,10 +160,10 @@ impl<'a> Parser<'a> {
     pub(super) fn const_value(&mut self, what: &str) -> PResult<(f64, Span)> {
         let span = self.peek().span;
         let e = self.arg(Ctx::Plain, What::Text(what))?;
-        if !is_const(&e.e) {
+        if !is_const(&e.expr) {
             return Err(err(span, format!("{what} must be a constant (no @param or rand())")));
         }
-        let v = e.e.eval(&mut NaNEnv);
+        let v = e.expr.eval(&mut NaNEnv);
         if !v.is_finite() {
             return Err(err(span, format!("{what} is not a finite number")));
         }
@@ -144,7 +221,7 @@ impl<'a> Parser<'a> {
         if f == 1.0 {
             return Ok(a);
         }
-        self.bin(BinOp::Mul, a, num(f), span)
+        grammar::combine(BinOp::Mul, a, num(f), span)
     }
 
     /// An argument outside parentheses: `-`* then a primary (no binary operators).
@@ -156,7 +233,7 @@ impl<'a> Parser<'a> {
                 self.enter(t.span)?;
                 let inner = self.arg(ctx, what)?;
                 self.leave();
-                self.neg(inner, t.span)
+                grammar::negate(inner, t.span)
             }
             Tok::Num { .. } | Tok::Punct('(') => self.primary(ctx),
             Tok::Ident(w) if !self.is_adjust_word(w) || self.is_value_name(w) => self.primary(ctx),
@@ -164,75 +241,13 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn neg(&self, a: E, span: Span) -> PResult<E> {
-        if let Expr::Num(v) = a.e {
-            return Ok(num(-v));
-        }
-        let depth = a.depth + 1;
-        if depth > MAX_NESTING {
-            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
-        }
-        Ok(E { e: Expr::Neg(Box::new(a.e)), depth, nodes: a.nodes + 1 })
-    }
-
-    fn bin(&self, op: BinOp, a: E, b: E, span: Span) -> PResult<E> {
-        let depth = a.depth.max(b.depth) + 1;
-        if depth > MAX_NESTING {
-            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
-        }
-        Ok(E { e: Expr::Binary(op, Box::new(a.e), Box::new(b.e)), depth, nodes: a.nodes + b.nodes + 1 })
-    }
-
     /// A full expression (inside parentheses or a `@define` value).
     pub(super) fn expr(&mut self, ctx: Ctx) -> PResult<E> {
-        let mut lhs = self.term(ctx)?;
-        loop {
-            let t = self.peek();
-            let op = match t.tok {
-                Tok::Punct('+') => BinOp::Add,
-                Tok::Punct('-') => BinOp::Sub,
-                _ => return Ok(lhs),
-            };
-            self.bump();
-            let rhs = self.term(ctx)?;
-            lhs = self.bin(op, lhs, rhs, t.span)?;
-        }
+        grammar::expression(&mut MdgHost { p: self, ctx: vec![ctx] })
     }
 
-    fn term(&mut self, ctx: Ctx) -> PResult<E> {
-        let mut lhs = self.unary(ctx)?;
-        loop {
-            let t = self.peek();
-            let op = match t.tok {
-                Tok::Punct('*') => BinOp::Mul,
-                Tok::Punct('/') => BinOp::Div,
-                _ => return Ok(lhs),
-            };
-            self.bump();
-            let rhs = self.unary(ctx)?;
-            lhs = self.bin(op, lhs, rhs, t.span)?;
-        }
-    }
-
-    fn unary(&mut self, ctx: Ctx) -> PResult<E> {
-        let t = self.peek();
-        if t.tok == Tok::Punct('-') {
-            self.bump();
-            self.enter(t.span)?;
-            let inner = self.unary(ctx)?;
-            self.leave();
-            return self.neg(inner, t.span);
-        }
-        let base = self.primary(ctx)?;
-        let t = self.peek();
-        if t.tok == Tok::Punct('^') {
-            self.bump();
-            self.enter(t.span)?;
-            let exp = self.unary(ctx)?;
-            self.leave();
-            return self.bin(BinOp::Pow, base, exp, t.span);
-        }
-        Ok(base)
+    fn primary(&mut self, ctx: Ctx) -> PResult<E> {
+        grammar::primary(&mut MdgHost { p: self, ctx: vec![ctx] })
     }
 
     fn literal(&self, value: f64, suffix: Option<char>, ctx: Ctx) -> f64 {
@@ -246,85 +261,5 @@ impl<'a> Parser<'a> {
             Ctx::Plain => radians,
             Ctx::Angle => radians / self.angle_factor(),
         }
-    }
-
-    fn primary(&mut self, ctx: Ctx) -> PResult<E> {
-        let t = self.bump();
-        match t.tok {
-            Tok::Num { value, suffix, .. } => Ok(num(self.literal(value, suffix, ctx))),
-            Tok::Punct('(') => {
-                self.enter(t.span)?;
-                let e = self.expr(ctx)?;
-                self.leave();
-                self.expect_punct(')', || "to close `(`".to_string())?;
-                Ok(e)
-            }
-            Tok::Ident(name) => {
-                if self.is_punct('(') {
-                    return self.func_call(name, t.span, ctx);
-                }
-                if self.coords {
-                    if let Some(axis) = ["x", "y", "z"].iter().position(|c| *c == name) {
-                        return Ok(E { e: Expr::Coord(axis as u8), depth: 1, nodes: 1 });
-                    }
-                }
-                if let Some(&i) = self.param_index.get(name) {
-                    return Ok(E { e: Expr::Param(i), depth: 1, nodes: 1 });
-                }
-                if let Some(d) = self.defines.get(name) {
-                    let e = d.expr.clone();
-                    if e.nodes > self.subst_budget {
-                        return Err(err(t.span, "@define substitution too large"));
-                    }
-                    self.subst_budget -= e.nodes;
-                    return Ok(e);
-                }
-                Err(err(t.span, format!("unknown name `{name}`")))
-            }
-            other => Err(err(t.span, format!("expected a number, found {other}"))),
-        }
-    }
-
-    fn func_call(&mut self, name: &'a str, span: Span, ctx: Ctx) -> PResult<E> {
-        self.bump(); // `(`
-        self.enter(span)?;
-        let mut args: Vec<E> = Vec::new();
-        if !self.is_punct(')') {
-            loop {
-                // Function arguments are plain numbers: trig works in radians.
-                let _ = ctx;
-                args.push(self.expr(Ctx::Plain)?);
-                if self.is_punct(',') {
-                    self.bump();
-                    continue;
-                }
-                break;
-            }
-        }
-        self.expect_punct(')', || format!("to close the arguments of `{name}`"))?;
-        self.leave();
-        if name == "rand" {
-            if !args.is_empty() {
-                return Err(err(span, format!("`rand` takes no arguments, {} given", args.len())));
-            }
-            let site = self.next_site(span)?;
-            return Ok(E { e: Expr::Rand(site), depth: 1, nodes: 1 });
-        }
-        let f = Func::from_name(name).ok_or_else(|| err(span, format!("unknown function `{name}`")))?;
-        let (lo, hi) = f.arity();
-        if args.len() < lo || hi.is_some_and(|h| args.len() > h) {
-            let want = match hi {
-                Some(h) if h == lo => format!("{lo}"),
-                Some(h) => format!("{lo} to {h}"),
-                None => format!("at least {lo}"),
-            };
-            return Err(err(span, format!("`{name}` takes {want} argument(s), {} given", args.len())));
-        }
-        let depth = args.iter().map(|a| a.depth).max().unwrap_or(0) + 1;
-        if depth > MAX_NESTING {
-            return Err(err(span, format!("nesting deeper than {MAX_NESTING}")));
-        }
-        let nodes = args.iter().map(|a| a.nodes).sum::<usize>() + 1;
-        Ok(E { e: Expr::Func(f, args.into_iter().map(|a| a.e).collect()), depth, nodes })
     }
 }

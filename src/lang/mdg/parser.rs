@@ -39,7 +39,7 @@ mod rules;
 use params::Define;
 
 /// Maximum nesting of blocks, iterator chains, parentheses and expression trees.
-pub const MAX_NESTING: u32 = 256;
+pub const MAX_NESTING: u32 = crate::lang::expr::grammar::MAX_NESTING;
 
 /// The parameter `@presets` declares.
 pub const PRESET_PARAM: &str = "preset";

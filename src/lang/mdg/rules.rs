@@ -193,7 +193,7 @@ impl<'a> Parser<'a> {
         let start = self.peek().span;
         self.enter(start)?;
         let count = self.arg(Ctx::Plain, What::Text("an iteration count"))?;
-        if let Expr::Num(v) = count.e {
+        if let Expr::Num(v) = count.expr {
             if v < 0.0 || v.fract() != 0.0 {
                 return Err(err(start, format!("iteration count must be a whole number ≥ 0, found {v}")));
             }
@@ -201,7 +201,7 @@ impl<'a> Parser<'a> {
         let mut divisor = None;
         if self.is_punct('/') {
             self.bump();
-            divisor = Some(self.arg(Ctx::Plain, What::Text("an iteration divisor"))?.e);
+            divisor = Some(self.arg(Ctx::Plain, What::Text("an iteration divisor"))?.expr);
         }
         self.expect_punct('*', || "after the iteration count".to_string())?;
         let site = self.next_site(start)?;
@@ -221,7 +221,7 @@ impl<'a> Parser<'a> {
             }
         };
         self.leave();
-        Ok(Item::Iterate(Iterate { count: count.e, divisor, step, body: Box::new(body), site, span: start }))
+        Ok(Item::Iterate(Iterate { count: count.expr, divisor, step, body: Box::new(body), site, span: start }))
     }
 }
 

@@ -1,12 +1,15 @@
 //! Arithmetic expressions shared by every front end.
 //!
-//! Front ends build [`Expr`] trees; the evaluator computes them with an
+//! Front ends parse them with the one grammar in [`grammar`] (each through
+//! its own lexer and names) into [`Expr`] trees; the evaluator computes them with an
 //! [`ExprEnv`] that supplies parameter values and per-site random numbers.
 //! Expressions are pure apart from `rand()`, whose value comes from the
 //! caller's deterministic stream, so the same inputs always give the same value.
 //! Trigonometric functions work in radians. Transcendental functions come from
 //! the pure-Rust `libm` crate, not the platform's C library, so values are
 //! bit-identical on every machine (outputs are cached by content hash).
+
+pub mod grammar;
 
 /// A binary operator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
