@@ -239,6 +239,8 @@ fn example_6_javascript_port_dialect() {
     assert_eq!(built("{ saturation .5 hue 10 } box\n", 0).scene, built("{ sat 0.5 h 10 } box\n", 0).scene);
     assert_eq!(built("{ m 1 0 0 0 .53 -.85 0 .85 .53 } box\n", 0).scene, built("{ matrix 1 0 0 0 0.53 -0.85 0 0.85 0.53 } box\n", 0).scene);
     assert_eq!(objects("set maxdepth 10\nr\nrule r md 5 w .5 { { x 1 } r box }\n"), 5);
+    assert_eq!(built("triangle [0,0,0;1,0,0;0,1,0]\n", 0).scene, built("triangle[0,0,0;1,0,0;0,1,0]\n", 0).scene);
+    assert!(parse_error("{ x 2 } triangle\n").contains("corners"));
     let e = parse_error("{ x 1 } tube\n");
     assert!(e.contains("JavaScript port"), "{e}");
     // A script's own rule of that name is its rule.

@@ -216,6 +216,15 @@ impl Parser {
                 return Err(ParseError::single(t.span, message));
             }
             self.pos += 1;
+            let mut t = t;
+            // eisenscript.js also writes `triangle [x,y,z;…]` with a space, which
+            // Structure Synth cannot resolve (RuleSet.cpp:151-180): joined.
+            if t.text.eq_ignore_ascii_case("triangle") && self.peek().is_some_and(|n| n.text.starts_with('[')) {
+                if let Some(corners) = self.tokens.get(self.pos).map(|n| n.text.clone()) {
+                    self.pos += 1;
+                    t.text.push_str(&corners);
+                }
+            }
             return self.call(rule, loops, t, first.span);
         }
     }
@@ -289,6 +298,7 @@ impl Parser {
         }
         match self.script.names.iter().position(|n| n == name) {
             Some(i) if !self.script.groups[i].is_empty() => Ok(Target::Rule(i as u32)),
+            _ if base == "triangle" => Err(ParseError::single(span, "`triangle` needs its corners: `triangle[x,y,z;x,y,z;x,y,z]`")),
             _ if PORT_PRIMITIVES.contains(&base) => Err(ParseError::single(
                 span,
                 format!("`{base}` is a primitive of a JavaScript port (eisenscript.js or BrowserSynth), not of Structure Synth; define `rule {base} {{ … }}` to draw it from Structure Synth's primitives"),
