@@ -134,8 +134,8 @@ struct Builder<'a> {
     colour: MtRand,
     /// `initialSeed` (Builder.cpp:338-342): drawn once, at the first `set seed initial`.
     initial_seed: u32,
-    /// The stream last seeded by [`Builder::reseed`], with its seed.
-    seeded: Option<(u32, MtRand)>,
+    /// The last two streams seeded by [`Builder::reseed`], with their seeds, latest first.
+    seeded: Vec<(u32, MtRand)>,
     /// Depth-first only: the maxdepth `RuleSet::setRulesMaxDepth` last gave
     /// the definitions of rules with several definitions.
     ambiguous_maxdepth: i64,
@@ -163,7 +163,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
         geometry: MtRand::new(seed),
         colour: MtRand::new(seed),
         initial_seed: 0,
-        seeded: None,
+        seeded: Vec::with_capacity(2),
         ambiguous_maxdepth: DEFAULT_MAX_GENERATIONS,
         next: Vec::new(),
         next_bytes: 0,
@@ -191,12 +191,18 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
 impl<'a> Builder<'a> {
     /// `RandomStreams::SetSeed`: both streams restart from `seed`. Under
     /// `syncrandom` or `set seed initial` every state reseeds, mostly with
-    /// its siblings' seed, so the last seeded stream is kept and copied.
+    /// its siblings' seed (and, with both, alternately with the generation's
+    /// sync seed), so the last two seeded streams are kept and copied.
     fn reseed(&mut self, seed: u32) {
-        if self.seeded.as_ref().is_none_or(|(s, _)| *s != seed) {
-            self.seeded = Some((seed, MtRand::new(seed)));
+        match self.seeded.iter().position(|(s, _)| *s == seed) {
+            Some(0) => {}
+            Some(i) => self.seeded.swap(0, i),
+            None => {
+                self.seeded.truncate(1);
+                self.seeded.insert(0, (seed, MtRand::new(seed)));
+            }
         }
-        if let Some((_, fresh)) = &self.seeded {
+        if let Some((_, fresh)) = self.seeded.first() {
             self.geometry.clone_from(fresh);
             self.colour.clone_from(fresh);
         }
