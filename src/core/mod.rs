@@ -1,5 +1,5 @@
 //! The leaf layer every other module may use: budgets and limits, seeded
-//! random streams, similarity frames, primitive kinds, request parameter
+//! random streams (and Structure Synth's Mersenne Twister), similarity frames, primitive kinds, request parameter
 //! values, source positions and diagnostics, and the embedded grammar
 //! library. Nothing here knows about languages, scenes or formats.
 
@@ -7,6 +7,7 @@ pub mod budget;
 pub mod diagnostic;
 pub mod frame;
 pub mod library;
+pub mod mtrand;
 pub mod param;
 pub mod primitive;
 pub mod rng;

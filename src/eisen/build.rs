@@ -1,80 +1,52 @@
-//! Structure Synth's builder: runs a parsed [`Script`] into a [`Scene`].
+//! Structure Synth's builder: runs a parsed [`Script`] into a [`Scene`],
+//! following `StructureSynth/Model/Builder.cpp`, `CustomRule.cpp`,
+//! `AmbiguousRule.cpp`, `Action.cpp` and `Transformation.cpp` of Structure
+//! Synth 1.5 (the rpavlik/structure-synth mirror; line numbers below are
+//! that source's).
 //!
-//! Breadth-first by default, as Structure Synth 1.5 does it: generation
-//! after generation, every pending rule state is applied in order and
-//! queues its children (primitives too are queued, and drawn when their
-//! generation runs). `set maxdepth` bounds the generations, and `set
-//! maxobjects` stops at the first generation boundary where the objects
-//! drawn, or the states pending, reach it — so which objects a cut-off keeps
-//! is the same as in Structure Synth. `set recursion depth` switches to
-//! depth-first expansion, where every rule without its own `maxdepth`
-//! retires at the global `maxdepth`.
+//! Breadth-first by default (`Builder::recurseBreadthFirst`, Builder.cpp:106-177):
+//! generation after generation, every pending rule state is applied in order
+//! and queues its children; primitives too are queued, and drawn when their
+//! generation runs. It stops before a generation when the generations run
+//! reach `set maxdepth` (default 1000), or the objects drawn or the states
+//! pending reach `set maxobjects` (default 100 000), so which objects a
+//! cut-off keeps is the same as in Structure Synth. There is no recursion:
+//! a generation limit is not a stack depth, so the request's `max_depth`
+//! does not apply; the objects, triangles, memory and steps of the budget
+//! are the guards. `set recursion depth` switches to depth-first expansion
+//! (`recurseDepthFirst`, Builder.cpp:37-103), with rule depths set as
+//! `RuleSet::setRulesMaxDepth` sets them (see [`Builder::rule_maxdepth`]).
 //!
-//! Randomness is per branch: every queued state carries a stream key derived
-//! from its parent's key, its action and its loop copy ([`StreamKey`]), so a
-//! choice depends only on where in the derivation it is made. (Structure
-//! Synth draws from one global Mersenne Twister in evaluation order; the
-//! numbers differ, the distributions and `set seed` reproducibility are the
-//! same.)
+//! Randomness is Structure Synth's: two Mersenne Twisters ([`MtRand`]), the
+//! geometry stream (rule choices, the per-generation sync seed, `set seed
+//! initial`) and the colour stream (`color random`), both seeded with the
+//! request's seed as Structure Synth's GUI seeds them with its seed box
+//! (`RandomStreams::SetSeed`), and drawn in Structure Synth's order — so a
+//! script and a seed choose the same rules and colours, and make the same
+//! objects, as in Structure Synth.
 
+use super::draw::{Canvas, Placement};
+use super::view::View;
 use crate::core::budget::{Budget, LimitExceeded, OnLimit};
-use crate::core::rng::StreamKey;
-use crate::model::scene::{AffineInstance, FreeVertex, Scene, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
+use crate::core::mtrand::MtRand;
+use crate::lang::eisen::{colour, Action, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
+use crate::model::scene::Scene;
 use crate::model::EvalError;
-use crate::model::Camera;
-use crate::lang::eisen::{colour, Action, CameraSetting, ColourPool, Loop, Primitive, RuleDef, Script, Setting, Target, Transform};
-use crate::core::PrimitiveKind;
-use glam::{DMat3, DMat4, DVec3, Mat3};
+use glam::{DMat4, DVec3};
 
-/// Structure Synth's default `maxdepth` (generations).
+/// Structure Synth's default `maxdepth` (generations; Builder.cpp:22).
 pub const DEFAULT_MAX_GENERATIONS: i64 = 1000;
-/// Structure Synth's default `maxobjects`.
+/// Structure Synth's default `maxobjects` (Builder.cpp:23).
 pub const DEFAULT_MAX_OBJECTS: i64 = 100_000;
 /// Default half-thickness of `line`, `grid` and `dot` solids, in units of the local frame.
 pub const DEFAULT_LINE_RADIUS: f64 = 0.01;
 
-/// Structure Synth's default view: the model 20 units in front of the eye.
-pub const DEFAULT_VIEW_TRANSLATION: [f64; 3] = [0.0, 0.0, -20.0];
-/// Structure Synth's default vertical field of view, degrees.
-pub const DEFAULT_PERSPECTIVE_ANGLE: f64 = 22.0;
-
-/// The viewer settings seen so far: Structure Synth's view maps a world
-/// point p to `translation + rotation · (scale · (p − pivot))`, the eye at
-/// the view-space origin looking down −Z.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct View {
-    translation: DVec3,
-    rotation: DMat3,
-    pivot: DVec3,
-    scale: f64,
-    angle: f64,
-}
-
-impl Default for View {
-    fn default() -> Self {
-        View { translation: DVec3::from_array(DEFAULT_VIEW_TRANSLATION), rotation: DMat3::IDENTITY, pivot: DVec3::ZERO, scale: 1.0, angle: DEFAULT_PERSPECTIVE_ANGLE }
-    }
-}
-
-impl View {
-    /// The eye in world space: the inverse of the view map at the view origin.
-    fn camera(&self) -> Option<Camera> {
-        // Structure Synth's saved rotations are rotations up to rounding; re-orthonormalise.
-        let q = glam::DQuat::from_mat3(&self.rotation).normalize();
-        if !q.is_finite() || !(self.scale.is_finite() && self.scale > 0.0) {
-            return None;
-        }
-        let inverse = q.conjugate();
-        let position = self.pivot - (inverse * self.translation) / self.scale;
-        let fov = self.angle.clamp(1.0, 179.0).to_radians();
-        position.is_finite().then(|| Camera::still(position.as_vec3().to_array(), inverse.as_quat().normalize().to_array(), fov as f32))
-    }
-}
+pub use super::view::{DEFAULT_PERSPECTIVE_ANGLE, DEFAULT_VIEW_TRANSLATION};
 
 /// What the builder needs besides the script.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BuildOptions {
-    /// The initial seed (`set seed N` in the script replaces it from that point on).
+    /// The initial seed: Structure Synth's seed box (its low 32 bits seed both streams).
     pub seed: u64,
     /// Tessellation detail (for triangle and memory accounting).
     pub detail: u32,
@@ -101,19 +73,18 @@ pub struct Built {
     pub generations: u64,
 }
 
-/// The state a rule runs in: Structure Synth's `State`.
+/// The state a rule runs in: Structure Synth's `State` (State.h:21-37).
 #[derive(Debug, Clone, PartialEq)]
 struct State {
     matrix: DMat4,
-    /// The matrix before the last loop step (what `mesh` joins to).
+    /// The matrix of the state the last loop action started from (what `mesh` joins to).
     previous: DMat4,
     hsv: [f64; 3],
     alpha: f64,
-    /// Remaining depth per rule definition with a `maxdepth`.
+    /// `maxDepths`: remaining depth per rule *definition* with a `maxdepth`.
     depths: Vec<(u32, i64)>,
-    key: StreamKey,
-    /// Nesting depth (rule applications from the start), for the depth budget.
-    depth: u32,
+    /// `seed`: after `set seed initial`, the seed both streams restart from when this state runs (0: none).
+    seed: u32,
 }
 
 impl State {
@@ -158,10 +129,16 @@ struct Builder<'a> {
     max_size: f64,
     pool: ColourPool,
     sync_random: bool,
-    initial: StreamKey,
-    /// The stream of the rule state being applied, and how many numbers it has drawn.
-    stream: StreamKey,
-    draws: u32,
+    /// `RandomStreams::Geometry()` and `RandomStreams::Color()`.
+    geometry: MtRand,
+    colour: MtRand,
+    /// `initialSeed` (Builder.cpp:338-342): drawn once, at the first `set seed initial`.
+    initial_seed: u32,
+    /// The last two streams seeded by [`Builder::reseed`], with their seeds, latest first.
+    seeded: Vec<(u32, MtRand)>,
+    /// Depth-first only: the maxdepth `RuleSet::setRulesMaxDepth` last gave
+    /// the definitions of rules with several definitions.
+    ambiguous_maxdepth: i64,
     next: Vec<RuleState<'a>>,
     next_bytes: u64,
     built: Built,
@@ -171,7 +148,8 @@ struct Builder<'a> {
 
 /// Runs `script` under `budget`.
 pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Result<Built, EvalError> {
-    let initial = StreamKey::root(opts.seed);
+    // Structure Synth's seeds are C ints: the request's seed is cut to 32 bits.
+    let seed = opts.seed as u32;
     let mut b = Builder {
         script,
         opts: *opts,
@@ -182,9 +160,11 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
         max_size: 0.0,
         pool: ColourPool::RandomHue,
         sync_random: false,
-        initial,
-        stream: initial,
-        draws: 0,
+        geometry: MtRand::new(seed),
+        colour: MtRand::new(seed),
+        initial_seed: 0,
+        seeded: Vec::with_capacity(2),
+        ambiguous_maxdepth: DEFAULT_MAX_GENERATIONS,
         next: Vec::new(),
         next_bytes: 0,
         built: Built::default(),
@@ -193,15 +173,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
     b.built.scene.classes = script.classes.clone();
     let start = RuleState {
         what: Pending::Top,
-        state: State {
-            matrix: DMat4::IDENTITY,
-            previous: DMat4::IDENTITY,
-            hsv: [0.0, 1.0, 1.0],
-            alpha: 1.0,
-            depths: Vec::new(),
-            key: initial,
-            depth: 0,
-        },
+        state: State { matrix: DMat4::IDENTITY, previous: DMat4::IDENTITY, hsv: [0.0, 1.0, 1.0], alpha: 1.0, depths: Vec::new(), seed: 0 },
     };
     let result = if script.depth_first { b.depth_first(start) } else { b.breadth_first(start) };
     b.budget.release_memory(b.next_bytes);
@@ -217,21 +189,50 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
 }
 
 impl<'a> Builder<'a> {
+    /// `RandomStreams::SetSeed`: both streams restart from `seed`. Under
+    /// `syncrandom` or `set seed initial` every state reseeds, mostly with
+    /// its siblings' seed (and, with both, alternately with the generation's
+    /// sync seed), so the last two seeded streams are kept and copied.
+    fn reseed(&mut self, seed: u32) {
+        match self.seeded.iter().position(|(s, _)| *s == seed) {
+            Some(0) => {}
+            Some(i) => self.seeded.swap(0, i),
+            None => {
+                self.seeded.truncate(1);
+                self.seeded.insert(0, (seed, MtRand::new(seed)));
+            }
+        }
+        if let Some((_, fresh)) = self.seeded.first() {
+            self.geometry.clone_from(fresh);
+            self.colour.clone_from(fresh);
+        }
+    }
+
+    /// Builder.cpp:106-177.
     fn breadth_first(&mut self, start: RuleState<'a>) -> Result<(), LimitExceeded> {
         let mut stack = vec![start];
         let mut stack_bytes = 0;
         let mut generation: i64 = 0;
         let result = (|| {
+            // Builder.cpp:107-110 draws a sync seed first when `syncRandom` is
+            // on, which it never is yet (only a running script sets it).
+            if self.sync_random {
+                self.geometry.next_u32();
+            }
             while !stack.is_empty()
                 && generation < self.max_generations
                 && (self.built.objects as i64) < self.max_objects
                 && (stack.len() as i64) < self.max_objects
             {
+                // Builder.cpp:118: one geometry draw per generation, synchronised or not.
+                let sync_seed = self.geometry.next_u32();
                 generation += 1;
-                let sync = self.initial.child(u32::MAX, generation as u64);
-                for rs in &stack {
-                    let key = if self.sync_random { sync } else { rs.state.key };
-                    self.apply_pending(rs, key)?;
+                for rs in &mut stack {
+                    self.restart_streams(&mut rs.state);
+                    if self.sync_random {
+                        self.reseed(sync_seed);
+                    }
+                    self.apply_pending(rs)?;
                 }
                 self.budget.release_memory(stack_bytes);
                 stack = std::mem::take(&mut self.next);
@@ -244,19 +245,22 @@ impl<'a> Builder<'a> {
         result
     }
 
+    /// Builder.cpp:37-103: a list whose front runs next, children inserted in
+    /// front in order (a stack popped from its end, children pushed reversed).
     fn depth_first(&mut self, start: RuleState<'a>) -> Result<(), LimitExceeded> {
-        // A stack whose top is the front of Structure Synth's list: children
-        // are pushed in reverse so the first child runs next.
         let mut stack = vec![start];
         let mut stack_bytes = 0u64;
         let result = (|| {
-            while let Some(rs) = stack.pop() {
+            while let Some(mut rs) = stack.pop() {
                 if (self.built.objects as i64) >= self.max_objects {
                     break;
                 }
                 stack_bytes = stack_bytes.saturating_sub(state_bytes(&rs));
                 self.built.generations += 1;
-                self.apply_pending(&rs, rs.state.key)?;
+                self.restart_streams(&mut rs.state);
+                // Structure Synth `continue`s here without removing a pruned
+                // state (Builder.cpp:90-91), so it never ends; it is dropped instead.
+                self.apply_pending(&rs)?;
                 let children = std::mem::take(&mut self.next);
                 stack_bytes += std::mem::take(&mut self.next_bytes);
                 stack.extend(children.into_iter().rev());
@@ -267,35 +271,35 @@ impl<'a> Builder<'a> {
         result
     }
 
-    /// Applies one pending rule state (after the size checks), drawing random numbers from `key`.
-    fn apply_pending(&mut self, rs: &RuleState<'a>, key: StreamKey) -> Result<(), LimitExceeded> {
+    /// Builder.cpp:155-158: a state after `set seed initial` restarts both
+    /// streams from its seed and hands a fresh seed to its children.
+    fn restart_streams(&mut self, state: &mut State) {
+        if state.seed != 0 {
+            self.reseed(state.seed);
+            state.seed = self.geometry.next_u32();
+        }
+    }
+
+    /// Applies one pending rule state after the size checks (Builder.cpp:165-173).
+    fn apply_pending(&mut self, rs: &RuleState<'a>) -> Result<(), LimitExceeded> {
         self.budget.charge_step()?;
-        self.budget.check_depth(rs.state.depth)?;
         if self.max_size != 0.0 || self.min_size != 0.0 {
             let l = (rs.state.matrix.transform_point3(DVec3::ONE) - rs.state.matrix.transform_point3(DVec3::ZERO)).length();
             if (self.max_size != 0.0 && l > self.max_size) || (self.min_size != 0.0 && l < self.min_size) {
                 return Ok(());
             }
         }
-        self.stream = key;
-        self.draws = 0;
         let mut state = rs.state.clone();
-        state.key = key;
         match rs.what {
-            Pending::Top => self.run_actions(&self.script.top, &state, None),
+            Pending::Top => self.run_actions(&self.script.top, &mut state, None),
             Pending::Target(t) => self.apply_target(t, &mut state),
         }
-    }
-
-    fn uniform(&mut self) -> f64 {
-        self.draws += 1;
-        self.stream.uniform(self.draws)
     }
 
     /// Applies `target` in `state`. A retired rule's substitute runs in
     /// place; the chain is followed in a loop (one step each), so a rule that
     /// retires into itself forever ends at the step limit instead of
-    /// overflowing the stack.
+    /// overflowing the stack (as Structure Synth's recursion would).
     fn apply_target(&mut self, target: &'a Target, state: &mut State) -> Result<(), LimitExceeded> {
         let mut target = target;
         loop {
@@ -304,23 +308,7 @@ impl<'a> Builder<'a> {
                 Target::Primitive(p, class) => return self.draw(*p, *class, state, None),
                 Target::Triangle(pts, class) => return self.draw(Primitive::Template, *class, state, Some(pts)),
             };
-            let defs = &self.script.groups[name as usize];
-            let pick = if defs.len() == 1 {
-                defs[0]
-            } else {
-                let total: f64 = defs.iter().map(|&d| self.script.rules[d as usize].weight).sum();
-                let r = total * self.uniform();
-                let mut acc = 0.0;
-                let mut chosen = defs[defs.len() - 1];
-                for &d in defs {
-                    acc += self.script.rules[d as usize].weight;
-                    if r <= acc {
-                        chosen = d;
-                        break;
-                    }
-                }
-                chosen
-            };
+            let pick = self.choose(&self.script.groups[name as usize]);
             match self.apply_rule(pick, state)? {
                 Some(substitute) => {
                     self.budget.charge_step()?;
@@ -331,13 +319,52 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// Structure Synth's `CustomRule::apply`, with rule retirement: returns
-    /// the substitute to run in place when the rule has retired.
+    /// `AmbiguousRule::apply` (AmbiguousRule.cpp:24-48): one geometry draw
+    /// picks a definition by weight; a rule with one definition draws nothing.
+    fn choose(&mut self, defs: &[u32]) -> u32 {
+        if let [only] = defs {
+            return *only;
+        }
+        let weight = |d: u32| self.script.rules.get(d as usize).map_or(0.0, |r| r.weight);
+        let total: f64 = defs.iter().map(|&d| weight(d)).sum();
+        let r = total * self.geometry.double();
+        let mut acc = 0.0;
+        for &d in defs {
+            acc += weight(d);
+            if r <= acc {
+                return d;
+            }
+        }
+        defs.last().copied().unwrap_or(0)
+    }
+
+    /// The maxdepth definition `index` runs with, or `None` for no limit
+    /// (Structure Synth's −1). Breadth-first, a definition's own `md`.
+    /// Depth-first, `RuleSet::setRulesMaxDepth` (RuleSet.cpp:42-48) first
+    /// gives every rule without a positive `md` the default 1000
+    /// (Builder.cpp:40-42, before the script's own `set maxdepth` runs), and
+    /// every `set maxdepth N` (N > 0) then gives N to all definitions of rules
+    /// with several definitions — their own `md` included, since the group's
+    /// `AmbiguousRule::setMaxDepth` passes it on (AmbiguousRule.h:28).
+    fn rule_maxdepth(&self, def: &RuleDef) -> Option<i64> {
+        let own = def.maxdepth.filter(|&m| m != -1);
+        if !self.script.depth_first {
+            return own;
+        }
+        if self.script.groups.get(def.name as usize).is_some_and(|g| g.len() > 1) {
+            return Some(self.ambiguous_maxdepth);
+        }
+        Some(own.filter(|&m| m > 0).unwrap_or(DEFAULT_MAX_GENERATIONS))
+    }
+
+    /// `CustomRule::apply` (CustomRule.cpp:20-54): a definition with a
+    /// maxdepth counts its applications in the state, per definition; once
+    /// retired it does nothing, or resets its count and runs its substitute in
+    /// place, which is returned.
     fn apply_rule(&mut self, index: u32, state: &mut State) -> Result<Option<&'a Target>, LimitExceeded> {
         let def: &'a RuleDef = &self.script.rules[index as usize];
-        let maxdepth = def.maxdepth.or((self.script.depth_first && self.max_generations > 0).then_some(self.max_generations));
         let mut calling = None;
-        if let Some(md) = maxdepth {
+        if let Some(md) = self.rule_maxdepth(def) {
             let new_depth = match state.depth_of(index) {
                 None => md - 1,
                 Some(d) if d <= 0 => {
@@ -355,31 +382,34 @@ impl<'a> Builder<'a> {
         Ok(None)
     }
 
-    fn run_actions(&mut self, actions: &'a [Action], state: &State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {
+    fn run_actions(&mut self, actions: &'a [Action], state: &mut State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {
         for a in actions {
             match a {
                 Action::Set(s, _) => self.set(s, state),
-                Action::Call { loops, target, site, .. } => self.call(loops, target, *site, state, calling)?,
+                Action::Call { loops, target, .. } => self.call(loops, target, state, calling)?,
             }
         }
         Ok(())
     }
 
-    fn set(&mut self, s: &Setting, _state: &State) {
+    /// `Builder::setCommand` (Builder.cpp:244-387), for the settings that reach the builder.
+    fn set(&mut self, s: &Setting, state: &mut State) {
         match s {
-            Setting::MaxDepth(n) => self.max_generations = *n,
+            Setting::MaxDepth(n) => {
+                self.max_generations = *n;
+                if self.script.depth_first && *n > 0 {
+                    self.ambiguous_maxdepth = *n;
+                }
+            }
             Setting::MaxObjects(n) => self.max_objects = *n,
             Setting::MinSize(v) => self.min_size = *v,
             Setting::MaxSize(v) => self.max_size = *v,
-            // Reseeding changes the stream of the state being applied, so its
-            // children (and their random choices) follow the new seed.
-            Setting::Seed(Some(n)) => {
-                self.stream = StreamKey::root(*n as u64);
-                self.draws = 0;
-            }
+            Setting::Seed(Some(n)) => self.reseed(*n as u32),
             Setting::Seed(None) => {
-                self.stream = self.initial;
-                self.draws = 0;
+                if self.initial_seed == 0 {
+                    self.initial_seed = self.geometry.next_u32();
+                }
+                state.seed = self.initial_seed;
             }
             Setting::Background(rgb) => {
                 let c = rgb.map(|v| colour::srgb_to_linear(f64::from(v) / 255.0) as f32);
@@ -387,51 +417,57 @@ impl<'a> Builder<'a> {
             }
             Setting::ColourPool(p) => self.pool = p.clone(),
             Setting::SyncRandom(b) => self.sync_random = *b,
-            Setting::Camera(c) => {
-                let v = self.view.get_or_insert_with(View::default);
-                match *c {
-                    CameraSetting::Translation(t) => v.translation = t,
-                    CameraSetting::Rotation(r) => v.rotation = r,
-                    CameraSetting::Pivot(p) => v.pivot = p,
-                    CameraSetting::Scale(s) => v.scale = s,
-                    CameraSetting::PerspectiveAngle(a) => v.angle = a,
-                }
-            }
+            Setting::Camera(c) => self.view.get_or_insert_with(View::default).set(*c),
             Setting::Ignored => {}
         }
     }
 
-    /// Structure Synth's `Action::apply`: queues `target` once per loop copy,
-    /// in Structure Synth's order (the first loop's copy index runs fastest).
-    /// Each loop's copies are made incrementally — copy k is copy k − 1 with
-    /// the step applied once more, the same operations in the same order as
-    /// applying it k times afresh — so N copies cost N steps, not N²/2.
-    fn call(&mut self, loops: &'a [Loop], target: &'a Target, site: u32, state: &State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {
-        let parent = self.stream.child(self.draws, 0);
-        if loops.iter().any(|l| l.count == 0) {
-            return Ok(());
-        }
+    /// `Action::apply` (Action.cpp:11-66): queues `target` once per loop
+    /// copy, in Structure Synth's counter order ([`loop_counters`]). A copy
+    /// applies each loop's step as many times as its counter says, afresh
+    /// (Action.cpp:42-46); when no step draws a random colour the copies are
+    /// made incrementally instead — copy k is copy k − 1 with the step applied
+    /// once more, the same operations in the same order — so N copies cost N
+    /// steps, not N²/2. With `color random` every application draws, as in
+    /// Structure Synth, so the copies are made afresh.
+    fn call(&mut self, loops: &'a [Loop], target: &'a Target, state: &State, calling: Option<(u32, i64)>) -> Result<(), LimitExceeded> {
         let mut base = state.clone();
-        if !loops.is_empty() {
-            base.previous = state.matrix;
-        }
         if let Some((def, d)) = calling {
             base.set_depth(def, d);
         }
-        base.depth = state.depth.saturating_add(1);
+        if loops.is_empty() {
+            return self.queue(target, base);
+        }
+        base.previous = state.matrix;
         let per_state = STATE_BYTES.saturating_add(16 * base.depths.len() as u64);
+        let reps: Vec<u32> = loops.iter().map(|l| l.count).collect();
         let mut held = 0u64;
         let result = (|| {
+            if loops.iter().any(|l| l.transform.draws_colour()) {
+                for counters in loop_counters(&reps) {
+                    let mut s = base.clone();
+                    for (l, &c) in loops.iter().zip(&counters) {
+                        for _ in 0..c {
+                            self.budget.charge_step()?;
+                            self.transform(&mut s, &l.transform);
+                        }
+                    }
+                    self.queue(target, s)?;
+                }
+                return Ok(());
+            }
+            // Every copy's counters lie in 1..=max(count, 1): build those states level by level.
+            let widths: Vec<usize> = reps.iter().map(|&r| r.max(1) as usize).collect();
             let mut level = vec![base];
-            for l in loops {
-                let n = (level.len() as u64).saturating_mul(u64::from(l.count));
+            for (l, &w) in loops.iter().zip(&widths) {
+                let n = (level.len() as u64).saturating_mul(w as u64);
                 // Reserved before allocating, so a huge loop fails on memory, not on allocation.
                 self.budget.reserve_memory(n.saturating_mul(per_state))?;
                 held = held.saturating_add(n.saturating_mul(per_state));
                 let mut next = Vec::with_capacity(n as usize);
                 for s in &level {
                     let mut cur = s.clone();
-                    for _ in 0..l.count {
+                    for _ in 0..w {
                         self.budget.charge_step()?;
                         self.transform(&mut cur, &l.transform);
                         next.push(cur.clone());
@@ -439,26 +475,11 @@ impl<'a> Builder<'a> {
                 }
                 level = next;
             }
-            // `level` has the first loop's index slowest; Structure Synth runs it fastest.
-            let counts: Vec<usize> = loops.iter().map(|l| l.count as usize).collect();
-            let mut states: Vec<Option<State>> = level.into_iter().map(Some).collect();
-            for copy in 0..states.len() {
-                let (mut rem, mut index) = (copy, 0);
-                let mut digits = vec![0usize; counts.len()];
-                for (d, &c) in digits.iter_mut().zip(&counts) {
-                    *d = rem % c;
-                    rem /= c;
-                }
-                for (d, &c) in digits.iter().zip(&counts) {
-                    index = index * c + d;
-                }
-                let Some(mut s) = states.get_mut(index).and_then(Option::take) else { continue };
-                s.key = parent.child(site, copy as u64);
-                let rs = RuleState { what: Pending::Target(target), state: s };
-                let bytes = state_bytes(&rs);
-                self.budget.reserve_memory(bytes)?;
-                self.next_bytes += bytes;
-                self.next.push(rs);
+            for counters in loop_counters(&reps) {
+                // `level` is indexed with the first loop slowest.
+                let index = counters.iter().zip(&widths).fold(0usize, |acc, (&c, &w)| acc * w + (c as usize - 1));
+                let Some(s) = level.get(index).cloned() else { continue };
+                self.queue(target, s)?;
             }
             Ok(())
         })();
@@ -466,7 +487,17 @@ impl<'a> Builder<'a> {
         result
     }
 
-    /// Structure Synth's `Transformation::apply`.
+    /// Appends a rule state to the next generation (`getNextStack().append`).
+    fn queue(&mut self, target: &'a Target, state: State) -> Result<(), LimitExceeded> {
+        let rs = RuleState { what: Pending::Target(target), state };
+        let bytes = state_bytes(&rs);
+        self.budget.reserve_memory(bytes)?;
+        self.next_bytes += bytes;
+        self.next.push(rs);
+        Ok(())
+    }
+
+    /// Structure Synth's `Transformation::apply` (Transformation.cpp:32-107).
     fn transform(&mut self, s: &mut State, t: &Transform) {
         s.matrix *= t.matrix;
         if t.absolute {
@@ -497,184 +528,80 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// A colour from the current pool (`color random`), as HSV.
+    /// `ColorPool::drawColor` (ColorPool.cpp:62-84): a colour from the
+    /// current pool, from the colour stream, as HSV.
     fn draw_colour(&mut self) -> [f64; 3] {
-        let int = |u: f64, max: u32| ((u * f64::from(max + 1)).floor() as u32).min(max);
-        match self.pool.clone() {
-            ColourPool::RandomHue => [f64::from(int(self.uniform(), 359)), 1.0, 1.0],
+        match &self.pool {
+            ColourPool::RandomHue => [f64::from(self.colour.int_to(359)), 1.0, 1.0],
             ColourPool::Greyscale => {
-                let g = int(self.uniform(), 255) as u8;
+                let g = self.colour.int_to(255) as u8;
                 colour::rgb_to_hsv([g, g, g])
             }
             ColourPool::RandomRgb => {
-                let r = int(self.uniform(), 255) as u8;
-                let g = int(self.uniform(), 255) as u8;
-                let b = int(self.uniform(), 255) as u8;
+                let r = self.colour.int_to(255) as u8;
+                let g = self.colour.int_to(255) as u8;
+                let b = self.colour.int_to(255) as u8;
                 colour::rgb_to_hsv([r, g, b])
             }
             ColourPool::List(list) => {
-                let n = list.len() as u32;
-                let i = int(self.uniform(), n.saturating_sub(1)) as usize;
+                let n = list.len().saturating_sub(1) as u32;
+                let i = self.colour.int_to(n) as usize;
                 let rgb = list.get(i).copied().unwrap_or([255, 255, 255]);
                 colour::rgb_to_hsv(rgb)
             }
         }
     }
 
-    /// The state's colour as linear RGBA.
-    fn colour(s: &State) -> [f32; 4] {
-        let rgb = colour::hsv_to_rgb(s.hsv).map(colour::srgb_to_linear);
-        [rgb[0] as f32, rgb[1] as f32, rgb[2] as f32, s.alpha.clamp(0.0, 1.0) as f32]
-    }
-
     /// Draws primitive `p` (or the triangle `tri`) in state `s`.
     fn draw(&mut self, p: Primitive, class: u32, s: &State, tri: Option<&[DVec3; 3]>) -> Result<(), LimitExceeded> {
-        let colour = Self::colour(s);
-        let m = s.matrix;
-        let r = self.opts.line_radius;
-        let mut placed: Vec<(PrimitiveKind, DMat3, DVec3)> = Vec::new();
-        let mut faces: Vec<[DVec3; 3]> = Vec::new();
-        let lin = DMat3::from_mat4(m);
-        let size = lin.determinant().abs().cbrt();
-        let size = if size.is_finite() && size > 0.0 { size } else { (lin.x_axis.length() + lin.y_axis.length() + lin.z_axis.length()) / 3.0 };
-        let half = DVec3::splat(0.5);
-        match (p, tri) {
-            (_, Some(pts)) => {
-                let [a, b, c] = pts.map(|q| m.transform_point3(q));
-                // Both sides, so the triangle shows from either side.
-                faces.push([a, b, c]);
-                faces.push([a, c, b]);
-            }
-            (Primitive::Box, _) => placed.push((PrimitiveKind::Box, lin, m.transform_point3(half))),
-            (Primitive::Sphere, _) => placed.push((PrimitiveKind::Sphere, lin, m.transform_point3(half))),
-            (Primitive::Cylinder, _) => {
-                // The prototype's axis is +Y; Structure Synth's is local x.
-                let swap = DMat3::from_cols(DVec3::Y, DVec3::X, DVec3::Z);
-                let flip = DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0));
-                placed.push((PrimitiveKind::Cylinder, lin * swap * flip, m.transform_point3(half)));
-            }
-            (Primitive::Line, _) => {
-                let a = m.transform_point3(DVec3::new(0.0, 0.5, 0.5));
-                let b = m.transform_point3(DVec3::new(1.0, 0.5, 0.5));
-                placed.extend(bar(a, b, r * size));
-            }
-            (Primitive::Grid, _) => {
-                for (a, b) in cube_edges() {
-                    placed.extend(bar(m.transform_point3(a), m.transform_point3(b), r * size));
+        let rgb = colour::hsv_to_rgb(s.hsv).map(colour::srgb_to_linear);
+        let at = Placement { matrix: s.matrix, previous: s.previous, colour: [rgb[0] as f32, rgb[1] as f32, rgb[2] as f32, s.alpha.clamp(0.0, 1.0) as f32] };
+        Canvas { opts: &self.opts, budget: self.budget, built: &mut self.built }.draw(p, class, &at, tri)
+    }
+}
+
+/// The loop counters of `Action::apply`, copy by copy, in Structure Synth's
+/// order (Action.cpp:22-23, 52-63): every counter starts at 1 and the first
+/// runs fastest. A loop of count 0 still makes its one copy — the counters
+/// are checked only after a copy is made — so `0 * { x 1 } box` draws one
+/// box, as in Structure Synth.
+fn loop_counters(reps: &[u32]) -> impl Iterator<Item = Vec<u32>> + '_ {
+    let mut counters = (!reps.is_empty()).then(|| vec![1u32; reps.len()]);
+    std::iter::from_fn(move || {
+        let current = counters.take()?;
+        let mut next = current.clone();
+        next[0] += 1;
+        let mut done = false;
+        for i in 0..next.len() {
+            if next[i] > reps[i] {
+                if i == next.len() - 1 {
+                    done = true;
+                } else {
+                    next[i] = 1;
+                    next[i + 1] += 1;
                 }
             }
-            (Primitive::Point, _) => {
-                placed.push((PrimitiveKind::Icosahedron, DMat3::from_diagonal(DVec3::splat(4.0 * r * size)), m.transform_point3(half)));
-            }
-            (Primitive::Mesh, _) => faces.extend(mesh_solid(&s.previous, &m)),
-            (Primitive::Template, None) => {}
         }
-        let triangles: u64 = placed.iter().map(|(k, ..)| crate::geom::primitives::triangle_count(*k, self.opts.detail)).sum::<u64>() + faces.len() as u64;
-        self.built.objects += 1;
-        if triangles == 0 {
-            return Ok(());
+        if !done {
+            counters = Some(next);
         }
-        self.budget.charge_primitive(triangles)?;
-        let downstream: u64 = placed.iter().map(|(k, ..)| self.opts.downstream_bytes[*k as usize]).sum::<u64>()
-            + 3 * faces.len() as u64 * self.opts.vertex_bytes;
-        let stored = AFFINE_INSTANCE_BYTES * placed.len() as u64 + 3 * FREE_VERTEX_BYTES * faces.len() as u64;
-        self.budget.reserve_memory(stored.saturating_add(downstream))?;
-        self.built.promised = self.built.promised.saturating_add(downstream);
-        for (kind, l, t) in placed {
-            self.built.scene.affine.push(AffineInstance {
-                kind,
-                linear: Mat3::from_cols(l.x_axis.as_vec3(), l.y_axis.as_vec3(), l.z_axis.as_vec3()),
-                translation: t.as_vec3(),
-                colour,
-                class,
-            });
-        }
-        for [a, b, c] in faces {
-            let n = (b - a).cross(c - a);
-            let Some(n) = n.try_normalize() else { continue };
-            for v in [a, b, c] {
-                self.built.scene.vertices.push(FreeVertex { position: v, normal: n, colour });
-            }
-        }
-        Ok(())
-    }
-}
-
-/// A thin square bar from `a` to `b` with half-thickness `r`, as a box.
-fn bar(a: DVec3, b: DVec3, r: f64) -> Option<(PrimitiveKind, DMat3, DVec3)> {
-    let d = b - a;
-    if !(d.length() > 0.0) || !(r > 0.0) {
-        return None;
-    }
-    let u = d.any_orthonormal_vector() * (2.0 * r);
-    let v = d.normalize().cross(u.normalize()) * (2.0 * r);
-    Some((PrimitiveKind::Box, DMat3::from_cols(d, u, v), (a + b) * 0.5))
-}
-
-/// The twelve edges of the unit cube: along each axis, from each corner of the opposite face.
-fn cube_edges() -> impl Iterator<Item = (DVec3, DVec3)> {
-    (0..3).flat_map(|axis: usize| {
-        (0..4).map(move |k: u32| {
-            let mut a = DVec3::ZERO;
-            a[(axis + 1) % 3] = f64::from(k & 1);
-            a[(axis + 2) % 3] = f64::from(k >> 1);
-            let mut b = a;
-            b[axis] = 1.0;
-            (a, b)
-        })
+        Some(current)
     })
-}
-
-/// The closed solid between the x = 0 unit squares of two frames, as
-/// outward-facing triangles (12; degenerate ones are dropped by the caller).
-fn mesh_solid(from: &DMat4, to: &DMat4) -> Vec<[DVec3; 3]> {
-    let square = |m: &DMat4| [(0., 0.), (1., 0.), (1., 1.), (0., 1.)].map(|(y, z)| m.transform_point3(DVec3::new(0.0, y, z)));
-    let (a, b) = (square(from), square(to));
-    let centre = (a.iter().chain(b.iter()).copied().sum::<DVec3>()) / 8.0;
-    let quads = [[a[0], a[1], a[2], a[3]], [b[0], b[3], b[2], b[1]], [a[0], b[0], b[1], a[1]], [a[1], b[1], b[2], a[2]], [a[2], b[2], b[3], a[3]], [a[3], b[3], b[0], a[0]]];
-    let mut out = Vec::with_capacity(12);
-    for q in quads {
-        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
-            let n = (t[1] - t[0]).cross(t[2] - t[0]);
-            let mid = (t[0] + t[1] + t[2]) / 3.0;
-            out.push(if n.dot(mid - centre) < 0.0 { [t[0], t[2], t[1]] } else { t });
-        }
-    }
-    out
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::loop_counters;
 
     #[test]
-    fn cube_edges_are_the_twelve_unit_edges() {
-        let edges: Vec<(DVec3, DVec3)> = cube_edges().collect();
-        assert_eq!(edges.len(), 12);
-        for (i, (a, b)) in edges.iter().enumerate() {
-            assert_eq!((*b - *a).length(), 1.0);
-            assert!(edges[..i].iter().all(|e| e != &(*a, *b)));
-        }
-    }
-
-    #[test]
-    fn mesh_solid_is_closed_and_outward() {
-        let from = DMat4::IDENTITY;
-        for to in [DMat4::from_translation(DVec3::X), DMat4::from_translation(-2.0 * DVec3::X), DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0))] {
-            let tris = mesh_solid(&from, &to);
-            assert_eq!(tris.len(), 12);
-            // Signed volume by the divergence theorem: positive when every face points outward.
-            let v: f64 = tris.iter().map(|[a, b, c]| a.dot(b.cross(*c)) / 6.0).sum();
-            assert!(v > 0.0, "{v}");
-        }
-    }
-
-    #[test]
-    fn bars_span_their_segment() {
-        let Some((kind, m, t)) = bar(DVec3::ZERO, DVec3::new(0.0, 0.0, 2.0), 0.1) else { panic!("no bar") };
-        assert_eq!(kind, PrimitiveKind::Box);
-        assert_eq!(t, DVec3::new(0.0, 0.0, 1.0));
-        assert!((m.determinant().abs() - 2.0 * 0.2 * 0.2).abs() < 1e-12);
-        assert!(bar(DVec3::ONE, DVec3::ONE, 0.1).is_none());
+    fn loop_counters_follow_action_apply() {
+        let all = |r: &[u32]| loop_counters(r).collect::<Vec<_>>();
+        assert_eq!(all(&[2, 2]), [vec![1, 1], vec![2, 1], vec![1, 2], vec![2, 2]]);
+        assert_eq!(all(&[3]).len(), 3);
+        // A zero count makes one copy, and a zero last loop ends after the first.
+        assert_eq!(all(&[0]), [vec![1]]);
+        assert_eq!(all(&[4, 0]), [vec![1, 1]]);
+        // A zero first loop carries into the next one at every copy.
+        assert_eq!(all(&[0, 3]), [vec![1, 1], vec![1, 2], vec![1, 3]]);
     }
 }

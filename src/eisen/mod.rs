@@ -5,16 +5,18 @@
 //!
 //! EisenScript has its own builder instead of lowering into the MDG rule IR;
 //! `crate::lang::eisen` explains why. Limits: every rule state applied and
-//! every loop step counts an evaluation step (`max_steps`), the generation
-//! (or nesting) depth is checked against `max_depth`, pending states and
-//! drawn objects are accounted in `max_memory`, and every object counts as a
-//! primitive with its triangles. The script's own `maxdepth`/`maxobjects`
+//! every loop step counts an evaluation step (`max_steps`), pending states
+//! and drawn objects are accounted in `max_memory`, and every object counts
+//! as a primitive with its triangles. `max_depth` does not apply: the
+//! builder never recurses, and a generation count is not a stack depth. The script's own `maxdepth`/`maxobjects`
 //! end it quietly, as in Structure Synth; a budget limit fails (or truncates)
 //! with the typed error naming it.
 
 pub mod build;
+mod draw;
 pub mod js;
 pub mod movie;
+mod view;
 
 use crate::core::budget::Budget;
 use crate::core::timing::{Phase, StageClock};

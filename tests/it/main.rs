@@ -25,6 +25,7 @@ mod lsystem;
 mod modifiers;
 mod print;
 mod selectors;
+mod ssfidelity;
 mod strips;
 mod unigrafix;
 mod scaleout;

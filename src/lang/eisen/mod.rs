@@ -134,6 +134,12 @@ impl Default for Transform {
 }
 
 impl Transform {
+    /// True when applying it draws a colour from the pool (`color random`,
+    /// which Structure Synth stores as an absolute hue above 360).
+    pub fn draws_colour(&self) -> bool {
+        self.absolute && self.delta_h > 360.0
+    }
+
     /// Appends `t` after `self` (Structure Synth's `Transformation::append`).
     fn append(&mut self, t: &Transform) {
         self.matrix *= t.matrix;
@@ -178,7 +184,8 @@ pub enum ColourPool {
 /// A `set key value` command, checked at parse time and run when its action runs.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Setting {
-    /// `set maxdepth N`: generations (breadth-first) or the default rule depth (depth-first).
+    /// `set maxdepth N` (or `set md N`): generations (breadth-first), or the
+    /// depth of ambiguous rules' definitions (depth-first, see `crate::eisen::build`).
     MaxDepth(i64),
     /// `set maxobjects N`: stop after N objects (or N pending rules).
     MaxObjects(i64),

@@ -1,6 +1,6 @@
 //! The parser proper: tokens → [`Script`]. It reads `rule` definitions and
-//! their modifiers (`weight`, `maxdepth N > retirement`) and actions
-//! (`N * { … } … name`, `set …`), records every call's target by name, and
+//! their modifiers (`weight`, `maxdepth N > retirement`) and actions (any
+//! run of `{ … }` blocks and `N * { … }` loops, then a name; or `set …`), records every call's target by name, and
 //! resolves the names once the whole script is read, since a rule may be
 //! called before it is defined. Transformation lists are parsed in
 //! `transforms.rs` and `set` commands in `settings.rs`.
@@ -16,6 +16,14 @@ mod settings;
 mod transforms;
 
 use transforms::operator;
+
+/// Primitives the JavaScript ports add (eisenscript.js's `src/Primitive.js`,
+/// BrowserSynth's `scripts/eisenscript.js`): refused, with an error naming
+/// where they come from, unless the script defines a rule of that name.
+const PORT_PRIMITIVES: [&str; 23] = [
+    "tube", "squash", "torus", "penta", "hexa", "fpenta", "fhexa", "fbox", "ftpenta", "fthexa", "ftbox", "tetra", "octa", "icosa", "cone",
+    "frame", "crossframe", "straightrun", "cornerrun", "uprun", "csg", "ftsquare", "fsquare",
+];
 
 /// Parses the tokens of a preprocessed script; `params` are its GUI parameters.
 pub(super) fn parse_tokens(tokens: Vec<Token>, params: Vec<GuiParam>) -> Result<Script, ParseError> {
@@ -174,11 +182,14 @@ impl Parser {
         loop {
             let t = self.peek().cloned().ok_or_else(|| ParseError::single(self.end_span(), "unexpected end of script: expected a rule name"))?;
             if t.text == "{" {
+                // `{ t }` is one loop of count 1 (Action.cpp:91-95). Structure
+                // Synth wants a rule name right after it (EisenParser.cpp:270-274);
+                // eisenscript.js reads an action as any run of blocks and loops
+                // before the name (`{ y 5 } 6 * { rx 60 } orange`), which
+                // Structure Synth refuses, so accepting it changes no script of its.
                 let transform = self.transform_list()?;
                 loops.push(Loop { count: 1, transform });
-                // `{ t } name`: only a rule name may follow.
-                let n = self.next("a rule name after the transformation list")?;
-                return self.call(rule, loops, n, first.span);
+                continue;
             }
             if let Some((v, integer)) = number(&t.text) {
                 if !integer || v < 0.0 {
@@ -197,12 +208,23 @@ impl Parser {
                 continue;
             }
             if t.text == "}" || t.text == "*" || t.text == ">" || operator(&t.text.to_ascii_lowercase()).is_some() {
-                return Err(ParseError::single(
-                    t.span,
-                    format!("an action must start with a number, a rule name or `{{`, found `{}`", t.text),
-                ));
+                let message = if loops.is_empty() {
+                    format!("an action must start with a number, a rule name or `{{`, found `{}`", t.text)
+                } else {
+                    format!("expected a rule name (or another loop) after the transformation list, found `{}`", t.text)
+                };
+                return Err(ParseError::single(t.span, message));
             }
             self.pos += 1;
+            let mut t = t;
+            // eisenscript.js also writes `triangle [x,y,z;…]` with a space, which
+            // Structure Synth cannot resolve (RuleSet.cpp:151-180): joined.
+            if t.text.eq_ignore_ascii_case("triangle") && self.peek().is_some_and(|n| n.text.starts_with('[')) {
+                if let Some(corners) = self.tokens.get(self.pos).map(|n| n.text.clone()) {
+                    self.pos += 1;
+                    t.text.push_str(&corners);
+                }
+            }
             return self.call(rule, loops, t, first.span);
         }
     }
@@ -276,6 +298,11 @@ impl Parser {
         }
         match self.script.names.iter().position(|n| n == name) {
             Some(i) if !self.script.groups[i].is_empty() => Ok(Target::Rule(i as u32)),
+            _ if base == "triangle" => Err(ParseError::single(span, "`triangle` needs its corners: `triangle[x,y,z;x,y,z;x,y,z]`")),
+            _ if PORT_PRIMITIVES.contains(&base) => Err(ParseError::single(
+                span,
+                format!("`{base}` is a primitive of a JavaScript port (eisenscript.js or BrowserSynth), not of Structure Synth; define `rule {base} {{ … }}` to draw it from Structure Synth's primitives"),
+            )),
             _ => Err(ParseError::single(span, format!("no rule or primitive named `{name}`"))),
         }
     }

@@ -8,12 +8,16 @@
 //! turns `angle1` into `61` when `angle` is defined as 6; no shipped example
 //! relies on that) and repeats, so a define may use earlier ones, up to 100
 //! substitutions a line as in Structure Synth. After substitution every
-//! `random[a,b]` expression becomes a number drawn uniformly from [a, b]
-//! (from the request's seed, per line and occurrence, so it is reproducible).
+//! `random[a,b]` expression becomes a number drawn uniformly from [a, b] as
+//! Structure Synth draws it (Parser/Preprocessor.cpp:19-21, 134-140): one
+//! Mersenne Twister seeded with the request's seed for the whole script, a
+//! draw per distinct expression of a line in order (identical expressions on
+//! one line get the same number; `#define` lines draw too), written with six
+//! significant digits like `QString::number`.
 //! Define lines become empty lines, so line numbers of later diagnostics
 //! stay those of the source.
 
-use crate::core::rng::StreamKey;
+use crate::core::mtrand::MtRand;
 use crate::core::{ParseError, Span};
 
 /// Most substitutions in one line (Structure Synth's guard against recursive defines).
@@ -73,28 +77,44 @@ fn has_word(line: &str, name: &str) -> bool {
     })
 }
 
-/// Replaces each `random[a,b]` in `line` by a number drawn from [a, b].
-fn expand_random(line: &str, key: StreamKey, span_line: u32) -> Result<String, ParseError> {
-    let mut out = String::with_capacity(line.len());
-    let mut rest = line;
-    let mut k = 0u32;
-    while let Some(at) = rest.find("random[") {
-        let after = &rest[at + "random[".len()..];
+/// Replaces each `random[a,b]` in `line` by a number drawn from [a, b]
+/// (`rg.getDouble(d1, d2)`), every occurrence of the same text by the same
+/// number (`QString::replace`, Preprocessor.cpp:134-140).
+fn expand_random(line: &str, rng: &mut MtRand, span_line: u32) -> Result<String, ParseError> {
+    let mut l = line.to_string();
+    let mut from = 0;
+    while let Some(found) = l[from..].find("random[") {
+        let at = from + found;
+        let after = &l[at + "random[".len()..];
         let Some(close) = after.find(']') else { break };
-        let column = (line.len() - rest.len() + at) as u32 + 1;
-        let bad = || ParseError::single(Span::new(span_line, column), format!("`random[{}]` needs two numbers `a,b`", &after[..close]));
+        let bad = || ParseError::single(Span::new(span_line, at as u32 + 1), format!("`random[{}]` needs two numbers `a,b`", &after[..close]));
         let (a, b) = after[..close].split_once(',').ok_or_else(bad)?;
         let (a, b) = (a.trim().parse::<f64>().map_err(|_| bad())?, b.trim().parse::<f64>().map_err(|_| bad())?);
         if !(a.is_finite() && b.is_finite()) {
             return Err(bad());
         }
-        out.push_str(&rest[..at]);
-        out.push_str(&format!("{}", a + (b - a) * key.uniform(k)));
-        k += 1;
-        rest = &after[close + 1..];
+        let text = l[at..at + "random[".len() + close + 1].to_string();
+        let value = qt_number(rng.double() * (b - a) + a);
+        l = format!("{}{}", &l[..at], l[at..].replace(&text, &value));
+        from = at + value.len();
     }
-    out.push_str(rest);
-    Ok(out)
+    Ok(l)
+}
+
+/// `QString::number(v)`: `%g` with six significant digits, as Qt writes it
+/// (`1.5`, `0.333333`, `1.23457e+06`).
+fn qt_number(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return if v.is_finite() { "0".into() } else { format!("{v}") };
+    }
+    let sci = format!("{v:.5e}");
+    let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let trim = |t: &str| if t.contains('.') { t.trim_end_matches('0').trim_end_matches('.').to_string() } else { t.to_string() };
+    if !(-4..6).contains(&exp) {
+        return format!("{}e{}{:02}", trim(mantissa), if exp < 0 { '-' } else { '+' }, exp.abs());
+    }
+    trim(&format!("{:.*}", (5 - exp).max(0) as usize, v))
 }
 
 /// Splits `value (float:0-90)` into the value and the GUI range.
@@ -123,7 +143,8 @@ fn parse_range(range: &str) -> Option<(f64, f64)> {
 /// Runs the preprocessor. `overrides` gives request values for GUI parameters
 /// by name (already checked against their ranges by the caller).
 pub fn preprocess(text: &str, seed: u64, overrides: &dyn Fn(&str) -> Option<f64>) -> Result<Preprocessed, ParseError> {
-    let root = StreamKey::root(seed);
+    // Structure Synth's seeds are C ints: the request's seed is cut to 32 bits.
+    let mut rng = MtRand::new(seed as u32);
     let mut defines: Vec<(String, String)> = Vec::new();
     let mut params = Vec::new();
     let mut out = String::with_capacity(text.len());
@@ -131,6 +152,11 @@ pub fn preprocess(text: &str, seed: u64, overrides: &dyn Fn(&str) -> Option<f64>
         let lineno = u32::try_from(i + 1).unwrap_or(u32::MAX);
         let trimmed = line.trim_start();
         if let Some(rest) = trimmed.strip_prefix("#define") {
+            // Structure Synth expands `random[…]` on a define line too, after
+            // storing its value: the draws are spent, the numbers unused.
+            if line.contains("random[") {
+                expand_random(line, &mut rng, lineno)?;
+            }
             let span = Span::new(lineno, (line.len() - trimmed.len()) as u32 + 1);
             let rest = rest.trim();
             let (name, value) = rest.split_once(char::is_whitespace).unwrap_or((rest, ""));
@@ -174,7 +200,7 @@ pub fn preprocess(text: &str, seed: u64, overrides: &dyn Fn(&str) -> Option<f64>
             }
         }
         if l.contains("random[") {
-            l = expand_random(&l, root.child(lineno, 0), lineno)?;
+            l = expand_random(&l, &mut rng, lineno)?;
         }
         out.push_str(&l);
         out.push('\n');
@@ -209,6 +235,11 @@ mod tests {
         let nums: Vec<f64> = r(1).split_whitespace().filter_map(|w| w.parse().ok()).collect();
         assert!((2.0..=3.0).contains(&nums[0]) && (-1.0..=1.0).contains(&nums[1]), "{nums:?}");
         assert!(preprocess("random[a,1]\n", 0, &|_| None).is_err());
+        // Structure Synth's draws: seed 0's first MT19937 double is 0.548814 (2 357 136 044 / (2³² − 1)),
+        // and the same expression twice on a line is one number.
+        let p = preprocess("{ x random[0,1] y random[0,1] z random[0,2] } box\n", 0, &|_| None).unwrap();
+        assert_eq!(p.text.lines().next(), Some("{ x 0.548814 y 0.548814 z 1.18569 } box"));
+        assert_eq!([qt_number(1.5), qt_number(1.0 / 3.0), qt_number(1_234_567.0), qt_number(-0.000_012_345_67), qt_number(100_000.0)], ["1.5", "0.333333", "1.23457e+06", "-1.23457e-05", "100000"]);
         assert_eq!(parse_range("-10--2"), Some((-10.0, -2.0)));
     }
 }

@@ -26,12 +26,23 @@ impl Parser {
             number(v).map(|(n, _)| n).ok_or_else(|| ParseError::single(value.span, format!("`set {what}` expects a number, found `{v}`")))
         };
         let setting = match k.as_str() {
-            "maxdepth" => Setting::MaxDepth(int("maxdepth")?),
+            // Structure Synth's tokenizer rewrites `md` to `maxdepth` before
+            // the parser sees it (Tokenizer.cpp:162), so `set md 20` is `set maxdepth 20`.
+            "maxdepth" | "md" => Setting::MaxDepth(int("maxdepth")?),
+            "weight" | "w" => {
+                return Err(ParseError::single(
+                    key.span,
+                    format!("`{}` is a rule modifier (`rule name w 2 {{ … }}`), not a setting; Structure Synth refuses `set weight` too (EisenParser.cpp:313-315)", key.text),
+                ))
+            }
             "maxobjects" => Setting::MaxObjects(int("maxobjects")?),
             "minsize" => Setting::MinSize(float("minsize")?),
             "maxsize" => Setting::MaxSize(float("maxsize")?),
             "seed" if vl == "initial" => Setting::Seed(None),
             "seed" => Setting::Seed(Some(int("seed")?)),
+            "background" if vl == "random" => {
+                return Err(ParseError::single(value.span, "`set background random` is not a colour: Structure Synth (Builder.cpp:352-353) and eisenscript.js both refuse it"))
+            }
             "background" => Setting::Background(
                 colour::parse(v).ok_or_else(|| ParseError::single(value.span, format!("`set background`: `{v}` is not a colour")))?,
             ),
@@ -48,6 +59,11 @@ impl Parser {
             "rng" if vl == "old" || vl == "new" => Setting::Ignored,
             "translation" | "rotation" | "pivot" | "scale" | "perspective-angle" => Setting::Camera(camera_setting(&k, v, value.span)?),
             "opengl" | "template" => Setting::Ignored,
+            // eisenscript.js accepts `set color random` and does nothing with it.
+            "color" if vl == "random" => {
+                self.script.warnings.push(Diagnostic::warning(key.span, "`set color random` is an eisenscript.js setting that has no effect there either; it is ignored"));
+                Setting::Ignored
+            }
             _ if k.starts_with("raytracer::") => {
                 self.script.warnings.push(Diagnostic::warning(key.span, format!("`set {k}` configures Structure Synth's raytracer; it is ignored")));
                 Setting::Ignored

@@ -106,16 +106,35 @@ pub(super) fn tokenize(text: &str) -> Result<Vec<Token>, ParseError> {
 }
 
 /// A number token: integer, decimal or fraction `a/b`. Returns (value, is integer).
+///
+/// Structure Synth reads a token as a number when it starts with a sign or
+/// a digit (Tokenizer.cpp:110), and a fraction only of two non-zero
+/// integers (Tokenizer.cpp:113-130). The JavaScript ports also write
+/// numbers with a leading dot (`.5`, `-.25`) and decimal fractions
+/// (`1.5/2`); neither can mean anything else in Structure Synth (a token
+/// `.5` would be a rule name, which no script names a rule), so both are
+/// read as numbers too.
 pub(super) fn number(text: &str) -> Option<(f64, bool)> {
-    if !text.starts_with(|c: char| c == '+' || c == '-' || c.is_ascii_digit()) {
+    let unsigned = text.strip_prefix(['+', '-']).unwrap_or(text);
+    let leading_dot = unsigned.strip_prefix('.').is_some_and(|r| r.starts_with(|c: char| c.is_ascii_digit()));
+    if !(unsigned.starts_with(|c: char| c.is_ascii_digit()) || leading_dot) {
         return None;
     }
     if let Some((a, b)) = text.split_once('/') {
-        let (a, b) = (a.parse::<i64>().ok()?, b.parse::<i64>().ok()?);
-        return (b != 0).then(|| (a as f64 / b as f64, false));
+        let (a, b) = (decimal(a)?, decimal(b)?);
+        return (b != 0.0).then(|| a / b).filter(|v| v.is_finite()).map(|v| (v, false));
     }
     if let Ok(i) = text.parse::<i64>() {
         return Some((i as f64, true));
     }
-    text.parse::<f64>().ok().filter(|v| v.is_finite()).map(|v| (v, false))
+    decimal(text).map(|v| (v, false))
+}
+
+/// A finite decimal number (no `inf`, `nan` or exponent-only words).
+fn decimal(text: &str) -> Option<f64> {
+    let t = text.strip_prefix(['+', '-']).unwrap_or(text);
+    if !t.starts_with(|c: char| c.is_ascii_digit() || c == '.') {
+        return None;
+    }
+    text.parse::<f64>().ok().filter(|v| v.is_finite())
 }

@@ -51,9 +51,15 @@ impl Parser {
                 return Ok(t);
             }
             let lower = tok.text.to_ascii_lowercase();
-            // `m` is the matrix operator only inside a list: Structure Synth's
-            // tokenizer knows only `matrix`, so scripts name rules `m`.
-            let Some(op) = operator(&lower).or((lower == "m").then_some("matrix")) else {
+            // `m` (matrix) and `saturation` (sat) are the JavaScript ports'
+            // words, read only inside a list: Structure Synth's tokenizer knows
+            // neither (Tokenizer.cpp:21), so its scripts may name rules `m`.
+            let extension = match lower.as_str() {
+                "m" => Some("matrix"),
+                "saturation" => Some("sat"),
+                _ => None,
+            };
+            let Some(op) = operator(&lower).or(extension) else {
                 return Err(ParseError::single(
                     tok.span,
                     format!("unknown transformation `{}` (the list opened at {}:{} is not closed?)", tok.text, open.span.line, open.span.column),
@@ -64,18 +70,50 @@ impl Parser {
         }
     }
 
+    /// A number inside a transformation list. Besides Structure Synth's
+    /// number tokens, eisenscript.js's arithmetic is read (`x 2 * 3`,
+    /// `s 1 / 3`, `y - 2`): a `*`, `/` or lone sign inside a list is an error
+    /// in Structure Synth, so reading it changes none of its scripts.
+    fn list_num(&mut self, what: &str) -> Result<f64, ParseError> {
+        let sign = match self.peek().map(|t| t.text.as_str()) {
+            Some("-") => -1.0,
+            Some("+") => 1.0,
+            _ => 0.0,
+        };
+        if sign != 0.0 {
+            self.pos += 1;
+        }
+        let mut v = self.num(what)? * if sign == 0.0 { 1.0 } else { sign };
+        loop {
+            let op = match self.peek().map(|t| t.text.as_str()) {
+                Some(o @ ("*" | "/")) => o == "*",
+                _ => break,
+            };
+            if !self.tokens.get(self.pos + 1).is_some_and(|t| number(&t.text).is_some()) {
+                break;
+            }
+            let at = self.next("an operator")?.span;
+            let rhs = self.num(what)?;
+            v = if op { v * rhs } else { v / rhs };
+            if !v.is_finite() {
+                return Err(ParseError::single(at, format!("{what}: the arithmetic gives no finite number")));
+            }
+        }
+        Ok(v)
+    }
+
     fn transformation(&mut self, op: &str, tok: &Token) -> Result<Transform, ParseError> {
         let half = 0.5;
         let mut t = Transform::default();
         match op {
             "x" | "y" | "z" => {
-                let v = self.num(&format!("`{op}`"))?;
+                let v = self.list_num(&format!("`{op}`"))?;
                 let mut d = DVec3::ZERO;
                 d[(op.as_bytes()[0] - b'x') as usize] = v;
                 t.matrix = DMat4::from_translation(d);
             }
             "rx" | "ry" | "rz" => {
-                let a = self.num(&format!("`{op}`"))?.to_radians();
+                let a = self.list_num(&format!("`{op}`"))?.to_radians();
                 t.matrix = match op {
                     "rx" => about(DVec3::new(0.0, half, half), DMat4::from_rotation_x(a)),
                     "ry" => about(DVec3::new(half, 0.0, half), DMat4::from_rotation_y(a)),
@@ -83,10 +121,10 @@ impl Parser {
                 };
             }
             "s" => {
-                let a = self.num("`s`")?;
+                let a = self.list_num("`s`")?;
                 let s = if self.peek().is_some_and(|t| number(&t.text).is_some()) {
-                    let b = self.num("`s` (second factor)")?;
-                    let c = self.num("`s` (third factor)")?;
+                    let b = self.list_num("`s` (second factor)")?;
+                    let c = self.list_num("`s` (third factor)")?;
                     DVec3::new(a, b, c)
                 } else {
                     DVec3::splat(a)
@@ -96,7 +134,7 @@ impl Parser {
             "matrix" => {
                 let mut v = [0.0; 9];
                 for (k, slot) in v.iter_mut().enumerate() {
-                    *slot = self.num(&format!("`m` (entry {} of 9)", k + 1))?;
+                    *slot = self.list_num(&format!("`m` (entry {} of 9)", k + 1))?;
                 }
                 // Arguments are row-major; glam stores columns.
                 let m = glam::DMat3::from_cols_array(&v).transpose();
@@ -108,7 +146,7 @@ impl Parser {
                 t.matrix = about(DVec3::splat(half), DMat4::from_scale(s));
             }
             "reflect" => {
-                let n = DVec3::new(self.num("`reflect`")?, self.num("`reflect`")?, self.num("`reflect`")?);
+                let n = DVec3::new(self.list_num("`reflect`")?, self.list_num("`reflect`")?, self.list_num("`reflect`")?);
                 let n = n.normalize_or_zero();
                 if n == DVec3::ZERO {
                     return Err(ParseError::single(tok.span, "`reflect` needs a non-zero normal"));
@@ -116,10 +154,10 @@ impl Parser {
                 let m = glam::DMat3::IDENTITY - 2.0 * glam::DMat3::from_cols(n * n.x, n * n.y, n * n.z);
                 t.matrix = DMat4::from_mat3(m);
             }
-            "hue" => t.delta_h = self.num("`hue`")?,
-            "sat" => t.scale_s = self.num("`sat`")?,
-            "brightness" => t.scale_v = self.num("`brightness`")?,
-            "alpha" => t.scale_a = self.num("`alpha`")?,
+            "hue" => t.delta_h = self.list_num("`hue`")?,
+            "sat" => t.scale_s = self.list_num("`sat`")?,
+            "brightness" => t.scale_v = self.list_num("`brightness`")?,
+            "alpha" => t.scale_a = self.list_num("`alpha`")?,
             "color" => {
                 let c = self.next("a colour")?;
                 t.absolute = true;
@@ -134,7 +172,7 @@ impl Parser {
             "blend" => {
                 let c = self.next("a colour")?;
                 let rgb = colour::parse(&c.text).ok_or_else(|| ParseError::single(c.span, format!("`blend`: `{}` is not a colour", c.text)))?;
-                let strength = self.num("`blend` strength")?;
+                let strength = self.list_num("`blend` strength")?;
                 t.blend = (strength != 0.0).then_some((colour::rgb_to_hsv(rgb), strength));
             }
             _ => {
