@@ -48,6 +48,9 @@ struct ServeArgs {
     /// Log level: error, warn, info, debug or trace.
     #[arg(long, env = "RULEMESH_LOG", default_value = "info")]
     log: tracing_subscriber::filter::LevelFilter,
+    /// Log line format: text, or json (one object per line, with each request's stage timings as fields).
+    #[arg(long, env = "RULEMESH_LOG_FORMAT", value_enum, default_value = "text")]
+    log_format: rulemesh::service::telemetry::LogFormat,
     /// Settings file (TOML, or JSON if named *.json); flags and RULEMESH_* variables override it.
     #[arg(long = "config", env = "RULEMESH_CONFIG")]
     config_file: Option<PathBuf>,
@@ -370,7 +373,6 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
 }
 
 fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure> {
-    use std::io::IsTerminal;
     let config = match &args.config_file {
         Some(path) => {
             let file = rulemesh::service::config::ConfigFile::read(path).map_err(|e| Failure::new(EXIT_USAGE, format!("serve: {e}")))?;
@@ -383,12 +385,7 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
         println!("{json}");
         return Ok(());
     }
-    tracing_subscriber::fmt()
-        .with_max_level(args.log)
-        .with_target(false)
-        .with_ansi(std::io::stderr().is_terminal())
-        .with_writer(std::io::stderr)
-        .init();
+    rulemesh::service::telemetry::init(args.log, args.log_format).map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))?;
     // The blocking pool only runs renders, which the engine already limits to
     // `concurrency`; a few spare threads cover moka and file work.
     let runtime = tokio::runtime::Builder::new_multi_thread()

@@ -15,12 +15,15 @@ pub mod http;
 pub mod library;
 pub mod metrics;
 pub mod request;
+pub mod telemetry;
+pub mod timing;
 
 pub use config::{ConfigError, ConfigFile, ServeConfig};
 pub use engine::{Engine, Served};
 pub use error::ServiceError;
 pub use metrics::Metrics;
 pub use request::{RenderBody, RenderPlan};
+pub use timing::RequestTiming;
 
 use crate::core::Limits;
 use std::future::Future;

@@ -30,3 +30,4 @@ mod unigrafix;
 mod scaleout;
 mod service;
 mod harden;
+mod observe;
