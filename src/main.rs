@@ -51,6 +51,10 @@ struct ServeArgs {
     /// Log line format: text, or json (one object per line, with each request's stage timings as fields).
     #[arg(long, env = "RULEMESH_LOG_FORMAT", value_enum, default_value = "text")]
     log_format: rulemesh::service::telemetry::LogFormat,
+    /// Export OpenTelemetry spans (one per request, one per pipeline stage) over OTLP/gRPC to this
+    /// collector, e.g. http://127.0.0.1:4317; off when absent.
+    #[arg(long, env = "RULEMESH_OTLP_ENDPOINT")]
+    otlp_endpoint: Option<String>,
     /// Settings file (TOML, or JSON if named *.json); flags and RULEMESH_* variables override it.
     #[arg(long = "config", env = "RULEMESH_CONFIG")]
     config_file: Option<PathBuf>,
@@ -385,7 +389,6 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
         println!("{json}");
         return Ok(());
     }
-    rulemesh::service::telemetry::init(args.log, args.log_format).map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))?;
     // The blocking pool only runs renders, which the engine already limits to
     // `concurrency`; a few spare threads cover moka and file work.
     let runtime = tokio::runtime::Builder::new_multi_thread()
@@ -393,7 +396,13 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
         .max_blocking_threads(config.concurrency() + 4)
         .build()
         .map_err(|e| Failure::new(EXIT_FAILURE, format!("cannot start the runtime: {e}")))?;
-    runtime
-        .block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()))
-        .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
+    let telemetry = {
+        // The OTLP exporter's connection is made on this runtime.
+        let _entered = runtime.enter();
+        rulemesh::service::telemetry::init(args.log, args.log_format, args.otlp_endpoint.as_deref(), config.worker_id.as_deref())
+            .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))?
+    };
+    let served = runtime.block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()));
+    telemetry.shutdown();
+    served.map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
 }

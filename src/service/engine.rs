@@ -11,7 +11,7 @@ use crate::lang::Language;
 use crate::RenderRequest;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime};
 use tokio::sync::Semaphore;
 
 /// A model, whether it came from the cache, and where the request's time went.
@@ -149,8 +149,9 @@ impl Engine {
         metrics.in_flight(-1);
         metrics.render_done(started.elapsed());
         let result = match watched {
-            Ok(joined) => joined.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?.map(|(r, phases)| {
+            Ok(joined) => joined.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?.map(|(r, phases, began)| {
                 metrics.stages(r.language, format, &phases);
+                super::telemetry::stage_spans(began, &phases, r.language.name(), super::metrics::format_label(format));
                 if let Ok(mut slot) = ran.lock() {
                     *slot = Some(RanRender { queue, phases });
                 }
@@ -190,11 +191,13 @@ pub fn watchdog_after(timeout_ms: u64) -> Duration {
     deadline.saturating_add((deadline / 10).clamp(Duration::from_millis(10), Duration::from_secs(1)))
 }
 
-/// The pipeline itself, exactly as the CLI runs it, and its stage times.
-fn render_blocking(source: &[u8], request: &RenderRequest) -> Result<(Rendered, PhaseTimes), ServiceError> {
+/// The pipeline itself, exactly as the CLI runs it, its stage times and
+/// when it began (for the stages' trace spans).
+fn render_blocking(source: &[u8], request: &RenderRequest) -> Result<(Rendered, PhaseTimes, SystemTime), ServiceError> {
+    let began = SystemTime::now();
     let out = crate::render(source, request)?;
     let phases = out.phases;
     // A print report is JSON whatever the format asked for.
     let content_type = if request.export_options.print.report { "application/json" } else { request.format.content_type() };
-    Ok((Rendered::from_output(out, content_type), phases))
+    Ok((Rendered::from_output(out, content_type), phases, began))
 }

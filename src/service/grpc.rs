@@ -110,17 +110,20 @@ impl GrpcService {
                 return Err(e.to_status());
             }
         };
-        let req = request.into_inner();
-        let no_cache = req.no_cache;
         let id = super::http::next_request_id();
         let span = tracing::info_span!(
             "grpc",
             id,
             method,
+            otel.name = method,
+            otel.kind = "server",
             language = tracing::field::Empty,
             key = tracing::field::Empty,
             cache = tracing::field::Empty
         );
+        super::telemetry::adopt_parent(&span, |name| request.metadata().get(name).and_then(|v| v.to_str().ok()));
+        let req = request.into_inner();
+        let no_cache = req.no_cache;
         let ceiling = admission.ceiling;
         let result = async {
             let plan = RenderBody::from(req).plan(&ceiling, no_cache)?;

@@ -211,10 +211,13 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
         id,
         method = %req.method(),
         route = %route,
+        otel.name = %format!("{} {route}", req.method()),
+        otel.kind = "server",
         language = tracing::field::Empty,
         key = tracing::field::Empty,
         cache = tracing::field::Empty
     );
+    super::telemetry::adopt_parent(&span, |name| req.headers().get(name).and_then(|v| v.to_str().ok()));
     let started = Instant::now();
     let mut resp = next.run(req).instrument(span.clone()).await;
     let status = resp.status().as_u16();

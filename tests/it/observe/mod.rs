@@ -8,6 +8,7 @@
 mod deploy;
 mod metrics;
 mod timing;
+mod traces;
 
 use rulemesh::service::{self, Running, ServeConfig};
 use serde_json::Value;
