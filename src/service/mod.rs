@@ -192,7 +192,9 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
             .add_service(reflection)
             .add_service(reflection_alpha)
             .add_service(grpc_service)
-            .serve_with_incoming_shutdown(tonic::transport::server::TcpIncoming::from(grpc_listener), grpc_stop)
+            // TCP_NODELAY: without it a reply's header, message and trailer frames wait on
+            // Nagle's algorithm and the client's delayed ACK, about 40 ms per call on loopback.
+            .serve_with_incoming_shutdown(tonic::transport::server::TcpIncoming::from(grpc_listener).with_nodelay(Some(true)), grpc_stop)
             .await
             .map_err(ServeError::Grpc)
     });

@@ -30,8 +30,11 @@ use std::borrow::Cow;
 use std::sync::{Arc, OnceLock};
 use std::time::Duration;
 
-/// Upper bounds (seconds) of the request, render, stage and queue-wait histogram buckets.
-pub const BUCKETS: [f64; 15] = [0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0, 30.0];
+/// Upper bounds (seconds) of the request, render, stage and queue-wait
+/// histogram buckets: from 10 µs (a cached answer, or a stage of a small
+/// grammar) to 30 s (a render at the ceiling's deadline).
+pub const BUCKETS: [f64; 20] =
+    [0.00001, 0.000025, 0.00005, 0.0001, 0.00025, 0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0, 30.0];
 
 /// Upper bounds (seconds) of the cache lookup histogram buckets: memory
 /// answers in microseconds, disk and Redis in fractions of a millisecond.
