@@ -298,18 +298,17 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
         None => String::new(),
     };
     let ms = |d: std::time::Duration| d.as_secs_f64() * 1000.0;
+    // The stages that ran (a scene has no mesh stage; print=true adds print).
+    let stages: Vec<String> = out.phases.ran().map(|(p, d)| format!("{} {:.1}", p.name(), ms(d))).collect();
     eprintln!(
-        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms (parse {:.1}, eval {:.1}, mesh {:.1}, export {:.1}){}",
+        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms ({}){}",
         args.file,
         out.primitives,
         out.triangles,
         out.bytes.len(),
         format,
         ms(out.elapsed),
-        ms(out.phases.parse),
-        ms(out.phases.eval),
-        ms(out.phases.mesh),
-        ms(out.phases.export),
+        stages.join(", "),
         truncated
     );
     Ok(())
