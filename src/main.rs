@@ -48,6 +48,13 @@ struct ServeArgs {
     /// Log level: error, warn, info, debug or trace.
     #[arg(long, env = "RULEMESH_LOG", default_value = "info")]
     log: tracing_subscriber::filter::LevelFilter,
+    /// Log line format: text, or json (one object per line, with each request's stage timings as fields).
+    #[arg(long, env = "RULEMESH_LOG_FORMAT", value_enum, default_value = "text")]
+    log_format: rulemesh::service::telemetry::LogFormat,
+    /// Export OpenTelemetry spans (one per request, one per pipeline stage) over OTLP/gRPC to this
+    /// collector, e.g. http://127.0.0.1:4317; off when absent.
+    #[arg(long, env = "RULEMESH_OTLP_ENDPOINT")]
+    otlp_endpoint: Option<String>,
     /// Settings file (TOML, or JSON if named *.json); flags and RULEMESH_* variables override it.
     #[arg(long = "config", env = "RULEMESH_CONFIG")]
     config_file: Option<PathBuf>,
@@ -291,18 +298,17 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
         None => String::new(),
     };
     let ms = |d: std::time::Duration| d.as_secs_f64() * 1000.0;
+    // The stages that ran (a scene has no mesh stage; print=true adds print).
+    let stages: Vec<String> = out.phases.ran().map(|(p, d)| format!("{} {:.1}", p.name(), ms(d))).collect();
     eprintln!(
-        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms (parse {:.1}, eval {:.1}, mesh {:.1}, export {:.1}){}",
+        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms ({}){}",
         args.file,
         out.primitives,
         out.triangles,
         out.bytes.len(),
         format,
         ms(out.elapsed),
-        ms(out.phases.parse),
-        ms(out.phases.eval),
-        ms(out.phases.mesh),
-        ms(out.phases.export),
+        stages.join(", "),
         truncated
     );
     Ok(())
@@ -370,7 +376,6 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
 }
 
 fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure> {
-    use std::io::IsTerminal;
     let config = match &args.config_file {
         Some(path) => {
             let file = rulemesh::service::config::ConfigFile::read(path).map_err(|e| Failure::new(EXIT_USAGE, format!("serve: {e}")))?;
@@ -383,12 +388,6 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
         println!("{json}");
         return Ok(());
     }
-    tracing_subscriber::fmt()
-        .with_max_level(args.log)
-        .with_target(false)
-        .with_ansi(std::io::stderr().is_terminal())
-        .with_writer(std::io::stderr)
-        .init();
     // The blocking pool only runs renders, which the engine already limits to
     // `concurrency`; a few spare threads cover moka and file work.
     let runtime = tokio::runtime::Builder::new_multi_thread()
@@ -396,7 +395,13 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
         .max_blocking_threads(config.concurrency() + 4)
         .build()
         .map_err(|e| Failure::new(EXIT_FAILURE, format!("cannot start the runtime: {e}")))?;
-    runtime
-        .block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()))
-        .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
+    let telemetry = {
+        // The OTLP exporter's connection is made on this runtime.
+        let _entered = runtime.enter();
+        rulemesh::service::telemetry::init(args.log, args.log_format, args.otlp_endpoint.as_deref(), config.worker_id.as_deref())
+            .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))?
+    };
+    let served = runtime.block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()));
+    telemetry.shutdown();
+    served.map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))
 }

@@ -352,10 +352,12 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
     let (meshes, graph, cut) = if print.enabled {
         // Printing unites closed parts, so it needs them apart (and shows time 0).
         let parts = mesh::build_parts(scene, req.detail, budget)?;
+        clock.lap(Phase::Mesh);
         let (solid, report) = crate::print::make_printable(&parts, &print, budget)?;
+        clock.lap(Phase::Print);
         if print.report {
             let bytes = serde_json::to_vec_pretty(&report).map_err(|e| RenderError::Export(e.into()))?;
-            clock.lap(Phase::Mesh);
+            clock.lap(Phase::Export);
             return Ok(summary(bytes, &model, report.triangles, scene.truncated));
         }
         (solid, None, None)
@@ -366,7 +368,9 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
         let (meshes, cut) = mesh::build_meshes_until(scene, req.detail, req.layout, req.on_limit, budget)?;
         (meshes, None, cut)
     };
-    clock.lap(Phase::Mesh);
+    if !print.enabled {
+        clock.lap(Phase::Mesh);
+    }
     let truncated = scene.truncated.or(cut);
     budget.set_stage_share(None);
     let in_graph = graph.is_some();

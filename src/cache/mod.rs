@@ -5,10 +5,12 @@
 
 pub mod disk;
 pub mod key;
+pub mod observe;
 pub mod redis;
 pub mod store;
 
 pub use disk::{DiskError, DiskTier};
 pub use key::{normalize_source, CacheKey};
+pub use observe::{CacheObserver, Lookup, Tier};
 pub use self::redis::{RedisError, RedisSettings, RedisTier};
 pub use store::{CacheOutcome, ModelCache, Rendered};

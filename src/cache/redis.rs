@@ -88,6 +88,7 @@ pub struct RedisTier {
     writes: AtomicU64,
     skipped: AtomicU64,
     errors: AtomicU64,
+    timeouts: AtomicU64,
     lock_waits: AtomicU64,
     corrupt: AtomicU64,
 }
@@ -136,6 +137,7 @@ impl RedisTier {
             writes: AtomicU64::new(0),
             skipped: AtomicU64::new(0),
             errors: AtomicU64::new(0),
+            timeouts: AtomicU64::new(0),
             lock_waits: AtomicU64::new(0),
             corrupt: AtomicU64::new(0),
         })
@@ -171,6 +173,11 @@ impl RedisTier {
         self.errors.load(Ordering::Relaxed)
     }
 
+    /// Of the [`errors`](RedisTier::errors), those that were timeouts (Redis slow, not refusing).
+    pub fn timeouts(&self) -> u64 {
+        self.timeouts.load(Ordering::Relaxed)
+    }
+
     /// Values that were present but did not verify (counted as misses too; never served).
     pub fn corrupt(&self) -> u64 {
         self.corrupt.load(Ordering::Relaxed)
@@ -190,9 +197,13 @@ impl RedisTier {
         u64::try_from(self.epoch.elapsed().as_millis()).unwrap_or(u64::MAX)
     }
 
-    /// Records a failure: count it, skip Redis for a while, log once on the way down.
-    fn failed(&self, what: &str, error: &str) {
+    /// Records a failure: count it (and, if it is one, the timeout), skip
+    /// Redis for a while, log once on the way down.
+    fn failed(&self, what: &str, error: &str, timed_out: bool) {
         self.errors.fetch_add(1, Ordering::Relaxed);
+        if timed_out {
+            self.timeouts.fetch_add(1, Ordering::Relaxed);
+        }
         let retry = u64::try_from(RETRY_AFTER.as_millis()).unwrap_or(1000);
         self.skip_until_ms.store(self.now_ms().saturating_add(retry), Ordering::Relaxed);
         if !self.degraded.swap(true, Ordering::Relaxed) {
@@ -233,11 +244,11 @@ impl RedisTier {
                 Some(c)
             }
             Ok(Err(e)) => {
-                self.failed("connect", &e.to_string());
+                self.failed("connect", &e.to_string(), e.is_timeout());
                 None
             }
             Err(_) => {
-                self.failed("connect", "timed out");
+                self.failed("connect", "timed out", true);
                 None
             }
         }
@@ -252,11 +263,11 @@ impl RedisTier {
                 Some(v)
             }
             Ok(Err(e)) => {
-                self.failed(what, &e.to_string());
+                self.failed(what, &e.to_string(), e.is_timeout());
                 None
             }
             Err(_) => {
-                self.failed(what, "timed out");
+                self.failed(what, "timed out", true);
                 None
             }
         }
@@ -378,6 +389,17 @@ impl RedisTier {
         if let Some(r) = self.read(key).await {
             return Ok((r, true));
         }
+        self.render_locked(key, render).await
+    }
+
+    /// After a lookup of `key` missed: the model from `render`, under the
+    /// lock when enabled (or from Redis, if the worker holding the lock
+    /// stores it meanwhile: the flag is then true); a complete render is
+    /// written back.
+    pub async fn render_locked<E, Fut>(self: &Arc<Self>, key: CacheKey, render: impl FnOnce() -> Fut) -> Result<(Rendered, bool), E>
+    where
+        Fut: std::future::Future<Output = Result<Rendered, E>>,
+    {
         let token = match self.claim(&key).await {
             Claim::Found(r) => return Ok((r, true)),
             Claim::Held(t) => Some(t),

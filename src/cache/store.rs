@@ -4,6 +4,7 @@
 //! caller but never stored.
 
 use super::disk::DiskTier;
+use super::observe::{CacheObserver, Lookup, Tier};
 use super::redis::RedisTier;
 use super::CacheKey;
 use crate::core::LimitExceeded;
@@ -12,6 +13,7 @@ use moka::future::Cache;
 use std::future::Future;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 /// A finished model as the service hands it out.
 #[derive(Debug, Clone, PartialEq)]
@@ -78,6 +80,7 @@ pub struct ModelCache {
     evictions: Arc<AtomicU64>,
     disk: Option<Arc<DiskTier>>,
     redis: Option<Arc<RedisTier>>,
+    observer: Option<Arc<dyn CacheObserver>>,
 }
 
 /// Bytes charged per entry besides the model itself (key, metadata, moka's bookkeeping).
@@ -99,7 +102,7 @@ impl ModelCache {
                 }
             })
             .build();
-        ModelCache { inner, evictions, disk: None, redis: None }
+        ModelCache { inner, evictions, disk: None, redis: None, observer: None }
     }
 
     /// The same store, reading from and writing complete models to `disk`
@@ -126,6 +129,21 @@ impl ModelCache {
         self.disk.as_deref()
     }
 
+    /// Reports every tier lookup to `observer` (the service's metrics).
+    pub fn with_observer(mut self, observer: Arc<dyn CacheObserver>) -> ModelCache {
+        self.observer = Some(observer);
+        self
+    }
+
+    /// Tells the observer about one lookup and adds its time to `spent` (nanoseconds).
+    fn observed(&self, tier: Tier, hit: bool, started: Instant, spent: &AtomicU64) {
+        let took = started.elapsed();
+        spent.fetch_add(u64::try_from(took.as_nanos()).unwrap_or(u64::MAX), Ordering::Relaxed);
+        if let Some(o) = &self.observer {
+            o.lookup(tier, hit, took);
+        }
+    }
+
     /// Returns the model for `key`, calling `render` on a miss. Concurrent
     /// misses on one key share a single call. With `fresh`, the store is not
     /// read (but a complete result still refreshes it). On an in-process
@@ -133,12 +151,15 @@ impl ModelCache {
     /// render is written to it; then Redis (if any) is read the same way,
     /// under its distributed lock when enabled. A model read from disk or
     /// Redis counts as a hit; a model read from Redis is also written to disk.
-    pub async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, CacheOutcome), E>
+    /// The [`Lookup`] says which tier answered and how long the reads took.
+    pub async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, Lookup), E>
     where
         E: Clone + Send + Sync + 'static,
         F: FnOnce() -> Fut,
         Fut: Future<Output = Result<Rendered, E>>,
     {
+        let spent = AtomicU64::new(0);
+        let lookup = |outcome, tier, spent: &AtomicU64| Lookup { outcome, tier, took: Duration::from_nanos(spent.load(Ordering::Relaxed)) };
         if fresh {
             let r = Arc::new(render().await?);
             if r.cacheable() {
@@ -150,23 +171,49 @@ impl ModelCache {
                     t.write(key, &r).await;
                 }
             }
-            return Ok((r, CacheOutcome::Miss));
+            return Ok((r, lookup(CacheOutcome::Miss, None, &spent)));
         }
-        let from_tier = std::sync::atomic::AtomicBool::new(false);
+        let started = Instant::now();
+        let found = self.inner.get(&key).await;
+        self.observed(Tier::Memory, found.is_some(), started, &spent);
+        if let Some(r) = found {
+            return Ok((r, lookup(CacheOutcome::Hit, Some(Tier::Memory), &spent)));
+        }
+        // The tier a fill by this call found its model in (none: rendered).
+        let from_tier: std::sync::Mutex<Option<Tier>> = std::sync::Mutex::new(None);
+        let note = |tier| {
+            if let Ok(mut t) = from_tier.lock() {
+                *t = Some(tier);
+            }
+        };
         let init = async {
             if let Some(d) = &self.disk {
-                if let Some(r) = d.read(key).await {
-                    from_tier.store(true, Ordering::Relaxed);
+                let started = Instant::now();
+                let found = d.read(key).await;
+                self.observed(Tier::Disk, found.is_some(), started, &spent);
+                if let Some(r) = found {
+                    note(Tier::Disk);
                     return Ok(Arc::new(r));
                 }
             }
             let rendered = match &self.redis {
-                Some(t) => t.read_or_render(key, render).await.map(|(r, shared)| {
-                    if shared {
-                        from_tier.store(true, Ordering::Relaxed);
+                Some(t) => {
+                    let started = Instant::now();
+                    let found = t.read(key).await;
+                    self.observed(Tier::Redis, found.is_some(), started, &spent);
+                    match found {
+                        Some(r) => {
+                            note(Tier::Redis);
+                            Ok(r)
+                        }
+                        None => t.render_locked(key, render).await.map(|(r, shared)| {
+                            if shared {
+                                note(Tier::Redis);
+                            }
+                            r
+                        }),
                     }
-                    r
-                }),
+                }
                 None => render().await,
             };
             match rendered {
@@ -183,14 +230,16 @@ impl ModelCache {
         };
         match self.inner.entry(key).or_try_insert_with(init).await {
             Ok(entry) => {
-                let rendered = entry.is_fresh() && !from_tier.load(Ordering::Relaxed);
-                let outcome = if rendered { CacheOutcome::Miss } else { CacheOutcome::Hit };
-                Ok((entry.into_value(), outcome))
+                let tier = from_tier.lock().ok().and_then(|t| *t);
+                // Not fresh: another call's fill answered this one, from memory.
+                let tier = if entry.is_fresh() { tier } else { Some(Tier::Memory) };
+                let outcome = if tier.is_some() { CacheOutcome::Hit } else { CacheOutcome::Miss };
+                Ok((entry.into_value(), lookup(outcome, tier, &spent)))
             }
             Err(fill) => match &*fill {
                 // Every waiter on an uncacheable fill gets the same model; the
                 // caller that rendered it cannot be told apart here, so all say miss.
-                Fill::Uncacheable(r) => Ok((r.clone(), CacheOutcome::Miss)),
+                Fill::Uncacheable(r) => Ok((r.clone(), lookup(CacheOutcome::Miss, None, &spent))),
                 Fill::Failed(e) => Err(e.clone()),
             },
         }

@@ -2,23 +2,27 @@
 //! then the pipeline on the blocking pool behind a concurrency limit with a
 //! bounded wait queue.
 
+use super::timing::{RanRender, RequestTiming};
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
 use crate::cache::{CacheOutcome, DiskTier, ModelCache, RedisTier, Rendered};
+use crate::core::timing::PhaseTimes;
 use crate::core::{Limit, LimitExceeded};
 use crate::lang::Language;
 use crate::RenderRequest;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant, SystemTime};
 use tokio::sync::Semaphore;
 
-/// A model and whether it came from the cache.
+/// A model, whether it came from the cache, and where the request's time went.
 #[derive(Debug, Clone)]
 pub struct Served {
     /// The model.
     pub model: Arc<Rendered>,
     /// Hit or miss.
     pub cache: CacheOutcome,
+    /// The lookup, and the render if this request ran it (`Server-Timing`).
+    pub timing: RequestTiming,
 }
 
 /// Renders through the cache under the concurrency limit.
@@ -57,6 +61,10 @@ impl Engine {
             tracing::info!(redis = %settings.redacted(), lock = ?settings.lock, "shared Redis cache tier");
             cache = cache.with_redis(RedisTier::new(settings)?);
         }
+        // The metrics read the cache's figures through a handle without the
+        // observer, so that neither keeps the other alive.
+        metrics.attach_cache(cache.clone());
+        let cache = cache.with_observer(metrics.clone());
         Ok(Engine {
             cache,
             slots: Arc::new(Semaphore::new(slot_count)),
@@ -88,14 +96,20 @@ impl Engine {
             self.metrics.access_rejected("javascript_disabled");
             return Err(ServiceError::JavaScriptDisabled);
         }
-        let (model, cache) = self.cache.get_or_render(key, fresh, || self.run(plan)).await?;
+        // Filled by `run` only when this call is the one that renders.
+        let ran: Mutex<Option<RanRender>> = Mutex::new(None);
+        let (model, lookup) = self.cache.get_or_render(key, fresh, || self.run(plan, &ran)).await?;
+        let cache = lookup.outcome;
         self.metrics.cache(cache == CacheOutcome::Hit);
         span.record("cache", tracing::field::display(if cache == CacheOutcome::Hit { "hit" } else { "miss" }));
-        Ok(Served { model, cache })
+        let ran = ran.lock().ok().and_then(|r| *r);
+        Ok(Served { model, cache, timing: RequestTiming { lookup, ran } })
     }
 
-    /// Waits for a slot (or sheds), then runs the pipeline on the blocking pool.
-    async fn run(&self, plan: RenderPlan) -> Result<Rendered, ServiceError> {
+    /// Waits for a slot (or sheds), then runs the pipeline on the blocking
+    /// pool; records the wait and the stages in `ran` and the metrics.
+    async fn run(&self, plan: RenderPlan, ran: &Mutex<Option<RanRender>>) -> Result<Rendered, ServiceError> {
+        let queued_at = Instant::now();
         let permit = match self.slots.clone().try_acquire_owned() {
             Ok(p) => p,
             Err(_) => {
@@ -118,11 +132,14 @@ impl Engine {
                 }
             }
         };
+        let queue = queued_at.elapsed();
         let metrics = self.metrics.clone();
+        metrics.queue_wait(queue);
         metrics.in_flight(1);
         let started = Instant::now();
         let RenderPlan { source, request, .. } = plan;
         let timeout_ms = request.limits.timeout_ms;
+        let format = request.format;
         let task = tokio::task::spawn_blocking(move || {
             let result = render_blocking(&source, &request);
             drop(permit);
@@ -132,7 +149,14 @@ impl Engine {
         metrics.in_flight(-1);
         metrics.render_done(started.elapsed());
         let result = match watched {
-            Ok(joined) => joined.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?,
+            Ok(joined) => joined.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?.map(|(r, phases, began)| {
+                metrics.stages(r.language, format, &phases);
+                super::telemetry::stage_spans(began, &phases, r.language.name(), super::metrics::format_label(format));
+                if let Ok(mut slot) = ran.lock() {
+                    *slot = Some(RanRender { queue, phases });
+                }
+                r
+            }),
             Err(_) => {
                 // The pipeline ran past its deadline without noticing. The
                 // request ends now with the typed deadline error; the
@@ -167,10 +191,13 @@ pub fn watchdog_after(timeout_ms: u64) -> Duration {
     deadline.saturating_add((deadline / 10).clamp(Duration::from_millis(10), Duration::from_secs(1)))
 }
 
-/// The pipeline itself, exactly as the CLI runs it.
-fn render_blocking(source: &[u8], request: &RenderRequest) -> Result<Rendered, ServiceError> {
+/// The pipeline itself, exactly as the CLI runs it, its stage times and
+/// when it began (for the stages' trace spans).
+fn render_blocking(source: &[u8], request: &RenderRequest) -> Result<(Rendered, PhaseTimes, SystemTime), ServiceError> {
+    let began = SystemTime::now();
     let out = crate::render(source, request)?;
+    let phases = out.phases;
     // A print report is JSON whatever the format asked for.
     let content_type = if request.export_options.print.report { "application/json" } else { request.format.content_type() };
-    Ok(Rendered::from_output(out, content_type))
+    Ok((Rendered::from_output(out, content_type), phases, began))
 }

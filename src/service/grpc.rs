@@ -1,6 +1,7 @@
 //! The gRPC API (tonic): the same requests, models and errors as HTTP.
 
 use super::request::{CheckBody, LimitsBody, RenderBody};
+use super::timing::log_request;
 use super::{library, AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::core::ParamValue;
@@ -85,52 +86,73 @@ fn meta(served: &Served) -> pb::RenderMeta {
     }
 }
 
+/// `response` with the request's timing as `server-timing` metadata (the
+/// HTTP `Server-Timing` header's value, in the response headers).
+fn with_timing<T>(mut response: Response<T>, served: &Served) -> Response<T> {
+    if let Ok(v) = tonic::metadata::MetadataValue::try_from(served.timing.header_value()) {
+        response.metadata_mut().insert("server-timing", v);
+    }
+    response
+}
+
 /// Admits a gRPC call by its metadata (`authorization: Bearer KEY` or `x-api-key: KEY`).
 fn admit(state: &AppState, metadata: &tonic::metadata::MetadataMap) -> Result<super::access::Admission, ServiceError> {
     state.admit(super::access::presented_key(|name| metadata.get(name).and_then(|v| v.to_str().ok())))
 }
 
 impl GrpcService {
-    async fn serve(&self, method: &str, request: Request<pb::RenderRequest>) -> Result<Served, Status> {
+    async fn serve(&self, method: &'static str, request: Request<pb::RenderRequest>) -> Result<Served, Status> {
+        let started = Instant::now();
         let admission = match admit(&self.state, request.metadata()) {
             Ok(a) => a,
             Err(e) => {
-                self.count(method, &Err::<(), _>(e.clone()));
+                self.count(method, &Err::<(), _>(e.clone()), started);
                 return Err(e.to_status());
             }
         };
-        let req = request.into_inner();
-        let no_cache = req.no_cache;
         let id = super::http::next_request_id();
         let span = tracing::info_span!(
             "grpc",
             id,
             method,
+            otel.name = method,
+            otel.kind = "server",
             language = tracing::field::Empty,
             key = tracing::field::Empty,
             cache = tracing::field::Empty
         );
-        let started = Instant::now();
+        super::telemetry::adopt_parent(&span, |name| request.metadata().get(name).and_then(|v| v.to_str().ok()));
+        let req = request.into_inner();
+        let no_cache = req.no_cache;
         let ceiling = admission.ceiling;
-        let result = async { RenderBody::from(req).plan(&ceiling, no_cache)?.pipe_serve(&self.state).await }.instrument(span.clone()).await;
+        let result = async {
+            let plan = RenderBody::from(req).plan(&ceiling, no_cache)?;
+            let format = plan.request.format;
+            plan.pipe_serve(&self.state).await.map(|s| (s, format))
+        }
+        .instrument(span.clone())
+        .await;
         drop(admission);
-        self.count(method, &result);
+        self.count(method, &result, started);
         span.in_scope(|| {
-            let code = match &result {
-                Ok(_) => "ok",
-                Err(e) => e.code(),
+            let (code, etag, timing) = match &result {
+                Ok((s, _)) => ("ok", Some(s.model.etag.as_str()), Some(&s.timing)),
+                Err(e) => (e.code(), None, None),
             };
-            tracing::info!(code, ms = started.elapsed().as_secs_f64() * 1000.0, "request")
+            log_request(None, Some(code), etag, started.elapsed(), timing);
         });
-        result.map_err(|e| e.to_status())
+        let (served, format) = result.map_err(|e| e.to_status())?;
+        self.state.metrics.bytes_out("grpc", format, served.model.bytes.len());
+        Ok(served)
     }
 
-    fn count<T>(&self, method: &str, result: &Result<T, ServiceError>) {
+    /// Counts a finished call, by method and status code, with its latency since `started`.
+    fn count<T>(&self, method: &str, result: &Result<T, ServiceError>, started: Instant) {
         let code = match result {
             Ok(_) => tonic::Code::Ok,
             Err(e) => e.grpc_code(),
         };
-        self.state.metrics.request("grpc", method, code as u16);
+        self.state.metrics.request("grpc", method, code as u16, started.elapsed());
     }
 }
 
@@ -146,7 +168,7 @@ type ChunkStream = Pin<Box<dyn tokio_stream::Stream<Item = Result<pb::RenderChun
 impl Rulemesh for GrpcService {
     async fn render(&self, request: Request<pb::RenderRequest>) -> Result<Response<pb::RenderReply>, Status> {
         let served = self.serve("Render", request).await?;
-        Ok(Response::new(pb::RenderReply { meta: Some(meta(&served)), model: served.model.bytes.to_vec() }))
+        Ok(with_timing(Response::new(pb::RenderReply { meta: Some(meta(&served)), model: served.model.bytes.to_vec() }), &served))
     }
 
     type RenderStreamStream = ChunkStream;
@@ -155,21 +177,23 @@ impl Rulemesh for GrpcService {
         let served = self.serve("RenderStream", request).await?;
         let bytes = served.model.bytes.clone();
         let mut first = Some(meta(&served));
+        let served_timing = served;
         let count = bytes.len().div_ceil(CHUNK_BYTES).max(1);
         let chunks = (0..count).map(move |i| {
             let end = ((i + 1) * CHUNK_BYTES).min(bytes.len());
             let data = bytes.get(i * CHUNK_BYTES..end).map(<[u8]>::to_vec).unwrap_or_default();
             Ok(pb::RenderChunk { meta: first.take(), data })
         });
-        Ok(Response::new(Box::pin(tokio_stream::iter(chunks))))
+        Ok(with_timing(Response::new(Box::pin(tokio_stream::iter(chunks))), &served_timing))
     }
 
     async fn check(&self, request: Request<pb::CheckRequest>) -> Result<Response<pb::CheckReply>, Status> {
+        let started = Instant::now();
         let admission = admit(&self.state, request.metadata());
         let r = request.into_inner();
         let body = CheckBody { source: r.source, language: if r.language.is_empty() { None } else { Some(r.language) } };
         let result = admission.and_then(|a| super::http::check(body, &a.ceiling));
-        self.count("Check", &result);
+        self.count("Check", &result, started);
         let report = result.map_err(|e| e.to_status())?;
         Ok(Response::new(pb::CheckReply {
             ok: report.ok,
@@ -191,8 +215,9 @@ impl Rulemesh for GrpcService {
     }
 
     async fn list_grammars(&self, request: Request<pb::ListGrammarsRequest>) -> Result<Response<pb::ListGrammarsReply>, Status> {
+        let started = Instant::now();
         let admitted = admit(&self.state, request.metadata()).map(|_| ());
-        self.count("ListGrammars", &admitted);
+        self.count("ListGrammars", &admitted, started);
         admitted.map_err(|e| e.to_status())?;
         let grammars = library::all()
             .map(|b| {

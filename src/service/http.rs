@@ -2,6 +2,8 @@
 
 use super::library::{self, GrammarInfo};
 use super::request::{from_json, parse_format, CheckBody, RenderBody};
+use super::metrics::{wants_openmetrics, OPENMETRICS, PROMETHEUS_TEXT};
+use super::timing::{log_request, RequestTiming};
 use super::{AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::core::{Limits, ParamValue};
@@ -72,6 +74,7 @@ fn cors(origins: &[String]) -> Option<tower_http::cors::CorsLayer> {
                 header::ETAG,
                 header::RETRY_AFTER,
                 name("x-request-id"),
+                name("server-timing"),
                 name("x-rulemesh-cache"),
                 name("x-rulemesh-error"),
                 name("x-rulemesh-primitives"),
@@ -208,16 +211,21 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
         id,
         method = %req.method(),
         route = %route,
+        otel.name = %format!("{} {route}", req.method()),
+        otel.kind = "server",
         language = tracing::field::Empty,
         key = tracing::field::Empty,
         cache = tracing::field::Empty
     );
+    super::telemetry::adopt_parent(&span, |name| req.headers().get(name).and_then(|v| v.to_str().ok()));
     let started = Instant::now();
     let mut resp = next.run(req).instrument(span.clone()).await;
     let status = resp.status().as_u16();
-    state.metrics.request("http", &route, status);
-    let header = |name: &str| resp.headers().get(name).and_then(|v| v.to_str().ok()).unwrap_or("-").to_string();
-    span.in_scope(|| tracing::info!(status, etag = %header("etag"), ms = started.elapsed().as_secs_f64() * 1000.0, "request"));
+    let took = started.elapsed();
+    state.metrics.request("http", &route, status, took);
+    let etag = resp.headers().get(header::ETAG).and_then(|v| v.to_str().ok());
+    let timing = resp.extensions().get::<RequestTiming>();
+    span.in_scope(|| log_request(Some(status), None, etag, took, timing));
     if let Ok(v) = HeaderValue::from_str(&id.to_string()) {
         resp.headers_mut().insert("x-request-id", v);
     }
@@ -260,14 +268,19 @@ fn model_response(served: &Served, cache_control: Option<&'static str>, text: bo
     if text {
         resp.extensions_mut().insert(TextModel);
     }
+    // The request's log line (in `observe`) reads the timing from here.
+    resp.extensions_mut().insert(served.timing);
     let h = resp.headers_mut();
     h.insert(header::CONTENT_TYPE, HeaderValue::from_static(m.content_type));
     model_headers(h, served, cache_control);
     resp
 }
 
+/// The headers of a model response (also of its 304): ETag, cache result,
+/// counts, truncation, `Cache-Control` and `Server-Timing`.
 fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'static str>) {
     let m = &served.model;
+    h.insert("server-timing", header_value(&served.timing.header_value()));
     h.insert(header::ETAG, header_value(&format!("\"{}\"", m.etag)));
     h.insert("x-rulemesh-cache", HeaderValue::from_static(if served.cache == CacheOutcome::Hit { "hit" } else { "miss" }));
     h.insert("x-rulemesh-primitives", HeaderValue::from(m.primitives));
@@ -300,7 +313,8 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
-            ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short")
+            ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
+            ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, export) and the cache lookup, in ms")
         )),
         (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
         (status = 413, description = "Request body too large", body = ErrorBody),
@@ -312,17 +326,19 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         (status = 504, description = "Deadline exceeded", body = ErrorBody)
     ))]
 async fn render_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
-    let result: Result<(Served, bool, bool), ServiceError> = async {
+    let result: Result<(Served, bool, bool, Format), ServiceError> = async {
         let body = body_bytes(body, st.config.body_limit)?;
         let plan = from_json::<RenderBody>(&body)?.plan(&caller.ceiling, wants_fresh(&headers))?;
         let text = is_text(plan.request.format);
         let p = plan.request.export_options.print;
+        let format = plan.request.format;
         let print_stl = p.enabled && !p.report && plan.request.format == Format::Stl;
-        Ok((st.engine.serve(plan).await?, text, print_stl))
+        Ok((st.engine.serve(plan).await?, text, print_stl, format))
     }
     .await;
     match result {
-        Ok((served, text, print_stl)) => {
+        Ok((served, text, print_stl, format)) => {
+            st.metrics.bytes_out("http", format, served.model.bytes.len());
             let mut resp = model_response(&served, None, text);
             if print_stl {
                 // The printability report as headers (re-measured from the STL: the cache holds bytes only).
@@ -370,7 +386,8 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
-            ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short")
+            ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
+            ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, export) and the cache lookup, in ms")
         )),
         (status = 304, description = "Not modified (If-None-Match matched)"),
         (status = 404, description = "Unknown grammar or extension", body = ErrorBody),
@@ -428,18 +445,21 @@ async fn model_get(
         let pinned = body.seed.is_some();
         let text = ext == "gltf";
         let plan = body.plan(&Limits::default().clamped_to(&caller.ceiling), wants_fresh(&headers))?;
+        let format = plan.request.format;
         let served = st.engine.serve(plan).await?;
-        Ok((served, pinned, text))
+        Ok((served, pinned, text, format))
     }
     .await;
     match result {
-        Ok((served, pinned, text)) => {
+        Ok((served, pinned, text, format)) => {
             let cc = if pinned { CACHE_IMMUTABLE } else { CACHE_SHORT };
             if etag_matches(&headers, &served.model.etag) {
                 let mut resp = StatusCode::NOT_MODIFIED.into_response();
                 model_headers(resp.headers_mut(), &served, Some(cc));
+                resp.extensions_mut().insert(served.timing);
                 return resp;
             }
+            st.metrics.bytes_out("http", format, served.model.bytes.len());
             model_response(&served, Some(cc), text)
         }
         Err(e) => e.into_response(),
@@ -575,7 +595,8 @@ async fn readyz(State(st): State<Arc<AppState>>) -> Response {
 /// `GET /metrics`.
 #[utoipa::path(get, path = "/metrics", tag = "meta",
     responses((status = 200, description = "Prometheus text exposition", content_type = "text/plain", body = String)))]
-async fn metrics(State(st): State<Arc<AppState>>) -> Response {
+async fn metrics(State(st): State<Arc<AppState>>, headers: HeaderMap) -> Response {
     st.engine.cache().sync().await;
-    ([(header::CONTENT_TYPE, "text/plain; version=0.0.4; charset=utf-8")], st.metrics.render_text(st.engine.cache())).into_response()
+    let om = wants_openmetrics(headers.get(header::ACCEPT).and_then(|v| v.to_str().ok()));
+    ([(header::CONTENT_TYPE, if om { OPENMETRICS } else { PROMETHEUS_TEXT })], st.metrics.render_text(om)).into_response()
 }

@@ -16,12 +16,15 @@ pub mod http;
 pub mod library;
 pub mod metrics;
 pub mod request;
+pub mod telemetry;
+pub mod timing;
 
 pub use config::{ConfigError, ConfigFile, ServeConfig};
 pub use engine::{Engine, Served};
 pub use error::ServiceError;
 pub use metrics::Metrics;
 pub use request::{RenderBody, RenderPlan};
+pub use timing::RequestTiming;
 
 use crate::core::Limits;
 use std::future::Future;
@@ -196,6 +199,7 @@ pub async fn start(config: ServeConfig) -> Result<Running, ServeError> {
             .add_service(reflection)
             .add_service(reflection_alpha)
             .add_service(grpc_service)
+            // `grpc_conn` sets TCP_NODELAY on every connection it accepts.
             .serve_with_incoming_shutdown(incoming, grpc_stop)
             .await
             .map_err(ServeError::Grpc)

@@ -31,3 +31,4 @@ mod unigrafix;
 mod scaleout;
 mod service;
 mod harden;
+mod observe;

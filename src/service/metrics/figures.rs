@@ -1,0 +1,65 @@
+//! The figures that live in the cache itself (bytes and entries held,
+//! evictions, disk and Redis counters), read at each scrape rather than
+//! copied: the tiers keep their own counters, which the cache's tests read
+//! too, and a copy could only drift.
+
+use crate::cache::ModelCache;
+use prometheus_client::collector::Collector;
+use prometheus_client::encoding::{DescriptorEncoder, EncodeMetric};
+use prometheus_client::metrics::counter::ConstCounter;
+use prometheus_client::metrics::gauge::ConstGauge;
+use std::sync::{Arc, OnceLock};
+
+/// Encodes the cache's figures, once the engine has attached its cache.
+pub(super) struct CacheFigures {
+    cache: Arc<OnceLock<ModelCache>>,
+}
+
+impl CacheFigures {
+    pub(super) fn new(cache: Arc<OnceLock<ModelCache>>) -> CacheFigures {
+        CacheFigures { cache }
+    }
+}
+
+impl std::fmt::Debug for CacheFigures {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CacheFigures").field("attached", &self.cache.get().is_some()).finish()
+    }
+}
+
+fn counter(e: &mut DescriptorEncoder, name: &str, help: &str, v: u64) -> Result<(), std::fmt::Error> {
+    let c = ConstCounter::new(v);
+    c.encode(e.encode_descriptor(name, help, None, c.metric_type())?)
+}
+
+fn gauge(e: &mut DescriptorEncoder, name: &str, help: &str, v: u64) -> Result<(), std::fmt::Error> {
+    let g = ConstGauge::new(i64::try_from(v).unwrap_or(i64::MAX));
+    g.encode(e.encode_descriptor(name, help, None, g.metric_type())?)
+}
+
+impl Collector for CacheFigures {
+    fn encode(&self, mut e: DescriptorEncoder) -> Result<(), std::fmt::Error> {
+        let Some(cache) = self.cache.get() else { return Ok(()) };
+        let e = &mut e;
+        counter(e, "cache_evictions", "Models evicted from memory to keep the byte budget", cache.evictions())?;
+        gauge(e, "cache_bytes", "Bytes held by the in-process cache", cache.weighted_bytes())?;
+        gauge(e, "cache_entries", "Models held by the in-process cache", cache.entry_count())?;
+        counter(e, "cache_corrupt", "Disk or Redis cache entries whose content hash did not match (treated as misses, never served)", cache.corrupt())?;
+        if let Some(d) = cache.disk() {
+            gauge(e, "cache_disk_bytes", "Bytes held by the disk cache tier", d.used_bytes())?;
+            counter(e, "cache_disk_writes", "Models written to the disk tier", d.writes())?;
+            counter(e, "cache_disk_skipped", "Models not written to the disk tier (budget reached, or writing failed)", d.skipped())?;
+        }
+        if let Some(r) = cache.redis() {
+            counter(e, "redis_hits", "Models read from the shared Redis tier", r.hits())?;
+            counter(e, "redis_misses", "Redis lookups without a model", r.misses())?;
+            counter(e, "redis_writes", "Models written to Redis", r.writes())?;
+            counter(e, "redis_skipped", "Models not written to Redis (too large, or Redis failing)", r.skipped())?;
+            counter(e, "redis_errors", "Redis commands that failed or timed out (served from local caching instead)", r.errors())?;
+            counter(e, "redis_timeouts", "Redis commands (or connection attempts) that timed out, of the errors", r.timeouts())?;
+            counter(e, "redis_lock_waits", "Renders that waited for another worker's lock", r.lock_waits())?;
+            gauge(e, "redis_up", "1 while Redis answers, 0 while it is skipped after a failure", u64::from(!r.is_degraded()))?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,137 @@
+//! Where one request's time went, as its `Server-Timing` header (HTTP), its
+//! `server-timing` response metadata (gRPC) and the fields of its log line
+//! all say it: the wait for a render slot, each pipeline stage that ran, and
+//! the cache lookup. The same struct formats all three, so they agree.
+
+use crate::cache::{CacheOutcome, Lookup};
+use crate::core::timing::{Phase, PhaseTimes};
+use std::fmt::Write as _;
+use std::time::Duration;
+
+/// The render this request ran itself (absent on a hit, or when it shared
+/// another request's render).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RanRender {
+    /// The wait for a render slot.
+    pub queue: Duration,
+    /// The stages of the pipeline.
+    pub phases: PhaseTimes,
+}
+
+/// One request's timing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RequestTiming {
+    /// The cache's account of the lookup.
+    pub lookup: Lookup,
+    /// The render, when this request ran one.
+    pub ran: Option<RanRender>,
+}
+
+fn ms(d: Duration) -> f64 {
+    d.as_secs_f64() * 1000.0
+}
+
+impl RequestTiming {
+    /// The timed parts, in the order they happened: `queue` (when a render
+    /// ran), each stage that ran, and `cache` (the lookups). They never
+    /// overlap, so they add up to at most the request's wall time.
+    pub fn parts(&self) -> Vec<(&'static str, Duration)> {
+        let mut parts = Vec::with_capacity(7);
+        if let Some(r) = &self.ran {
+            parts.push(("queue", r.queue));
+            parts.extend(r.phases.ran().map(|(p, d)| (p.name(), d)));
+        }
+        parts.push(("cache", self.lookup.took));
+        parts
+    }
+
+    /// The `Server-Timing` value (W3C Server Timing; durations in
+    /// milliseconds): `queue;dur=0.004, parse;dur=0.210, eval;dur=1.020,
+    /// mesh;dur=0.800, export;dur=0.310, cache;desc=miss;dur=0.015`, and on
+    /// a hit `cache;desc=hit;dur=0.002, tier;desc=memory`.
+    pub fn header_value(&self) -> String {
+        let mut s = String::new();
+        for (name, d) in self.parts() {
+            if !s.is_empty() {
+                s.push_str(", ");
+            }
+            if name == "cache" {
+                let desc = if self.lookup.outcome == CacheOutcome::Hit { "hit" } else { "miss" };
+                let _ = write!(s, "cache;desc={desc};dur={:.3}", ms(d));
+            } else {
+                let _ = write!(s, "{name};dur={:.3}", ms(d));
+            }
+        }
+        if let Some(t) = self.lookup.tier {
+            let _ = write!(s, ", tier;desc={}", t.name());
+        }
+        s
+    }
+
+    /// A stage's time in milliseconds, when it ran (for log fields).
+    pub fn stage_ms(&self, phase: Phase) -> Option<f64> {
+        self.ran.filter(|r| r.phases.did_run(phase)).map(|r| ms(r.phases.get(phase)))
+    }
+
+    /// The queue wait in milliseconds, when a render ran.
+    pub fn queue_ms(&self) -> Option<f64> {
+        self.ran.map(|r| ms(r.queue))
+    }
+
+    /// The cache lookups' time in milliseconds.
+    pub fn cache_ms(&self) -> f64 {
+        ms(self.lookup.took)
+    }
+
+}
+
+/// Logs the one INFO line of a finished request (`request`), in the current
+/// span, with its timing when it answered with a model: the numbers are the
+/// `Server-Timing` header's, as fields (`queue_ms`, `parse_ms`, `eval_ms`,
+/// `mesh_ms`, `print_ms`, `export_ms`, `cache_ms`, `tier`) and as the header
+/// text (`server_timing`). `status` is the HTTP status, `code` the gRPC outcome.
+pub fn log_request(status: Option<u16>, code: Option<&str>, etag: Option<&str>, wall: Duration, timing: Option<&RequestTiming>) {
+    let stage = |p| timing.and_then(|t| t.stage_ms(p));
+    tracing::info!(
+        status,
+        code,
+        etag,
+        ms = ms(wall),
+        server_timing = timing.map(|t| tracing::field::display(t.header_value())),
+        queue_ms = timing.and_then(RequestTiming::queue_ms),
+        parse_ms = stage(Phase::Parse),
+        eval_ms = stage(Phase::Eval),
+        mesh_ms = stage(Phase::Mesh),
+        print_ms = stage(Phase::Print),
+        export_ms = stage(Phase::Export),
+        cache_ms = timing.map(RequestTiming::cache_ms),
+        tier = timing.and_then(|t| t.lookup.tier.map(|t| t.name())),
+        "request"
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cache::Tier;
+    use crate::core::timing::StageClock;
+
+    #[test]
+    fn header_lists_what_ran() {
+        let mut clock = StageClock::start();
+        clock.lap(Phase::Parse);
+        clock.lap(Phase::Eval);
+        clock.lap(Phase::Mesh);
+        clock.lap(Phase::Export);
+        let miss = RequestTiming {
+            lookup: Lookup { outcome: CacheOutcome::Miss, tier: None, took: Duration::from_micros(15) },
+            ran: Some(RanRender { queue: Duration::from_micros(4), phases: clock.phases }),
+        };
+        let h = miss.header_value();
+        let names: Vec<&str> = h.split(", ").map(|p| p.split(';').next().unwrap_or("")).collect();
+        assert_eq!(names, ["queue", "parse", "eval", "mesh", "export", "cache"], "{h}");
+        assert!(h.ends_with("cache;desc=miss;dur=0.015"), "{h}");
+        let hit = RequestTiming { lookup: Lookup { outcome: CacheOutcome::Hit, tier: Some(Tier::Redis), took: Duration::from_micros(800) }, ran: None };
+        assert_eq!(hit.header_value(), "cache;desc=hit;dur=0.800, tier;desc=redis");
+    }
+}
