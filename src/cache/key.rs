@@ -54,20 +54,6 @@ impl Encoder {
         self.field(tag, &v.to_le_bytes());
     }
 }
-
-fn format_name(f: Format) -> &'static str {
-    match f {
-        Format::Glb => "glb",
-        Format::Gltf => "gltf",
-        Format::Stl => "stl",
-        Format::StlAscii => "stl-ascii",
-        Format::Strips => "strips",
-        Format::Scene => "scene",
-        Format::ThreeMf => "3mf",
-        Format::Ug => "ug",
-    }
-}
-
 fn layout_name(l: MeshLayout) -> &'static str {
     match l {
         MeshLayout::Merged => "merged",
@@ -110,7 +96,7 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
             ParamValue::Text(t) => e.field("param.text", t.as_bytes()),
         }
     }
-    e.field("format", format_name(req.format).as_bytes());
+    e.field("format", req.format.name().as_bytes());
     if req.format == Format::Strips {
         let o = &req.export_options.strips;
         e.field("strips", &[o.position_bits, o.normal_bits, u8::from(o.zstd)]);

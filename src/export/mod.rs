@@ -73,6 +73,22 @@ impl Format {
         }
     }
 
+    /// The format's request name (`"glb"`, `"stl-ascii"`, `"3mf"` …), as
+    /// requests spell it: the one spelling the cache key, metrics labels and
+    /// logs share, so a name cannot drift between them.
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::Glb => "glb",
+            Format::Gltf => "gltf",
+            Format::Stl => "stl",
+            Format::StlAscii => "stl-ascii",
+            Format::Strips => "strips",
+            Format::Scene => "scene",
+            Format::ThreeMf => "3mf",
+            Format::Ug => "ug",
+        }
+    }
+
     /// The usual file extension (without the dot), so front ends can name outputs.
     pub fn extension(self) -> &'static str {
         match self {

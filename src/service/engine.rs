@@ -151,7 +151,7 @@ impl Engine {
         let result = match watched {
             Ok(joined) => joined.map_err(|e| ServiceError::Internal(format!("render task failed: {e}")))?.map(|(r, phases, began)| {
                 metrics.stages(r.language, format, &phases);
-                super::telemetry::stage_spans(began, &phases, r.language.name(), super::metrics::format_label(format));
+                super::telemetry::stage_spans(began, &phases, r.language.name(), format.name());
                 if let Ok(mut slot) = ran.lock() {
                     *slot = Some(RanRender { queue, phases });
                 }

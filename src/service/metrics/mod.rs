@@ -99,21 +99,6 @@ fn histogram() -> Histogram {
 fn lookup_histogram() -> Histogram {
     Histogram::new(LOOKUP_BUCKETS)
 }
-
-/// The `format` label of a format (its request name).
-pub fn format_label(format: Format) -> &'static str {
-    match format {
-        Format::Glb => "glb",
-        Format::Gltf => "gltf",
-        Format::Stl => "stl",
-        Format::StlAscii => "stl-ascii",
-        Format::Strips => "strips",
-        Format::Scene => "scene",
-        Format::ThreeMf => "3mf",
-        Format::Ug => "ug",
-    }
-}
-
 /// Every metric the service exports, registered once in its own registry.
 pub struct Metrics {
     registry: Registry,
@@ -223,7 +208,7 @@ impl Metrics {
 
     /// Counts model bytes sent in `format`.
     pub fn bytes_out(&self, protocol: &'static str, format: Format, bytes: usize) {
-        self.response_bytes.get_or_create(&BytesLabels { protocol, format: format_label(format) }).inc_by(bytes as u64);
+        self.response_bytes.get_or_create(&BytesLabels { protocol, format: format.name() }).inc_by(bytes as u64);
     }
 
     /// Records one pipeline run and its duration.
@@ -235,7 +220,7 @@ impl Metrics {
     /// Records the time of every stage that ran in one render of `language` into `format`.
     pub fn stages(&self, language: Language, format: Format, phases: &PhaseTimes) {
         for (phase, took) in phases.ran() {
-            let labels = StageLabels { stage: phase.name(), language: language.name(), format: format_label(format) };
+            let labels = StageLabels { stage: phase.name(), language: language.name(), format: format.name() };
             self.stage_seconds.get_or_create(&labels).observe(took.as_secs_f64());
         }
     }

@@ -10,9 +10,8 @@ mod metrics;
 mod timing;
 mod traces;
 
-use rulemesh::service::{self, Running, ServeConfig};
+use rulemesh::service::ServeConfig;
 use serde_json::Value;
-use std::time::Duration;
 
 /// A config on ephemeral loopback ports, labelled `worker`.
 pub fn config(worker: &str) -> ServeConfig {
@@ -25,37 +24,12 @@ pub fn config(worker: &str) -> ServeConfig {
     }
 }
 
-/// Starts a server; its HTTP base URL.
-pub async fn start(config: ServeConfig) -> (Running, String) {
-    let running = service::start(config).await.expect("server starts");
-    let base = format!("http://{}", running.http_addr);
-    (running, base)
-}
-
-/// Stops a server and checks it stopped cleanly.
-pub async fn stop(srv: Running) {
-    srv.shutdown();
-    srv.wait().await.expect("clean shutdown");
-}
-
-/// An HTTP client asking for identity encoding.
-pub fn client() -> reqwest::Client {
-    reqwest::Client::builder().timeout(Duration::from_secs(60)).no_gzip().no_brotli().no_zstd().build().expect("client")
-}
+// The server and client helpers are harden's (one copy for the suite).
+pub use crate::harden::{client, header, metrics, start, stop};
 
 /// `POST /v1/render` with `body`.
 pub async fn render(base: &str, body: &Value) -> reqwest::Response {
     client().post(format!("{base}/v1/render")).json(body).send().await.expect("request")
-}
-
-/// A header's value as text ("" when absent).
-pub fn header<'a>(r: &'a reqwest::Response, name: &str) -> &'a str {
-    r.headers().get(name).and_then(|v| v.to_str().ok()).unwrap_or("")
-}
-
-/// `/metrics` in the classic text format.
-pub async fn metrics(base: &str) -> String {
-    client().get(format!("{base}/metrics")).send().await.expect("get").text().await.expect("text")
 }
 
 /// The value of the sample named exactly `name` (with its labels); `None` when absent.
