@@ -46,14 +46,9 @@ pub async fn serve_http(listener: TcpListener, app: Router, state: Arc<AppState>
             () = stopped(&mut stop) => break,
         };
         let stream = tokio::select! {
-            r = listener.accept() => match r {
-                Ok((s, _)) => s,
-                Err(e) => {
-                    // Out of file descriptors and the like: back off instead of spinning.
-                    tracing::warn!(error = %e, "accept failed");
-                    tokio::time::sleep(Duration::from_millis(50)).await;
-                    continue;
-                }
+            r = accept_or_back_off(&listener) => match r {
+                Some(s) => s,
+                None => continue,
             },
             () = stopped(&mut stop) => break,
         };
@@ -63,6 +58,20 @@ pub async fn serve_http(listener: TcpListener, app: Router, state: Arc<AppState>
     // Every connection holds a permit until it closes.
     let _ = slots.acquire_many(u32::try_from(max).unwrap_or(u32::MAX)).await;
     Ok(())
+}
+
+/// The next connection, or `None` after a short pause when accepting
+/// failed (out of file descriptors and the like: back off instead of
+/// spinning). Shared by the HTTP and gRPC accept loops.
+pub(super) async fn accept_or_back_off(listener: &TcpListener) -> Option<TcpStream> {
+    match listener.accept().await {
+        Ok((s, _)) => Some(s),
+        Err(e) => {
+            tracing::warn!(error = %e, "accept failed");
+            tokio::time::sleep(Duration::from_millis(50)).await;
+            None
+        }
+    }
 }
 
 /// Resolves once `stop` is true (or its sender is gone). Returns `()` so that

@@ -35,14 +35,9 @@ pub fn capped_incoming(listener: TcpListener, max: usize, preface_timeout: Durat
         loop {
             let Ok(permit) = slots.clone().acquire_owned().await else { break };
             let stream = tokio::select! {
-                r = listener.accept() => match r {
-                    Ok((s, _)) => s,
-                    Err(e) => {
-                        // Out of file descriptors and the like: back off instead of spinning.
-                        tracing::warn!(error = %e, "gRPC accept failed");
-                        tokio::time::sleep(Duration::from_millis(50)).await;
-                        continue;
-                    }
+                r = super::conn::accept_or_back_off(&listener) => match r {
+                    Some(s) => s,
+                    None => continue,
                 },
                 () = tx.closed() => break,
             };
