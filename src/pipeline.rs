@@ -13,7 +13,7 @@
 //! meshed and written before the deadline (writing takes about twice as
 //! long as meshing the same triangles, and cannot be cut).
 
-use crate::core::budget::{Budget, LimitExceeded, Limits, OnLimit};
+use crate::core::budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
 use crate::core::timing::{Phase, StageClock};
 use crate::core::{Diagnostic, ParamValue, ParseError};
 use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instancing};
@@ -382,9 +382,18 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
         // A camera path plays in the node graph; otherwise the camera is shown at time 0.
         camera: scene.camera.clone().filter(|c| !(c.is_path() && in_graph)),
     };
-    let bytes = export::export_with(req.format, &meshes, &meta, opts, budget)?;
+    let (bytes, triangles, truncated) = match export::export_with(req.format, &meshes, &meta, opts, budget) {
+        Ok(bytes) => (bytes, meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum(), truncated),
+        Err(ExportError::Limit(e)) if e.limit == Limit::Deadline && req.on_limit == OnLimit::Truncate => {
+            // Too late to write what was made: under `truncate` the answer is
+            // an empty model that says why, still (nearly) within the deadline.
+            budget.lift_deadline();
+            let meta = ExportMeta { truncated: true, graph: None, ..meta };
+            (export::export_with(req.format, &[], &meta, opts, budget)?, 0, truncated.or(Some(e)))
+        }
+        Err(e) => return Err(e.into()),
+    };
     clock.lap(Phase::Export);
-    let triangles = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     Ok(summary(bytes, &model, triangles, truncated))
 }
 

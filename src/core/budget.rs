@@ -224,6 +224,15 @@ impl Budget {
         }
     }
 
+    /// Removes the deadline, for the one write that may follow it: under
+    /// `on_limit: truncate`, a model that could not be written before the
+    /// deadline is replaced by an empty one marked truncated, whose writing
+    /// is a fixed, tiny amount of work. Nothing else calls this.
+    pub fn lift_deadline(&mut self) {
+        self.deadline = None;
+        self.stage_deadline = None;
+    }
+
     /// The counters now, to rewind to when a route is abandoned.
     pub fn mark(&self) -> BudgetMark {
         BudgetMark { primitives: self.primitives, triangles: self.triangles, memory: self.memory, steps: self.steps }

@@ -30,7 +30,7 @@
 //! (bones, camera node, animation) and `gltf_instanced` ([`write_instanced`]).
 
 use super::gltf_buffer::{
-    align4, animation_tracks, base64_len, find, invalid, place, write_buffer, Base64, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
+    align4, animation_tracks, base64_len, find, invalid, place, write_buffer_until, Base64, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
 };
 use super::gltf_document::document;
 use super::{ExportError, ExportMeta};
@@ -47,6 +47,7 @@ pub use super::gltf_instanced::{write_instanced, InstanceSink, EXT_INSTANCING};
 /// with [`ExportError::TooLarge`] beyond the format's 4 GiB limit.
 pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let (placed, meshes_end) = place(meshes)?;
+    budget.check_deadline()?;
     let tracks = animation_tracks(meta, meshes_end, budget)?;
     let buffer_len = tracks.buffer_len(meshes_end);
     let json_bytes = document(&placed, buffer_len, &tracks, meta, None)?;
@@ -69,7 +70,9 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
     if buffer_len > 0 {
         out.extend_from_slice(&(align4(buffer_len) as u32).to_le_bytes());
         out.extend_from_slice(&CHUNK_BIN.to_le_bytes());
-        write_buffer(&mut out, &placed, &tracks);
+        if !write_buffer_until(&mut out, &placed, &tracks, &|| budget.check_deadline().is_err()) {
+            budget.check_deadline()?;
+        }
         out.resize(total as usize, 0);
     }
     debug_assert_eq!(out.len() as u64, total);
@@ -84,6 +87,7 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
 /// Reserves the exact output size in `budget` before allocating it.
 pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let (placed, meshes_end) = place(meshes)?;
+    budget.check_deadline()?;
     let tracks = animation_tracks(meta, meshes_end, budget)?;
     let buffer_len = tracks.buffer_len(meshes_end);
     let json_bytes = document(&placed, buffer_len, &tracks, meta, (buffer_len > 0).then(|| DATA_URI.to_string()))?;
@@ -103,7 +107,9 @@ pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) 
     out.extend_from_slice(&json_bytes[..split]);
     if buffer_len > 0 {
         let mut b64 = Base64 { out: &mut out, carry: [0; 3], held: 0 };
-        write_buffer(&mut b64, &placed, &tracks);
+        if !write_buffer_until(&mut b64, &placed, &tracks, &|| budget.check_deadline().is_err()) {
+            budget.check_deadline()?;
+        }
         b64.finish();
     }
     out.extend_from_slice(&json_bytes[split..]);
@@ -303,6 +309,39 @@ pub(crate) mod tests {
         let mut b = Budget::new(Limits::default());
         let out = write_glb(&meshes, &ExportMeta::default(), &mut b).unwrap();
         assert_eq!(b.memory(), out.len() as u64);
+    }
+
+    #[test]
+    fn a_passed_deadline_stops_the_write_and_lifting_it_lets_it_finish() {
+        let meshes = meshes_of(&all_nine(), 16, MeshLayout::Merged);
+        for f in [write_glb, write_gltf] {
+            let mut b = Budget::new(Limits { timeout_ms: 0, ..Limits::default() });
+            match f(&meshes, &ExportMeta::default(), &mut b) {
+                Err(ExportError::Limit(e)) => assert_eq!(e.limit, Limit::Deadline),
+                other => panic!("expected the deadline, got {other:?}"),
+            }
+            b.lift_deadline();
+            let out = f(&meshes, &ExportMeta::default(), &mut b).expect("no deadline left");
+            assert_eq!(out, f(&meshes, &ExportMeta::default(), &mut Budget::new(Limits::default())).unwrap());
+        }
+    }
+
+    #[test]
+    fn the_buffer_write_gives_up_between_runs_when_asked() {
+        // 70,000 boxes' worth of vertices: more than one run per stream.
+        let s = scene((0..3000).map(|k| inst(PrimitiveKind::Box, [k as f32, 0.0, 0.0], 1.0, false)).collect());
+        let meshes = meshes_of(&s, 16, MeshLayout::Merged);
+        assert!(meshes[0].mesh.positions.len() > crate::geom::STOP_EVERY);
+        let (placed, _) = place(&meshes).unwrap();
+        let asked = std::cell::Cell::new(0);
+        let mut out = Vec::new();
+        let whole = write_buffer_until(&mut out, &placed, &Default::default(), &|| {
+            asked.set(asked.get() + 1);
+            asked.get() == 2
+        });
+        assert!(!whole);
+        // The first run of positions only: 65,536 × 12 bytes.
+        assert_eq!((asked.get(), out.len()), (2, crate::geom::STOP_EVERY * 12));
     }
 
     #[test]

@@ -8,7 +8,7 @@
 
 use super::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
-use crate::geom::NamedMesh;
+use crate::geom::{NamedMesh, STOP_EVERY};
 use crate::model::graph::{NodeGraph, Trs};
 use gltf_json as json;
 use json::validation::{Checked::Valid, USize64};
@@ -350,23 +350,47 @@ fn put_words<T: bytemuck::Pod>(sink: &mut impl Sink, values: &[T], to_le: fn(T) 
 /// Writes the binary buffer (exactly `buffer_len` bytes, zero padding between
 /// meshes), then the animation samples.
 pub(super) fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>], tracks: &Tracks) {
+    let whole = write_buffer_until(sink, placed, tracks, &|| false);
+    debug_assert!(whole);
+}
+
+/// [`write_buffer`] that asks `stop` between runs of [`STOP_EVERY`] values
+/// whether to give up (a model of millions of triangles takes a noticeable
+/// share of a deadline to copy). Returns false, with the buffer partly
+/// written, when it gave up.
+pub(super) fn write_buffer_until(sink: &mut impl Sink, placed: &[Placement<'_>], tracks: &Tracks, stop: &dyn Fn() -> bool) -> bool {
     let mut at = 0u64;
     for (m, p) in placed {
         while at < p.offset {
             sink.put(&[0]);
             at += 1;
         }
-        put_words::<f32>(sink, bytemuck::cast_slice(&m.mesh.positions), f32::to_le_bytes);
-        put_words::<f32>(sink, bytemuck::cast_slice(&m.mesh.normals), f32::to_le_bytes);
-        sink.put(bytemuck::cast_slice(&m.mesh.colours));
-        if !p.short {
-            put_words(sink, &m.mesh.indices, u32::to_le_bytes);
-            at = p.end();
-            continue;
+        let mesh = &m.mesh;
+        for r in runs(mesh.positions.len()) {
+            if stop() {
+                return false;
+            }
+            put_words::<f32>(sink, bytemuck::cast_slice(&mesh.positions[r]), f32::to_le_bytes);
         }
-        for &i in &m.mesh.indices {
-            // Fits: `short` means every index is below 65535.
-            sink.put(&(i as u16).to_le_bytes());
+        for r in runs(mesh.normals.len()) {
+            if stop() {
+                return false;
+            }
+            put_words::<f32>(sink, bytemuck::cast_slice(&mesh.normals[r]), f32::to_le_bytes);
+        }
+        sink.put(bytemuck::cast_slice(&mesh.colours));
+        for r in runs(mesh.indices.len()) {
+            if stop() {
+                return false;
+            }
+            if p.short {
+                for &i in &mesh.indices[r] {
+                    // Fits: `short` means every index is below 65535.
+                    sink.put(&(i as u16).to_le_bytes());
+                }
+            } else {
+                put_words(sink, &mesh.indices[r], u32::to_le_bytes);
+            }
         }
         at = p.end();
     }
@@ -377,6 +401,12 @@ pub(super) fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>], track
         }
         sink.put(&tracks.bytes);
     }
+    true
+}
+
+/// Consecutive ranges of at most [`STOP_EVERY`] covering `0..len`.
+fn runs(len: usize) -> impl Iterator<Item = std::ops::Range<usize>> {
+    (0..len).step_by(STOP_EVERY).map(move |start| start..len.min(start + STOP_EVERY))
 }
 
 /// Where `needle` first occurs in `haystack`.

@@ -219,6 +219,9 @@ pub fn export_with(
     options: &ExportOptions,
     budget: &mut Budget,
 ) -> Result<Vec<u8>, ExportError> {
+    // Writing a large model takes a share of the deadline; a model that
+    // arrives here late is not started.
+    budget.check_deadline()?;
     let (fitted, moved);
     let (meshes, meta) = if options.fit_unit_box {
         // The camera moves with the model, so the fitted model is seen as the original was.

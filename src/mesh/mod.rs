@@ -11,7 +11,7 @@
 
 use crate::geom::primitives::{self, Prototype};
 use crate::geom::mesh::mesh_bytes;
-use crate::geom::{Mesh, NamedMesh};
+use crate::geom::{Mesh, NamedMesh, STOP_EVERY};
 use crate::core::budget::{Budget, LimitExceeded, OnLimit};
 use crate::model::graph::NodeGraph;
 use crate::model::scene::{AffineInstance, FreeVertex, Instance, Scene};
@@ -81,6 +81,15 @@ impl Cutoff {
         self.count = self.count.wrapping_add(1);
         if self.count % Self::EVERY != 0 {
             return Ok(false);
+        }
+        self.check(budget)
+    }
+
+    /// [`Cutoff::stop`] without the count: reads the clock now (for work
+    /// inside one large piece).
+    fn check(&mut self, budget: &Budget) -> Result<bool, LimitExceeded> {
+        if self.cut.is_some() {
+            return Ok(true);
         }
         match (budget.check_deadline(), self.on_limit) {
             (Ok(()), _) => Ok(false),
@@ -216,8 +225,14 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget, cutoff: &mut Cutoff) -> Res
         }
         let Some(proto) = scene.shapes.get(s.shape as usize) else { continue };
         let placed = Instance::new(PrimitiveKind::Box, &s.frame, s.colour.map(f64::from));
-        if is_drawable(&placed) {
-            append_instance(&mut mesh, proto, &placed);
+        if !is_drawable(&placed) {
+            continue;
+        }
+        // A shape can be millions of triangles (an expanded UniGrafix
+        // assembly), so the clock is also read inside one placement.
+        let map = (placed.linear(), placed.normal_matrix(), placed.translation);
+        if !append_mapped_until(&mut mesh, proto, map, placed.colour, placed.parity, &mut || cutoff.check(budget))? {
+            break;
         }
     }
     Ok(Some(mesh))
@@ -352,24 +367,57 @@ fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
 /// `mesh`: positions by the map, normals by the normal matrix (renormalised;
 /// +Z if one collapses, so no normal is ever zero), winding flipped when the
 /// map reverses orientation (`flip`).
-fn append_mapped(mesh: &mut Mesh, proto: &Prototype, (linear, normal_matrix, translation): (Mat3, Mat3, Vec3), colour: [f32; 4], flip: bool) {
+fn append_mapped(mesh: &mut Mesh, proto: &Prototype, map: (Mat3, Mat3, Vec3), colour: [f32; 4], flip: bool) {
+    let never = append_mapped_until(mesh, proto, map, colour, flip, &mut || Ok::<_, LimitExceeded>(false));
+    debug_assert!(matches!(never, Ok(true)));
+}
+
+/// [`append_mapped`] that asks `stop` every [`STOP_EVERY`] vertices and
+/// triangles whether to give up. Returns `Ok(false)` when it gave up, with
+/// `mesh` as it was before the call (a half-copied piece would have
+/// vertices without triangles).
+fn append_mapped_until<E>(
+    mesh: &mut Mesh,
+    proto: &Prototype,
+    (linear, normal_matrix, translation): (Mat3, Mat3, Vec3),
+    colour: [f32; 4],
+    flip: bool,
+    stop: &mut dyn FnMut() -> Result<bool, E>,
+) -> Result<bool, E> {
     let colour = colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    let (vertices, indices) = (mesh.positions.len(), mesh.indices.len());
     // Fits: the caller checked the total vertex count against u32::MAX.
-    let base = mesh.positions.len() as u32;
-    for (p, n) in proto.positions.iter().zip(&proto.normals) {
+    let base = vertices as u32;
+    let mut given_up = false;
+    for (k, (p, n)) in proto.positions.iter().zip(&proto.normals).enumerate() {
+        if k % STOP_EVERY == STOP_EVERY - 1 && stop()? {
+            given_up = true;
+            break;
+        }
         let p = linear * Vec3::from_array(*p) + translation;
         let n = (normal_matrix * Vec3::from_array(*n)).try_normalize().unwrap_or(Vec3::Z);
         mesh.positions.push(p.to_array());
         mesh.normals.push(n.to_array());
         mesh.colours.push(colour);
     }
-    for t in proto.indices.chunks_exact(3) {
+    for (k, t) in proto.indices.chunks_exact(3).enumerate() {
+        if given_up || (k % STOP_EVERY == STOP_EVERY - 1 && stop()?) {
+            given_up = true;
+            break;
+        }
         if flip {
             mesh.indices.extend_from_slice(&[base + t[0], base + t[2], base + t[1]]);
         } else {
             mesh.indices.extend_from_slice(&[base + t[0], base + t[1], base + t[2]]);
         }
     }
+    if given_up {
+        mesh.positions.truncate(vertices);
+        mesh.normals.truncate(vertices);
+        mesh.colours.truncate(vertices);
+        mesh.indices.truncate(indices);
+    }
+    Ok(!given_up)
 }
 
 
@@ -393,6 +441,25 @@ pub(crate) mod tests {
 
     pub(crate) fn scene(instances: Vec<Instance>) -> Scene {
         Scene { instances, ..Scene::default() }
+    }
+
+    #[test]
+    fn a_large_piece_is_copied_in_runs_and_rolled_back_when_stopped() {
+        let n = 3 * STOP_EVERY as u32;
+        let proto = Prototype { positions: vec![[1.0, 2.0, 3.0]; n as usize], normals: vec![[0.0, 0.0, 1.0]; n as usize], indices: (0..n).collect() };
+        let map = (Mat3::IDENTITY, Mat3::IDENTITY, Vec3::X);
+        let mut mesh = Mesh::default();
+        append_mapped(&mut mesh, &proto, map, [1.0; 4], false);
+        let before = mesh.clone();
+        let mut asked = 0;
+        let whole = append_mapped_until(&mut mesh, &proto, map, [1.0; 4], false, &mut || {
+            asked += 1;
+            Ok::<_, LimitExceeded>(asked == 4)
+        });
+        // Three runs of vertices asked about, then the first run of triangles.
+        assert_eq!((whole, asked), (Ok(false), 4));
+        assert_eq!(mesh, before);
+        assert_eq!(mesh.positions[0], [2.0, 2.0, 3.0]);
     }
 
     #[test]
