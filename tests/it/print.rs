@@ -36,8 +36,31 @@ fn render(grammar: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
 
 #[test]
 fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
+    let grammars: Vec<_> = grammar_files("mdg").into_iter().chain(grammar_files("ls")).filter(|g| !is_the_bush(g)).collect();
+    assert!(grammars.len() >= 30, "only {} grammars", grammars.len());
+    prints_as_one_watertight_solid_or_says_why_not(&grammars);
+}
+
+/// The Sierpinski bush: a 35,310-tube union that takes minutes per run
+/// (issue 16 wants it under 10 s). Three runs of it were a third of CI's
+/// time, so it is a long run: `<it-binary> print --ignored` (docs/print.md).
+fn is_the_bush(g: &Path) -> bool {
+    g.file_stem().and_then(|s| s.to_str()) == Some("sierpinski-bush")
+}
+
+/// The every-grammar check for the Sierpinski bush alone (see [`is_the_bush`]).
+#[test]
+#[ignore = "minutes per run: a long run (docs/print.md)"]
+fn the_sierpinski_bush_prints_as_one_watertight_solid_or_says_why_not() {
+    prints_as_one_watertight_solid_or_says_why_not(&[repo().join("grammars/sierpinski-bush.ls")]);
+}
+
+/// For each grammar: the report, the STL (checked by admesh and trimesh
+/// against the report) and the 3MF (from another process: the same union).
+fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf]) {
     let dir = tempdir();
-    for g in grammar_files("mdg").into_iter().chain(grammar_files("ls")) {
+    for g in grammars {
+        let g = g.as_path();
         let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
         let json = dir.path().join(format!("{stem}.json"));
         let out = render(&g, &json, &["--print-report", "--size-mm", "40"]);
@@ -152,23 +175,16 @@ fn print_is_deterministic(grammar: &Path, dir: &Path) -> Option<bool> {
 /// `print=true` gives the same bytes in every process. It did not while
 /// Manifold's CreateFaces read uninitialised memory (vendor/manifold-rs/PATCHES.md):
 /// plant-b, grass and hogeweg came out a few triangles apart from run to run.
-/// The Sierpinski bush (a 35 310-part union, minutes per run) is left to the
-/// every-grammar test above, whose STL and 3MF come from separate processes
-/// and must agree triangle for triangle.
 #[test]
 fn print_output_is_deterministic() {
     let dir = tempdir();
-    let mut checked = 0;
-    for g in grammar_files("mdg").into_iter().chain(grammar_files("ls")) {
-        if g.file_stem().and_then(|s| s.to_str()) == Some("sierpinski-bush") {
-            continue;
-        }
-        if let Some(same) = print_is_deterministic(&g, dir.path()) {
-            assert!(same, "{}: two runs differ", g.display());
-            checked += 1;
-        }
+    // The three that differed, and two large unions of other shapes; every
+    // other grammar's STL and 3MF come from separate processes in the
+    // every-grammar test and must agree triangle for triangle.
+    for stem in ["plant-b.ls", "grass.ls", "hogeweg.ls", "menger.mdg", "spiral-rings.mdg"] {
+        let g = repo().join("grammars").join(stem);
+        assert_eq!(print_is_deterministic(&g, dir.path()), Some(true), "{stem}: two runs differ or it does not print");
     }
-    assert!(checked >= 25, "only {checked} grammars print");
 }
 
 /// In one process (a service worker), the same print request gives the same
