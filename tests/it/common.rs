@@ -168,3 +168,20 @@ pub fn signed_volume(tris: &[[[f32; 3]; 3]]) -> f64 {
 pub fn tempdir() -> tempfile::TempDir {
     tempfile::tempdir().expect("temp dir")
 }
+
+/// The lines `child` writes to its piped stderr, read on a thread of their
+/// own (a `rulemesh serve` logs as it runs; the tests wait for lines such as
+/// "rulemesh serving" or a request's log line).
+pub fn stderr_lines(child: &mut std::process::Child) -> std::sync::mpsc::Receiver<String> {
+    use std::io::BufRead as _;
+    let stderr = child.stderr.take().expect("stderr is piped");
+    let (tx, rx) = std::sync::mpsc::channel::<String>();
+    std::thread::spawn(move || {
+        for line in std::io::BufReader::new(stderr).lines().map_while(Result::ok) {
+            if tx.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    rx
+}

@@ -8,7 +8,6 @@ use crate::scaleout::free_port;
 use rulemesh::service::grpc::pb;
 use rulemesh::service::grpc::pb::rulemesh_client::RulemeshClient;
 use serde_json::{json, Value};
-use std::io::BufRead as _;
 use std::net::{SocketAddr, TcpStream};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -112,15 +111,7 @@ fn the_json_log_line_of_a_request_has_the_same_numbers() {
         .stderr(Stdio::piped())
         .spawn()
         .expect("spawn rulemesh serve");
-    let stderr = child.stderr.take().expect("stderr");
-    let (tx, rx) = std::sync::mpsc::channel::<String>();
-    std::thread::spawn(move || {
-        for line in std::io::BufReader::new(stderr).lines().map_while(Result::ok) {
-            if tx.send(line).is_err() {
-                break;
-            }
-        }
-    });
+    let rx = common::stderr_lines(&mut child);
     let deadline = Instant::now() + Duration::from_secs(20);
     while TcpStream::connect(http).is_err() {
         assert!(Instant::now() < deadline, "server did not start");
