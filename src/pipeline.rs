@@ -197,6 +197,34 @@ pub fn parse_source(source: &[u8], language: Option<Language>, limits: &Limits) 
     Ok((language, lang::parse(language, source)?))
 }
 
+/// The parameters `source` declares (MDG `@param`, EisenScript GUI
+/// defines; L-systems and ETOL declare none), for parameter schemas: read
+/// from the parsed source without evaluating it.
+pub fn declared_params(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<lang::ir::ParamDecl>), RenderError> {
+    Budget::check_source(limits, source.len() as u64)?;
+    let language = language_of(source, language)?;
+    let params = match language {
+        Language::Mdg | Language::Stack | Language::Ug => lang::parse(language, source)?.params,
+        Language::Eisenscript => lang::eisen::parse(source, &Default::default())?
+            .params
+            .into_iter()
+            .map(|p| lang::ir::ParamDecl {
+                name: p.name,
+                kind: if p.integer { lang::ir::ParamKind::Int } else { lang::ir::ParamKind::Float },
+                default: p.default,
+                range: Some(p.range),
+                choices: Vec::new(),
+                span: p.span,
+            })
+            .collect(),
+        Language::Lsystem | Language::Etol => {
+            lang::check(language, source)?;
+            Vec::new()
+        }
+    };
+    Ok((language, params))
+}
+
 /// Parses `source` only to report its diagnostics: the language read and its warnings.
 pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<Diagnostic>), RenderError> {
     Budget::check_source(limits, source.len() as u64)?;

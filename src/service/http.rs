@@ -121,6 +121,8 @@ fn api_router() -> OpenApiRouter<Arc<AppState>> {
         .routes(routes!(model_get))
         .routes(routes!(grammars_list))
         .routes(routes!(grammar_source))
+        .routes(routes!(super::http_schema::grammar_schema))
+        .routes(routes!(super::http_schema::schema_post))
         .routes(routes!(check_post))
         .routes(routes!(healthz))
         .routes(routes!(readyz))
@@ -242,7 +244,7 @@ fn wants_fresh(headers: &HeaderMap) -> bool {
         .any(|v| v.split(',').any(|d| d.trim().eq_ignore_ascii_case("no-cache")))
 }
 
-fn body_bytes(body: Result<Bytes, BytesRejection>, limit: usize) -> Result<Bytes, ServiceError> {
+pub(super) fn body_bytes(body: Result<Bytes, BytesRejection>, limit: usize) -> Result<Bytes, ServiceError> {
     body.map_err(|e| {
         if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
             ServiceError::PayloadTooLarge { limit }

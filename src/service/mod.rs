@@ -13,9 +13,11 @@ pub mod error;
 pub mod grpc;
 pub mod grpc_conn;
 pub mod http;
+pub mod http_schema;
 pub mod library;
 pub mod metrics;
 pub mod request;
+pub mod schema;
 pub mod telemetry;
 pub mod timing;
 

@@ -67,6 +67,38 @@ pub enum ParamValueSchema {
     Text(String),
 }
 
+/// The JSON shape of a seed (for the OpenAPI document; requests are read
+/// by [`seed_number_or_text`]).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, ToSchema)]
+#[serde(untagged)]
+#[schema(as = Seed)]
+pub enum SeedSchema {
+    /// A whole number from 0 to 2^64 − 1.
+    Number(u64),
+    /// The same as decimal digits (up to 20).
+    Text(String),
+}
+
+/// Reads a seed given as a JSON number or a decimal string, refusing
+/// negatives, fractions and values beyond 2^64 − 1 with a message.
+fn seed_number_or_text<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u64>, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Raw {
+        Number(u64),
+        Text(String),
+    }
+    match Option::<Raw>::deserialize(d) {
+        Ok(None) => Ok(None),
+        Ok(Some(Raw::Number(n))) => Ok(Some(n)),
+        Ok(Some(Raw::Text(t))) if !t.is_empty() && t.len() <= 20 && t.bytes().all(|b| b.is_ascii_digit()) => {
+            t.parse().map(Some).map_err(|_| serde::de::Error::custom(format!("seed `{t}` is beyond 2^64 - 1")))
+        }
+        Ok(Some(Raw::Text(t))) => Err(serde::de::Error::custom(format!("seed `{t}` is not a whole number from 0 to 2^64 - 1"))),
+        Err(_) => Err(serde::de::Error::custom("seed must be a whole number from 0 to 2^64 - 1, as a number or a decimal string")),
+    }
+}
+
 /// `POST /v1/render` as sent (and the gRPC `RenderRequest`, converted).
 #[derive(Debug, Clone, Default, PartialEq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -75,7 +107,11 @@ pub struct RenderBody {
     pub source: String,
     /// `"mdg"`, `"lsystem"` or `"eisenscript"`; detected from the source when absent.
     pub language: Option<String>,
-    /// Random seed.
+    /// Random seed: any 64-bit unsigned value, as a JSON number or as a
+    /// decimal string (JSON numbers lose precision beyond 2^53 in most
+    /// clients' parsers, so a seed such as 2^63 + 1 travels as text).
+    #[serde(default, deserialize_with = "seed_number_or_text")]
+    #[schema(value_type = Option<SeedSchema>)]
     pub seed: Option<u64>,
     /// Grammar parameters (numbers, booleans, or text read as either).
     #[serde(default)]
@@ -284,9 +320,29 @@ mod tests {
             let body: RenderBody = from_json(bad.as_bytes()).expect("json ok");
             assert!(matches!(body.plan(&Limits::ceiling(), false), Err(ServiceError::BadRequest(_))), "{bad}");
         }
-        for bad in [r#"{"source":1}"#, r#"{"src":"x"}"#, r#"{"source":"x","seed":-1}"#, "{", r#"{"source":"x","limits":{"max_foo":1}}"#] {
+        for bad in [
+            r#"{"source":1}"#,
+            r#"{"src":"x"}"#,
+            r#"{"source":"x","seed":-1}"#,
+            r#"{"source":"x","seed":1.5}"#,
+            r#"{"source":"x","seed":"-1"}"#,
+            r#"{"source":"x","seed":"18446744073709551616"}"#,
+            r#"{"source":"x","seed":"0x10"}"#,
+            "{",
+            r#"{"source":"x","limits":{"max_foo":1}}"#,
+        ] {
             assert!(matches!(from_json::<RenderBody>(bad.as_bytes()), Err(ServiceError::BadRequest(_))), "{bad}");
         }
+    }
+
+    #[test]
+    fn seeds_are_64_bit_as_numbers_or_decimal_text() {
+        let seed = |json: &str| from_json::<RenderBody>(json.as_bytes()).expect("parses").seed;
+        assert_eq!(seed(r#"{"source":"x","seed":9223372036854775809}"#), Some((1 << 63) + 1));
+        assert_eq!(seed(r#"{"source":"x","seed":"9223372036854775809"}"#), Some((1 << 63) + 1));
+        assert_eq!(seed(r#"{"source":"x","seed":"18446744073709551615"}"#), Some(u64::MAX));
+        assert_eq!(seed(r#"{"source":"x","seed":null}"#), None);
+        assert_eq!(seed(r#"{"source":"x"}"#), None);
     }
 
     #[test]

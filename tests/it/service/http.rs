@@ -383,6 +383,8 @@ async fn openapi_document_lists_every_route_with_methods_and_errors() {
         ("/v1/models/{file}", "get", &[200, 304, 400, 404, 422, 503, 504]),
         ("/v1/grammars", "get", &[200]),
         ("/v1/grammars/{name}", "get", &[200, 404]),
+        ("/v1/grammars/{name}/schema", "get", &[200, 404]),
+        ("/v1/schema", "post", &[200, 400, 413, 422]),
         ("/v1/check", "post", &[200, 400, 413]),
         ("/healthz", "get", &[200]),
         ("/readyz", "get", &[200, 503]),

@@ -11,6 +11,7 @@ use std::time::Duration;
 mod grpc;
 mod http;
 mod ops;
+mod schema;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).
