@@ -7,6 +7,17 @@
  *   strips_dump --batch F   F holds payloads, each a u32 LE length and its
  *                           bytes; print one line per payload: "ok <FNV-1a
  *                           64 of its dump, hex>" or "err <status>"
+ *   strips_dump --truncate FILE
+ *                           the same lines for every prefix FILE[..n],
+ *                           n = 0 .. len−1
+ *   strips_dump --mutate FILE X FIX
+ *                           the same lines for FILE with byte i XORed with X
+ *                           (decimal), i = 0 .. len−1; with FIX = 1 the
+ *                           CRC is recomputed afterwards (for i < len − 4),
+ *                           so the damage reaches the streams
+ *
+ * Each payload is decoded from its own exact-size heap copy, so
+ * AddressSanitizer reports any read past its end.
  *
  * The dump (all little-endian): "RMSD", position bits (u8), normal bits
  * (u8), two zero bytes, V, T, S (strip length), P (palette entries) as u32,
@@ -64,6 +75,10 @@ static void check(int cond, const char *what) {
     }
 }
 
+/* Whether decode_to_dump also tries a strip buffer one index short (the
+ * single-file mode does; the bulk modes skip it, it doubles their time). */
+static int check_short_strip = 1;
+
 /* Decodes one payload into `dump` (emptied first). Returns the status. */
 static rms_status decode_to_dump(const uint8_t *data, size_t size, buf *dump, rms_error *err) {
     rms_info info;
@@ -91,7 +106,7 @@ static rms_status decode_to_dump(const uint8_t *data, size_t size, buf *dump, rm
     if (s == RMS_OK) {
         size_t len = out.strip_length;
         check(rms_restrip(out.triangles, info.triangle_count, NULL, 0) == len, "length-only rms_restrip");
-        if (len > 0) {
+        if (check_short_strip && len > 0) {
             rms_output short_out = out;
             rms_error e2;
             short_out.strip_capacity = len - 1;
@@ -137,6 +152,23 @@ static uint8_t *read_file(const char *path, size_t *len) {
     return b.data;
 }
 
+static uint64_t fnv1a64(const uint8_t *p, size_t n);
+
+/* Decodes a heap copy of data[0..n] and prints its result line. */
+static void line(const uint8_t *data, size_t n, buf *dump) {
+    rms_error err;
+    rms_status s;
+    uint8_t *one;
+    check_short_strip = 0;
+    one = malloc(n ? n : 1);
+    if (!one) exit(2);
+    memcpy(one, data, n);
+    s = decode_to_dump(one, n, dump, &err);
+    free(one);
+    if (s == RMS_OK) printf("ok %016llx\n", (unsigned long long)fnv1a64(dump->data, dump->len));
+    else printf("err %s\n", rms_status_name(s));
+}
+
 static uint64_t fnv1a64(const uint8_t *p, size_t n) {
     uint64_t h = 0xcbf29ce484222325u;
     size_t i;
@@ -157,22 +189,12 @@ int main(int argc, char **argv) {
         data = read_file(argv[2], &len);
         while (at < len) {
             uint32_t n;
-            rms_status s;
             if (len - at < 4) break;
             n = (uint32_t)data[at] | ((uint32_t)data[at + 1] << 8) | ((uint32_t)data[at + 2] << 16) | ((uint32_t)data[at + 3] << 24);
             at += 4;
             if (len - at < n) break;
-            /* a private copy, so AddressSanitizer sees a read past this payload */
-            {
-                uint8_t *one = malloc(n ? n : 1);
-                if (!one) return 2;
-                memcpy(one, data + at, n);
-                s = decode_to_dump(one, n, &dump, &err);
-                free(one);
-            }
+            line(data + at, n, &dump);
             at += n;
-            if (s == RMS_OK) printf("ok %016llx\n", (unsigned long long)fnv1a64(dump.data, dump.len));
-            else printf("err %s\n", rms_status_name(s));
         }
         free(data);
         free(dump.data);
@@ -180,6 +202,38 @@ int main(int argc, char **argv) {
             fprintf(stderr, "strips_dump: batch file ends inside a record\n");
             return 2;
         }
+        return 0;
+    }
+    if (argc == 3 && strcmp(argv[1], "--truncate") == 0) {
+        size_t n;
+        data = read_file(argv[2], &len);
+        for (n = 0; n < len; n++) line(data, n, &dump);
+        free(data);
+        free(dump.data);
+        return 0;
+    }
+    if (argc == 5 && strcmp(argv[1], "--mutate") == 0) {
+        uint8_t x = (uint8_t)atoi(argv[3]);
+        int fix = atoi(argv[4]);
+        size_t i;
+        data = read_file(argv[2], &len);
+        for (i = 0; i < len; i++) {
+            data[i] ^= x;
+            if (fix && len >= 4 && i < len - 4) {
+                uint32_t c = rms_crc32(data, len - 4);
+                uint8_t saved[4];
+                memcpy(saved, data + len - 4, 4);
+                data[len - 4] = (uint8_t)c, data[len - 3] = (uint8_t)(c >> 8);
+                data[len - 2] = (uint8_t)(c >> 16), data[len - 1] = (uint8_t)(c >> 24);
+                line(data, len, &dump);
+                memcpy(data + len - 4, saved, 4);
+            } else {
+                line(data, len, &dump);
+            }
+            data[i] ^= x;
+        }
+        free(data);
+        free(dump.data);
         return 0;
     }
     if (argc == 3) {
