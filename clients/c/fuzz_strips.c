@@ -49,7 +49,8 @@ static void decode_checked(const uint8_t *data, size_t size) {
         if (rms_restrip(out.triangles, info.triangle_count, NULL, 0) != out.strip_length) abort();
         for (i = 0; i < v; i++) {
             const float *n = out.normals + 3 * i;
-            double l = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
+            double x = (double)n[0], y = (double)n[1], z = (double)n[2];
+            double l = sqrt(x * x + y * y + z * z);
             if (fabs(l - 1.0) > 1e-5) abort();
         }
     } else if (err.message[0] == '\0') {
@@ -63,7 +64,10 @@ static void decode_checked(const uint8_t *data, size_t size) {
 }
 
 static void put_u32(uint8_t *p, uint32_t v) {
-    p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16), p[3] = (uint8_t)(v >> 24);
+    p[0] = (uint8_t)v;
+    p[1] = (uint8_t)(v >> 8);
+    p[2] = (uint8_t)(v >> 16);
+    p[3] = (uint8_t)(v >> 24);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

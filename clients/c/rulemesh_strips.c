@@ -429,9 +429,13 @@ size_t rms_restrip(const uint32_t *tris, size_t n, uint32_t *strip, size_t capac
             if (third(nt, t[2], t[1], &z)) {
                 /* (a, b, c) */
             } else if (third(nt, t[0], t[2], &z)) {
-                s0 = t[1], s1 = t[2], s2 = t[0];
+                s0 = t[1];
+                s1 = t[2];
+                s2 = t[0];
             } else if (third(nt, t[1], t[0], &z)) {
-                s0 = t[2], s1 = t[0], s2 = t[1];
+                s0 = t[2];
+                s1 = t[0];
+                s2 = t[1];
             }
         }
         EMIT(s0);
@@ -492,7 +496,10 @@ static rms_status parse(const uint8_t *data, size_t size, layout *l, rms_error *
     if (stored != computed)
         return fail(err, RMS_ERR_CHECKSUM, "strips payload corrupted: CRC32 is %08lx, the file says %08lx",
                     (unsigned long)computed, (unsigned long)stored);
-    version = data[4], flags = data[5], pb = data[6], nb = data[7];
+    version = data[4];
+    flags = data[5];
+    pb = data[6];
+    nb = data[7];
     if (version != 2) return fail(err, RMS_ERR_VERSION, "unsupported strips version %u (this decoder reads version 2)", version);
     if (flags & ~(FLAG_ZSTD | FLAG_PALETTE)) return fail(err, RMS_ERR_HEADER, "invalid strips header: unknown flags 0x%02x", flags);
     if (flags & FLAG_ZSTD)
@@ -530,13 +537,17 @@ static rms_status parse(const uint8_t *data, size_t size, layout *l, rms_error *
     if (blen - at - 4 < n)
         return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream says %lu bytes, only %lu left", (unsigned long)n,
                     (unsigned long)(blen - at - 4));
-    l->vstream = body + at + 4, l->vlen = n, at += 4 + (size_t)n;
+    l->vstream = body + at + 4;
+    l->vlen = n;
+    at += 4 + (size_t)n;
     if (blen - at < 4) return fail(err, RMS_ERR_BODY, "invalid strips body: index stream length missing");
     n = u32_at(body + at);
     if (blen - at - 4 < n)
         return fail(err, RMS_ERR_BODY, "invalid strips body: index stream says %lu bytes, only %lu left", (unsigned long)n,
                     (unsigned long)(blen - at - 4));
-    l->istream = body + at + 4, l->ilen = n, at += 4 + (size_t)n;
+    l->istream = body + at + 4;
+    l->ilen = n;
+    at += 4 + (size_t)n;
     if (at != blen)
         return fail(err, RMS_ERR_BODY, "invalid strips body: %lu stray bytes after the index stream", (unsigned long)(blen - at));
     if ((uint64_t)info->vertex_count > (uint64_t)l->vlen * MAX_VERTICES_PER_STREAM_BYTE + 256u || info->vertex_count == RMS_RESTART)
@@ -608,7 +619,7 @@ static rms_status emit_block(const layout *l, const uint8_t *block, size_t first
         if (out->positions) {
             for (a = 0; a < 3; a++) {
                 /* lo + q·(hi − lo)/M, in this order, in double (the spec) */
-                double lo = info->bbox_min[a], hi = info->bbox_max[a];
+                double lo = (double)info->bbox_min[a], hi = (double)info->bbox_max[a];
                 double ext = hi - lo, scaled = (double)q[a] * ext, step = scaled / (double)pmax;
                 out->positions[3 * k + a] = (float)(lo + step);
             }
