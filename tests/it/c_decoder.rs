@@ -134,7 +134,6 @@ fn c_decoder_matches_rust_on_every_grammar() {
         &["--position-bits", "8", "--normal-bits", "16"],
         &["--normal-bits", "16"],
     ];
-    let mut checked = 0;
     for (k, g) in grammars.iter().enumerate() {
         for extra in [&[][..], others[k % others.len()]] {
             let name = format!("{} {extra:?}", g.display());
@@ -152,10 +151,8 @@ fn c_decoder_matches_rust_on_every_grammar() {
                 let at = got.iter().zip(&want).position(|(a, b)| a != b).unwrap_or(got.len().min(want.len()));
                 panic!("{name}: C dump ({} bytes) differs from Rust's ({} bytes) at byte {at}", got.len(), want.len());
             }
-            checked += 1;
         }
     }
-    assert_eq!(checked, 2 * grammars.len());
     // The -O2 build decodes identically too (one file; it is the build apps use).
     let g = repo().join("grammars/gem.mdg");
     let input = dir.path().join("gem.strips");
