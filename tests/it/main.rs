@@ -5,6 +5,7 @@
 mod common;
 
 mod cli;
+mod c_decoder;
 mod camera;
 mod animation;
 mod compact;
