@@ -23,6 +23,7 @@ mod instancing;
 mod lines;
 mod lsystem;
 mod modifiers;
+mod preview;
 mod print;
 mod selectors;
 mod ssfidelity;
