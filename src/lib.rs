@@ -2,7 +2,7 @@
 //!
 //! Data flows one way: source → a front end ([`eval`] for MDG, stacking
 //! strings and UniGrafix, [`lsystem`] for L-systems and ETOL, [`eisen`] for
-//! EisenScript) → one [`model::Model`] → the stages ([`print`], [`mesh`]) →
+//! EisenScript) → one [`model::Model`] → the stages ([`print`], [`mesh`], [`preview`]) →
 //! [`export`] → bytes. [`render`] ([`pipeline`]) is the only orchestrator and
 //! runs it all under one [`core::Budget`]. `ARCHITECTURE.md` has the code map.
 
@@ -19,6 +19,7 @@ pub mod lsystem;
 pub mod mesh;
 pub mod model;
 pub mod pipeline;
+pub mod preview;
 pub mod print;
 pub mod service;
 

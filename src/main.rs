@@ -67,7 +67,7 @@ struct ServeArgs {
 struct DecodeArgs {
     /// The `.strips` file, or `-` for standard input.
     file: String,
-    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug), or `-` for standard output.
+    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug, .png), or `-` for standard output.
     #[arg(short, long)]
     output: String,
     /// Output format (default: from the output extension, else glb).
@@ -91,7 +91,7 @@ struct RenderArgs {
     /// Output format (default: from the output extension, else glb).
     #[arg(long, value_enum)]
     format: Option<Format>,
-    /// Output file, or `-` for standard output.
+    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug, .png), or `-` for standard output.
     #[arg(short, long, default_value = "-")]
     output: String,
     /// Deepest rule nesting.
@@ -157,6 +157,15 @@ struct RenderArgs {
     /// With --print: write the JSON printability report instead of the model.
     #[arg(long, requires = "print")]
     print_report: bool,
+    /// png: width and height in pixels (16-2048).
+    #[arg(long, default_value_t = rulemesh::preview::DEFAULT_SIZE)]
+    size: u32,
+    /// png: where the camera looks from.
+    #[arg(long, value_enum, default_value = "three-quarter")]
+    view: rulemesh::preview::View,
+    /// png: `transparent`, or an opaque background colour `#rrggbb`.
+    #[arg(long, default_value = "transparent")]
+    background: String,
 }
 
 #[derive(Args)]
@@ -256,12 +265,36 @@ fn limits_from(args: &RenderArgs) -> Limits {
     .clamped_to(&Limits::ceiling())
 }
 
+/// The output format: the one given, else the output file's extension, else
+/// (standard output, or a name without an extension) glb. An extension no
+/// format has is a usage error that lists them, rather than glb bytes
+/// under a name that says otherwise.
+fn output_format(given: Option<Format>, output: &str) -> Result<Format, Failure> {
+    if let Some(f) = given {
+        return Ok(f);
+    }
+    let path = Path::new(output);
+    match path.extension() {
+        _ if output == "-" => Ok(Format::Glb),
+        None => Ok(Format::Glb),
+        Some(ext) => Format::from_extension(path).ok_or_else(|| {
+            let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+            Failure::new(
+                EXIT_USAGE,
+                format!(
+                    "{output}: unknown output extension `.{}` (known: {}); or name the format with --format ({})",
+                    ext.to_string_lossy(),
+                    Format::known_extensions(),
+                    names.join(", ")
+                ),
+            )
+        }),
+    }
+}
+
 fn run_render(args: RenderArgs) -> Result<(), Failure> {
     let limits = limits_from(&args);
-    let format = args
-        .format
-        .or_else(|| (args.output != "-").then(|| Format::from_extension(Path::new(&args.output))).flatten())
-        .unwrap_or(Format::Glb);
+    let format = output_format(args.format, &args.output)?;
     let req = RenderRequest {
         language: language_for(&args.file, args.language),
         seed: args.seed,
@@ -283,6 +316,11 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
                     None => 0,
                 },
                 report: args.print_report,
+            },
+            preview: rulemesh::preview::PreviewOptions {
+                size: args.size,
+                view: args.view,
+                background: rulemesh::preview::parse_background(&args.background).map_err(|e| Failure::new(EXIT_USAGE, e))?,
             },
         },
         script_dir: Some(script_dir_of(&args.file)),
@@ -358,10 +396,7 @@ fn run_check(args: CheckArgs) -> Result<(), Failure> {
 const MAX_STRIPS_BYTES: u64 = 1 << 30;
 
 fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
-    let format = args
-        .format
-        .or_else(|| (args.output != "-").then(|| Format::from_extension(Path::new(&args.output))).flatten())
-        .unwrap_or(Format::Glb);
+    let format = output_format(args.format, &args.output)?;
     let bytes = read_source(&args.file, MAX_STRIPS_BYTES)?;
     if bytes.len() as u64 > MAX_STRIPS_BYTES {
         return Err(Failure::new(EXIT_USAGE, format!("{}: larger than {MAX_STRIPS_BYTES} bytes", args.file)));

@@ -1,5 +1,5 @@
 //! The one orchestrator: a request goes source → front end → [`Model`] →
-//! stages (print, meshing) → export → bytes, under one [`Budget`] made here.
+//! stages (print, meshing, preview) → export → bytes, under one [`Budget`] made here.
 //!
 //! This is the one entry point the CLI and the service share, so the same
 //! request gives the same bytes whichever front door it came through. Front
@@ -240,6 +240,9 @@ fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if req.format == Format::Strips {
         req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
     }
+    if req.format == Format::Png {
+        req.export_options.preview.validate().map_err(RenderError::BadRequest)?;
+    }
     Ok(())
 }
 
@@ -410,19 +413,37 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
         // A camera path plays in the node graph; otherwise the camera is shown at time 0.
         camera: scene.camera.clone().filter(|c| !(c.is_path() && in_graph)),
     };
-    let (bytes, triangles, truncated) = match export::export_with(req.format, &meshes, &meta, opts, budget) {
-        Ok(bytes) => (bytes, meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum(), truncated),
-        Err(ExportError::Limit(e)) if e.limit == Limit::Deadline && req.on_limit == OnLimit::Truncate => {
-            // Too late to write what was made: under `truncate` the answer is
-            // an empty model that says why, still (nearly) within the deadline.
-            budget.lift_deadline();
-            let meta = ExportMeta { truncated: true, graph: None, ..meta };
-            (export::export_with(req.format, &[], &meta, opts, budget)?, 0, truncated.or(Some(e)))
+    let (bytes, triangles, truncated) = if req.format == Format::Png {
+        // The preview stage, then its encoding: a picture needs no fitting or metadata.
+        let image = crate::preview::render(&meshes, &opts.preview, budget).map_err(ExportError::from)?;
+        clock.lap(Phase::Preview);
+        (export::png::write_png(&image, &png_text(model.language, req.seed), budget)?, meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum(), truncated)
+    } else {
+        match export::export_with(req.format, &meshes, &meta, opts, budget) {
+            Ok(bytes) => (bytes, meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum(), truncated),
+            Err(ExportError::Limit(e)) if e.limit == Limit::Deadline && req.on_limit == OnLimit::Truncate => {
+                // Too late to write what was made: under `truncate` the answer is
+                // an empty model that says why, still (nearly) within the deadline.
+                budget.lift_deadline();
+                let meta = ExportMeta { truncated: true, graph: None, ..meta };
+                (export::export_with(req.format, &[], &meta, opts, budget)?, 0, truncated.or(Some(e)))
+            }
+            Err(e) => return Err(e.into()),
         }
-        Err(e) => return Err(e.into()),
     };
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
+}
+
+/// The `tEXt` chunks of a preview: what made it, so a picture found on its
+/// own can be traced to its request (three short chunks; nothing that varies
+/// between runs).
+fn png_text(language: Language, seed: Option<u64>) -> export::png::TextChunks {
+    vec![
+        ("Software", format!("rulemesh {}", crate::ENGINE_VERSION)),
+        ("rulemesh-language", language.name().to_string()),
+        ("rulemesh-seed", seed.map_or_else(|| "grammar".to_string(), |s| s.to_string())),
+    ]
 }
 
 /// The output of a render whose bytes are written (times are filled in by [`render`]).

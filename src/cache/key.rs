@@ -108,6 +108,12 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
     if matches!(req.format, Format::Glb | Format::Gltf) && req.export_options.instancing == crate::export::Instancing::Flat {
         e.field("instancing", b"flat");
     }
+    if req.format == Format::Png {
+        let o = &req.export_options.preview;
+        e.u64("preview.size", o.size.into());
+        e.field("preview.view", o.view.name().as_bytes());
+        e.field("preview.background", crate::preview::background_name(o.background).as_bytes());
+    }
     if req.export_options.fit_unit_box {
         e.field("fit", b"unit");
     }
@@ -157,6 +163,21 @@ mod tests {
         let mut coarse = strips.clone();
         coarse.export_options.strips.position_bits = 12;
         assert_ne!(cache_key(src, &strips), cache_key(src, &coarse));
+        // Each preview option is part of a png's key (and of no other format's).
+        let png = RenderRequest { format: Format::Png, ..base.clone() };
+        let previews = [
+            crate::preview::PreviewOptions { size: 64, ..Default::default() },
+            crate::preview::PreviewOptions { view: crate::preview::View::Top, ..Default::default() },
+            crate::preview::PreviewOptions { background: Some([255, 255, 255]), ..Default::default() },
+        ];
+        for o in previews {
+            let mut p = png.clone();
+            p.export_options.preview = o;
+            assert_ne!(cache_key(src, &png), cache_key(src, &p), "{o:?}");
+            let mut g = base.clone();
+            g.export_options.preview = o;
+            assert_eq!(k, cache_key(src, &g), "{o:?}");
+        }
         // The timeout does not change a finished model.
         let t = RenderRequest { limits: Limits { timeout_ms: 1, ..Limits::default() }, ..base.clone() };
         assert_eq!(k, cache_key(src, &t));

@@ -15,6 +15,8 @@ pub struct PhaseTimes {
     pub print: Duration,
     /// Tessellation and merging into meshes (for printing: the parts).
     pub mesh: Duration,
+    /// Drawing the preview picture (`format=png` only).
+    pub preview: Duration,
     /// Encoding the output bytes.
     pub export: Duration,
     /// The stages lapped, in the order of [`Phase::ALL`] (a bit per phase):
@@ -33,15 +35,17 @@ pub enum Phase {
     Print,
     /// [`PhaseTimes::mesh`].
     Mesh,
+    /// [`PhaseTimes::preview`].
+    Preview,
     /// [`PhaseTimes::export`].
     Export,
 }
 
 impl Phase {
-    /// Every phase, in the order a render runs them (parse, eval, mesh, print, export).
-    pub const ALL: [Phase; 5] = [Phase::Parse, Phase::Eval, Phase::Mesh, Phase::Print, Phase::Export];
+    /// Every phase, in the order a render runs them (parse, eval, mesh, print, preview, export).
+    pub const ALL: [Phase; 6] = [Phase::Parse, Phase::Eval, Phase::Mesh, Phase::Print, Phase::Preview, Phase::Export];
 
-    /// The stage's short name, as in `Server-Timing` (`parse`, `eval`, `print`, `mesh`, `export`)
+    /// The stage's short name, as in `Server-Timing` (`parse`, `eval`, `print`, `mesh`, `preview`, `export`)
     /// and the `stage` label of the metrics.
     pub fn name(self) -> &'static str {
         match self {
@@ -49,6 +53,7 @@ impl Phase {
             Phase::Eval => "eval",
             Phase::Print => "print",
             Phase::Mesh => "mesh",
+            Phase::Preview => "preview",
             Phase::Export => "export",
         }
     }
@@ -60,6 +65,7 @@ impl Phase {
             Phase::Print => 4,
             Phase::Mesh => 8,
             Phase::Export => 16,
+            Phase::Preview => 32,
         }
     }
 }
@@ -72,6 +78,7 @@ impl PhaseTimes {
             Phase::Eval => self.eval,
             Phase::Print => self.print,
             Phase::Mesh => self.mesh,
+            Phase::Preview => self.preview,
             Phase::Export => self.export,
         }
     }
@@ -119,6 +126,7 @@ impl StageClock {
             Phase::Eval => &mut self.phases.eval,
             Phase::Print => &mut self.phases.print,
             Phase::Mesh => &mut self.phases.mesh,
+            Phase::Preview => &mut self.phases.preview,
             Phase::Export => &mut self.phases.export,
         };
         *slot = slot.saturating_add(took);

@@ -7,6 +7,7 @@ mod gltf_document;
 mod gltf_graph;
 mod gltf_instanced;
 pub mod instanced;
+pub mod png;
 pub mod scene;
 pub mod stl;
 pub mod strips;
@@ -43,6 +44,9 @@ pub enum Format {
     ThreeMf,
     /// Berkeley UniGrafix text (seed 004 §1): `def`/`v`/`f`/`c`/`i` statements.
     Ug,
+    /// A PNG picture of the model (the preview stage, `docs/preview.md`):
+    /// drawn on the CPU, for icons and order pages.
+    Png,
 }
 
 impl Format {
@@ -56,8 +60,25 @@ impl Format {
             "rmscene" => Some(Format::Scene),
             "3mf" => Some(Format::ThreeMf),
             "ug" => Some(Format::Ug),
+            "png" => Some(Format::Png),
             _ => None,
         }
+    }
+
+    /// Every format, in the order they are listed in messages.
+    pub const ALL: [Format; 9] =
+        [Format::Glb, Format::Gltf, Format::Stl, Format::StlAscii, Format::Strips, Format::Scene, Format::ThreeMf, Format::Ug, Format::Png];
+
+    /// The output file extensions [`Format::from_extension`] knows, with a dot
+    /// each, for messages that list them.
+    pub fn known_extensions() -> String {
+        let mut exts: Vec<&str> = Vec::new();
+        for f in Format::ALL {
+            if !exts.contains(&f.extension()) {
+                exts.push(f.extension());
+            }
+        }
+        exts.iter().map(|e| format!(".{e}")).collect::<Vec<_>>().join(", ")
     }
 
     /// The MIME type of the format.
@@ -70,6 +91,7 @@ impl Format {
             Format::Scene => "application/vnd.rulemesh.scene",
             Format::ThreeMf => "model/3mf",
             Format::Ug => "text/plain; charset=utf-8",
+            Format::Png => "image/png",
         }
     }
 
@@ -86,6 +108,7 @@ impl Format {
             Format::Scene => "scene",
             Format::ThreeMf => "3mf",
             Format::Ug => "ug",
+            Format::Png => "png",
         }
     }
 
@@ -100,6 +123,7 @@ impl Format {
             Format::Scene => "rmscene",
             Format::ThreeMf => "3mf",
             Format::Ug => "ug",
+            Format::Png => "png",
         }
     }
 }
@@ -184,6 +208,18 @@ pub enum ExportError {
     /// JSON serialisation failed.
     #[error("serialising glTF JSON: {0}")]
     Json(#[from] serde_json::Error),
+    /// The PNG encoder failed (it cannot on a well-formed picture).
+    #[error("encoding PNG: {0}")]
+    Png(String),
+}
+
+impl From<crate::preview::PreviewError> for ExportError {
+    fn from(e: crate::preview::PreviewError) -> Self {
+        match e {
+            crate::preview::PreviewError::Limit(l) => ExportError::Limit(l),
+            crate::preview::PreviewError::BadOptions(detail) => ExportError::InvalidOptions { format: "png", detail },
+        }
+    }
 }
 
 /// Per-format encoding options of a request. They travel with the request
@@ -203,6 +239,8 @@ pub struct ExportOptions {
     /// Printable output: one watertight solid in millimetres (`docs/print.md`).
     /// A pipeline stage before export ([`crate::pipeline`]); exporters ignore it.
     pub print: crate::print::PrintOptions,
+    /// Size, view and background of the `png` preview (`docs/preview.md`).
+    pub preview: crate::preview::PreviewOptions,
 }
 
 /// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
@@ -247,6 +285,9 @@ pub fn export_with(
         }),
         Format::ThreeMf => threemf::write_3mf(meshes, budget),
         Format::Ug => ug::write_ug(meshes, budget),
+        // Meshes from outside a render (a decoded strips file): the preview
+        // stage and the encoder, without the render's text chunks.
+        Format::Png => self::png::write_png(&crate::preview::render(meshes, &options.preview, budget)?, &Vec::new(), budget),
     }
 }
 
@@ -271,6 +312,9 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
         Format::ThreeMf => (4 * 1024, 64, 48),
         // `v vN x y z;` and `f (va vb vc) cN;` lines with shortest-round-trip floats.
         Format::Ug => (4 * 1024, 64, 48),
+        // The picture's size depends on the preview options, not the model;
+        // the preview stage reserves its framebuffer and output itself.
+        Format::Png => (1024, 0, 0),
     };
     vertices
         .saturating_mul(per_vertex)

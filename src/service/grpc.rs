@@ -69,6 +69,9 @@ impl From<pb::RenderRequest> for RenderBody {
             print: r.print,
             size_mm: r.size_mm,
             print_report: r.print_report,
+            size: r.size,
+            view: non_empty(r.view),
+            background: non_empty(r.background),
         }
     }
 }

@@ -309,14 +309,15 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
             (Vec<u8> = "model/gltf+json"),
             (Vec<u8> = "model/stl"),
             (Vec<u8> = "application/vnd.rulemesh.strips"),
-            (Vec<u8> = "application/vnd.rulemesh.scene")
+            (Vec<u8> = "application/vnd.rulemesh.scene"),
+            (Vec<u8> = "image/png")
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
-            ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, export) and the cache lookup, in ms")
+            ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, preview, export) and the cache lookup, in ms")
         )),
         (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
         (status = 413, description = "Request body too large", body = ErrorBody),
@@ -367,12 +368,15 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
     })
 }
 
-/// `GET /v1/models/{name}.{glb|gltf|stl}?seed=N&p.<param>=V&detail=D`.
+/// `GET /v1/models/{name}.{glb|gltf|stl|3mf|png}?seed=N&p.<param>=V&detail=D` (a png also `size`, `view`, `background`).
 #[utoipa::path(get, path = "/v1/models/{file}", tag = "render",
     params(
-        ("file" = String, Path, description = "NAME.glb, NAME.gltf or NAME.stl, NAME a built-in grammar"),
+        ("file" = String, Path, description = "NAME.glb, NAME.gltf, NAME.stl, NAME.3mf or NAME.png, NAME a built-in grammar"),
         ("seed" = Option<u64>, Query, description = "Random seed; pinning it makes the response immutable"),
         ("detail" = Option<u32>, Query, description = "Tessellation detail"),
+        ("size" = Option<u32>, Query, description = "png only: width and height in pixels (16–2048, default 256)"),
+        ("view" = Option<String>, Query, description = "png only: three-quarter (default), front, top or iso"),
+        ("background" = Option<String>, Query, description = "png only: transparent (default) or an opaque #rrggbb"),
         ("p.<param>" = Option<String>, Query, description = "A grammar parameter, e.g. p.size=3"),
         ("If-None-Match" = Option<String>, Header, description = "ETags the client holds"),
         ("Cache-Control" = Option<String>, Header, description = "`no-cache` renders afresh")
@@ -382,14 +386,16 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
             (Vec<u8> = "model/gltf-binary"),
             (Vec<u8> = "model/gltf+json"),
             (Vec<u8> = "model/stl"),
-            (Vec<u8> = "application/vnd.rulemesh.strips")
+            (Vec<u8> = "application/vnd.rulemesh.strips"),
+            (Vec<u8> = "model/3mf"),
+            (Vec<u8> = "image/png")
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
-            ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, export) and the cache lookup, in ms")
+            ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, preview, export) and the cache lookup, in ms")
         )),
         (status = 304, description = "Not modified (If-None-Match matched)"),
         (status = 404, description = "Unknown grammar or extension", body = ErrorBody),
@@ -410,10 +416,10 @@ async fn model_get(
 ) -> Response {
     let result = async {
         let Some((name, ext)) = file.rsplit_once('.') else {
-            return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf or NAME.stl")));
+            return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf, NAME.stl, NAME.3mf or NAME.png")));
         };
-        if !matches!(ext, "glb" | "gltf" | "stl" | "3mf") {
-            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl, 3mf)")));
+        if !matches!(ext, "glb" | "gltf" | "stl" | "3mf" | "png") {
+            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl, 3mf, png)")));
         }
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let mut body = RenderBody {
@@ -436,11 +442,14 @@ async fn model_get(
                 "print" => body.print = Some(v.parse().map_err(|_| bad("print must be true or false"))?),
                 "size_mm" => body.size_mm = Some(v.parse().map_err(|_| bad("size_mm must be a number"))?),
                 "print_report" => body.print_report = Some(v.parse().map_err(|_| bad("print_report must be true or false"))?),
+                "size" => body.size = Some(v.parse().map_err(|_| bad("size must be a whole number of pixels"))?),
+                "view" => body.view = Some(v.clone()),
+                "background" => body.background = Some(v.clone()),
                 _ => match k.strip_prefix("p.") {
                     Some(p) if !p.is_empty() => {
                         body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
                     }
-                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, p.<name>)")),
+                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, size, view, background, p.<name>)")),
                 },
             }
         }

@@ -10,6 +10,7 @@ use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptio
 use crate::geom::DEFAULT_DETAIL;
 use crate::mesh::MeshLayout;
 use crate::lang::Language;
+use crate::preview::{PreviewOptions, View};
 use crate::RenderRequest;
 use serde::Deserialize;
 use utoipa::ToSchema;
@@ -117,8 +118,9 @@ pub struct RenderBody {
     #[serde(default)]
     #[schema(value_type = BTreeMap<String, ParamValueSchema>)]
     pub params: BTreeMap<String, ParamValue>,
-    /// `"glb"` (default), `"gltf"`, `"stl"`, `"stl-ascii"`, `"strips"` or
-    /// `"scene"` (L-systems only: the object-instancing hierarchy).
+    /// `"glb"` (default), `"gltf"`, `"stl"`, `"stl-ascii"`, `"strips"`,
+    /// `"scene"` (L-systems only: the object-instancing hierarchy), `"3mf"`,
+    /// `"ug"` or `"png"` (a preview picture).
     pub format: Option<String>,
     /// Limits, each clamped to the server's ceiling.
     pub limits: Option<LimitsBody>,
@@ -151,6 +153,12 @@ pub struct RenderBody {
     pub size_mm: Option<f64>,
     /// With `print`: answer with the JSON printability report instead of the model.
     pub print_report: Option<bool>,
+    /// `png` only: width and height in pixels (16–2048, default 256).
+    pub size: Option<u32>,
+    /// `png` only: `"three-quarter"` (default), `"front"`, `"top"` or `"iso"`.
+    pub view: Option<String>,
+    /// `png` only: `"transparent"` (default) or an opaque `"#rrggbb"`.
+    pub background: Option<String>,
 }
 
 /// `POST /v1/check` as sent.
@@ -201,8 +209,31 @@ pub fn parse_format(name: Option<&str>) -> Result<Format, ServiceError> {
         Some("scene") | Some("rmscene") => Ok(Format::Scene),
         Some("3mf") => Ok(Format::ThreeMf),
         Some("ug") => Ok(Format::Ug),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: glb, gltf, stl, stl-ascii, strips, scene, 3mf, ug)"))),
+        Some("png") => Ok(Format::Png),
+        Some(other) => {
+            let known: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+            Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: {})", known.join(", "))))
+        }
     }
+}
+
+/// Reads the `png` fields; they need `format=png`. The size range is checked here too,
+/// so a bad size is refused before the request is queued.
+pub fn preview_options(format: Format, size: Option<u32>, view: Option<&str>, background: Option<&str>) -> Result<PreviewOptions, ServiceError> {
+    if format != Format::Png && (size.is_some() || view.is_some() || background.is_some()) {
+        return Err(ServiceError::BadRequest("size, view and background need format=png".into()));
+    }
+    let view = match view.map(str::trim) {
+        None | Some("") => View::default(),
+        Some(v) => View::from_name(v).ok_or_else(|| {
+            let known: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();
+            ServiceError::BadRequest(format!("unknown view `{v}` (known: {})", known.join(", ")))
+        })?,
+    };
+    let background = crate::preview::parse_background(background.unwrap_or("")).map_err(ServiceError::BadRequest)?;
+    let options = PreviewOptions { size: size.unwrap_or(crate::preview::DEFAULT_SIZE), view, background };
+    options.validate().map_err(ServiceError::BadRequest)?;
+    Ok(options)
 }
 
 fn parse_on_limit(name: Option<&str>) -> Result<OnLimit, ServiceError> {
@@ -255,11 +286,13 @@ pub fn print_options(print: Option<bool>, size_mm: Option<f64>, report: Option<b
 impl RenderBody {
     /// Validates the request against the server's `ceiling`.
     pub fn plan(self, ceiling: &Limits, no_cache: bool) -> Result<RenderPlan, ServiceError> {
+        let format = parse_format(self.format.as_deref())?;
+        let preview = preview_options(format, self.size, self.view.as_deref(), self.background.as_deref())?;
         let request = RenderRequest {
             language: parse_language(self.language.as_deref())?,
             seed: self.seed,
             params: self.params,
-            format: parse_format(self.format.as_deref())?,
+            format,
             limits: self.limits.unwrap_or_default().resolve(ceiling),
             on_limit: parse_on_limit(self.on_limit.as_deref())?,
             detail: self.detail.unwrap_or(DEFAULT_DETAIL),
@@ -280,7 +313,7 @@ impl RenderBody {
                 let fit_unit_box = parse_fit(self.fit.as_deref())?;
                 let instancing = parse_instancing(self.instancing.as_deref())?;
                 let print = print_options(self.print, self.size_mm, self.print_report)?;
-                ExportOptions { strips, gltf, fit_unit_box, instancing, print }
+                ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview }
             },
             // The service reads no files: Builder.load takes library grammars only.
             script_dir: None,
@@ -316,6 +349,11 @@ mod tests {
             r#"{"source":"x","language":"cfdg"}"#,
             r#"{"source":"x","on_limit":"maybe"}"#,
             r#"{"source":"x","layout":"spread"}"#,
+            r#"{"source":"x","format":"png","size":8}"#,
+            r#"{"source":"x","format":"png","size":4096}"#,
+            r#"{"source":"x","format":"png","view":"side"}"#,
+            r#"{"source":"x","format":"png","background":"red"}"#,
+            r#"{"source":"x","format":"glb","size":64}"#,
         ] {
             let body: RenderBody = from_json(bad.as_bytes()).expect("json ok");
             assert!(matches!(body.plan(&Limits::ceiling(), false), Err(ServiceError::BadRequest(_))), "{bad}");
@@ -343,6 +381,16 @@ mod tests {
         assert_eq!(seed(r#"{"source":"x","seed":"18446744073709551615"}"#), Some(u64::MAX));
         assert_eq!(seed(r#"{"source":"x","seed":null}"#), None);
         assert_eq!(seed(r#"{"source":"x"}"#), None);
+    }
+
+    #[test]
+    fn png_options_are_read() {
+        let body: RenderBody = from_json(br##"{"source":"x","format":"png","size":64,"view":"iso","background":"#ff8000"}"##).expect("json");
+        let plan = body.plan(&Limits::ceiling(), false).expect("valid");
+        assert_eq!(plan.request.format, Format::Png);
+        assert_eq!(plan.request.export_options.preview, PreviewOptions { size: 64, view: View::Iso, background: Some([255, 128, 0]) });
+        let plain: RenderBody = from_json(br#"{"source":"x","format":"png"}"#).expect("json");
+        assert_eq!(plain.plan(&Limits::ceiling(), false).expect("valid").request.export_options.preview, PreviewOptions::default());
     }
 
     #[test]

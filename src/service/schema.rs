@@ -103,7 +103,8 @@ fn number(v: f64) -> Value {
 /// The render options of `POST /v1/render` (every field but `source`,
 /// `language` and `params`), with the values the parser accepts.
 fn options() -> Value {
-    let formats = ["glb", "gltf", "stl", "stl-ascii", "strips", "scene", "3mf", "ug"];
+    let formats = ["glb", "gltf", "stl", "stl-ascii", "strips", "scene", "3mf", "ug", "png"];
+    let views: Vec<&str> = crate::preview::View::ALL.iter().map(|v| v.name()).collect();
     json!({
         "type": "object",
         "additionalProperties": false,
@@ -145,12 +146,19 @@ fn options() -> Value {
             "instancing": { "enum": ["gpu", "flat"], "default": "gpu" },
             "print": { "type": "boolean", "default": false },
             "size_mm": { "type": "number", "exclusiveMinimum": 0, "maximum": 10000 },
-            "print_report": { "type": "boolean", "default": false }
+            "print_report": { "type": "boolean", "default": false },
+            "size": { "type": "integer", "minimum": crate::preview::MIN_SIZE, "maximum": crate::preview::MAX_SIZE, "default": crate::preview::DEFAULT_SIZE },
+            "view": { "enum": views, "default": crate::preview::View::default().name() },
+            "background": { "type": "string", "pattern": "^\\s*(|[Tt][Rr][Aa][Nn][Ss][Pp][Aa][Rr][Ee][Nn][Tt]|#?[0-9A-Fa-f]{6})\\s*$", "default": "transparent" }
         },
         // `size_mm` and `print_report` only with `print: true`.
         "dependentSchemas": {
             "size_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            "print_report": { "properties": { "print": { "const": true } }, "required": ["print"] }
+            "print_report": { "properties": { "print": { "const": true } }, "required": ["print"] },
+            // `size`, `view` and `background` only with `format: png`.
+            "size": { "properties": { "format": { "const": "png" } }, "required": ["format"] },
+            "view": { "properties": { "format": { "const": "png" } }, "required": ["format"] },
+            "background": { "properties": { "format": { "const": "png" } }, "required": ["format"] }
         }
     })
 }

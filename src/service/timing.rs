@@ -88,7 +88,7 @@ impl RequestTiming {
 /// Logs the one INFO line of a finished request (`request`), in the current
 /// span, with its timing when it answered with a model: the numbers are the
 /// `Server-Timing` header's, as fields (`queue_ms`, `parse_ms`, `eval_ms`,
-/// `mesh_ms`, `print_ms`, `export_ms`, `cache_ms`, `tier`) and as the header
+/// `mesh_ms`, `print_ms`, `preview_ms`, `export_ms`, `cache_ms`, `tier`) and as the header
 /// text (`server_timing`). `status` is the HTTP status, `code` the gRPC outcome.
 pub fn log_request(status: Option<u16>, code: Option<&str>, etag: Option<&str>, wall: Duration, timing: Option<&RequestTiming>) {
     let stage = |p| timing.and_then(|t| t.stage_ms(p));
@@ -103,6 +103,7 @@ pub fn log_request(status: Option<u16>, code: Option<&str>, etag: Option<&str>, 
         eval_ms = stage(Phase::Eval),
         mesh_ms = stage(Phase::Mesh),
         print_ms = stage(Phase::Print),
+        preview_ms = stage(Phase::Preview),
         export_ms = stage(Phase::Export),
         cache_ms = timing.map(RequestTiming::cache_ms),
         tier = timing.and_then(|t| t.lookup.tier.map(|t| t.name())),

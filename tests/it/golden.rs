@@ -96,6 +96,8 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
         ("glb-fit", with(Format::Glb, &|r| r.export_options.fit_unit_box = true)),
         ("glb-per-kind", with(Format::Glb, &|r| r.layout = rulemesh::mesh::MeshLayout::PerKind)),
         ("glb-detail-4", with(Format::Glb, &|r| r.detail = 4)),
+        // The preview stage at its defaults (256 px, three-quarter, transparent).
+        ("png", with(Format::Png, &|_| {})),
     ];
     if matches!(language, Language::Lsystem | Language::Etol) {
         v.push(("scene", with(Format::Scene, &|_| {})));

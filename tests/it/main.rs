@@ -24,6 +24,7 @@ mod instancing;
 mod lines;
 mod lsystem;
 mod modifiers;
+mod preview;
 mod print;
 mod selectors;
 mod ssfidelity;

@@ -1,0 +1,69 @@
+//! PNG: a preview picture ([`crate::preview::Image`]) → bytes, with the
+//! `png` crate (image-rs), and a few `tEXt` chunks saying what made it.
+//!
+//! The encoder's settings are pinned (8-bit RGBA, adaptive filtering,
+//! balanced deflate) and it runs on one thread, so the same picture gives
+//! the same bytes everywhere; nothing time-dependent is written.
+
+use super::ExportError;
+use crate::core::budget::Budget;
+use crate::preview::Image;
+
+/// `tEXt` keywords and values to write (each under 80 Latin-1 bytes; a
+/// handful, so a phone icon stays small).
+pub type TextChunks = Vec<(&'static str, String)>;
+
+/// An upper bound on the PNG of a `size`×`size` picture with `text` chunks:
+/// the raw rows (a filter byte each) plus deflate's worst-case growth of
+/// 5 bytes per 16 KiB block, the chunk framing and the text.
+pub fn max_png_bytes(size: u32, text: &TextChunks) -> u64 {
+    let size = u64::from(size);
+    let raw = size * (size * 4 + 1);
+    let text: u64 = text.iter().map(|(k, v)| 12 + k.len() as u64 + 1 + v.len() as u64).sum();
+    raw + (raw / 16_384 + 1) * 5 + 1024 + text
+}
+
+/// Encodes `image` as an RGBA PNG with `text`, reserving the output's
+/// worst-case size in `budget` first.
+pub fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    budget.reserve_memory(max_png_bytes(image.size, text))?;
+    let bad = |e: ::png::EncodingError| ExportError::Png(e.to_string());
+    let mut out = Vec::new();
+    {
+        let mut enc = ::png::Encoder::new(&mut out, image.size, image.size);
+        enc.set_color(::png::ColorType::Rgba);
+        enc.set_depth(::png::BitDepth::Eight);
+        enc.set_compression(::png::Compression::Balanced);
+        enc.set_filter(::png::Filter::Adaptive);
+        for (k, v) in text {
+            enc.add_text_chunk((*k).to_string(), v.clone()).map_err(bad)?;
+        }
+        let mut w = enc.write_header().map_err(bad)?;
+        w.write_image_data(&image.rgba).map_err(bad)?;
+        w.finish().map_err(bad)?;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::budget::Limits;
+
+    #[test]
+    fn decodes_to_the_same_pixels_and_text() {
+        let rgba: Vec<u8> = (0..16 * 16 * 4).map(|i| (i * 7 % 251) as u8).collect();
+        let image = Image { size: 16, rgba: rgba.clone() };
+        let text: TextChunks = vec![("Software", "rulemesh test".into()), ("rulemesh-seed", "7".into())];
+        let bytes = write_png(&image, &text, &mut Budget::new(Limits::default())).expect("encodes");
+        assert!(bytes.len() as u64 <= max_png_bytes(16, &text));
+        let mut reader = ::png::Decoder::new(std::io::Cursor::new(&bytes)).read_info().expect("header");
+        let mut buf = vec![0; reader.output_buffer_size().expect("size")];
+        let frame = reader.next_frame(&mut buf).expect("frame");
+        assert_eq!((frame.width, frame.height, frame.color_type), (16, 16, ::png::ColorType::Rgba));
+        assert_eq!(&buf[..frame.buffer_size()], &rgba[..]);
+        let chunks: Vec<(String, String)> = reader.info().uncompressed_latin1_text.iter().map(|t| (t.keyword.clone(), t.text.clone())).collect();
+        assert_eq!(chunks, [("Software".to_string(), "rulemesh test".to_string()), ("rulemesh-seed".to_string(), "7".to_string())]);
+        assert_eq!(bytes, write_png(&image, &text, &mut Budget::new(Limits::default())).expect("again"));
+    }
+}
