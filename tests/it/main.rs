@@ -21,6 +21,7 @@ mod grammars;
 mod hostile;
 mod instancing;
 mod lines;
+mod winding;
 mod lsystem;
 mod modifiers;
 mod print;
