@@ -26,9 +26,11 @@ pub(super) struct Pen {
     pub(super) open: Option<usize>,
 }
 
-/// Turns `point`'s profile orthogonal to the segment from the line's last point
+/// Turns `point`'s frame orthogonal to the segment from the line's last point
 /// (SLINETO, with the shortest-arc rotation of eq 3.29 as corrected in the
-/// seed notes). A line's first point is turned too, so its first segment is straight.
+/// seed notes). A line's first point is turned too. The sweep turns every
+/// moving line's rings onto its path anyway (`geom::mitre`), so what this
+/// still decides is the frame a continuation starts from and the first ring's roll.
 fn orient_along_segment(line: &mut Polyline, point: &mut LinePoint) {
     let Some(prev) = line.points.last_mut() else { return };
     let Some(dir) = (point.frame.translation - prev.frame.translation).try_normalize() else { return };

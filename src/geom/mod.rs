@@ -8,6 +8,7 @@ pub mod halfedge;
 pub mod hull;
 pub mod isosurface;
 pub mod mesh;
+pub mod mitre;
 pub mod modifiers;
 pub mod normalize;
 pub mod polyhedra;

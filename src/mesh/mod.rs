@@ -189,8 +189,9 @@ pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Ve
         parts.push(NamedMesh { name: "part".to_string(), mesh });
     }
     // Each swept line on its own too: branches of one plant share positions.
+    // A line that meets itself comes in runs that do not, each a part.
     for line in &scene.lines {
-        if let Some(mesh) = crate::geom::sweep::sweep_lines(std::slice::from_ref(line), &scene.profiles, detail, budget, &mut |_| Ok(false))? {
+        for mesh in crate::geom::sweep::sweep_line_parts(line, &scene.profiles, detail, budget)? {
             parts.push(NamedMesh { name: "lines".to_string(), mesh });
         }
     }

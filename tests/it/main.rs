@@ -22,6 +22,7 @@ mod grammars;
 mod hostile;
 mod instancing;
 mod lines;
+mod winding;
 mod lsystem;
 mod modifiers;
 mod preview;
