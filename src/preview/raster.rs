@@ -138,6 +138,14 @@ fn round(v: f32) -> i64 {
     }
 }
 
+/// `v` (|v| ≤ 2^52) rounded half away from zero, like `f64::round`, which
+/// is a libm call on x86-64's baseline and was a tenth of a preview's time.
+fn round_f64(v: f64) -> i64 {
+    let t = v as i64;
+    let frac = v - t as f64;
+    t + i64::from(frac >= 0.5) - i64::from(frac <= -0.5)
+}
+
 /// One band of supersampled colour (10 bits a channel) and depth.
 struct Band {
     /// Samples per row.
@@ -186,8 +194,10 @@ pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], options: &Prev
     let mut top = 0;
     // Backdrop triangles (see `is_backdrop`), if any, are drawn first and
     // then pushed behind everything, so they never hide the model.
-    let backdrop = |a: &ScreenVertex, b: &ScreenVertex, c: &ScreenVertex| is_backdrop(a, b, c, width);
-    let any_backdrop = meshes.iter().zip(vertices).any(|(m, v)| triangles(&m.mesh, v).any(|[a, b, c]| backdrop(&a, &b, &c)));
+    // When every vertex lies within the picture's side of it, no triangle can be one.
+    let reach = width * SUB;
+    let any_backdrop = vertices.iter().flatten().any(|v| v.x < -reach || v.x > 2 * reach || v.y < -reach || v.y > 2 * reach);
+    let backdrop = |a: &ScreenVertex, b: &ScreenVertex, c: &ScreenVertex| any_backdrop && is_backdrop(a, b, c, width);
     while top < width {
         band.rows = (top, (top + band_rows).min(width));
         band.depth.fill(EMPTY);
@@ -233,7 +243,7 @@ impl Plane {
         let at = |w: [i64; 3]| -> i64 {
             let sum = w[0] as f64 * a[0] as f64 + w[1] as f64 * a[1] as f64 + w[2] as f64 * a[2] as f64;
             // Saturating: only a sample far outside a sliver could be this far off.
-            (sum * scale).round().clamp(-ATTR_LIMIT, ATTR_LIMIT) as i64
+            round_f64((sum * scale).clamp(-ATTR_LIMIT, ATTR_LIMIT))
         };
         Plane { start: at(e), dx: at(ex), dy: at(ey) }
     }
