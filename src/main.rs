@@ -294,7 +294,12 @@ fn output_format(given: Option<Format>, output: &str) -> Result<Format, Failure>
 
 fn run_render(args: RenderArgs) -> Result<(), Failure> {
     let limits = limits_from(&args);
-    let format = output_format(args.format, &args.output)?;
+    // A printability report is JSON whatever the file is called (`report.json`);
+    // the format only names the model it reports on (STL unless given).
+    let format = match args.print_report {
+        true => args.format.unwrap_or(Format::Stl),
+        false => output_format(args.format, &args.output)?,
+    };
     let req = RenderRequest {
         language: language_for(&args.file, args.language),
         seed: args.seed,
