@@ -473,10 +473,27 @@ typedef struct layout {
     size_t vlen, ilen;
 } layout;
 
+/* Reads one stream of the body at *at: a u32 length, then that many bytes
+ * (the vertex and the index stream are laid out alike). */
+static rms_status length_prefixed(const uint8_t *body, size_t blen, size_t *at, const char *name, const uint8_t **stream,
+                                  size_t *len, rms_error *err) {
+    uint32_t n;
+    if (blen - *at < 4) return fail(err, RMS_ERR_BODY, "invalid strips body: %s stream length missing", name);
+    n = u32_at(body + *at);
+    if (blen - *at - 4 < n)
+        return fail(err, RMS_ERR_BODY, "invalid strips body: %s stream says %lu bytes, only %lu left", name, (unsigned long)n,
+                    (unsigned long)(blen - *at - 4));
+    *stream = body + *at + 4;
+    *len = n;
+    *at += 4 + (size_t)n;
+    return RMS_OK;
+}
+
 static rms_status parse(const uint8_t *data, size_t size, layout *l, rms_error *err) {
     const size_t min = HEADER_LEN + TRAILER_LEN;
     uint64_t body_len, expected;
-    uint32_t stored, computed, raw_len, n;
+    uint32_t stored, computed, raw_len;
+    rms_status st;
     uint8_t version, flags, pb, nb;
     const uint8_t *body;
     size_t blen, at, a;
@@ -532,22 +549,10 @@ static rms_status parse(const uint8_t *data, size_t size, layout *l, rms_error *
     at = 4u * info->palette_count;
     if (blen < at) return fail(err, RMS_ERR_BODY, "invalid strips body: palette cut short");
     l->palette = info->palette_count ? body : NULL;
-    if (blen - at < 4) return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream length missing");
-    n = u32_at(body + at);
-    if (blen - at - 4 < n)
-        return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream says %lu bytes, only %lu left", (unsigned long)n,
-                    (unsigned long)(blen - at - 4));
-    l->vstream = body + at + 4;
-    l->vlen = n;
-    at += 4 + (size_t)n;
-    if (blen - at < 4) return fail(err, RMS_ERR_BODY, "invalid strips body: index stream length missing");
-    n = u32_at(body + at);
-    if (blen - at - 4 < n)
-        return fail(err, RMS_ERR_BODY, "invalid strips body: index stream says %lu bytes, only %lu left", (unsigned long)n,
-                    (unsigned long)(blen - at - 4));
-    l->istream = body + at + 4;
-    l->ilen = n;
-    at += 4 + (size_t)n;
+    st = length_prefixed(body, blen, &at, "vertex", &l->vstream, &l->vlen, err);
+    if (st != RMS_OK) return st;
+    st = length_prefixed(body, blen, &at, "index", &l->istream, &l->ilen, err);
+    if (st != RMS_OK) return st;
     if (at != blen)
         return fail(err, RMS_ERR_BODY, "invalid strips body: %lu stray bytes after the index stream", (unsigned long)(blen - at));
     if ((uint64_t)info->vertex_count > (uint64_t)l->vlen * MAX_VERTICES_PER_STREAM_BYTE + 256u || info->vertex_count == RMS_RESTART)
