@@ -514,10 +514,9 @@ pub struct GrammarList {
         (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
 async fn grammar_source(Path(name): Path<String>) -> Response {
-    let name = name.strip_suffix(".mdg").unwrap_or(&name);
-    match library::find(name) {
-        Some(b) => ([(header::CONTENT_TYPE, "text/plain; charset=utf-8")], b.source).into_response(),
-        None => ServiceError::NotFound(format!("no built-in grammar `{name}`")).into_response(),
+    match library::find_route_name(&name) {
+        Ok(b) => ([(header::CONTENT_TYPE, "text/plain; charset=utf-8")], b.source).into_response(),
+        Err(e) => e.into_response(),
     }
 }
 

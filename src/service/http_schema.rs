@@ -43,10 +43,9 @@ fn schema_response(title: &str, description: &str, source: &[u8], language: Opti
         (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
 pub async fn grammar_schema(Extension(caller): Extension<Caller>, Path(name): Path<String>) -> Response {
-    let name = name.strip_suffix(".mdg").unwrap_or(&name);
-    match library::find(name) {
-        Some(b) => schema_response(b.name, &library::description(b.source), b.source.as_bytes(), Some(b.language), &caller.ceiling),
-        None => ServiceError::NotFound(format!("no built-in grammar `{name}`")).into_response(),
+    match library::find_route_name(&name) {
+        Ok(b) => schema_response(b.name, &library::description(b.source), b.source.as_bytes(), Some(b.language), &caller.ceiling),
+        Err(e) => e.into_response(),
     }
 }
 

@@ -30,6 +30,13 @@ pub fn find(name: &str) -> Option<Builtin> {
     all().find(|b| b.name == name)
 }
 
+/// The built-in grammar a route names (`gem` or `gem.mdg`), or the 404 that
+/// every grammar route answers for a name the library does not have.
+pub fn find_route_name(name: &str) -> Result<Builtin, super::ServiceError> {
+    let name = name.strip_suffix(".mdg").unwrap_or(name);
+    find(name).ok_or_else(|| super::ServiceError::NotFound(format!("no built-in grammar `{name}`")))
+}
+
 /// A declared parameter as listed by the API.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct ParamInfo {
