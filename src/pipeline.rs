@@ -413,14 +413,15 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
         // A camera path plays in the node graph; otherwise the camera is shown at time 0.
         camera: scene.camera.clone().filter(|c| !(c.is_path() && in_graph)),
     };
+    let drawn: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     let (bytes, triangles, truncated) = if req.format == Format::Png {
         // The preview stage, then its encoding: a picture needs no fitting or metadata.
         let image = crate::preview::render(&meshes, &opts.preview, budget).map_err(ExportError::from)?;
         clock.lap(Phase::Preview);
-        (export::png::write_png(&image, &png_text(model.language, req.seed), budget)?, meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum(), truncated)
+        (export::png::write_png(&image, &png_text(model.language, req.seed), budget)?, drawn, truncated)
     } else {
         match export::export_with(req.format, &meshes, &meta, opts, budget) {
-            Ok(bytes) => (bytes, meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum(), truncated),
+            Ok(bytes) => (bytes, drawn, truncated),
             Err(ExportError::Limit(e)) if e.limit == Limit::Deadline && req.on_limit == OnLimit::Truncate => {
                 // Too late to write what was made: under `truncate` the answer is
                 // an empty model that says why, still (nearly) within the deadline.

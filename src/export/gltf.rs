@@ -70,9 +70,7 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
     if buffer_len > 0 {
         out.extend_from_slice(&(align4(buffer_len) as u32).to_le_bytes());
         out.extend_from_slice(&CHUNK_BIN.to_le_bytes());
-        if !write_buffer_until(&mut out, &placed, &tracks, &|| budget.check_deadline().is_err()) {
-            budget.check_deadline()?;
-        }
+        write_buffer_until(&mut out, &placed, &tracks, &|| budget.check_deadline())?;
         out.resize(total as usize, 0);
     }
     debug_assert_eq!(out.len() as u64, total);
@@ -107,9 +105,7 @@ pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) 
     out.extend_from_slice(&json_bytes[..split]);
     if buffer_len > 0 {
         let mut b64 = Base64 { out: &mut out, carry: [0; 3], held: 0 };
-        if !write_buffer_until(&mut b64, &placed, &tracks, &|| budget.check_deadline().is_err()) {
-            budget.check_deadline()?;
-        }
+        write_buffer_until(&mut b64, &placed, &tracks, &|| budget.check_deadline())?;
         b64.finish();
     }
     out.extend_from_slice(&json_bytes[split..]);
@@ -337,9 +333,9 @@ pub(crate) mod tests {
         let mut out = Vec::new();
         let whole = write_buffer_until(&mut out, &placed, &Default::default(), &|| {
             asked.set(asked.get() + 1);
-            asked.get() == 2
+            if asked.get() == 2 { Err("stop") } else { Ok(()) }
         });
-        assert!(!whole);
+        assert_eq!(whole, Err("stop"));
         // The first run of positions only: 65,536 × 12 bytes.
         assert_eq!((asked.get(), out.len()), (2, crate::geom::STOP_EVERY * 12));
     }

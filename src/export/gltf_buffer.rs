@@ -350,15 +350,14 @@ fn put_words<T: bytemuck::Pod>(sink: &mut impl Sink, values: &[T], to_le: fn(T) 
 /// Writes the binary buffer (exactly `buffer_len` bytes, zero padding between
 /// meshes), then the animation samples.
 pub(super) fn write_buffer(sink: &mut impl Sink, placed: &[Placement<'_>], tracks: &Tracks) {
-    let whole = write_buffer_until(sink, placed, tracks, &|| false);
-    debug_assert!(whole);
+    let never: Result<(), std::convert::Infallible> = write_buffer_until(sink, placed, tracks, &|| Ok(()));
+    let Ok(()) = never;
 }
 
-/// [`write_buffer`] that asks `stop` between runs of [`STOP_EVERY`] values
-/// whether to give up (a model of millions of triangles takes a noticeable
-/// share of a deadline to copy). Returns false, with the buffer partly
-/// written, when it gave up.
-pub(super) fn write_buffer_until(sink: &mut impl Sink, placed: &[Placement<'_>], tracks: &Tracks, stop: &dyn Fn() -> bool) -> bool {
+/// [`write_buffer`] that calls `check` between runs of [`STOP_EVERY`] values
+/// (a model of millions of triangles takes a noticeable share of a deadline
+/// to copy) and gives up with its error, the buffer partly written.
+pub(super) fn write_buffer_until<E>(sink: &mut impl Sink, placed: &[Placement<'_>], tracks: &Tracks, check: &dyn Fn() -> Result<(), E>) -> Result<(), E> {
     let mut at = 0u64;
     for (m, p) in placed {
         while at < p.offset {
@@ -367,22 +366,16 @@ pub(super) fn write_buffer_until(sink: &mut impl Sink, placed: &[Placement<'_>],
         }
         let mesh = &m.mesh;
         for r in runs(mesh.positions.len()) {
-            if stop() {
-                return false;
-            }
+            check()?;
             put_words::<f32>(sink, bytemuck::cast_slice(&mesh.positions[r]), f32::to_le_bytes);
         }
         for r in runs(mesh.normals.len()) {
-            if stop() {
-                return false;
-            }
+            check()?;
             put_words::<f32>(sink, bytemuck::cast_slice(&mesh.normals[r]), f32::to_le_bytes);
         }
         sink.put(bytemuck::cast_slice(&mesh.colours));
         for r in runs(mesh.indices.len()) {
-            if stop() {
-                return false;
-            }
+            check()?;
             if p.short {
                 for &i in &mesh.indices[r] {
                     // Fits: `short` means every index is below 65535.
@@ -401,7 +394,7 @@ pub(super) fn write_buffer_until(sink: &mut impl Sink, placed: &[Placement<'_>],
         }
         sink.put(&tracks.bytes);
     }
-    true
+    Ok(())
 }
 
 /// Consecutive ranges of at most [`STOP_EVERY`] covering `0..len`.

@@ -231,8 +231,7 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget, cutoff: &mut Cutoff) -> Res
         }
         // A shape can be millions of triangles (an expanded UniGrafix
         // assembly), so the clock is also read inside one placement.
-        let map = (placed.linear(), placed.normal_matrix(), placed.translation);
-        if !append_mapped_until(&mut mesh, proto, map, placed.colour, placed.parity, &mut || cutoff.check(budget))? {
+        if !append_mapped_until(&mut mesh, proto, instance_map(&placed), placed.colour, placed.parity, &mut || cutoff.check(budget))? {
             break;
         }
     }
@@ -356,7 +355,12 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, cutoff: 
 
 /// Appends `proto` transformed by `inst` to `mesh`.
 fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
-    append_mapped(mesh, proto, (inst.linear(), inst.normal_matrix(), inst.translation), inst.colour, inst.parity);
+    append_mapped(mesh, proto, instance_map(inst), inst.colour, inst.parity);
+}
+
+/// The (linear part, normal matrix, translation) an instance maps its prototype by.
+fn instance_map(inst: &Instance) -> (Mat3, Mat3, Vec3) {
+    (inst.linear(), inst.normal_matrix(), inst.translation)
 }
 
 /// Appends `proto` mapped by the affine `inst` to `mesh`.
