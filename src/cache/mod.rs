@@ -1,16 +1,16 @@
-//! The content-hash model cache: canonical request keys ([`key`]) and an
-//! in-process, byte-budgeted, single-flight store ([`store`]), optionally
+//! The content-hash model cache: keyed by the canonical request keys of
+//! [`crate::pipeline::key`] (which live with the pipeline, so that outputs
+//! can carry their own key), an in-process, byte-budgeted, single-flight store ([`store`]), optionally
 //! backed by files on disk ([`disk`]) and by a Redis shared between workers
 //! ([`redis`]).
 
 pub mod disk;
-pub mod key;
 pub mod observe;
 pub mod redis;
 pub mod store;
 
 pub use disk::{DiskError, DiskTier};
-pub use key::{normalize_source, CacheKey};
+pub use crate::pipeline::key::{normalize_source, CacheKey};
 pub use observe::{CacheObserver, Lookup, Tier};
 pub use self::redis::{RedisError, RedisSettings, RedisTier};
 pub use store::{CacheOutcome, ModelCache, Rendered};

@@ -99,6 +99,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         primitives: built.objects,
         warnings: script.warnings,
         promised: built.promised,
+        seed: req.seed.unwrap_or(0),
     })
 }
 

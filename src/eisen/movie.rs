@@ -96,7 +96,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     budget.release_memory(promised.saturating_add(movie.held_bytes));
     let (mut scene, primitives) = assemble(frames, animated, budget)?;
     scene.truncated = truncated;
-    Ok(Model { language: Language::Eisenscript, scene, hierarchy: None, primitives, warnings, promised: 0 })
+    Ok(Model { language: Language::Eisenscript, scene, hierarchy: None, primitives, warnings, promised: 0, seed })
 }
 
 /// One scene of `frames`: frame 0 alone unless `animated` and there are

@@ -141,6 +141,11 @@ pub(super) struct Machine<'p, 'b> {
     pub(super) track_index: HashMap<Vec<GroupId>, u32>,
     /// Scene shape index of each `mesh` declaration built so far.
     pub(super) mesh_shape: HashMap<u32, u32>,
+    /// The path, profile and camera rules being evaluated by the machines
+    /// above this one (each capture runs in a machine of its own, on the
+    /// call stack): a rule already here is a cycle, and the chain's length
+    /// is bounded so the call stack is (see `paths::MAX_CAPTURE_NESTING`).
+    pub(super) capturing: Vec<GroupId>,
 }
 
 impl<'p, 'b> Machine<'p, 'b> {
@@ -162,6 +167,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             isosurface_shape: HashMap::new(),
             track_index: HashMap::new(),
             mesh_shape: HashMap::new(),
+            capturing: Vec::new(),
         }
     }
 

@@ -30,6 +30,8 @@ pub fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, bu
     let scene = evaluate(&program, &params, &options, budget)?;
     Ok(Model {
         language,
+        // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
+        seed: req.seed.or(program.directives.randseed).unwrap_or(0),
         primitives: scene.instances.len() as u64,
         promised: promised_bytes(&scene, &options),
         scene,

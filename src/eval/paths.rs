@@ -25,6 +25,11 @@ pub(super) struct Capture {
     pub(super) vertices: Vec<DVec3>,
 }
 
+/// How many path, profile or camera rules may be evaluated one inside
+/// another (a path rule whose body uses an animated rule whose path uses …).
+/// Real grammars nest two or three; the bound keeps the call stack small.
+pub const MAX_CAPTURE_NESTING: usize = 32;
+
 impl<'p, 'b> Machine<'p, 'b> {
     /// Records which bone a new piece of geometry belongs to (when the scene has a rig).
     pub(super) fn tag(&mut self, tags: fn(&mut Rig) -> &mut Vec<u32>, bone: u32) -> Result<(), EvalError> {
@@ -99,10 +104,18 @@ impl<'p, 'b> Machine<'p, 'b> {
         if let Some(c) = self.captured.get(&g).filter(|c| c.frame_limit.is_none() || c.frame_limit == frame_limit) {
             return Ok(Rc::clone(c));
         }
+        // A capture runs a machine of its own on the call stack, so a path
+        // rule that is animated (or swept) by itself, directly or through
+        // other path rules, would recurse until the stack overflows.
+        if self.capturing.contains(&g) || self.capturing.len() >= MAX_CAPTURE_NESTING {
+            let name = self.ev.program.groups.get(g as usize).map_or_else(String::new, |group| group.name.clone());
+            return Err(EvalError::PathCycle { name, nesting: MAX_CAPTURE_NESTING });
+        }
         let key = self.root_key.child(CAPTURE_SLOT, u64::from(g));
         let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key, bone: 0, ns: 0 };
         let capture = Capture { frame_limit, ..Capture::default() };
         let mut sub = Machine::new(self.ev, &mut *self.budget, Scene::default(), Some(capture), self.root_key);
+        sub.capturing = self.capturing.iter().copied().chain([g]).collect();
         let result = sub.run(Target::Group(g), root);
         sub.release();
         result?;

@@ -237,10 +237,10 @@ pub(crate) mod tests {
     #[test]
     fn extras_record_background_and_truncation() {
         let meshes = meshes_of(&scene(vec![inst(PrimitiveKind::Box, [0.0; 3], 1.0, false)]), 16, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None };
+        let meta = ExportMeta { background: Some([0.25, 0.5, 1.0, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None, provenance: None };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"background": [0.25, 0.5, 1.0, 1.0], "truncated": true}));
-        let meta = ExportMeta { background: None, truncated: true, graph: None, material_per_mesh: false, camera: None };
+        let meta = ExportMeta { background: None, truncated: true, graph: None, material_per_mesh: false, camera: None, provenance: None };
         let (j, _) = parse_glb(&write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap());
         assert_eq!(j["scenes"][0]["extras"], serde_json::json!({"truncated": true}));
     }
@@ -248,7 +248,7 @@ pub(crate) mod tests {
     #[test]
     fn gltf_embeds_the_same_buffer_as_glb() {
         let meshes = meshes_of(&all_nine(), 7, MeshLayout::Merged);
-        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None, material_per_mesh: false, camera: None };
+        let meta = ExportMeta { background: Some([0.0, 0.0, 0.0, 1.0]), truncated: false, graph: None, material_per_mesh: false, camera: None, provenance: None };
         let glb = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let gltf = write_gltf(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let (jb, bin) = parse_glb(&glb);
@@ -281,7 +281,7 @@ pub(crate) mod tests {
     #[test]
     fn deterministic_bytes() {
         let meshes = meshes_of(&all_nine(), 16, MeshLayout::PerKind);
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None, provenance: None };
         let a = write_glb(&meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
         let b = write_glb(&meshes_of(&all_nine(), 16, MeshLayout::PerKind), &meta, &mut Budget::new(Limits::default())).unwrap();
         assert_eq!(a, b);

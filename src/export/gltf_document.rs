@@ -258,7 +258,8 @@ impl Doc {
     }
 
     /// Finishes the document: the root node's children, the still camera's
-    /// node, and the one scene with its `extras`.
+    /// node, the one scene with its `extras`, and the model's provenance in
+    /// `asset.extras`.
     pub(super) fn finish(mut self, meta: &ExportMeta) -> Result<json::Root, ExportError> {
         if !self.children.is_empty() {
             self.root.nodes[self.root_node.value()].children = Some(self.children);
@@ -276,6 +277,9 @@ impl Doc {
             }));
         }
         let scene = self.root.push(json::Scene { extensions: None, extras: scene_extras(meta)?, name: None, nodes });
+        if let Some(p) = &meta.provenance {
+            self.root.asset.extras = Some(json::extras::RawValue::from_string(serde_json::to_string(&p.json())?)?);
+        }
         self.root.scene = Some(scene);
         Ok(self.root)
     }

@@ -10,8 +10,9 @@ use crate::geom::{Mesh, NamedMesh};
 use crate::model::Hierarchy;
 
 /// Writes `h` as instanced glTF: one mesh per (leaf shape, colour), one
-/// instance per leaf, transforms written as the hierarchy is walked.
-pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+/// instance per leaf, transforms written as the hierarchy is walked;
+/// `provenance` goes in `asset.extras`.
+pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, provenance: Option<&super::Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let counts = h.leaf_counts();
     let mut index: Vec<Vec<([u8; 4], usize)>> = vec![Vec::new(); h.shapes.len()];
     let mut meshes = Vec::with_capacity(counts.len());
@@ -26,7 +27,7 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, budget: &mut Budge
         }
     }
     let counts: Vec<u64> = counts.values().copied().collect();
-    let meta = ExportMeta { background: None, truncated: h.truncated.is_some(), graph: None, material_per_mesh: false, camera: None };
+    let meta = ExportMeta { background: None, truncated: h.truncated.is_some(), graph: None, material_per_mesh: false, camera: None, provenance: provenance.cloned() };
     let bytes = super::gltf::write_instanced(&meshes, &counts, &meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };

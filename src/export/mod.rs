@@ -8,6 +8,7 @@ mod gltf_graph;
 mod gltf_instanced;
 pub mod instanced;
 pub mod png;
+pub mod provenance;
 pub mod scene;
 pub mod stl;
 pub mod strips;
@@ -15,6 +16,7 @@ pub mod threemf;
 pub mod ug;
 
 pub use compact::{Compression, GltfOptions};
+pub use provenance::Provenance;
 pub use strips::{decode_strips, StripsError, StripsOptions};
 
 use crate::core::budget::{Budget, LimitExceeded};
@@ -167,6 +169,10 @@ pub struct ExportMeta {
     pub material_per_mesh: bool,
     /// A viewpoint to add as a glTF perspective camera (glTF formats only).
     pub camera: Option<crate::model::Camera>,
+    /// What made the model (engine, language, seed, parameters, model key),
+    /// written where the format has metadata; `None` for meshes that come
+    /// from outside a render (a decoded strips file).
+    pub provenance: Option<Provenance>,
 }
 
 /// Export failures.
@@ -277,17 +283,18 @@ pub fn export_with(
         Format::Gltf if !g.is_plain() => compact::write_gltf(meshes, meta, g, budget),
         Format::Glb => gltf::write_glb(meshes, meta, budget),
         Format::Gltf => gltf::write_gltf(meshes, meta, budget),
-        Format::Stl => stl::write_binary(meshes, budget),
+        Format::Stl => stl::write_binary_titled(meshes, &stl::title(meta.provenance.as_ref()), budget),
         Format::StlAscii => stl::write_ascii(meshes, budget),
         Format::Scene => Err(ExportError::InvalidOptions {
             format: "scene",
             detail: "the scene format writes object hierarchies, which only L-systems make; meshes cannot be written as one".into(),
         }),
-        Format::ThreeMf => threemf::write_3mf(meshes, budget),
+        Format::ThreeMf => threemf::write_3mf(meshes, meta.provenance.as_ref(), budget),
         Format::Ug => ug::write_ug(meshes, budget),
-        // Meshes from outside a render (a decoded strips file): the preview
-        // stage and the encoder, without the render's text chunks.
-        Format::Png => self::png::write_png(&crate::preview::render(meshes, &options.preview, budget)?, &Vec::new(), budget),
+        // The pipeline runs the preview stage itself (to time it) and then
+        // `png::write_png` with the same text chunks; this arm serves meshes
+        // from outside a render (a decoded strips file) and library callers.
+        Format::Png => self::png::write_png(&crate::preview::render(meshes, &options.preview, budget)?, &self::png::text_chunks(meta.provenance.as_ref()), budget),
     }
 }
 
@@ -341,7 +348,7 @@ mod tests {
             let s = scene(vec![inst(kind, [0.0; 3], 1.0, false)]);
             out.push((kind.name().to_ascii_lowercase(), meshes_of(&s, 16, MeshLayout::Merged), plain.clone()));
         }
-        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None };
+        let meta = ExportMeta { background: Some([0.1, 0.2, 0.3, 1.0]), truncated: true, graph: None, material_per_mesh: false, camera: None, provenance: None };
         out.push(("all-merged".into(), meshes_of(&all_nine(), 16, MeshLayout::Merged), meta.clone()));
         out.push(("all-per-kind".into(), meshes_of(&all_nine(), 5, MeshLayout::PerKind), meta));
         let mirrored = scene(vec![inst(PrimitiveKind::Cone, [1.0, 2.0, 3.0], 2.0, true)]);

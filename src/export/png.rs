@@ -13,6 +13,16 @@ use crate::preview::Image;
 /// handful, so a phone icon stays small).
 pub type TextChunks = Vec<(&'static str, String)>;
 
+/// The text chunks of a picture: `Software` (the engine, PNG's registered
+/// keyword) and, for a rendered model, its provenance (`rulemesh:seed`, …),
+/// so a picture found on its own can be traced to its request. All values
+/// are ASCII ([`Provenance::params_json`] escapes the rest), as `tEXt` needs.
+pub fn text_chunks(provenance: Option<&super::Provenance>) -> TextChunks {
+    let mut text = vec![("Software", super::Provenance::engine())];
+    text.extend(provenance.map(super::Provenance::pairs).unwrap_or_default());
+    text
+}
+
 /// An upper bound on the PNG of a `size`×`size` picture with `text` chunks:
 /// the raw rows (a filter byte each) plus deflate's worst-case growth of
 /// 5 bytes per 16 KiB block, the chunk framing and the text.

@@ -8,7 +8,7 @@
 //! bytes per entry. [`decode_scene`] reads it back into a [`Hierarchy`]
 //! (for tests and clients written in Rust).
 
-use super::ExportError;
+use super::{ExportError, Provenance};
 use crate::core::budget::Budget;
 use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
 use crate::core::PrimitiveKind;
@@ -20,6 +20,10 @@ pub const MAGIC: &[u8; 4] = b"RMSC";
 pub const VERSION: u16 = 1;
 /// Header flag: the model was cut short by a limit.
 pub const FLAG_TRUNCATED: u16 = 1;
+/// Header flag: a provenance block follows the header (a `u32` byte length,
+/// then that many bytes of UTF-8 JSON: engine, language, seed, parameters,
+/// model key; see [`Provenance::json`]).
+pub const FLAG_PROVENANCE: u16 = 2;
 /// Bytes of the header.
 pub const HEADER_BYTES: u64 = 24;
 /// Bytes per leaf shape record.
@@ -52,12 +56,17 @@ pub enum SceneError {
     /// A value is not finite.
     #[error("non-finite number in object {0}")]
     NonFinite(u32),
+    /// The provenance block is not UTF-8 JSON, or a flag bit is unknown.
+    #[error("scene header is malformed: {0}")]
+    Header(&'static str),
 }
 
-/// Exact encoded size of `h`.
-pub fn encoded_size(h: &Hierarchy) -> u64 {
+/// Exact encoded size of `h` with a provenance block of `provenance` bytes
+/// (0 for none).
+pub fn encoded_size(h: &Hierarchy, provenance: usize) -> u64 {
     let entries: u64 = h.entry_count();
-    HEADER_BYTES + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + ENTRY_BYTES * entries
+    let block = if provenance > 0 { 4 + provenance as u64 } else { 0 };
+    HEADER_BYTES + block + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + ENTRY_BYTES * entries
 }
 
 fn put_f32s(out: &mut Vec<u8>, v: &[f32]) {
@@ -66,9 +75,11 @@ fn put_f32s(out: &mut Vec<u8>, v: &[f32]) {
     }
 }
 
-/// Writes `h`, reserving its exact size in `budget` first.
-pub fn write_scene(h: &Hierarchy, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    let size = encoded_size(h);
+/// Writes `h` (with `provenance` after the header when given), reserving
+/// its exact size in `budget` first.
+pub fn write_scene(h: &Hierarchy, provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    let block = provenance.map(|p| p.json().to_string()).unwrap_or_default();
+    let size = encoded_size(h, block.len());
     let too_large = |what: &str| ExportError::TooLarge { format: "scene", detail: format!("more than 2³¹ {what}") };
     if h.shapes.len() as u64 >= u64::from(SHAPE_BIT) {
         return Err(too_large("shapes"));
@@ -80,10 +91,16 @@ pub fn write_scene(h: &Hierarchy, budget: &mut Budget) -> Result<Vec<u8>, Export
     let mut out = Vec::with_capacity(size as usize);
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&VERSION.to_le_bytes());
-    out.extend_from_slice(&(if h.truncated.is_some() { FLAG_TRUNCATED } else { 0 }).to_le_bytes());
+    let flags = if h.truncated.is_some() { FLAG_TRUNCATED } else { 0 } | if block.is_empty() { 0 } else { FLAG_PROVENANCE };
+    out.extend_from_slice(&flags.to_le_bytes());
     out.extend_from_slice(&(h.shapes.len() as u32).to_le_bytes());
     out.extend_from_slice(&(h.objects.len() as u32).to_le_bytes());
     out.extend_from_slice(&h.leaves().to_le_bytes());
+    if !block.is_empty() {
+        let len = u32::try_from(block.len()).map_err(|_| too_large("provenance bytes"))?;
+        out.extend_from_slice(&len.to_le_bytes());
+        out.extend_from_slice(block.as_bytes());
+    }
     for s in &h.shapes {
         out.extend_from_slice(&[s.kind as u8, u8::from(s.tube), 0, 0]);
         put_f32s(&mut out, &s.scale);
@@ -134,17 +151,48 @@ impl Reader<'_> {
     }
 }
 
+/// The header fields: flags, shape and object counts, and the provenance
+/// block's JSON text (checked to be UTF-8 JSON) when the flag says there is one.
+fn read_header<'a>(r: &mut Reader<'a>) -> Result<(u16, u32, u32, Option<&'a str>), SceneError> {
+    if &r.take::<4>()? != MAGIC || u16::from_le_bytes(r.take()?) != VERSION {
+        return Err(SceneError::NotScene);
+    }
+    let flags = u16::from_le_bytes(r.take()?);
+    if flags & !(FLAG_TRUNCATED | FLAG_PROVENANCE) != 0 {
+        return Err(SceneError::Header("unknown flag bits"));
+    }
+    let (nshapes, nobjects) = (r.u32()?, r.u32()?);
+    let _leaves = u64::from_le_bytes(r.take()?);
+    let provenance = if flags & FLAG_PROVENANCE != 0 {
+        let len = r.u32()? as usize;
+        let end = r.at.checked_add(len).ok_or(SceneError::Length("truncated"))?;
+        let text = r.bytes.get(r.at..end).ok_or(SceneError::Length("truncated"))?;
+        r.at = end;
+        let text = std::str::from_utf8(text).map_err(|_| SceneError::Header("provenance is not UTF-8"))?;
+        if !serde_json::from_str::<serde_json::Value>(text).is_ok_and(|v| v.is_object()) {
+            return Err(SceneError::Header("provenance is not a JSON object"));
+        }
+        Some(text)
+    } else {
+        None
+    };
+    Ok((flags, nshapes, nobjects, provenance))
+}
+
+/// The provenance a scene file carries (engine, language, seed, parameters,
+/// model key), as JSON, without decoding the hierarchy.
+pub fn scene_provenance(bytes: &[u8]) -> Result<Option<serde_json::Value>, SceneError> {
+    let (_, _, _, text) = read_header(&mut Reader { bytes, at: 0 })?;
+    // Checked to be a JSON object by `read_header`.
+    Ok(text.and_then(|t| serde_json::from_str(t).ok()))
+}
+
 /// Reads a scene file back into a hierarchy (leaf counts recomputed; the
 /// truncation flag becomes a placeholder [`Hierarchy::truncated`] of the
 /// memory limit, since the file does not say which limit it was).
 pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
     let mut r = Reader { bytes, at: 0 };
-    if &r.take::<4>()? != MAGIC || u16::from_le_bytes(r.take()?) != VERSION {
-        return Err(SceneError::NotScene);
-    }
-    let flags = u16::from_le_bytes(r.take()?);
-    let (nshapes, nobjects) = (r.u32()?, r.u32()?);
-    let _leaves = u64::from_le_bytes(r.take()?);
+    let (flags, nshapes, nobjects, _provenance) = read_header(&mut r)?;
     // Every record is at least 4 bytes, so counts beyond the length are malformed, not allocations to make.
     if (u64::from(nshapes) + u64::from(nobjects)).saturating_mul(4) > bytes.len() as u64 {
         return Err(SceneError::Length("truncated"));

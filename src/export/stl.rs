@@ -63,6 +63,23 @@ fn facet_normal(c: &[[f32; 3]; 3]) -> [f32; 3] {
 /// little-endian) and a zero attribute word. The exact size, 84 + 50·T bytes,
 /// is reserved in `budget` first.
 pub fn write_binary(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    write_binary_titled(meshes, &title(None), budget)
+}
+
+/// The binary header's text: `rulemesh <version> binary STL`, and with a
+/// provenance the language and seed instead (`rulemesh 0.1.0 mdg seed=7`).
+/// The 80-byte header has no room for the parameters and the model key;
+/// the HTTP response headers carry those. Never starts with `solid`, which
+/// would make readers take the file for ASCII STL.
+pub fn title(provenance: Option<&super::Provenance>) -> String {
+    match provenance {
+        Some(p) => format!("{} {} seed={}", super::Provenance::engine(), p.language.name(), p.seed),
+        None => format!("rulemesh {} binary STL", crate::ENGINE_VERSION),
+    }
+}
+
+/// [`write_binary`] with `title` in the header (cut at 80 bytes).
+pub fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let count = triangle_total(meshes)?;
     let count32 = u32::try_from(count)
         .map_err(|_| ExportError::TooLarge { format: "STL", detail: format!("{count} triangles exceed the u32 triangle count") })?;
@@ -70,7 +87,6 @@ pub fn write_binary(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>
     budget.reserve_memory(total)?;
     let mut out = Vec::with_capacity(usize::try_from(total).map_err(|_| ExportError::TooLarge { format: "STL", detail: "output exceeds the address space".into() })?);
     let mut header = [0u8; HEADER];
-    let title = format!("rulemesh {} binary STL", crate::ENGINE_VERSION);
     let n = title.len().min(HEADER);
     header[..n].copy_from_slice(&title.as_bytes()[..n]);
     out.extend_from_slice(&header);

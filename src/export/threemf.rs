@@ -6,7 +6,7 @@
 //! Entries carry the zip format's fixed default timestamp, so the same model
 //! gives byte-identical files.
 
-use super::ExportError;
+use super::{ExportError, Provenance};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::fmt::Write as _;
@@ -20,11 +20,39 @@ const RELS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 <Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>
 "#;
 
-/// The model XML for `meshes`.
-fn model_xml(meshes: &[NamedMesh]) -> String {
-    let mut s = String::from(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\">\n<resources>\n",
-    );
+/// The namespace of rulemesh's own `<metadata>` names (3MF requires names
+/// that are not the core specification's to be namespace-qualified).
+pub const PROVENANCE_NAMESPACE: &str = "https://rulemesh.dev/3mf/provenance";
+
+/// Escapes text for an XML attribute or element body.
+fn xml_escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// The model XML for `meshes`, with the core `Application` metadata and,
+/// when given, the model's provenance as `rulemesh:` metadata.
+fn model_xml(meshes: &[NamedMesh], provenance: Option<&Provenance>) -> String {
+    let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"");
+    if provenance.is_some() {
+        let _ = write!(s, " xmlns:rulemesh=\"{PROVENANCE_NAMESPACE}\"");
+    }
+    s.push_str(">\n");
+    let _ = writeln!(s, "<metadata name=\"Application\">{}</metadata>", xml_escape(&Provenance::engine()));
+    for (name, value) in provenance.map(Provenance::pairs).unwrap_or_default() {
+        let _ = writeln!(s, "<metadata name=\"{name}\">{}</metadata>", xml_escape(&value));
+    }
+    s.push_str("<resources>\n");
     let mut ids = Vec::new();
     for (k, m) in meshes.iter().enumerate().filter(|(_, m)| m.mesh.triangle_count() > 0) {
         let id = k + 1;
@@ -48,14 +76,15 @@ fn model_xml(meshes: &[NamedMesh]) -> String {
     s
 }
 
-/// Writes a 3MF package, reserving its worst-case size first.
-pub fn write_3mf(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+/// Writes a 3MF package (with `provenance` as metadata when given),
+/// reserving its worst-case size first.
+pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let v: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     // The XML text and the zip each hold about the estimate; both live at once.
     let bytes = super::estimated_size(super::Format::ThreeMf, v, t).saturating_mul(2);
     budget.reserve_memory(bytes)?;
-    let xml = model_xml(meshes);
+    let xml = model_xml(meshes, provenance);
     let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let options = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
     let fail = |e: &dyn std::fmt::Display| ExportError::TooLarge { format: "3mf", detail: e.to_string() };

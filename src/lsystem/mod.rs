@@ -70,7 +70,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         match hierarchy(&sys, dag.as_ref(), seed, req, budget) {
             Ok(h) => {
                 let primitives = h.leaves();
-                return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), primitives, warnings: sys.warnings, promised: 0 });
+                return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), primitives, warnings: sys.warnings, promised: 0, seed });
             }
             Err(EvalError::Limit(_)) if truncating && req.hierarchy != HierarchyUse::Required => budget.rewind(mark),
             Err(e) => return Err(e.into()),
@@ -94,7 +94,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         Some(d) => turtle::interpret_stream(&sys, &opts, budget, &mut |sink| d.feed(d.root_index(), sink))?,
         None => string_drawing(&sys, seed, &opts, budget)?,
     };
-    Ok(Model { language: Language::Lsystem, scene: drawing.scene, hierarchy: None, primitives: drawing.segments, warnings: sys.warnings, promised: drawing.promised })
+    Ok(Model { language: Language::Lsystem, scene: drawing.scene, hierarchy: None, primitives: drawing.segments, warnings: sys.warnings, promised: drawing.promised, seed })
 }
 
 /// Builds the model of an ETOL token stream (seed 003 appendix A): the

@@ -45,6 +45,17 @@ pub enum EvalError {
         /// What is wrong.
         message: String,
     },
+    /// A path, profile or camera rule is needed inside its own evaluation
+    /// (it animates or sweeps with itself, directly or through other path
+    /// rules), or such rules nest deeper than the evaluator allows. Found by
+    /// the `render_mdg` fuzz target (docs/reliability.md).
+    #[error("path rule `{name}` is used inside its own evaluation (a cycle of path, profile or camera rules), or path rules nest more than {nesting} deep")]
+    PathCycle {
+        /// The rule whose evaluation would recurse.
+        name: String,
+        /// The nesting bound.
+        nesting: usize,
+    },
     /// A Structure Synth JavaScript script failed: a syntax error or an
     /// uncaught exception (with its line when QuickJS reports one).
     #[error("JavaScript: {message}")]

@@ -39,6 +39,10 @@ pub struct Model {
     /// Memory the front end reserved on behalf of later stages (see
     /// [`Downstream`]); the pipeline releases it before meshing reserves the real buffers.
     pub promised: u64,
+    /// The seed the model was made with: the request's, else the grammar's
+    /// own seed directive, else 0. Sent back as the request's seed it makes
+    /// the same model, which is why outputs record it (their provenance).
+    pub seed: u64,
 }
 
 impl Model {

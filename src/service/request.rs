@@ -3,7 +3,7 @@
 //! every default filled in, every limit clamped and the cache key computed.
 
 use super::ServiceError;
-use crate::cache::key::{cache_key, normalize_source};
+use crate::pipeline::key::{cache_key, normalize_source};
 use crate::cache::CacheKey;
 use crate::core::{Limits, OnLimit, ParamValue};
 use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};

@@ -85,7 +85,9 @@ fn sierpinski_tetrahedron_is_4096_spheres_in_six_levels_of_four() {
     assert_eq!((h.objects.len(), fours, h.entry_count()), (7, 6, 25), "{:?}", h.objects.iter().map(|o| o.entries.len()).collect::<Vec<_>>());
     let scene = ok(&src, &req(Format::Scene));
     assert_eq!(scene.primitives, 4096);
-    assert!(scene.bytes.len() < 1100, "{}", scene.bytes.len());
+    // Under 1 100 bytes besides the provenance block (a length and its JSON).
+    let block = 4 + u32::from_le_bytes(scene.bytes[24..28].try_into().expect("4 bytes")) as usize;
+    assert!(scene.bytes.len() - block < 1100, "{} with a block of {block}", scene.bytes.len());
 }
 
 /// The scene file decodes to the leaves the flat path draws: for a `shape:`
@@ -137,9 +139,20 @@ fn malformed_scene_files_are_errors_not_panics() {
     let mut extra = good.clone();
     extra.push(0);
     assert_eq!(decode_scene(&extra).map(|_| ()), Err(SceneError::Length("followed by trailing bytes")));
+    // The provenance block after the header: engine, language, seed, params, model key.
+    let block = u32::from_le_bytes(good[24..28].try_into().expect("4 bytes")) as usize;
+    let provenance = rulemesh::export::scene::scene_provenance(&good).expect("reads").expect("present");
+    assert_eq!((provenance["language"].as_str(), provenance["seed"].as_str()), (Some("lsystem"), Some("0")), "{provenance}");
+    assert_eq!(provenance["model_key"].as_str().map(str::len), Some(64), "{provenance}");
+    let mut json = good.clone();
+    json[28] = b'[';
+    assert_eq!(decode_scene(&json).map(|_| ()), Err(SceneError::Header("provenance is not a JSON object")));
+    let mut flags = good.clone();
+    flags[6] |= 4;
+    assert_eq!(decode_scene(&flags).map(|_| ()), Err(SceneError::Header("unknown flag bits")));
     // A reference to a later object.
     let mut forward = good;
-    let first_entry = 24 + 28 + 4;
+    let first_entry = 24 + 4 + block + 28 + 4;
     forward[first_entry..first_entry + 4].copy_from_slice(&5u32.to_le_bytes());
     assert_eq!(decode_scene(&forward).map(|_| ()), Err(SceneError::Reference { object: 0, target: 5 }));
 }

@@ -26,6 +26,7 @@ mod winding;
 mod lsystem;
 mod modifiers;
 mod preview;
+mod provenance;
 mod print;
 mod selectors;
 mod ssfidelity;

@@ -216,11 +216,15 @@ fn a_preview_carries_engine_language_and_seed_and_is_the_same_twice() {
     let p = Picture::decode(&a.bytes);
     let text = |k: &str| p.text.iter().find(|(key, _)| key == k).map(|(_, v)| v.clone());
     assert_eq!(text("Software"), Some(format!("rulemesh {}", rulemesh::ENGINE_VERSION)));
-    assert_eq!(text("rulemesh-language"), Some("mdg".into()));
-    assert_eq!(text("rulemesh-seed"), Some("1".into()));
-    assert_eq!(p.text.len(), 3);
+    assert_eq!(text("rulemesh:engine"), Some(format!("rulemesh {}", rulemesh::ENGINE_VERSION)));
+    assert_eq!(text("rulemesh:language"), Some("mdg".into()));
+    assert_eq!(text("rulemesh:seed"), Some("1".into()));
+    assert_eq!(text("rulemesh:params"), Some("{}".into()));
+    assert_eq!(text("rulemesh:model-key").map(|k| k.len()), Some(64));
+    assert_eq!(p.text.len(), 6);
+    // Without a seed, the one the model was made with: gem sets none, so 0.
     let unseeded = Picture::decode(&render(&source, &png_request(Language::Mdg, PreviewOptions::default())).expect("renders").bytes);
-    assert!(unseeded.text.contains(&("rulemesh-seed".to_string(), "grammar".to_string())));
+    assert!(unseeded.text.contains(&("rulemesh:seed".to_string(), "0".to_string())), "{:?}", unseeded.text);
 }
 
 #[test]

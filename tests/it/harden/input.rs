@@ -64,3 +64,32 @@ async fn http_request_scene_format_for_a_mesh_language_is_400_not_500() {
     assert_eq!(err.code(), tonic::Code::InvalidArgument);
     stop(srv).await;
 }
+
+/// The `render_mdg` fuzz target (2026-12-02, 1.9 M executions): a rule
+/// animated by itself (`rule X2 : X2 { … }`) made each evaluation of the
+/// path evaluate the path again, until the stack overflowed (the process
+/// died). Now the cycle is a typed evaluation error naming the rule, and so
+/// is a chain of path rules deeper than the evaluator allows.
+#[test]
+fn mdg_path_rule_animated_by_itself_is_an_error_not_a_stack_overflow() {
+    let found = "// Listing 4.2: A\nfps 25\nduration 2\nrule A : X2 : X2 { BOX {} B { x 2 } }\nrule B : X1 { SPHERE { s 0.5 } }\nrule X1 { 48/48 * { rz 360 } FRAME {} }\nrule X2 : X2 { BOX {} B { x 2 } }\n";
+    let req = rulemesh::RenderRequest { language: Some(rulemesh::lang::Language::Mdg), ..Default::default() };
+    let e = rulemesh::render(found.as_bytes(), &req).expect_err("a cycle");
+    assert!(e.to_string().contains("path rule `X2` is used inside its own evaluation"), "{e}");
+    // A chain P0 : P1, P1 : P2, …: each path animated by the next, 200 deep, no cycle.
+    let mut chain = String::from("fps 10\nduration 1\nrule A : P0 { BOX {} }\n");
+    for i in 0..200 {
+        chain.push_str(&format!("rule P{i} : P{} {{ FRAME {{}} }}\n", i + 1));
+    }
+    chain.push_str("rule P200 { FRAME {} }\n");
+    let e = rulemesh::render(chain.as_bytes(), &req).expect_err("too deep");
+    assert!(e.to_string().contains("nest more than 32 deep"), "{e}");
+    // Nesting within the bound still renders.
+    let mut short = String::from("fps 10\nduration 1\nrule A : P0 { BOX {} }\n");
+    for i in 0..3 {
+        short.push_str(&format!("rule P{i} : P{} {{ FRAME {{}} }}\n", i + 1));
+    }
+    short.push_str("rule P3 { FRAME {} }\n");
+    let out = rulemesh::render(short.as_bytes(), &req).expect("renders");
+    assert_eq!(out.primitives, 1);
+}

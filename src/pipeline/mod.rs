@@ -16,7 +16,7 @@
 use crate::core::budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
 use crate::core::timing::{Phase, StageClock};
 use crate::core::{Diagnostic, ParamValue, ParseError};
-use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instancing};
+use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instancing, Provenance};
 use crate::geom;
 use crate::lang::{self, Language};
 use crate::mesh::{self, MeshLayout};
@@ -24,6 +24,8 @@ use crate::model::{BuildError, BuildRequest, Downstream, EvalError, HierarchyUse
 use crate::print::PrintError;
 use std::collections::BTreeMap;
 use std::time::Duration;
+
+pub mod key;
 
 pub use crate::core::timing::PhaseTimes;
 
@@ -348,7 +350,12 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut model))?;
     budget.release_memory(model.promised.saturating_add(overhead));
     budget.set_stage_share(truncating.then(|| mesh_share(&budget)));
-    let out = stages(model, req, &mut budget, &mut clock);
+    // Parameters in one spelling (text `0.5` from the CLI is the number 0.5
+    // from a JSON body), so the recorded parameters and key match across doors.
+    let params: BTreeMap<String, ParamValue> = req.params.iter().map(|(k, v)| (k.clone(), v.canonical())).collect();
+    let keyed = RenderRequest { params: params.clone(), ..req.clone() };
+    let provenance = Provenance { language: model.language, seed: model.seed, params, model_key: key::model_key(&key::normalize_source(source), &keyed).hex() };
+    let out = stages(model, provenance, req, &mut budget, &mut clock);
     budget.set_stage_share(None);
     let out = out?;
     // Writing is not interruptible: under `error` a model finished after the
@@ -361,13 +368,13 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
 
 /// The stages every model goes through after its front end: the hierarchy
 /// written as it is or expanded, then printing or meshing, then export.
-fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     let opts = &req.export_options;
     if let Some(h) = model.hierarchy.take() {
         let gpu = opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled;
         let bytes = match req.format {
-            Format::Scene => Some(export::scene::write_scene(&h, budget)?),
-            Format::Glb | Format::Gltf if gpu => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, budget)?),
+            Format::Scene => Some(export::scene::write_scene(&h, Some(&provenance), budget)?),
+            Format::Glb | Format::Gltf if gpu => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, Some(&provenance), budget)?),
             _ => None,
         };
         match bytes {
@@ -412,13 +419,14 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
         material_per_mesh: !scene.classes.is_empty(),
         // A camera path plays in the node graph; otherwise the camera is shown at time 0.
         camera: scene.camera.clone().filter(|c| !(c.is_path() && in_graph)),
+        provenance: Some(provenance),
     };
     let drawn: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     let (bytes, triangles, truncated) = if req.format == Format::Png {
         // The preview stage, then its encoding: a picture needs no fitting or metadata.
         let image = crate::preview::render(&meshes, &opts.preview, budget).map_err(ExportError::from)?;
         clock.lap(Phase::Preview);
-        (export::png::write_png(&image, &png_text(model.language, req.seed), budget)?, drawn, truncated)
+        (export::png::write_png(&image, &export::png::text_chunks(meta.provenance.as_ref()), budget)?, drawn, truncated)
     } else {
         match export::export_with(req.format, &meshes, &meta, opts, budget) {
             Ok(bytes) => (bytes, drawn, truncated),
@@ -434,17 +442,6 @@ fn stages(mut model: Model, req: &RenderRequest, budget: &mut Budget, clock: &mu
     };
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
-}
-
-/// The `tEXt` chunks of a preview: what made it, so a picture found on its
-/// own can be traced to its request (three short chunks; nothing that varies
-/// between runs).
-fn png_text(language: Language, seed: Option<u64>) -> export::png::TextChunks {
-    vec![
-        ("Software", format!("rulemesh {}", crate::ENGINE_VERSION)),
-        ("rulemesh-language", language.name().to_string()),
-        ("rulemesh-seed", seed.map_or_else(|| "grammar".to_string(), |s| s.to_string())),
-    ]
 }
 
 /// The output of a render whose bytes are written (times are filled in by [`render`]).

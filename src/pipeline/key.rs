@@ -77,6 +77,23 @@ fn encode_limits(e: &mut Encoder, l: &Limits) {
 /// The key of rendering `source` (already normalised with
 /// [`normalize_source`]) as `req` says, with this engine version.
 pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
+    let mut e = model_encoder(source, req);
+    encode_limits(&mut e, &req.limits);
+    e.field("on_limit", if req.on_limit == crate::core::OnLimit::Truncate { b"truncate" } else { b"error" });
+    CacheKey(*e.0.finalize().as_bytes())
+}
+
+/// The key of the model's content: [`cache_key`] without the limits and
+/// the `on_limit` mode. Outputs record this one (their provenance): limits
+/// differ between doors (the service clamps them to its ceilings), and a
+/// model that finished is the same model under any limits that let it, so
+/// recording the cache key would make the same model's bytes differ by door.
+pub fn model_key(source: &[u8], req: &RenderRequest) -> CacheKey {
+    CacheKey(*model_encoder(source, req).0.finalize().as_bytes())
+}
+
+/// Everything but the limits and the `on_limit` mode, encoded.
+fn model_encoder(source: &[u8], req: &RenderRequest) -> Encoder {
     let mut e = Encoder(blake3::Hasher::new());
     e.field("engine", crate::ENGINE_VERSION.as_bytes());
     let language = req.language.or_else(|| Language::detect(source));
@@ -124,9 +141,7 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
     }
     e.u64("detail", req.detail.into());
     e.field("layout", layout_name(req.layout).as_bytes());
-    encode_limits(&mut e, &req.limits);
-    e.field("on_limit", if req.on_limit == crate::core::OnLimit::Truncate { b"truncate" } else { b"error" });
-    CacheKey(*e.0.finalize().as_bytes())
+    e
 }
 
 #[cfg(test)]
@@ -178,6 +193,11 @@ mod tests {
             g.export_options.preview = o;
             assert_eq!(k, cache_key(src, &g), "{o:?}");
         }
+        // The model key leaves the limits and the mode out, and nothing else.
+        let limited = RenderRequest { limits: Limits { max_primitives: 5, ..Limits::default() }, on_limit: crate::core::OnLimit::Truncate, ..base.clone() };
+        assert_eq!(model_key(src, &base), model_key(src, &limited));
+        assert_ne!(model_key(src, &base), model_key(src, &variants[0]));
+        assert_ne!(model_key(src, &base), k);
         // The timeout does not change a finished model.
         let t = RenderRequest { limits: Limits { timeout_ms: 1, ..Limits::default() }, ..base.clone() };
         assert_eq!(k, cache_key(src, &t));
