@@ -28,6 +28,7 @@ mod modifiers;
 mod preview;
 mod print;
 mod selectors;
+mod sheet;
 mod ssfidelity;
 mod strips;
 mod unigrafix;
