@@ -37,6 +37,8 @@ enum Command {
     Check(CheckArgs),
     /// Decode a `.strips` file (the reference decoder) and write it as glTF or STL.
     Decode(DecodeArgs),
+    /// Render every grammar file in a directory to one labelled contact-sheet PNG (docs/gallery.md).
+    Gallery(GalleryArgs),
     /// Run the HTTP and gRPC service (options also from `RULEMESH_*` variables).
     Serve(ServeArgs),
 }
@@ -61,6 +63,27 @@ struct ServeArgs {
     /// Print the resolved settings as JSON and exit.
     #[arg(long)]
     print_config: bool,
+}
+
+#[derive(Args)]
+struct GalleryArgs {
+    /// Directory whose grammar files (.mdg, .ls, .es, .stack, .ug, .etol) are drawn, in name order.
+    dir: PathBuf,
+    /// Output PNG file.
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Tile side in pixels (picture plus a 12 px label band), 28-2060.
+    #[arg(long, default_value_t = 160)]
+    tile: u32,
+    /// Tiles per row (fewer if there are fewer grammars).
+    #[arg(long, default_value_t = 6)]
+    columns: u32,
+    /// Where the camera looks from.
+    #[arg(long, value_enum, default_value = "three-quarter")]
+    view: rulemesh::preview::View,
+    /// Sheet and picture background, `#rrggbb`.
+    #[arg(long, default_value = "#ffffff")]
+    background: String,
 }
 
 #[derive(Args)]
@@ -196,6 +219,7 @@ fn main() -> ExitCode {
         Command::Render(args) => run_render(args),
         Command::Check(args) => run_check(args),
         Command::Decode(args) => run_decode(args),
+        Command::Gallery(args) => run_gallery(args),
         Command::Serve(args) => match matches.subcommand_matches("serve") {
             Some(m) => run_serve(args, m),
             None => Err(Failure::new(EXIT_USAGE, "serve: no arguments".into())),
@@ -395,6 +419,76 @@ fn run_check(args: CheckArgs) -> Result<(), Failure> {
         }
         Err(e) => Err(render_failure(&args.file, e)),
     }
+}
+
+/// Renders each grammar file of a directory (default limits and seeds) into
+/// one tile of a contact sheet. A grammar that fails gets a tile saying so;
+/// the sheet is still written, and the failures are listed on stderr with
+/// exit code 1.
+fn run_gallery(args: GalleryArgs) -> Result<(), Failure> {
+    use rulemesh::preview::sheet::{compose, picture_size, Tile, TileContent, MIN_TILE};
+    let max_tile = rulemesh::preview::MAX_SIZE + rulemesh::preview::sheet::LABEL_HEIGHT;
+    if !(MIN_TILE..=max_tile).contains(&args.tile) {
+        return Err(Failure::new(EXIT_USAGE, format!("--tile must be in {MIN_TILE}..={max_tile}, got {}", args.tile)));
+    }
+    let background = match rulemesh::preview::parse_background(&args.background).map_err(|e| Failure::new(EXIT_USAGE, e))? {
+        Some(c) => c,
+        None => return Err(Failure::new(EXIT_USAGE, "gallery: the sheet needs an opaque --background `#rrggbb`".into())),
+    };
+    let dir = args.dir.display().to_string();
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&args.dir)
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("{dir}: cannot read: {e}")))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_file() && Language::from_extension(p).is_some())
+        .collect();
+    files.sort();
+    if files.is_empty() {
+        return Err(Failure::new(EXIT_USAGE, format!("{dir}: no grammar files (.mdg, .ls, .es, .stack, .ug, .etol)")));
+    }
+    let mut failed = Vec::new();
+    let mut tiles = Vec::new();
+    for path in &files {
+        let file = path.display().to_string();
+        let label = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| file.clone());
+        let content = match render_tile(path, picture_size(args.tile), args.view, background) {
+            Ok(img) => TileContent::Picture(img),
+            Err(f) => {
+                let msg = f.lines.first().cloned().unwrap_or_default();
+                failed.extend(f.lines);
+                TileContent::Failed(msg.strip_prefix(&format!("{file}")).unwrap_or(&msg).trim_start_matches([':', ' ']).to_string())
+            }
+        };
+        tiles.push(Tile { label, content });
+    }
+    let sheet = compose(&tiles, args.columns, args.tile, background);
+    let text = vec![("Software", format!("rulemesh {} gallery", env!("CARGO_PKG_VERSION")))];
+    let mut budget = rulemesh::core::Budget::new(Limits::ceiling());
+    let bytes = rulemesh::export::png::write_rgba(sheet.width, sheet.height, &sheet.rgba, &text, &mut budget)
+        .map_err(|e| Failure::new(EXIT_FAILURE, format!("gallery: {e}")))?;
+    let out = args.output.display().to_string();
+    write_output(&out, &bytes)?;
+    eprintln!("{out}: {} grammars ({} failed), {}x{} px, {} bytes", files.len(), failed.len(), sheet.width, sheet.height, bytes.len());
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure { code: EXIT_FAILURE, lines: failed })
+    }
+}
+
+/// One grammar's preview, decoded back to pixels for the sheet.
+fn render_tile(path: &Path, size: u32, view: rulemesh::preview::View, background: [u8; 3]) -> Result<rulemesh::preview::Image, Failure> {
+    let file = path.display().to_string();
+    let limits = Limits::default();
+    let mut req = RenderRequest { language: language_for(&file, None), format: Format::Png, limits, script_dir: Some(script_dir_of(&file)), ..RenderRequest::default() };
+    req.export_options.preview = rulemesh::preview::PreviewOptions { size, view, background: Some(background) };
+    let source = read_source(&file, limits.max_source_bytes)?;
+    let out = render(&source, &req).map_err(|e| render_failure(&file, e))?;
+    let bad = |e: String| Failure::new(EXIT_FAILURE, format!("{file}: cannot decode its preview: {e}"));
+    let mut reader = png::Decoder::new(std::io::Cursor::new(&out.bytes)).read_info().map_err(|e| bad(e.to_string()))?;
+    let mut buf = vec![0; reader.output_buffer_size().ok_or_else(|| bad("too large".into()))?];
+    let frame = reader.next_frame(&mut buf).map_err(|e| bad(e.to_string()))?;
+    buf.truncate(frame.buffer_size());
+    Ok(rulemesh::preview::Image { size: frame.width, rgba: buf })
 }
 
 /// Largest `.strips` file `decode` reads (a phone icon is a few kilobytes).

@@ -36,11 +36,19 @@ pub fn max_png_bytes(size: u32, text: &TextChunks) -> u64 {
 /// Encodes `image` as an RGBA PNG with `text`, reserving the output's
 /// worst-case size in `budget` first.
 pub fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    budget.reserve_memory(max_png_bytes(image.size, text))?;
+    write_rgba(image.size, image.size, &image.rgba, text, budget)
+}
+
+/// Encodes `width`×`height` RGBA8 pixels (a preview, or a contact sheet,
+/// which is not square) the same pinned way as [`write_png`].
+pub fn write_rgba(width: u32, height: u32, rgba: &[u8], text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    let raw = u64::from(height) * (u64::from(width) * 4 + 1);
+    let text_bytes: u64 = text.iter().map(|(k, v)| 12 + k.len() as u64 + 1 + v.len() as u64).sum();
+    budget.reserve_memory(raw + (raw / 16_384 + 1) * 5 + 1024 + text_bytes)?;
     let bad = |e: ::png::EncodingError| ExportError::Png(e.to_string());
     let mut out = Vec::new();
     {
-        let mut enc = ::png::Encoder::new(&mut out, image.size, image.size);
+        let mut enc = ::png::Encoder::new(&mut out, width, height);
         enc.set_color(::png::ColorType::Rgba);
         enc.set_depth(::png::BitDepth::Eight);
         enc.set_compression(::png::Compression::Balanced);
@@ -49,7 +57,7 @@ pub fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Resul
             enc.add_text_chunk((*k).to_string(), v.clone()).map_err(bad)?;
         }
         let mut w = enc.write_header().map_err(bad)?;
-        w.write_image_data(&image.rgba).map_err(bad)?;
+        w.write_image_data(rgba).map_err(bad)?;
         w.finish().map_err(bad)?;
     }
     Ok(out)

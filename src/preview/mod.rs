@@ -17,6 +17,7 @@
 pub mod camera;
 pub mod raster;
 pub mod shade;
+pub mod sheet;
 
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::NamedMesh;

@@ -29,6 +29,7 @@ mod preview;
 mod provenance;
 mod print;
 mod selectors;
+mod sheet;
 mod ssfidelity;
 mod strips;
 mod unigrafix;
