@@ -87,4 +87,8 @@ fn icons_are_in_the_library_as_icon_stem() {
     }
     // The top-level grammars keep their names.
     assert!(names.contains(&"gem"), "{names:?}");
+    // `@import` reads an icon by its library name.
+    let imported = render(b"startshape Coin\n@import icon-coin\n", &request(Format::Glb, "silver")).expect("imports");
+    let direct = render(&std::fs::read(repo().join("grammars/icons/coin.mdg")).expect("read"), &request(Format::Glb, "silver")).expect("renders");
+    assert_eq!(imported.triangles, direct.triangles);
 }
