@@ -17,15 +17,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .compile_protos(&["proto/rulemesh/v1/rulemesh.proto"], &["proto"])?;
 
     println!("cargo:rerun-if-changed=grammars");
+    println!("cargo:rerun-if-changed=grammars/icons");
     let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?);
-    let mut files: Vec<PathBuf> = std::fs::read_dir(root.join("grammars"))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "mdg"))
-        .collect();
-    files.sort();
+    // The library: `grammars/*.mdg` under their file stems, and the icon set
+    // `grammars/icons/*.mdg` as `icon-STEM` (a flat name, so it is one path
+    // segment in every route; see docs/icons.md).
+    let mut entries: Vec<(String, PathBuf)> = Vec::new();
+    for (dir, prefix) in [("grammars", ""), ("grammars/icons", "icon-")] {
+        for f in std::fs::read_dir(root.join(dir))?.filter_map(|e| e.ok().map(|e| e.path())) {
+            if f.extension().is_some_and(|x| x == "mdg") {
+                let stem = f.file_stem().and_then(|s| s.to_str()).ok_or("grammar file name is not UTF-8")?;
+                entries.push((format!("{prefix}{stem}"), f));
+            }
+        }
+    }
+    entries.sort();
+    if let Some(w) = entries.windows(2).find(|w| w[0].0 == w[1].0) {
+        return Err(format!("two library grammars are called `{}`: {} and {}", w[0].0, w[0].1.display(), w[1].1.display()).into());
+    }
     let mut out = String::from("/// The built-in grammars: (name, language, source), sorted by name.\npub static BUILTIN: &[(&str, &str, &str)] = &[\n");
-    for f in &files {
-        let name = f.file_stem().and_then(|s| s.to_str()).ok_or("grammar file name is not UTF-8")?;
+    for (name, f) in &entries {
         writeln!(out, "    ({name:?}, \"mdg\", include_str!({:?})),", f.display().to_string())?;
     }
     out.push_str("];\n");

@@ -46,6 +46,7 @@ fn cases() -> Vec<Case> {
         }
     };
     from_dir(repo().join("grammars"), &mut out);
+    from_dir(repo().join("grammars/icons"), &mut out);
     from_dir(repo().join("tests/golden/sources"), &mut out);
     let mut docs: Vec<PathBuf> = std::fs::read_dir(repo().join("docs")).expect("docs/").map(|e| e.expect("entry").path()).collect();
     docs.sort();

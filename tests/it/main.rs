@@ -3,6 +3,7 @@
 //! `scripts/test`, which installs those tools.
 
 mod common;
+mod picture;
 
 mod cli;
 mod c_decoder;
@@ -20,6 +21,7 @@ mod gallery;
 mod golden;
 mod grammars;
 mod hostile;
+mod icons;
 mod instancing;
 mod lines;
 mod winding;

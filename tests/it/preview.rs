@@ -10,59 +10,7 @@ use rulemesh::lang::Language;
 use rulemesh::pipeline::{render, RenderError, RenderRequest};
 use rulemesh::preview::{PreviewOptions, View};
 use rulemesh::service::grpc::pb;
-
-/// A decoded preview: its side and RGBA8 pixels, and its text chunks.
-struct Picture {
-    size: usize,
-    rgba: Vec<u8>,
-    text: Vec<(String, String)>,
-}
-
-impl Picture {
-    fn decode(bytes: &[u8]) -> Picture {
-        assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "a PNG signature");
-        let mut reader = png::Decoder::new(std::io::Cursor::new(bytes)).read_info().expect("PNG header");
-        let mut buf = vec![0; reader.output_buffer_size().expect("size")];
-        let frame = reader.next_frame(&mut buf).expect("PNG frame");
-        assert_eq!((frame.color_type, frame.bit_depth), (png::ColorType::Rgba, png::BitDepth::Eight));
-        assert_eq!(frame.width, frame.height);
-        buf.truncate(frame.buffer_size());
-        let text = reader.info().uncompressed_latin1_text.iter().map(|t| (t.keyword.clone(), t.text.clone())).collect();
-        Picture { size: frame.width as usize, rgba: buf, text }
-    }
-
-    fn pixel(&self, x: usize, y: usize) -> [u8; 4] {
-        let i = (y * self.size + x) * 4;
-        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2], self.rgba[i + 3]]
-    }
-
-    fn pixels(&self) -> impl Iterator<Item = (usize, usize, [u8; 4])> + '_ {
-        (0..self.size * self.size).map(|i| (i % self.size, i / self.size, self.pixel(i % self.size, i / self.size)))
-    }
-
-    /// The covered share of the picture: the sum of alpha over the pixel count.
-    fn coverage(&self) -> f64 {
-        self.pixels().map(|(_, _, p)| f64::from(p[3])).sum::<f64>() / 255.0 / (self.size * self.size) as f64
-    }
-
-    /// The bounding box of pixels with any coverage: (x0, y0, x1, y1), inclusive.
-    fn drawn_box(&self) -> Option<(usize, usize, usize, usize)> {
-        self.pixels().filter(|(_, _, p)| p[3] > 0).fold(None, |b, (x, y, _)| match b {
-            None => Some((x, y, x, y)),
-            Some((x0, y0, x1, y1)) => Some((x0.min(x), y0.min(y), x1.max(x), y1.max(y))),
-        })
-    }
-
-    /// The share of the drawn (alpha-weighted) pixels that are pure black
-    /// (no channel above 16 of 255; colours are straight, so a partly covered
-    /// pixel has its surface's colour).
-    fn black_share(&self) -> f64 {
-        let weight = |p: &[u8; 4]| f64::from(p[3]);
-        let drawn: Vec<[u8; 4]> = self.pixels().map(|(_, _, p)| p).filter(|p| p[3] > 0).collect();
-        let black: f64 = drawn.iter().filter(|p| p[..3].iter().all(|&c| c <= 16)).map(weight).sum();
-        black / drawn.iter().map(weight).sum::<f64>().max(1.0)
-    }
-}
+use crate::picture::Picture;
 
 fn png_request(language: Language, preview: PreviewOptions) -> RenderRequest {
     let mut r = RenderRequest { language: Some(language), format: Format::Png, ..RenderRequest::default() };

@@ -12,6 +12,7 @@ mod grpc;
 mod http;
 mod ops;
 mod schema;
+mod icons;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).
