@@ -23,12 +23,11 @@ pub fn text_chunks(provenance: Option<&super::Provenance>) -> TextChunks {
     text
 }
 
-/// An upper bound on the PNG of a `size`×`size` picture with `text` chunks:
-/// the raw rows (a filter byte each) plus deflate's worst-case growth of
-/// 5 bytes per 16 KiB block, the chunk framing and the text.
-pub fn max_png_bytes(size: u32, text: &TextChunks) -> u64 {
-    let size = u64::from(size);
-    let raw = size * (size * 4 + 1);
+/// An upper bound on the PNG of a `width`×`height` picture with `text`
+/// chunks: the raw rows (a filter byte each) plus deflate's worst-case
+/// growth of 5 bytes per 16 KiB block, the chunk framing and the text.
+pub fn max_png_bytes(width: u32, height: u32, text: &TextChunks) -> u64 {
+    let raw = u64::from(height) * (u64::from(width) * 4 + 1);
     let text: u64 = text.iter().map(|(k, v)| 12 + k.len() as u64 + 1 + v.len() as u64).sum();
     raw + (raw / 16_384 + 1) * 5 + 1024 + text
 }
@@ -42,9 +41,7 @@ pub fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Resul
 /// Encodes `width`×`height` RGBA8 pixels (a preview, or a contact sheet,
 /// which is not square) the same pinned way as [`write_png`].
 pub fn write_rgba(width: u32, height: u32, rgba: &[u8], text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    let raw = u64::from(height) * (u64::from(width) * 4 + 1);
-    let text_bytes: u64 = text.iter().map(|(k, v)| 12 + k.len() as u64 + 1 + v.len() as u64).sum();
-    budget.reserve_memory(raw + (raw / 16_384 + 1) * 5 + 1024 + text_bytes)?;
+    budget.reserve_memory(max_png_bytes(width, height, text))?;
     let bad = |e: ::png::EncodingError| ExportError::Png(e.to_string());
     let mut out = Vec::new();
     {
@@ -74,7 +71,7 @@ mod tests {
         let image = Image { size: 16, rgba: rgba.clone() };
         let text: TextChunks = vec![("Software", "rulemesh test".into()), ("rulemesh-seed", "7".into())];
         let bytes = write_png(&image, &text, &mut Budget::new(Limits::default())).expect("encodes");
-        assert!(bytes.len() as u64 <= max_png_bytes(16, &text));
+        assert!(bytes.len() as u64 <= max_png_bytes(16, 16, &text));
         let mut reader = ::png::Decoder::new(std::io::Cursor::new(&bytes)).read_info().expect("header");
         let mut buf = vec![0; reader.output_buffer_size().expect("size")];
         let frame = reader.next_frame(&mut buf).expect("frame");

@@ -38,7 +38,7 @@ impl Provenance {
     /// every character beyond it is a `\uXXXX` escape, so the text fits
     /// PNG's Latin-1 `tEXt` and STL-era readers alike.
     pub fn params_json(&self) -> String {
-        let text = serde_json::Value::Object(self.params.iter().map(|(k, v)| (k.clone(), param_json(v))).collect()).to_string();
+        let text = self.params_value().to_string();
         let mut out = String::with_capacity(text.len());
         for c in text.chars() {
             if c.is_ascii() {
@@ -61,9 +61,14 @@ impl Provenance {
             "engine": Self::engine(),
             "language": self.language.name(),
             "seed": self.seed.to_string(),
-            "params": serde_json::Value::Object(self.params.iter().map(|(k, v)| (k.clone(), param_json(v))).collect()),
+            "params": self.params_value(),
             "model_key": self.model_key,
         })
+    }
+
+    /// The parameters as a JSON object, keys sorted (the map is ordered).
+    fn params_value(&self) -> serde_json::Value {
+        serde_json::Value::Object(self.params.iter().map(|(k, v)| (k.clone(), param_json(v))).collect())
     }
 
     /// The provenance as (name, text) pairs, in a fixed order, for formats

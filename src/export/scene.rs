@@ -152,8 +152,8 @@ impl Reader<'_> {
 }
 
 /// The header fields: flags, shape and object counts, and the provenance
-/// block's JSON text (checked to be UTF-8 JSON) when the flag says there is one.
-fn read_header<'a>(r: &mut Reader<'a>) -> Result<(u16, u32, u32, Option<&'a str>), SceneError> {
+/// block (a JSON object) when the flag says there is one.
+fn read_header(r: &mut Reader<'_>) -> Result<(u16, u32, u32, Option<serde_json::Value>), SceneError> {
     if &r.take::<4>()? != MAGIC || u16::from_le_bytes(r.take()?) != VERSION {
         return Err(SceneError::NotScene);
     }
@@ -169,10 +169,10 @@ fn read_header<'a>(r: &mut Reader<'a>) -> Result<(u16, u32, u32, Option<&'a str>
         let text = r.bytes.get(r.at..end).ok_or(SceneError::Length("truncated"))?;
         r.at = end;
         let text = std::str::from_utf8(text).map_err(|_| SceneError::Header("provenance is not UTF-8"))?;
-        if !serde_json::from_str::<serde_json::Value>(text).is_ok_and(|v| v.is_object()) {
-            return Err(SceneError::Header("provenance is not a JSON object"));
+        match serde_json::from_str::<serde_json::Value>(text) {
+            Ok(v) if v.is_object() => Some(v),
+            _ => return Err(SceneError::Header("provenance is not a JSON object")),
         }
-        Some(text)
     } else {
         None
     };
@@ -182,9 +182,7 @@ fn read_header<'a>(r: &mut Reader<'a>) -> Result<(u16, u32, u32, Option<&'a str>
 /// The provenance a scene file carries (engine, language, seed, parameters,
 /// model key), as JSON, without decoding the hierarchy.
 pub fn scene_provenance(bytes: &[u8]) -> Result<Option<serde_json::Value>, SceneError> {
-    let (_, _, _, text) = read_header(&mut Reader { bytes, at: 0 })?;
-    // Checked to be a JSON object by `read_header`.
-    Ok(text.and_then(|t| serde_json::from_str(t).ok()))
+    Ok(read_header(&mut Reader { bytes, at: 0 })?.3)
 }
 
 /// Reads a scene file back into a hierarchy (leaf counts recomputed; the

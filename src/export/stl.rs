@@ -69,7 +69,7 @@ pub fn write_binary(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>
 /// The binary header's text: `rulemesh <version> binary STL`, and with a
 /// provenance the language and seed instead (`rulemesh 0.1.0 mdg seed=7`).
 /// The 80-byte header has no room for the parameters and the model key;
-/// the HTTP response headers carry those. Never starts with `solid`, which
+/// the formats with metadata (glTF, 3MF, PNG, scene) carry those. Never starts with `solid`, which
 /// would make readers take the file for ASCII STL.
 pub fn title(provenance: Option<&super::Provenance>) -> String {
     match provenance {

@@ -7,6 +7,7 @@ use crate::mesh::MeshLayout;
 use crate::lang::Language;
 use crate::RenderRequest;
 use std::borrow::Cow;
+use std::collections::BTreeMap;
 
 /// A 32-byte BLAKE3 digest identifying one model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -77,7 +78,7 @@ fn encode_limits(e: &mut Encoder, l: &Limits) {
 /// The key of rendering `source` (already normalised with
 /// [`normalize_source`]) as `req` says, with this engine version.
 pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
-    let mut e = model_encoder(source, req);
+    let mut e = model_encoder(source, req, &req.params);
     encode_limits(&mut e, &req.limits);
     e.field("on_limit", if req.on_limit == crate::core::OnLimit::Truncate { b"truncate" } else { b"error" });
     CacheKey(*e.0.finalize().as_bytes())
@@ -88,12 +89,15 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
 /// differ between doors (the service clamps them to its ceilings), and a
 /// model that finished is the same model under any limits that let it, so
 /// recording the cache key would make the same model's bytes differ by door.
-pub fn model_key(source: &[u8], req: &RenderRequest) -> CacheKey {
-    CacheKey(*model_encoder(source, req).0.finalize().as_bytes())
+/// `params` stand in for the request's (the pipeline passes them in their
+/// canonical spelling, [`ParamValue::canonical`]).
+pub fn model_key(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, ParamValue>) -> CacheKey {
+    CacheKey(*model_encoder(source, req, params).0.finalize().as_bytes())
 }
 
-/// Everything but the limits and the `on_limit` mode, encoded.
-fn model_encoder(source: &[u8], req: &RenderRequest) -> Encoder {
+/// Everything but the limits and the `on_limit` mode, encoded, with
+/// `params` as the parameters.
+fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, ParamValue>) -> Encoder {
     let mut e = Encoder(blake3::Hasher::new());
     e.field("engine", crate::ENGINE_VERSION.as_bytes());
     let language = req.language.or_else(|| Language::detect(source));
@@ -103,9 +107,9 @@ fn model_encoder(source: &[u8], req: &RenderRequest) -> Encoder {
         Some(s) => e.u64("seed", s),
         None => e.field("seed", b"grammar"),
     }
-    e.u64("params", req.params.len() as u64);
+    e.u64("params", params.len() as u64);
     // BTreeMap iterates in sorted key order.
-    for (k, v) in &req.params {
+    for (k, v) in params {
         e.field("param.name", k.as_bytes());
         match v {
             ParamValue::Number(n) => e.field("param.number", &n.to_bits().to_le_bytes()),
@@ -195,9 +199,9 @@ mod tests {
         }
         // The model key leaves the limits and the mode out, and nothing else.
         let limited = RenderRequest { limits: Limits { max_primitives: 5, ..Limits::default() }, on_limit: crate::core::OnLimit::Truncate, ..base.clone() };
-        assert_eq!(model_key(src, &base), model_key(src, &limited));
-        assert_ne!(model_key(src, &base), model_key(src, &variants[0]));
-        assert_ne!(model_key(src, &base), k);
+        assert_eq!(model_key(src, &base, &base.params), model_key(src, &limited, &limited.params));
+        assert_ne!(model_key(src, &base, &base.params), model_key(src, &variants[0], &variants[0].params));
+        assert_ne!(model_key(src, &base, &base.params), k);
         // The timeout does not change a finished model.
         let t = RenderRequest { limits: Limits { timeout_ms: 1, ..Limits::default() }, ..base.clone() };
         assert_eq!(k, cache_key(src, &t));

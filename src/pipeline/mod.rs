@@ -353,8 +353,8 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     // Parameters in one spelling (text `0.5` from the CLI is the number 0.5
     // from a JSON body), so the recorded parameters and key match across doors.
     let params: BTreeMap<String, ParamValue> = req.params.iter().map(|(k, v)| (k.clone(), v.canonical())).collect();
-    let keyed = RenderRequest { params: params.clone(), ..req.clone() };
-    let provenance = Provenance { language: model.language, seed: model.seed, params, model_key: key::model_key(&key::normalize_source(source), &keyed).hex() };
+    let model_key = key::model_key(&key::normalize_source(source), req, &params).hex();
+    let provenance = Provenance { language: model.language, seed: model.seed, params, model_key };
     let out = stages(model, provenance, req, &mut budget, &mut clock);
     budget.set_stage_share(None);
     let out = out?;

@@ -76,20 +76,17 @@ fn mdg_path_rule_animated_by_itself_is_an_error_not_a_stack_overflow() {
     let req = rulemesh::RenderRequest { language: Some(rulemesh::lang::Language::Mdg), ..Default::default() };
     let e = rulemesh::render(found.as_bytes(), &req).expect_err("a cycle");
     assert!(e.to_string().contains("path rule `X2` is used inside its own evaluation"), "{e}");
-    // A chain P0 : P1, P1 : P2, …: each path animated by the next, 200 deep, no cycle.
-    let mut chain = String::from("fps 10\nduration 1\nrule A : P0 { BOX {} }\n");
-    for i in 0..200 {
-        chain.push_str(&format!("rule P{i} : P{} {{ FRAME {{}} }}\n", i + 1));
-    }
-    chain.push_str("rule P200 { FRAME {} }\n");
-    let e = rulemesh::render(chain.as_bytes(), &req).expect_err("too deep");
+    // A chain P0 : P1, P1 : P2, …, P(n-1) : Pn: each path animated by the next, no cycle.
+    let chain = |n: usize| {
+        let mut s = String::from("fps 10\nduration 1\nrule A : P0 { BOX {} }\n");
+        for i in 0..n {
+            s.push_str(&format!("rule P{i} : P{} {{ FRAME {{}} }}\n", i + 1));
+        }
+        s + &format!("rule P{n} {{ FRAME {{}} }}\n")
+    };
+    let e = rulemesh::render(chain(200).as_bytes(), &req).expect_err("too deep");
     assert!(e.to_string().contains("nest more than 32 deep"), "{e}");
     // Nesting within the bound still renders.
-    let mut short = String::from("fps 10\nduration 1\nrule A : P0 { BOX {} }\n");
-    for i in 0..3 {
-        short.push_str(&format!("rule P{i} : P{} {{ FRAME {{}} }}\n", i + 1));
-    }
-    short.push_str("rule P3 { FRAME {} }\n");
-    let out = rulemesh::render(short.as_bytes(), &req).expect("renders");
+    let out = rulemesh::render(chain(3).as_bytes(), &req).expect("renders");
     assert_eq!(out.primitives, 1);
 }
