@@ -38,6 +38,7 @@ pub const CACHE_SHORT: &str = "public, max-age=300";
 pub fn router(state: Arc<AppState>) -> Router {
     let (routes, _doc) = api_router().split_for_parts();
     let router = routes
+        .merge(super::playground::router())
         .fallback(|| async { ServiceError::NotFound("no such route".into()) })
         .layer(DefaultBodyLimit::max(state.config.body_limit))
         .layer(middleware::from_fn_with_state(state.clone(), access))

@@ -16,6 +16,7 @@ pub mod http;
 pub mod http_schema;
 pub mod library;
 pub mod metrics;
+pub mod playground;
 pub mod request;
 pub mod schema;
 pub mod telemetry;

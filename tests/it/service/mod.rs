@@ -13,6 +13,7 @@ mod http;
 mod ops;
 mod schema;
 mod icons;
+mod playground;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).
