@@ -417,6 +417,8 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
 /// size in `budget` before assembling it.
 pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let built = build(meshes, meta, opts)?;
+    // Building (welding, quantising, compressing) is the work; writing is a copy.
+    budget.check_deadline()?;
     let json_bytes = built.root.to_vec()?;
     let json_len = json_bytes.len().next_multiple_of(4);
     let has_bin = !built.root.buffers.is_empty();
@@ -445,6 +447,7 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, bu
 /// Writes a compact JSON glTF with buffer 0 embedded as a base64 data URI.
 pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let mut built = build(meshes, meta, opts)?;
+    budget.check_deadline()?;
     if let Some(b0) = built.root.buffers.get_mut(DATA_BUFFER as usize) {
         let mut uri = super::gltf_buffer::DATA_URI.as_bytes().to_vec();
         uri.extend_from_slice(&super::gltf::base64(&built.bin));

@@ -249,6 +249,11 @@ pub struct ExportOptions {
     pub preview: crate::preview::PreviewOptions,
 }
 
+/// Triangles a writer writes between two looks at the deadline: often enough
+/// that a writer overruns it by well under a millisecond's work, rarely
+/// enough that the clock costs nothing measurable.
+pub(crate) const DEADLINE_EVERY: usize = 1 << 16;
+
 /// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
 pub fn export(format: Format, meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     export_with(format, meshes, meta, &ExportOptions::default(), budget)

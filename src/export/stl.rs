@@ -91,7 +91,10 @@ pub fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budge
     header[..n].copy_from_slice(&title.as_bytes()[..n]);
     out.extend_from_slice(&header);
     out.extend_from_slice(&count32.to_le_bytes());
-    for (normal, corners) in triangles(meshes) {
+    for (k, (normal, corners)) in triangles(meshes).enumerate() {
+        if k % super::DEADLINE_EVERY == 0 {
+            budget.check_deadline()?;
+        }
         for v in std::iter::once(normal).chain(corners) {
             for c in v {
                 out.extend_from_slice(&c.to_le_bytes());
@@ -119,7 +122,10 @@ pub fn write_ascii(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>,
     budget.reserve_memory(bound)?;
     let mut out = String::with_capacity(cap);
     out.push_str(HEAD);
-    for (n, [a, b, c]) in triangles(meshes) {
+    for (k, (n, [a, b, c])) in triangles(meshes).enumerate() {
+        if k % super::DEADLINE_EVERY == 0 {
+            budget.check_deadline()?;
+        }
         // Writing into a String cannot fail.
         let _ = write!(
             out,

@@ -234,6 +234,8 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
     budget.reserve_memory(super::estimated_size(super::Format::Strips, v, t))?;
     let mesh = merged(meshes)?;
+    // Each phase below is one pass over the model: the deadline is looked at between them.
+    budget.check_deadline()?;
 
     // Bounding box over the vertices triangles use.
     let mut lo = [f32::INFINITY; 3];
@@ -296,8 +298,11 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
         .flatten()
         .copied()
         .collect();
+    budget.check_deadline()?;
     let (welded, indices) = strip::weld(&quantised, &indices);
+    budget.check_deadline()?;
     let (vertices, strip_indices) = strip::stripify(&welded, &indices);
+    budget.check_deadline()?;
     // The strip travels as its triangles, in strip order: the index buffer
     // codec stores them in fewer bytes than the sequence codec stores the
     // strip, and the decoder rebuilds the strip with `strip::restrip`.
@@ -325,6 +330,7 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
         flags |= FLAG_PALETTE;
     }
     if opts.zstd {
+        budget.check_deadline()?;
         flags |= FLAG_ZSTD;
         // Level 19, single-threaded, no checksum or dictionary: deterministic.
         body = zstd::bulk::compress(&body, 19).map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("zstd: {e}") })?;

@@ -85,6 +85,8 @@ pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: 
     let bytes = super::estimated_size(super::Format::ThreeMf, v, t).saturating_mul(2);
     budget.reserve_memory(bytes)?;
     let xml = model_xml(meshes, provenance);
+    // The XML is most of the work; compressing it is the rest.
+    budget.check_deadline()?;
     let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let options = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
     let fail = |e: &dyn std::fmt::Display| ExportError::TooLarge { format: "3mf", detail: e.to_string() };

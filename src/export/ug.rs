@@ -34,7 +34,11 @@ pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, Ex
         for (n, p) in points.iter().enumerate() {
             let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
         }
+        budget.check_deadline()?;
         for (k, [a, b, c]) in tris {
+            if k % super::DEADLINE_EVERY == 0 {
+                budget.check_deadline()?;
+            }
             // The colour of the triangle's first corner (flat per face in rulemesh meshes).
             let rgba = m.mesh.indices.get(3 * k).and_then(|&i| m.mesh.colours.get(i as usize)).copied().unwrap_or([255; 4]);
             let next = colours.len();
