@@ -307,6 +307,11 @@ fn port_words_stay_rule_names_as_in_structure_synth() {
     // `c` is the tokenizer's abbreviation of `color` (Tokenizer.cpp:167), so it names no rule.
     assert_eq!(built("{ c blue } box\n", 0).scene, built("{ color blue } box\n", 0).scene);
     assert!(parse_error("rule c { box }\n").contains("rule name"));
+    // `v` is reserved there too (Tokenizer.cpp:21), though its parser refuses it as a
+    // transformation (EisenParser.cpp:242-243); rulemesh reads it as `brightness`.
+    assert!(parse_error("rule v { box }\n").contains("rule name"));
+    assert_eq!(built("{ v 0.5 } box\n", 0).scene, built("{ b 0.5 } box\n", 0).scene);
+    assert_ne!(built("{ v 0.5 } box\n", 0).scene, built("box\n", 0).scene);
 }
 
 /// Debian's NineWorthies.es (`set maxobjects 52200`, `set maxdepth 3000`)
