@@ -339,3 +339,21 @@ fn nine_worthies_ends_at_its_maxobjects_as_in_structure_synth() {
     let ball = std::fs::read_to_string("/usr/share/structure-synth/Examples/Ball.es").expect("Ball.es");
     assert!(built(&ball, 0).generations > 1000);
 }
+
+/// `mesh` joins the state's frame to its `previous` one, which is null until
+/// a loop sets it (State.cpp:10, Action.cpp:38-41; a `{ … }` block is a loop
+/// of count 1, Action.cpp:91-95) and is copied to every child state
+/// (State.cpp:41-53). With none, `PrimitiveRule::apply` counts the object and
+/// draws nothing (PrimitiveRule.cpp:50, 65-83).
+#[test]
+fn mesh_without_a_previous_frame_counts_and_draws_nothing() {
+    let bare = built("mesh\n", 0);
+    assert_eq!((bare.objects, bare.scene.vertices.len()), (1, 0));
+    let called = built("r\nrule r { mesh }\n", 0);
+    assert_eq!((called.objects, called.scene.vertices.len()), (1, 0));
+    // A block on the path gives it one, inherited through a rule.
+    let drawn = built("{ x 1 } r\nrule r { mesh }\n", 0);
+    assert_eq!(drawn.objects, 1);
+    assert_eq!(drawn.scene.vertices.len(), built("{ x 1 } mesh\n", 0).scene.vertices.len());
+    assert!(!drawn.scene.vertices.is_empty());
+}
