@@ -248,6 +248,8 @@ fn example_6_javascript_port_dialect() {
     assert!(parse_error("{ x 2 } triangle\n").contains("corners"));
     let e = parse_error("{ x 1 } tube\n");
     assert!(e.contains("JavaScript port"), "{e}");
+    // BrowserSynth's pyramids (its `scripts/eisenscript.js` primitive table).
+    assert!(parse_error("pyra4\n").contains("JavaScript port"));
     // A script's own rule of that name is its rule.
     assert_eq!(objects("tube\nrule tube { box }\n"), 1);
     // Refusals that protect the server say why.

@@ -20,9 +20,9 @@ use transforms::operator;
 /// Primitives the JavaScript ports add (eisenscript.js's `src/Primitive.js`,
 /// BrowserSynth's `scripts/eisenscript.js`): refused, with an error naming
 /// where they come from, unless the script defines a rule of that name.
-const PORT_PRIMITIVES: [&str; 23] = [
+const PORT_PRIMITIVES: [&str; 25] = [
     "tube", "squash", "torus", "penta", "hexa", "fpenta", "fhexa", "fbox", "ftpenta", "fthexa", "ftbox", "tetra", "octa", "icosa", "cone",
-    "frame", "crossframe", "straightrun", "cornerrun", "uprun", "csg", "ftsquare", "fsquare",
+    "pyra3", "pyra4", "frame", "crossframe", "straightrun", "cornerrun", "uprun", "csg", "ftsquare", "fsquare",
 ];
 
 /// Parses the tokens of a preprocessed script; `params` are its GUI parameters.
