@@ -77,8 +77,10 @@ pub struct Built {
 #[derive(Debug, Clone, PartialEq)]
 struct State {
     matrix: DMat4,
-    /// The matrix of the state the last loop action started from (what `mesh` joins to).
-    previous: DMat4,
+    /// The matrix of the state the last loop action started from (what `mesh`
+    /// joins to); `None` until a loop (a `{ … }` block included) lies on the
+    /// path, as Structure Synth's null `previous` (State.cpp:10, 41-53).
+    previous: Option<DMat4>,
     hsv: [f64; 3],
     alpha: f64,
     /// `maxDepths`: remaining depth per rule *definition* with a `maxdepth`.
@@ -173,7 +175,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
     b.built.scene.classes = script.classes.clone();
     let start = RuleState {
         what: Pending::Top,
-        state: State { matrix: DMat4::IDENTITY, previous: DMat4::IDENTITY, hsv: [0.0, 1.0, 1.0], alpha: 1.0, depths: Vec::new(), seed: 0 },
+        state: State { matrix: DMat4::IDENTITY, previous: None, hsv: [0.0, 1.0, 1.0], alpha: 1.0, depths: Vec::new(), seed: 0 },
     };
     let result = if script.depth_first { b.depth_first(start) } else { b.breadth_first(start) };
     b.budget.release_memory(b.next_bytes);
@@ -438,7 +440,7 @@ impl<'a> Builder<'a> {
         if loops.is_empty() {
             return self.queue(target, base);
         }
-        base.previous = state.matrix;
+        base.previous = Some(state.matrix);
         let per_state = STATE_BYTES.saturating_add(16 * base.depths.len() as u64);
         let reps: Vec<u32> = loops.iter().map(|l| l.count).collect();
         let mut held = 0u64;

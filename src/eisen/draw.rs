@@ -17,7 +17,10 @@ use glam::{DMat3, DMat4, DVec3, Mat3};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Placement {
     pub(super) matrix: DMat4,
-    pub(super) previous: DMat4,
+    /// `None` when no loop step lies on the state's path: Structure Synth's
+    /// `State::previous` is null until `Action::apply` sets it for a loop copy
+    /// (State.cpp:10, Action.cpp:38-41).
+    pub(super) previous: Option<DMat4>,
     pub(super) colour: [f32; 4],
 }
 
@@ -70,7 +73,9 @@ impl Canvas<'_> {
             (Primitive::Point, _) => {
                 placed.push((PrimitiveKind::Icosahedron, DMat3::from_diagonal(DVec3::splat(4.0 * r * size)), m.transform_point3(half)));
             }
-            (Primitive::Mesh, _) => faces.extend(mesh_solid(&at.previous, &m)),
+            // Without a previous frame Structure Synth counts the object and draws
+            // nothing ("No prev", PrimitiveRule.cpp:50, 65-83).
+            (Primitive::Mesh, _) => faces.extend(at.previous.map(|from| mesh_solid(&from, &m)).unwrap_or_default()),
             (Primitive::Template, None) => return Ok(()),
         }
         let triangles: u64 = placed.iter().map(|(k, ..)| crate::geom::primitives::triangle_count(*k, self.opts.detail)).sum::<u64>() + faces.len() as u64;

@@ -2,8 +2,9 @@
 //! Synth 1.5's, one small script per construct, each following the lines of
 //! Structure Synth's source it cites (the rpavlik/structure-synth mirror:
 //! `StructureSynth/Model/Builder.cpp`, `Action.cpp`, `CustomRule.cpp`,
-//! `AmbiguousRule.cpp`, `ColorPool.cpp`, `StructureSynth/Parser/Tokenizer.cpp`,
-//! `EisenParser.cpp`), and the six examples.
+//! `AmbiguousRule.cpp`, `ColorPool.cpp`, `PrimitiveRule.cpp`, `RuleSet.cpp`,
+//! `State.cpp`, `StructureSynth/Parser/Tokenizer.cpp`, `EisenParser.cpp`),
+//! the six examples and two of Debian's examples.
 //!
 //! Counts that depend on random choices follow Structure Synth's Mersenne
 //! Twister streams; their expected values were also computed with an
@@ -19,9 +20,14 @@ use rulemesh::{render, RenderError, RenderRequest};
 
 /// What the builder makes of `src` with request seed `seed`, under default limits.
 fn built(src: &str, seed: u64) -> Built {
+    built_under(src, seed, Limits::default())
+}
+
+/// What the builder makes of `src` with request seed `seed` under `limits`.
+fn built_under(src: &str, seed: u64, limits: Limits) -> Built {
     let script = parse(src.as_bytes(), &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
     let opts = BuildOptions { seed, detail: 8, on_limit: OnLimit::Error, line_radius: 0.01, downstream_bytes: [0; 9], vertex_bytes: 0 };
-    let mut budget = rulemesh::core::Budget::new(Limits::default());
+    let mut budget = rulemesh::core::Budget::new(limits);
     build(&script, &opts, &mut budget).unwrap_or_else(|e| panic!("{e}"))
 }
 
@@ -243,9 +249,116 @@ fn example_6_javascript_port_dialect() {
     assert!(parse_error("{ x 2 } triangle\n").contains("corners"));
     let e = parse_error("{ x 1 } tube\n");
     assert!(e.contains("JavaScript port"), "{e}");
+    // BrowserSynth's pyramids (its `scripts/eisenscript.js` primitive table).
+    assert!(parse_error("pyra4\n").contains("JavaScript port"));
     // A script's own rule of that name is its rule.
     assert_eq!(objects("tube\nrule tube { box }\n"), 1);
     // Refusals that protect the server say why.
     assert!(parse_error("set colorpool image:x.png\nbox\n").contains("cannot read"));
     assert!(parse_error("set background random\nbox\n").contains("not a colour"));
+}
+
+/// Loop counts: `EisenParser::action` takes any integer count
+/// (EisenParser.cpp:283-287), and `Action::apply` (Action.cpp:33-65) queues
+/// a copy before it checks the counters, which start at 1: a count ≤ 0
+/// makes one copy as 0 does, and a last loop ≤ 0 ends the action after it.
+#[test]
+fn negative_loop_counts_make_one_copy_as_action_apply_does() {
+    assert_eq!(objects("-2 * { x 1 } box\n"), 1);
+    let s = built("-2 * { x 1 } box\n", 0).scene;
+    // The one copy has its step applied once (counter 1): the box's centre is at x = 1.5.
+    assert_eq!(s.affine.iter().map(|a| a.translation.x).collect::<Vec<_>>(), [1.5]);
+    assert_eq!(objects("3 * { x 1 } -1 * { y 1 } box\n"), 1);
+    assert_eq!(objects("-1 * { x 1 } 3 * { y 1 } box\n"), 3);
+    // Not a whole number: refused, as EisenParser.cpp:285 refuses it.
+    assert!(parse_error("1.5 * { x 1 } box\n").contains("whole number"));
+}
+
+/// Weights: `ruleModifierList` takes any number (EisenParser.cpp:73-79) and
+/// `AmbiguousRule::apply` (AmbiguousRule.cpp:26-44) draws
+/// `random = total · getDouble()` and takes the first definition with
+/// `random <= accWeight`, else the last. With weights −1 and 1 the total is 0,
+/// so `random` is 0 and the second is taken whatever the seed; with −1 and −1
+/// the first is taken when the draw is ≥ ½, else the last. (The expected
+/// strings were computed with an independent MT19937 in Python: draws 3 … 42
+/// of the request's seed, after the two generations' draws, Builder.cpp:118.)
+#[test]
+fn negative_weights_choose_as_ambiguous_rule_does() {
+    for seed in 0..4 {
+        assert_eq!(kinds("r\nrule r w -1 { box }\nrule r w 1 { sphere }\n", seed), [PrimitiveKind::Sphere]);
+    }
+    let both = "40 * { x 1 } r\nrule r w -1 { box }\nrule r w -1 { sphere }\n";
+    let letters = |seed| kinds(both, seed).iter().map(|&k| if k == PrimitiveKind::Box { 'B' } else { 'S' }).collect::<String>();
+    assert_eq!(letters(0), "BBBBBBSBBSSSBSBSSSBBBSBSBBSSSBSSBBBSBBBS");
+    assert_eq!(letters(1), "BBSSSBSSSSSSSBSBBBSSBBSSBSSBBBSSBSSBSBBB");
+    assert_eq!(letters(2), "SBBBSSSSSSSBBSSSSBBBBBSSBBSBBSBBSSBSSBBS");
+}
+
+/// Names Structure Synth leaves to scripts: its primitives are `box`, `sphere`,
+/// `cylinder`, `mesh`, `line`, `dot`, `grid`, `template` (RuleSet.cpp:28-37)
+/// and its tokenizer's words are those of Tokenizer.cpp:21. eisenscript.js's
+/// `point` (for `dot`) and rulemesh's `colour` (for `color`, inside a list)
+/// are neither, so a script's rule of that name is its rule; `dot` is still
+/// refused as Structure Synth refuses it (RuleSet.cpp:83-85).
+#[test]
+fn port_words_stay_rule_names_as_in_structure_synth() {
+    assert_eq!(kinds("point\nrule point { sphere }\n", 0), [PrimitiveKind::Sphere]);
+    assert_eq!(kinds("3 * { x 1 } point\n", 0).len(), 3);
+    assert_eq!(objects("2 * { x 1 } colour\nrule colour { { colour blue } box }\n"), 2);
+    assert_eq!(built("{ colour blue } box\n", 0).scene, built("{ color blue } box\n", 0).scene);
+    assert!(parse_error("rule dot { box }\ndot\n").contains("cannot be redefined"));
+    // `c` is the tokenizer's abbreviation of `color` (Tokenizer.cpp:167), so it names no rule.
+    assert_eq!(built("{ c blue } box\n", 0).scene, built("{ color blue } box\n", 0).scene);
+    assert!(parse_error("rule c { box }\n").contains("rule name"));
+    // `v` is reserved there too (Tokenizer.cpp:21), though its parser refuses it as a
+    // transformation (EisenParser.cpp:242-243); rulemesh reads it as `brightness`.
+    assert!(parse_error("rule v { box }\n").contains("rule name"));
+    assert_eq!(built("{ v 0.5 } box\n", 0).scene, built("{ b 0.5 } box\n", 0).scene);
+    assert_ne!(built("{ v 0.5 } box\n", 0).scene, built("box\n", 0).scene);
+}
+
+/// Debian's NineWorthies.es (`set maxobjects 52200`, `set maxdepth 3000`)
+/// ends as Structure Synth's `recurseBreadthFirst` ends it (Builder.cpp:114):
+/// nine `r1` branches each queue `r1` and `r2` every generation and each `r2`
+/// three primitives, drawn from generation 4 on, 27 a generation; the check
+/// before generation g sees 27·(g − 4) objects, so generation 1937 is the
+/// last (27 · 1934 = 52 218 ≥ 52 200), far beyond the default 1000.
+/// Its 9 grids a generation are 144 triangles each, 2.92 M triangles in all,
+/// more than the request's default 2 M (a limit Structure Synth does not
+/// have; `eisen.rs`'s `LIMITED`), so the build runs under a raised triangle limit.
+#[test]
+fn nine_worthies_ends_at_its_maxobjects_as_in_structure_synth() {
+    let src = std::fs::read_to_string("/usr/share/structure-synth/Examples/NineWorthies.es").expect("Debian's structure-synth examples (scripts/test installs them)");
+    let roomy = Limits { max_triangles: 4_000_000, max_memory: 8 << 30, ..Limits::default() };
+    let b = built_under(&src, 0, roomy);
+    assert_eq!(b.objects, 52_218);
+    assert_eq!(b.generations, 1937);
+    // Under the default limits it ends at the triangle limit, not at a depth.
+    let script = parse(src.as_bytes(), &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let opts = BuildOptions { seed: 0, detail: 8, on_limit: OnLimit::Error, line_radius: 0.01, downstream_bytes: [0; 9], vertex_bytes: 0 };
+    let err = build(&script, &opts, &mut rulemesh::core::Budget::new(Limits::default())).err().map(|e| e.to_string());
+    assert!(err.as_deref().is_some_and(|e| e.contains("triangles")), "{err:?}");
+    // Ball.es (`set maxdepth 2000`): one `R1` chain queuing itself and a box each
+    // generation, whichever definition is drawn, so boxes in generations 3 … 2000.
+    let ball = std::fs::read_to_string("/usr/share/structure-synth/Examples/Ball.es").expect("Ball.es");
+    let b = built(&ball, 0);
+    assert_eq!((b.objects, b.generations), (1998, 2000));
+}
+
+/// `mesh` joins the state's frame to its `previous` one, which is null until
+/// a loop sets it (State.cpp:10, Action.cpp:38-41; a `{ … }` block is a loop
+/// of count 1, Action.cpp:91-95) and is copied to every child state
+/// (State.cpp:41-53). With none, `PrimitiveRule::apply` counts the object and
+/// draws nothing (PrimitiveRule.cpp:50, 65-83).
+#[test]
+fn mesh_without_a_previous_frame_counts_and_draws_nothing() {
+    let bare = built("mesh\n", 0);
+    assert_eq!((bare.objects, bare.scene.vertices.len()), (1, 0));
+    let called = built("r\nrule r { mesh }\n", 0);
+    assert_eq!((called.objects, called.scene.vertices.len()), (1, 0));
+    // A block on the path gives it one, inherited through a rule.
+    let drawn = built("{ x 1 } r\nrule r { mesh }\n", 0);
+    assert_eq!(drawn.objects, 1);
+    assert_eq!(drawn.scene.vertices.len(), built("{ x 1 } mesh\n", 0).scene.vertices.len());
+    assert!(!drawn.scene.vertices.is_empty());
 }

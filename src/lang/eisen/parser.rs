@@ -20,9 +20,9 @@ use transforms::operator;
 /// Primitives the JavaScript ports add (eisenscript.js's `src/Primitive.js`,
 /// BrowserSynth's `scripts/eisenscript.js`): refused, with an error naming
 /// where they come from, unless the script defines a rule of that name.
-const PORT_PRIMITIVES: [&str; 23] = [
+const PORT_PRIMITIVES: [&str; 25] = [
     "tube", "squash", "torus", "penta", "hexa", "fpenta", "fhexa", "fbox", "ftpenta", "fthexa", "ftbox", "tetra", "octa", "icosa", "cone",
-    "frame", "crossframe", "straightrun", "cornerrun", "uprun", "csg", "ftsquare", "fsquare",
+    "pyra3", "pyra4", "frame", "crossframe", "straightrun", "cornerrun", "uprun", "csg", "ftsquare", "fsquare",
 ];
 
 /// Parses the tokens of a preprocessed script; `params` are its GUI parameters.
@@ -100,7 +100,9 @@ impl Parser {
         if name == "{" || operator(&name).is_some() || number(&name).is_some() {
             return Err(ParseError::single(name_tok.span, format!("expected a rule name after `rule`, found `{}`", name_tok.text)));
         }
-        if Primitive::from_name(&name).is_some() || name.starts_with("triangle[") {
+        // `point` is eisenscript.js's word for `dot`, not a primitive of Structure
+        // Synth (RuleSet.cpp:28-37), whose scripts may define a rule `point`.
+        if (name != "point" && Primitive::from_name(&name).is_some()) || name.starts_with("triangle[") {
             return Err(ParseError::single(name_tok.span, format!("`{name}` is a built-in primitive and cannot be redefined")));
         }
         let id = self.name_id(&name);
@@ -117,11 +119,10 @@ impl Parser {
             match operator(&t.text.to_ascii_lowercase()) {
                 Some("weight") => {
                     self.pos += 1;
-                    let w = self.num("rule modifier `weight`")?;
-                    if w < 0.0 {
-                        return Err(ParseError::single(t.span, format!("rule `{name}`: weight must be ≥ 0, found {w}")));
-                    }
-                    def.weight = w;
+                    // Any number, negative too: Structure Synth checks none
+                    // (EisenParser.cpp:73-79) and its draw (AmbiguousRule.cpp:26-44),
+                    // followed in the builder, picks a definition whatever the signs.
+                    def.weight = self.num("rule modifier `weight`")?;
                 }
                 Some("maxdepth") => {
                     self.pos += 1;
@@ -192,8 +193,12 @@ impl Parser {
                 continue;
             }
             if let Some((v, integer)) = number(&t.text) {
-                if !integer || v < 0.0 {
-                    return Err(ParseError::single(t.span, format!("a loop count must be a whole number ≥ 0, found `{}`", t.text)));
+                // Any whole number (EisenParser.cpp:283-287). A count ≤ 0 makes
+                // one copy, as 0 does: `Action::apply` checks its counters, which
+                // start at 1, only after queuing a copy (Action.cpp:52-63), so
+                // a negative count is read as 0.
+                if !integer {
+                    return Err(ParseError::single(t.span, format!("a loop count must be a whole number, found `{}`", t.text)));
                 }
                 self.pos += 1;
                 let star = self.next("`*` after the loop count")?;
@@ -204,7 +209,7 @@ impl Parser {
                     return Err(ParseError::single(star.span, "expected `{` after `*`"));
                 }
                 let transform = self.transform_list()?;
-                loops.push(Loop { count: v.min(f64::from(u32::MAX)) as u32, transform });
+                loops.push(Loop { count: v.clamp(0.0, f64::from(u32::MAX)) as u32, transform });
                 continue;
             }
             if t.text == "}" || t.text == "*" || t.text == ">" || operator(&t.text.to_ascii_lowercase()).is_some() {
@@ -293,17 +298,25 @@ impl Parser {
                 _ => Err(ParseError::single(span, format!("`{name}`: a triangle needs three points `x,y,z` separated by `;`"))),
             };
         }
+        // The script's own rules first: Structure Synth's primitives cannot be
+        // redefined (see `rule`), so only the ports' names (`point`, `tube`, …)
+        // can be both, and for those the script's rule is the one Structure Synth runs.
+        let own = self.script.names.iter().position(|n| n == name).filter(|&i| !self.script.groups[i].is_empty());
+        if let Some(i) = own {
+            return Ok(Target::Rule(i as u32));
+        }
         if let Some(p) = Primitive::from_name(base) {
             return Ok(Target::Primitive(p, self.class_id(class)));
         }
-        match self.script.names.iter().position(|n| n == name) {
-            Some(i) if !self.script.groups[i].is_empty() => Ok(Target::Rule(i as u32)),
-            _ if base == "triangle" => Err(ParseError::single(span, "`triangle` needs its corners: `triangle[x,y,z;x,y,z;x,y,z]`")),
-            _ if PORT_PRIMITIVES.contains(&base) => Err(ParseError::single(
+        if base == "triangle" {
+            Err(ParseError::single(span, "`triangle` needs its corners: `triangle[x,y,z;x,y,z;x,y,z]`"))
+        } else if PORT_PRIMITIVES.contains(&base) {
+            Err(ParseError::single(
                 span,
                 format!("`{base}` is a primitive of a JavaScript port (eisenscript.js or BrowserSynth), not of Structure Synth; define `rule {base} {{ … }}` to draw it from Structure Synth's primitives"),
-            )),
-            _ => Err(ParseError::single(span, format!("no rule or primitive named `{name}`"))),
+            ))
+        } else {
+            Err(ParseError::single(span, format!("no rule or primitive named `{name}`")))
         }
     }
 }

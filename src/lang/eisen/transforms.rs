@@ -28,7 +28,7 @@ pub(super) fn operator(word: &str) -> Option<&'static str> {
         "sat" => "sat",
         "b" | "brightness" | "v" => "brightness",
         "a" | "alpha" => "alpha",
-        "c" | "color" | "colour" => "color",
+        "c" | "color" => "color",
         "blend" => "blend",
         "md" | "maxdepth" => "maxdepth",
         "w" | "weight" => "weight",
@@ -52,11 +52,13 @@ impl Parser {
             }
             let lower = tok.text.to_ascii_lowercase();
             // `m` (matrix) and `saturation` (sat) are the JavaScript ports'
-            // words, read only inside a list: Structure Synth's tokenizer knows
-            // neither (Tokenizer.cpp:21), so its scripts may name rules `m`.
+            // words, `colour` rulemesh's own, read only inside a list: Structure
+            // Synth's tokenizer knows none of them (Tokenizer.cpp:21), so its
+            // scripts may name rules `m` or `colour`.
             let extension = match lower.as_str() {
                 "m" => Some("matrix"),
                 "saturation" => Some("sat"),
+                "colour" => Some("color"),
                 _ => None,
             };
             let Some(op) = operator(&lower).or(extension) else {
