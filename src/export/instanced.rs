@@ -28,6 +28,12 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, provenance: Option
     }
     let counts: Vec<u64> = counts.values().copied().collect();
     let meta = ExportMeta { background: None, truncated: h.truncated.is_some(), graph: None, material_per_mesh: false, camera: None, provenance: provenance.cloned() };
+    if meshes.is_empty() {
+        // Nothing is drawn (an axiom of symbols no turtle command draws): an
+        // empty model, written as the flat writers write one — the instanced
+        // writer needs a buffer to point its instances into (fuzz finding).
+        return if glb { super::gltf::write_glb(&[], &meta, budget) } else { super::gltf::write_gltf(&[], &meta, budget) };
+    }
     let bytes = super::gltf::write_instanced(&meshes, &counts, &meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };

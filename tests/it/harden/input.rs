@@ -90,3 +90,44 @@ fn mdg_path_rule_animated_by_itself_is_an_error_not_a_stack_overflow() {
     let out = rulemesh::render(chain(3).as_bytes(), &req).expect("renders");
     assert_eq!(out.primitives, 1);
 }
+
+/// The `http_request` fuzz target (2026-12-02, session 8, about 39 000
+/// executions): an L-system whose axiom draws nothing
+/// (`axiom:278670lrys#scene`: digits and letters no turtle command reads)
+/// is a hierarchy with no leaves, and the instanced glTF writer refused it
+/// ("an instanced model needs a buffer"), which the service answered with a
+/// 500. Now an empty hierarchy is written as the flat writers write an empty
+/// model: valid glTF with no meshes, over HTTP, gRPC and the CLI alike.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn lsystem_that_draws_nothing_is_an_empty_model_not_a_500() {
+    let (srv, base) = start(config()).await;
+    let found = "axiom:278670lrys#scene";
+    for format in ["glb", "gltf"] {
+        let r = client().post(format!("{base}/v1/render")).json(&json!({"source": found, "format": format})).send().await.expect("post");
+        assert_eq!(r.status(), 200, "{format}");
+        assert_eq!(r.headers().get("x-rulemesh-triangles").and_then(|v| v.to_str().ok()), Some("0"), "{format}");
+        let bytes = r.bytes().await.expect("body");
+        let doc: serde_json::Value = if format == "glb" {
+            assert_eq!(&bytes[..4], b"glTF");
+            let len = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]) as usize;
+            serde_json::from_slice(&bytes[20..20 + len]).expect("glb JSON chunk")
+        } else {
+            serde_json::from_slice(&bytes).expect("glTF JSON")
+        };
+        assert_eq!(doc["asset"]["version"], "2.0", "{doc}");
+        assert!(doc["meshes"].as_array().is_none_or(|m| m.is_empty()), "{doc}");
+    }
+    let reply = grpc(&srv)
+        .await
+        .render(rulemesh::service::grpc::pb::RenderRequest { source: found.into(), format: "glb".into(), ..Default::default() })
+        .await
+        .expect("a model");
+    assert_eq!(&reply.into_inner().model[..4], b"glTF");
+    let dir = crate::common::tempdir();
+    let (src, out) = (dir.path().join("found.ls"), dir.path().join("found.glb"));
+    std::fs::write(&src, found).expect("write");
+    let run = crate::common::run(&["render", src.to_str().expect("utf-8"), "-o", out.to_str().expect("utf-8")], None);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert_eq!(&std::fs::read(&out).expect("glb")[..4], b"glTF");
+    stop(srv).await;
+}
