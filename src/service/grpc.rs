@@ -86,15 +86,18 @@ fn meta(served: &Served) -> pb::RenderMeta {
         triangles: m.triangles,
         truncated: m.truncated.map(|t| pb::Truncation { limit: t.limit.name().to_string(), configured: t.configured, reached: t.reached }),
         size: m.bytes.len() as u64,
+        seed: m.seed,
     }
 }
 
 /// `response` with the request's timing as `server-timing` metadata (the
-/// HTTP `Server-Timing` header's value, in the response headers).
+/// HTTP `Server-Timing` header's value) and the model's seed as
+/// `x-rulemesh-seed` (decimal, as the HTTP header), in the response headers.
 fn with_timing<T>(mut response: Response<T>, served: &Served) -> Response<T> {
     if let Ok(v) = tonic::metadata::MetadataValue::try_from(served.timing.header_value()) {
         response.metadata_mut().insert("server-timing", v);
     }
+    response.metadata_mut().insert("x-rulemesh-seed", tonic::metadata::MetadataValue::from(served.model.seed));
     response
 }
 

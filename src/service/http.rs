@@ -78,6 +78,7 @@ fn cors(origins: &[String]) -> Option<tower_http::cors::CorsLayer> {
                 name("x-rulemesh-cache"),
                 name("x-rulemesh-error"),
                 name("x-rulemesh-primitives"),
+                name("x-rulemesh-seed"),
                 name("x-rulemesh-triangles"),
                 name("x-rulemesh-truncated"),
                 name("x-rulemesh-truncated-limit"),
@@ -279,12 +280,14 @@ fn model_response(served: &Served, cache_control: Option<&'static str>, text: bo
 }
 
 /// The headers of a model response (also of its 304): ETag, cache result,
-/// counts, truncation, `Cache-Control` and `Server-Timing`.
+/// the seed the model was made with (so a client that sent none can pin
+/// it), counts, truncation, `Cache-Control` and `Server-Timing`.
 fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'static str>) {
     let m = &served.model;
     h.insert("server-timing", header_value(&served.timing.header_value()));
     h.insert(header::ETAG, header_value(&format!("\"{}\"", m.etag)));
     h.insert("x-rulemesh-cache", HeaderValue::from_static(if served.cache == CacheOutcome::Hit { "hit" } else { "miss" }));
+    h.insert("x-rulemesh-seed", HeaderValue::from(m.seed));
     h.insert("x-rulemesh-primitives", HeaderValue::from(m.primitives));
     h.insert("x-rulemesh-triangles", HeaderValue::from(m.triangles));
     h.insert("x-rulemesh-truncated", HeaderValue::from_static(if m.truncated.is_some() { "true" } else { "false" }));
@@ -314,6 +317,7 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
+            ("X-Rulemesh-Seed" = String, description = "The seed the model was made with, in decimal (0 to 2^64 - 1): the request's, else the grammar's own seed directive, else 0"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
@@ -392,6 +396,7 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
+            ("X-Rulemesh-Seed" = String, description = "The seed the model was made with, in decimal (0 to 2^64 - 1): the request's, else the grammar's own seed directive, else 0"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
