@@ -16,6 +16,7 @@ use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
 use axum::{Extension, Json, Router};
+use futures_util::StreamExt;
 use serde::Serialize;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, OnceLock};
@@ -95,9 +96,15 @@ pub struct Caller {
     pub ceiling: Limits,
 }
 
+/// Marks a response whose body is still being made when it is returned
+/// (the batch route's NDJSON): [`access`] then holds the caller's
+/// concurrency share until the body ends, not just until the headers.
+#[derive(Debug, Clone, Copy)]
+pub struct Streamed;
+
 /// Admits `/v1/…` requests by API key (401, 429), holding the key's
-/// concurrency share until the response is ready; other routes (probes,
-/// metrics, the OpenAPI document) stay open.
+/// concurrency share until the response is ready (a [`Streamed`] one: until
+/// its body ends); other routes (probes, metrics, the OpenAPI document) stay open.
 async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -> Response {
     if !req.uri().path().starts_with("/v1/") {
         req.extensions_mut().insert(Caller { ceiling: st.ceiling });
@@ -110,6 +117,14 @@ async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -
     };
     req.extensions_mut().insert(Caller { ceiling: admission.ceiling });
     let resp = next.run(req).await;
+    if resp.extensions().get::<Streamed>().is_some() {
+        let (parts, body) = resp.into_parts();
+        let held = body.into_data_stream().map(move |chunk| {
+            let _share = &admission;
+            chunk
+        });
+        return Response::from_parts(parts, Body::from_stream(held));
+    }
     drop(admission);
     resp
 }
@@ -119,6 +134,7 @@ async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -
 fn api_router() -> OpenApiRouter<Arc<AppState>> {
     OpenApiRouter::with_openapi(ApiDoc::openapi())
         .routes(routes!(render_post))
+        .routes(routes!(super::http_batch::batch_post))
         .routes(routes!(model_get))
         .routes(routes!(grammars_list))
         .routes(routes!(grammar_source))
@@ -236,7 +252,7 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
 }
 
 /// Whether the request asks to bypass the cache.
-fn wants_fresh(headers: &HeaderMap) -> bool {
+pub(super) fn wants_fresh(headers: &HeaderMap) -> bool {
     headers
         .get_all(header::CACHE_CONTROL)
         .iter()
