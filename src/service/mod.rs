@@ -12,6 +12,7 @@ pub mod conn;
 pub mod engine;
 pub mod error;
 pub mod grpc;
+pub mod grpc_batch;
 pub mod grpc_conn;
 pub mod http;
 pub mod http_batch;
