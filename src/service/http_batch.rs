@@ -3,7 +3,7 @@
 //! order, the model's bytes in base64. [`super::batch`] expands and runs the
 //! members; this module reads the JSON body and writes the lines.
 
-use super::batch::{self, MemberOutcome, MAX_MEMBERS};
+use super::batch::{self, MemberOutcome};
 use super::error::{ErrorBody, ErrorDetail};
 use super::http::{body_bytes, wants_fresh, Caller, Streamed};
 use super::request::{ParamValueSchema, RenderBody, SeedSchema};
@@ -131,7 +131,9 @@ fn line(outcome: &MemberOutcome, state: &AppState) -> Bytes {
         Err(e) => (member.seed, LineOutcome::Failed { error: e.detail().error }),
     };
     let line = Line { index: member.index, seed: seed.map(|s| s.to_string()), params, outcome };
-    let mut bytes = serde_json::to_vec(&line).unwrap_or_else(|e| format!("{{\"index\":{},\"error\":{{\"code\":\"internal\",\"message\":\"{e}\"}}}}", member.index).into_bytes());
+    let mut bytes = serde_json::to_vec(&line).unwrap_or_else(|e| {
+        serde_json::json!({"index": member.index, "seed": line.seed, "error": {"code": "internal", "message": format!("cannot write this member's line: {e}")}}).to_string().into_bytes()
+    });
     bytes.push(b'\n');
     Bytes::from(bytes)
 }
@@ -156,7 +158,6 @@ pub(super) async fn batch_post(State(st): State<Arc<AppState>>, Extension(caller
         Ok(b) => b,
         Err(e) => return e.into_response(),
     };
-    debug_assert!(batch.members().len() <= MAX_MEMBERS);
     let state = st.clone();
     let lines = batch.run(st, caller.ceiling, wants_fresh(&headers), tracing::Span::current()).map(move |o| Ok::<_, Infallible>(line(&o, &state)));
     let mut resp = Response::new(Body::from_stream(lines));
