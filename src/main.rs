@@ -106,8 +106,12 @@ struct RenderArgs {
     #[arg(long, value_enum)]
     language: Option<Language>,
     /// Random seed (default: the grammar's `randseed`, else 0).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "seeds")]
     seed: Option<u64>,
+    /// Render once per seed: `A..B` (both ends included) or `1,5,9`; the
+    /// output must name each file with `{seed}`, e.g. `-o out/{seed}.glb`.
+    #[arg(long, value_name = "LIST")]
+    seeds: Option<String>,
     /// A grammar parameter, `name=value`; repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
@@ -355,11 +359,56 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
         script_dir: Some(script_dir_of(&args.file)),
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;
-    let out = render(&source, &req).map_err(|e| render_failure(&args.file, e))?;
-    for w in &out.warnings {
-        eprintln!("{}:{w}", args.file);
+    let Some(list) = &args.seeds else {
+        return render_one(&args.file, &source, &req, &args.output);
+    };
+    let seeds = parse_seeds(list)?;
+    if !args.output.contains("{seed}") {
+        return Err(Failure::new(EXIT_USAGE, format!("--seeds writes one file per seed: name them with {{seed}} in --output (e.g. out/{{seed}}.glb), not `{}`", args.output)));
     }
-    write_output(&args.output, &out.bytes)?;
+    for seed in seeds {
+        let output = args.output.replace("{seed}", &seed.to_string());
+        render_one(&args.file, &source, &RenderRequest { seed: Some(seed), ..req.clone() }, &output)?;
+    }
+    Ok(())
+}
+
+/// The most seeds one `--seeds` list may name: a typo such as `1..1000000000`
+/// is refused rather than left writing files for days.
+const MAX_CLI_SEEDS: u64 = 100_000;
+
+/// Reads `--seeds`: `A..B` (both ends included, A ≤ B) or a comma list, in
+/// the order given; each seed 0 to 2^64 − 1.
+fn parse_seeds(list: &str) -> Result<Vec<u64>, Failure> {
+    let bad = |why: String| Failure::new(EXIT_USAGE, format!("--seeds `{list}`: {why} (expected A..B or a comma list such as 1,5,9)"));
+    let seed = |t: &str| t.trim().parse::<u64>().map_err(|_| bad(format!("`{}` is not a whole number from 0 to 2^64 - 1", t.trim())));
+    let seeds: Vec<u64> = match list.split_once("..") {
+        Some((a, b)) => {
+            let (a, b) = (seed(a)?, seed(b)?);
+            if a > b {
+                return Err(bad(format!("the range is empty ({a} > {b})")));
+            }
+            if b - a >= MAX_CLI_SEEDS {
+                return Err(bad(format!("more than {MAX_CLI_SEEDS} seeds")));
+            }
+            (a..=b).collect()
+        }
+        None => list.split(',').map(seed).collect::<Result<_, _>>()?,
+    };
+    if seeds.len() as u64 > MAX_CLI_SEEDS {
+        return Err(bad(format!("more than {MAX_CLI_SEEDS} seeds")));
+    }
+    Ok(seeds)
+}
+
+/// Renders `source` as `req` says into `output`, reporting counts and stage
+/// times (and any warnings) on standard error.
+fn render_one(file: &str, source: &[u8], req: &RenderRequest, output: &str) -> Result<(), Failure> {
+    let out = render(source, req).map_err(|e| render_failure(file, e))?;
+    for w in &out.warnings {
+        eprintln!("{file}:{w}");
+    }
+    write_output(output, &out.bytes)?;
     let truncated = match out.truncated {
         Some(t) => format!(", TRUNCATED at {} limit (configured {}, reached {})", t.limit.name(), t.configured, t.reached),
         None => String::new(),
@@ -367,13 +416,14 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
     let ms = |d: std::time::Duration| d.as_secs_f64() * 1000.0;
     // The stages that ran (a scene has no mesh stage; print=true adds print).
     let stages: Vec<String> = out.phases.ran().map(|(p, d)| format!("{} {:.1}", p.name(), ms(d))).collect();
+    // The seed too when the request named one (a `--seeds` run says which file is which).
+    let seed = req.seed.map_or_else(String::new, |s| format!(" seed {s}"));
     eprintln!(
-        "{}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms ({}){}",
-        args.file,
+        "{file}{seed}: {} primitives, {} triangles, {} bytes ({:?}) in {:.1} ms ({}){}",
         out.primitives,
         out.triangles,
         out.bytes.len(),
-        format,
+        req.format,
         ms(out.elapsed),
         stages.join(", "),
         truncated

@@ -49,6 +49,10 @@ pub enum DiskError {
 struct Header {
     content_type: String,
     language: String,
+    /// Absent in entries written before seeds were recorded: such an entry
+    /// reads as a miss (and is rendered and written again).
+    #[serde(default)]
+    seed: Option<u64>,
     primitives: u64,
     triangles: u64,
     etag: String,
@@ -221,6 +225,7 @@ pub(super) fn encode(key: &CacheKey, model: &Rendered) -> Option<Vec<u8>> {
     let header = serde_json::to_vec(&Header {
         content_type: model.content_type.to_string(),
         language: model.language.name().to_string(),
+        seed: Some(model.seed),
         primitives: model.primitives,
         triangles: model.triangles,
         etag: model.etag.clone(),
@@ -265,6 +270,7 @@ pub(super) fn decode(key: &CacheKey, data: &[u8]) -> Option<Rendered> {
         etag,
         content_type: static_content_type(&header.content_type)?,
         language: [Language::Mdg, Language::Lsystem, Language::Eisenscript, Language::Stack, Language::Ug, Language::Etol].into_iter().find(|l| l.name() == header.language)?,
+        seed: header.seed?,
         primitives: header.primitives,
         triangles: header.triangles,
         truncated: None,
@@ -282,6 +288,7 @@ mod tests {
             bytes: bytes.into(),
             content_type: "model/stl",
             language: Language::Mdg,
+            seed: (1 << 63) + 1,
             primitives: 1,
             triangles: 0,
             truncated: None,

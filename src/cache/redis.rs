@@ -489,6 +489,7 @@ mod tests {
                     bytes: bytes.into(),
                     content_type: "model/stl",
                     language: crate::lang::Language::Mdg,
+                    seed: 0,
                     primitives: 1,
                     triangles: 0,
                     truncated: None,

@@ -26,6 +26,9 @@ pub struct Rendered {
     pub content_type: &'static str,
     /// The language the source was read as.
     pub language: Language,
+    /// The seed the model was made with (see [`crate::RenderOutput::seed`]),
+    /// kept with the bytes so a cache hit reports it without re-rendering.
+    pub seed: u64,
     /// Primitive instances in the model.
     pub primitives: u64,
     /// Triangles in the model.
@@ -43,6 +46,7 @@ impl Rendered {
             etag,
             content_type,
             language: out.language,
+            seed: out.seed,
             primitives: out.primitives,
             triangles: out.triangles,
             truncated: out.truncated,

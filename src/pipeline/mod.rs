@@ -95,6 +95,10 @@ pub struct RenderOutput {
     pub bytes: Vec<u8>,
     /// The language the source was read as.
     pub language: Language,
+    /// The seed the model was made with (the request's, else the grammar's
+    /// own seed directive, else 0): sent back as the request's seed, it
+    /// makes the same model, so the service reports it with every model.
+    pub seed: u64,
     /// Primitive instances in the model.
     pub primitives: u64,
     /// Triangles in the model.
@@ -453,6 +457,7 @@ fn summary(bytes: Vec<u8>, model: &Model, triangles: u64, truncated: Option<Limi
     RenderOutput {
         bytes,
         language: model.language,
+        seed: model.seed,
         primitives: model.primitives,
         triangles,
         truncated,

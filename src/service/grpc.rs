@@ -76,7 +76,8 @@ impl From<pb::RenderRequest> for RenderBody {
     }
 }
 
-fn meta(served: &Served) -> pb::RenderMeta {
+/// The metadata of a served model (a reply's, a stream's first chunk's, a batch item's).
+pub(super) fn meta(served: &Served) -> pb::RenderMeta {
     let m = &served.model;
     pb::RenderMeta {
         content_type: m.content_type.to_string(),
@@ -86,15 +87,18 @@ fn meta(served: &Served) -> pb::RenderMeta {
         triangles: m.triangles,
         truncated: m.truncated.map(|t| pb::Truncation { limit: t.limit.name().to_string(), configured: t.configured, reached: t.reached }),
         size: m.bytes.len() as u64,
+        seed: m.seed,
     }
 }
 
 /// `response` with the request's timing as `server-timing` metadata (the
-/// HTTP `Server-Timing` header's value, in the response headers).
+/// HTTP `Server-Timing` header's value) and the model's seed as
+/// `x-rulemesh-seed` (decimal, as the HTTP header), in the response headers.
 fn with_timing<T>(mut response: Response<T>, served: &Served) -> Response<T> {
     if let Ok(v) = tonic::metadata::MetadataValue::try_from(served.timing.header_value()) {
         response.metadata_mut().insert("server-timing", v);
     }
+    response.metadata_mut().insert("x-rulemesh-seed", tonic::metadata::MetadataValue::from(served.model.seed));
     response
 }
 
@@ -188,6 +192,30 @@ impl Rulemesh for GrpcService {
             Ok(pb::RenderChunk { meta: first.take(), data })
         });
         Ok(with_timing(Response::new(Box::pin(tokio_stream::iter(chunks))), &served_timing))
+    }
+
+    type RenderBatchStream = super::grpc_batch::ItemStream;
+
+    async fn render_batch(&self, request: Request<pb::RenderBatchRequest>) -> Result<Response<Self::RenderBatchStream>, Status> {
+        let started = Instant::now();
+        let span = tracing::info_span!(
+            "grpc",
+            id = super::http::next_request_id(),
+            method = "RenderBatch",
+            otel.name = "RenderBatch",
+            otel.kind = "server",
+            language = tracing::field::Empty,
+            key = tracing::field::Empty,
+            cache = tracing::field::Empty
+        );
+        super::telemetry::adopt_parent(&span, |name| request.metadata().get(name).and_then(|v| v.to_str().ok()));
+        let admitted = admit(&self.state, request.metadata())
+            .and_then(|a| super::grpc_batch::batch_of(request.into_inner(), &a.ceiling).map(|(batch, no_cache)| (a, batch, no_cache)));
+        self.count("RenderBatch", &admitted, started);
+        let (admission, batch, no_cache) = admitted.map_err(|e| e.to_status())?;
+        let ceiling = admission.ceiling;
+        // The admission travels with the stream: the key's share is held until the last item.
+        Ok(Response::new(super::grpc_batch::items(batch, self.state.clone(), ceiling, no_cache, span, admission)))
     }
 
     async fn check(&self, request: Request<pb::CheckRequest>) -> Result<Response<pb::CheckReply>, Status> {

@@ -16,6 +16,7 @@ use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
 use axum::{Extension, Json, Router};
+use futures_util::StreamExt;
 use serde::Serialize;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, OnceLock};
@@ -79,6 +80,7 @@ fn cors(origins: &[String]) -> Option<tower_http::cors::CorsLayer> {
                 name("x-rulemesh-cache"),
                 name("x-rulemesh-error"),
                 name("x-rulemesh-primitives"),
+                name("x-rulemesh-seed"),
                 name("x-rulemesh-triangles"),
                 name("x-rulemesh-truncated"),
                 name("x-rulemesh-truncated-limit"),
@@ -95,9 +97,15 @@ pub struct Caller {
     pub ceiling: Limits,
 }
 
+/// Marks a response whose body is still being made when it is returned
+/// (the batch route's NDJSON): [`access`] then holds the caller's
+/// concurrency share until the body ends, not just until the headers.
+#[derive(Debug, Clone, Copy)]
+pub struct Streamed;
+
 /// Admits `/v1/…` requests by API key (401, 429), holding the key's
-/// concurrency share until the response is ready; other routes (probes,
-/// metrics, the OpenAPI document) stay open.
+/// concurrency share until the response is ready (a [`Streamed`] one: until
+/// its body ends); other routes (probes, metrics, the OpenAPI document) stay open.
 async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -> Response {
     if !req.uri().path().starts_with("/v1/") {
         req.extensions_mut().insert(Caller { ceiling: st.ceiling });
@@ -110,6 +118,14 @@ async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -
     };
     req.extensions_mut().insert(Caller { ceiling: admission.ceiling });
     let resp = next.run(req).await;
+    if resp.extensions().get::<Streamed>().is_some() {
+        let (parts, body) = resp.into_parts();
+        let held = body.into_data_stream().map(move |chunk| {
+            let _share = &admission;
+            chunk
+        });
+        return Response::from_parts(parts, Body::from_stream(held));
+    }
     drop(admission);
     resp
 }
@@ -119,6 +135,7 @@ async fn access(State(st): State<Arc<AppState>>, mut req: Request, next: Next) -
 fn api_router() -> OpenApiRouter<Arc<AppState>> {
     OpenApiRouter::with_openapi(ApiDoc::openapi())
         .routes(routes!(render_post))
+        .routes(routes!(super::http_batch::batch_post))
         .routes(routes!(model_get))
         .routes(routes!(grammars_list))
         .routes(routes!(grammar_source))
@@ -236,7 +253,7 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
 }
 
 /// Whether the request asks to bypass the cache.
-fn wants_fresh(headers: &HeaderMap) -> bool {
+pub(super) fn wants_fresh(headers: &HeaderMap) -> bool {
     headers
         .get_all(header::CACHE_CONTROL)
         .iter()
@@ -280,12 +297,14 @@ fn model_response(served: &Served, cache_control: Option<&'static str>, text: bo
 }
 
 /// The headers of a model response (also of its 304): ETag, cache result,
-/// counts, truncation, `Cache-Control` and `Server-Timing`.
+/// the seed the model was made with (so a client that sent none can pin
+/// it), counts, truncation, `Cache-Control` and `Server-Timing`.
 fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'static str>) {
     let m = &served.model;
     h.insert("server-timing", header_value(&served.timing.header_value()));
     h.insert(header::ETAG, header_value(&format!("\"{}\"", m.etag)));
     h.insert("x-rulemesh-cache", HeaderValue::from_static(if served.cache == CacheOutcome::Hit { "hit" } else { "miss" }));
+    h.insert("x-rulemesh-seed", HeaderValue::from(m.seed));
     h.insert("x-rulemesh-primitives", HeaderValue::from(m.primitives));
     h.insert("x-rulemesh-triangles", HeaderValue::from(m.triangles));
     h.insert("x-rulemesh-truncated", HeaderValue::from_static(if m.truncated.is_some() { "true" } else { "false" }));
@@ -315,6 +334,7 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
+            ("X-Rulemesh-Seed" = String, description = "The seed the model was made with, in decimal (0 to 2^64 - 1): the request's, else the grammar's own seed directive, else 0"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
@@ -393,6 +413,7 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
         ), headers(
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
+            ("X-Rulemesh-Seed" = String, description = "The seed the model was made with, in decimal (0 to 2^64 - 1): the request's, else the grammar's own seed directive, else 0"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),

@@ -6,13 +6,16 @@
 //! the cache outlives a request.
 
 pub mod access;
+pub mod batch;
 pub mod config;
 pub mod conn;
 pub mod engine;
 pub mod error;
 pub mod grpc;
+pub mod grpc_batch;
 pub mod grpc_conn;
 pub mod http;
+pub mod http_batch;
 pub mod http_schema;
 pub mod library;
 pub mod metrics;

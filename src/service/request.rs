@@ -100,6 +100,17 @@ fn seed_number_or_text<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<
     }
 }
 
+/// One seed of a list (the batch route's `seeds`), read like `seed`: a
+/// JSON number or a decimal string, 0 to 2^64 − 1, never null.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SeedValue(pub u64);
+
+impl<'de> Deserialize<'de> for SeedValue {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        seed_number_or_text(d)?.map(SeedValue).ok_or_else(|| serde::de::Error::custom("a seed in a list must not be null"))
+    }
+}
+
 /// `POST /v1/render` as sent (and the gRPC `RenderRequest`, converted).
 #[derive(Debug, Clone, Default, PartialEq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]

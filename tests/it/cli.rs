@@ -97,3 +97,46 @@ fn truncated_glb_is_marked_in_extras() {
     assert_eq!(position_count(&out.stdout), 10 * 24);
     assert!(String::from_utf8_lossy(&out.stderr).contains("TRUNCATED at primitives limit (configured 10, reached 11)"));
 }
+
+#[test]
+fn seeds_write_one_file_per_seed_identical_to_single_renders() {
+    let dir = tempdir();
+    let gem = crate::common::repo().join("grammars/gem.mdg");
+    let gem = gem.to_str().expect("utf-8 path");
+    let template = dir.path().join("out/{seed}.glb");
+    std::fs::create_dir_all(dir.path().join("out")).expect("mkdir");
+    for (list, seeds) in [("1..5", vec![1u64, 2, 3, 4, 5]), ("9,9223372036854775809,0,4,12", vec![9, (1 << 63) + 1, 0, 4, 12])] {
+        let out = run(&["render", gem, "--seeds", list, "-o", template.to_str().expect("utf-8")], None);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let mut files = std::collections::BTreeSet::new();
+        for seed in &seeds {
+            let path = dir.path().join(format!("out/{seed}.glb"));
+            let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let single = run(&["render", gem, "--seed", &seed.to_string(), "-o", "-"], None);
+            assert!(single.status.success());
+            assert!(bytes == single.stdout, "seed {seed}: --seeds and --seed bytes differ");
+            assert_eq!(glb_json(&bytes)["asset"]["extras"]["seed"], seed.to_string());
+            files.insert(bytes);
+        }
+        assert_eq!(files.len(), 5, "{list}: 5 distinct files");
+        std::fs::remove_dir_all(dir.path().join("out")).expect("clean");
+        std::fs::create_dir_all(dir.path().join("out")).expect("mkdir");
+    }
+    // Usage errors, exit 2, nothing written: no {seed} in the name, an empty
+    // or malformed list, --seed with --seeds.
+    let plain = dir.path().join("one.glb");
+    for args in [
+        vec!["--seeds", "1..3", "-o", plain.to_str().expect("utf-8")],
+        vec!["--seeds", "5..1", "-o", template.to_str().expect("utf-8")],
+        vec!["--seeds", "1,x", "-o", template.to_str().expect("utf-8")],
+        vec!["--seeds", "0..18446744073709551615", "-o", template.to_str().expect("utf-8")],
+        vec!["--seed", "1", "--seeds", "1,2", "-o", template.to_str().expect("utf-8")],
+    ] {
+        let mut all = vec!["render", gem];
+        all.extend(args.iter().copied());
+        let out = run(&all, None);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    assert!(!plain.exists());
+    assert_eq!(std::fs::read_dir(dir.path().join("out")).expect("dir").count(), 0);
+}

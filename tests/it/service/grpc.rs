@@ -2,10 +2,6 @@
 
 use super::*;
 
-async fn grpc_client(srv: &Running) -> RulemeshClient<tonic::transport::Channel> {
-    RulemeshClient::connect(format!("http://{}", srv.grpc_addr)).await.expect("gRPC connects").max_decoding_message_size(usize::MAX)
-}
-
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn grpc_matches_http_and_maps_errors() {
     let (srv, base) = start(config()).await;

@@ -380,6 +380,7 @@ async fn openapi_document_lists_every_route_with_methods_and_errors() {
     // The routes the issue asks for, with their methods and error statuses.
     let expected: &[(&str, &str, &[u16])] = &[
         ("/v1/render", "post", &[200, 400, 413, 422, 503, 504]),
+        ("/v1/render/batch", "post", &[200, 400, 404, 413]),
         ("/v1/models/{file}", "get", &[200, 304, 400, 404, 422, 503, 504]),
         ("/v1/grammars", "get", &[200]),
         ("/v1/grammars/{name}", "get", &[200, 404]),
@@ -413,6 +414,15 @@ async fn openapi_document_lists_every_route_with_methods_and_errors() {
         assert!(doc["components"]["schemas"].get(schema).is_some(), "schema {schema}");
     }
     assert!(doc["components"]["schemas"]["RenderBody"]["properties"]["on_limit"].is_object());
+    // The batch body is the render body with `source` optional, plus the batch's own fields.
+    let batch = &doc["components"]["schemas"]["BatchBody"];
+    for field in ["source", "grammar", "seeds", "sweep", "on_limit", "limits"] {
+        assert!(batch["properties"][field].is_object(), "BatchBody.{field}: {batch}");
+    }
+    assert!(!batch["required"].as_array().is_some_and(|r| r.iter().any(|f| f == "source")), "{batch}");
+    assert_eq!(batch["properties"]["seeds"]["maxItems"], 256);
+    let render_200 = &paths["/v1/render"]["post"]["responses"]["200"];
+    assert!(render_200["headers"]["X-Rulemesh-Seed"].is_object(), "{render_200}");
 
     // Each documented path and method is served by the router (not the 404
     // fallback), and other methods on it answer 405.

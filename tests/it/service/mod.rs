@@ -14,6 +14,7 @@ mod ops;
 mod schema;
 mod icons;
 mod playground;
+mod variations;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).
@@ -42,6 +43,11 @@ async fn start(config: ServeConfig) -> (Running, String) {
 /// A client that asks for identity encoding (so the bytes and ETags seen are the model's own).
 fn client() -> reqwest::Client {
     reqwest::Client::builder().timeout(Duration::from_secs(60)).no_gzip().no_brotli().no_zstd().build().expect("client")
+}
+
+/// A gRPC client of `srv`, taking replies of any size.
+async fn grpc_client(srv: &Running) -> RulemeshClient<tonic::transport::Channel> {
+    RulemeshClient::connect(format!("http://{}", srv.grpc_addr)).await.expect("gRPC connects").max_decoding_message_size(usize::MAX)
 }
 
 async fn post(base: &str, path: &str, body: &Value) -> reqwest::Response {
