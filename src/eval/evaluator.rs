@@ -68,6 +68,23 @@ impl Default for EvalOptions {
     }
 }
 
+/// The linear RGB every primitive of a program that never sets a colour is
+/// drawn in: a light neutral grey, so such a grammar looks like a clay model
+/// in every format (glTF, 3MF, coloured STL, the PNG preview) instead of a
+/// black silhouette. A program that sets any colour starts at black as the
+/// thesis says, so explicit colours (black included) are kept exactly.
+pub const NEUTRAL_GREY: f64 = 0.8;
+
+/// The colour offsets evaluation starts from: black, or [`NEUTRAL_GREY`]
+/// when the program never adds to red, green or blue ([`Program::sets_colour`]).
+fn base_colour(program: &Program) -> [f64; 4] {
+    if program.sets_colour() {
+        [0.0; 4]
+    } else {
+        [NEUTRAL_GREY, NEUTRAL_GREY, NEUTRAL_GREY, 0.0]
+    }
+}
+
 /// Evaluates `program` with bound `params` into a scene, under `budget`.
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
     let ev = Evaluator::new(program, params, options)?;
@@ -78,7 +95,7 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
         rig: animated.then(|| Rig::new(ev.timeline)),
         ..Scene::default()
     };
-    let root = Ctx { frame: Frame::IDENTITY, colour: [0.0; 4], depth: 0, key: StreamKey::root(seed), bone: 0, ns: 0 };
+    let root = Ctx { frame: Frame::IDENTITY, colour: base_colour(program), depth: 0, key: StreamKey::root(seed), bone: 0, ns: 0 };
     let mut m = Machine::new(&ev, budget, scene, None, root.key);
     let mut result = m.run(ev.program.start, root);
     if result.is_ok() {

@@ -157,6 +157,26 @@ impl Program {
             namespaces: Namespaces::default(),
         }
     }
+
+    /// True when some call or iterator step anywhere in the program adds to
+    /// red, green or blue (`R`, `G`, `B`, even by 0), whether or not it ever
+    /// runs. The evaluator gives a program that never does a neutral grey
+    /// base colour instead of black (docs/mdg.md, "Colour"); alpha alone
+    /// does not count, since translucent black is no more meant than black.
+    pub fn sets_colour(&self) -> bool {
+        let mut pending: Vec<&Item> = self.groups.iter().flat_map(|g| &g.rules).flat_map(|r| &r.body).collect();
+        let rgb = |adjust: &[Adjust]| adjust.iter().any(|a| matches!(a.op, AdjustOp::Colour { channel: 0..=2, .. }));
+        while let Some(item) = pending.pop() {
+            match item {
+                Item::Call(c) if rgb(&c.adjust) => return true,
+                Item::Call(_) => {}
+                Item::Block(items) => pending.extend(items),
+                Item::Iterate(it) if rgb(&it.step) => return true,
+                Item::Iterate(it) => pending.push(it.body.as_ref()),
+            }
+        }
+        false
+    }
 }
 
 /// `mesh NAME { BASE | modifier … | modifier … }` (docs/modifiers.md): a

@@ -87,13 +87,21 @@ fn truncated_icosahedron_skeleton() {
 }
 
 #[test]
-fn listing_4_1_dies_out_at_its_gallery_seed_and_grows_otherwise() {
+fn listing_4_1_stops_at_depth_30_and_the_listing_itself_grows_otherwise() {
+    // The library version ends every walk at depth 30; its seed forks into a spray.
     let scene = scene_of_file("listing-4-1.mdg");
-    assert_eq!(scene.instances.len(), 35);
+    assert_eq!(scene.instances.len(), 270);
     let src = repo().join("grammars/listing-4-1.mdg");
     let out = run(&["render", src.to_str().expect("utf-8"), "--seed", "0", "-o", "-"], None);
+    assert!(out.status.success(), "any seed draws: {}", String::from_utf8_lossy(&out.stderr));
+    // Without `maxdepth` (the listing as printed), seed 0 grows until a limit.
+    let dir = tempdir();
+    let listing = dir.path().join("listing.mdg");
+    let text = std::fs::read_to_string(&src).expect("listing-4-1.mdg").replace("maxdepth 30\n", "");
+    std::fs::write(&listing, text).expect("write");
+    let out = run(&["render", listing.to_str().expect("utf-8"), "--seed", "0", "-o", "-"], None);
     assert_eq!(out.status.code(), Some(3), "seed 0 grows until a limit");
-    let out = run(&["render", src.to_str().expect("utf-8"), "--seed", "0", "--on-limit", "truncate", "-o", "-"], None);
+    let out = run(&["render", listing.to_str().expect("utf-8"), "--seed", "0", "--on-limit", "truncate", "-o", "-"], None);
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("TRUNCATED"));
 }

@@ -21,8 +21,14 @@ fn segments(scene: &Scene) -> usize {
 
 #[test]
 fn listing_5_1_draws_the_arrowhead_with_2187_segments() {
-    let src = std::fs::read_to_string(repo().join("grammars/arrowhead.mdg")).expect("arrowhead.mdg");
-    let scene = scene_of(&src);
+    // The listing itself, seven levels deep (grammars/arrowhead.mdg stops at
+    // five and sweeps a thicker tube, to read at icon size).
+    let src = "startshape YF\nselector XF, YF depth\n\
+        rule XF 6 { YF{} \\ XF{rx 60} \\ YF{rx 60} }\nrule YF 6 { XF{} \\ YF{rx -60} \\ XF{rx -60} }\n\
+        rule XF 7 { SLINETO{z 1} }\nrule YF 7 { SLINETO{z 1} }\n";
+    let library = scene_of(&std::fs::read_to_string(repo().join("grammars/arrowhead.mdg")).expect("arrowhead.mdg"));
+    assert_eq!((library.lines.len(), segments(&library)), (1, 243), "the library's five levels: 3^5 segments");
+    let scene = scene_of(src);
     assert_eq!(scene.lines.len(), 1, "one continuous line");
     assert_eq!(segments(&scene), 2187);
     let pts: Vec<DVec3> = scene.lines[0].points.iter().map(|p| p.frame.translation).collect();

@@ -12,6 +12,7 @@ mod animation;
 mod compact;
 mod counts;
 mod deadline;
+mod default_colour;
 mod directives;
 mod etol;
 mod determinism;
