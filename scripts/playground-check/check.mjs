@@ -14,10 +14,10 @@
 // browser or playwright-core is missing (tests/it/service/playground.rs
 // runs it; scripts/test installs both).
 import { createRequire } from 'node:module';
-import { existsSync, mkdtempSync, rmSync } from 'node:fs';
+import { existsSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
-import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
+import { openPage } from '../lib/chromium.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const modules = resolve(process.env.THREE_CHECK_MODULES || join(here, '../../.tools/node_modules'));
@@ -42,16 +42,11 @@ function expect(ok, what) {
   if (!ok) throw new CheckFailed(what);
 }
 
-const profile = mkdtempSync(join(tmpdir(), 'playground-check-'));
-let browser;
+let session;
 let status = 0;
 try {
-  browser = await playwright.chromium.launchPersistentContext(profile, {
-    executablePath: chromium,
-    headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
-  });
-  const page = browser.pages()[0] || (await browser.newPage());
+  session = await openPage(playwright, chromium, 'playground-check');
+  const { page } = session;
   const foreign = [];
   const pageErrors = [];
   page.on('request', (r) => { if (!r.url().startsWith(base) && !r.url().startsWith('blob:') && !r.url().startsWith('data:')) foreign.push(r.url()); });
@@ -125,7 +120,6 @@ try {
   console.error(`playground-check: ${e instanceof CheckFailed ? e.message : e.stack || e}`);
   status = 1;
 } finally {
-  if (browser) await browser.close();
-  rmSync(profile, { recursive: true, force: true });
+  if (session) await session.close();
 }
 process.exit(status);

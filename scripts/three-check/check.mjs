@@ -18,10 +18,10 @@
 // models: the report counts animation clips).
 import { createServer } from 'node:http';
 import { createRequire } from 'node:module';
-import { readFileSync, existsSync, mkdtempSync, rmSync } from 'node:fs';
+import { readFileSync, existsSync } from 'node:fs';
 import { dirname, join, resolve, extname } from 'node:path';
-import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
+import { openPage } from '../lib/chromium.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const repoRoot = resolve(here, '../..');
@@ -65,16 +65,11 @@ const server = createServer((req, res) => {
 await new Promise((ok) => server.listen(0, '127.0.0.1', ok));
 const base = `http://127.0.0.1:${server.address().port}`;
 
-const profile = mkdtempSync(join(tmpdir(), 'three-check-'));
-let browser;
+let session;
 let failed = 0;
 try {
-  browser = await playwright.chromium.launchPersistentContext(profile, {
-    executablePath: chromium,
-    headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
-  });
-  const page = browser.pages()[0] || (await browser.newPage());
+  session = await openPage(playwright, chromium, 'three-check');
+  const { page } = session;
   const consoleErrors = [];
   page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(m.text()); });
   page.on('pageerror', (e) => consoleErrors.push(String(e)));
@@ -96,9 +91,8 @@ try {
   failed = Math.max(failed, 1);
   process.exitCode = 2;
 } finally {
-  if (browser) await browser.close().catch(() => {});
+  if (session) await session.close().catch(() => {});
   server.close();
-  rmSync(profile, { recursive: true, force: true });
 }
 console.error(`three-check: ${files.length - failed} passed, ${failed} failed`);
 if (!process.exitCode) process.exitCode = failed ? 1 : 0;
