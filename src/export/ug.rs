@@ -34,7 +34,6 @@ pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, Ex
         for (n, p) in points.iter().enumerate() {
             let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
         }
-        budget.check_deadline()?;
         for (k, [a, b, c]) in tris {
             if k % super::DEADLINE_EVERY == 0 {
                 budget.check_deadline()?;
