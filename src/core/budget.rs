@@ -181,6 +181,14 @@ impl LimitExceeded {
     pub fn recorded(limit: Limit) -> LimitExceeded {
         LimitExceeded { limit, configured: 0, reached: 0 }
     }
+
+    /// The deadline error for a render stopped from outside its budget (the
+    /// service's watchdog, when the pipeline ran past its deadline without
+    /// noticing): `elapsed_ms` is reported as reached, and never less than
+    /// one past the deadline, so the error always says the limit was crossed.
+    pub fn deadline_passed(deadline_ms: u64, elapsed_ms: u64) -> LimitExceeded {
+        LimitExceeded { limit: Limit::Deadline, configured: deadline_ms, reached: elapsed_ms.max(deadline_ms.saturating_add(1)) }
+    }
 }
 
 impl Budget {
@@ -452,6 +460,14 @@ mod tests {
     fn zero_timeout_expires_immediately() {
         let b = Budget::new(Limits { timeout_ms: 0, ..Limits::default() });
         assert_eq!(b.check_deadline().unwrap_err().limit, Limit::Deadline);
+    }
+
+    #[test]
+    fn a_deadline_passed_from_outside_names_the_deadline_and_a_value_past_it() {
+        let e = LimitExceeded::deadline_passed(1000, 1500);
+        assert_eq!((e.limit, e.configured, e.reached), (Limit::Deadline, 1000, 1500));
+        // A watchdog that fires on the tick of the deadline still reports it crossed.
+        assert_eq!(LimitExceeded::deadline_passed(1000, 1000).reached, 1001);
     }
 
     #[test]

@@ -6,7 +6,7 @@ use super::timing::{RanRender, RequestTiming};
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
 use crate::cache::{CacheOutcome, DiskTier, ModelCache, RedisTier, Rendered};
 use crate::core::timing::PhaseTimes;
-use crate::core::{Limit, LimitExceeded};
+use crate::core::LimitExceeded;
 use crate::lang::Language;
 use crate::RenderRequest;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -164,8 +164,8 @@ impl Engine {
                 // slot until then, so overload protection still counts it.
                 metrics.watchdog_fired();
                 tracing::warn!(timeout_ms, "render ran past its deadline; ended by the watchdog");
-                let reached = u64::try_from(started.elapsed().as_millis()).unwrap_or(u64::MAX).max(timeout_ms.saturating_add(1));
-                Err(ServiceError::Limit(LimitExceeded { limit: Limit::Deadline, configured: timeout_ms, reached }))
+                let elapsed = u64::try_from(started.elapsed().as_millis()).unwrap_or(u64::MAX);
+                Err(ServiceError::Limit(LimitExceeded::deadline_passed(timeout_ms, elapsed)))
             }
         };
         match &result {
