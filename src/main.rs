@@ -512,8 +512,7 @@ fn run_gallery(args: GalleryArgs) -> Result<(), Failure> {
     }
     let sheet = compose(&tiles, args.columns, args.tile, background);
     let text = vec![("Software", format!("rulemesh {} gallery", env!("CARGO_PKG_VERSION")))];
-    let mut budget = rulemesh::core::Budget::new(Limits::ceiling());
-    let bytes = rulemesh::export::png::write_rgba(sheet.width, sheet.height, &sheet.rgba, &text, &mut budget)
+    let bytes = rulemesh::pipeline::write_picture(sheet.width, sheet.height, &sheet.rgba, &text, &Limits::ceiling())
         .map_err(|e| Failure::new(EXIT_FAILURE, format!("gallery: {e}")))?;
     let out = args.output.display().to_string();
     write_output(&out, &bytes)?;

@@ -326,6 +326,13 @@ pub fn write_meshes(format: Format, meshes: &[geom::NamedMesh], limits: &Limits)
     Ok(export::export(format, meshes, &ExportMeta::default(), &mut budget_for(*limits))?)
 }
 
+/// Encodes an RGBA picture made outside a render (the CLI's `gallery`
+/// contact sheet) as PNG, under a budget of `limits`, so even that image is
+/// charged through the one budget constructor.
+pub fn write_picture(width: u32, height: u32, rgba: &[u8], text: &export::png::TextChunks, limits: &Limits) -> Result<Vec<u8>, RenderError> {
+    Ok(export::png::write_rgba(width, height, rgba, text, &mut budget_for(*limits))?)
+}
+
 /// Renders `source` as the request says. Never panics on bad input; every
 /// failure is a typed [`RenderError`].
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {

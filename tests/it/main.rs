@@ -24,6 +24,7 @@ mod grammars;
 mod hostile;
 mod icons;
 mod instancing;
+mod invariants;
 mod lines;
 mod winding;
 mod lsystem;
