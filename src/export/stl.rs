@@ -252,6 +252,18 @@ mod tests {
     }
 
     #[test]
+    fn positions_only_meshes_write_the_same_bytes() {
+        let meshes = meshes_of(&all_nine(), 12, MeshLayout::Merged);
+        let mut lean = meshes.clone();
+        keep_positions_only(&mut lean);
+        assert!(lean.iter().all(|m| m.mesh.normals.is_empty() && m.mesh.colours.is_empty()));
+        let write = |m: &[NamedMesh], ascii: bool| if ascii { write_ascii(m, &mut Budget::new(Limits::default())) } else { write_binary(m, &mut Budget::new(Limits::default())) }.unwrap();
+        for ascii in [false, true] {
+            assert_eq!(write(&lean, ascii), write(&meshes, ascii));
+        }
+    }
+
+    #[test]
     fn mirrored_solids_stay_outward() {
         let meshes = meshes_of(&scene(vec![inst(PrimitiveKind::Cone, [1.0, 2.0, 3.0], 1.5, true)]), 16, MeshLayout::Merged);
         let (_, corners) = parse_binary(&write_binary(&meshes, &mut Budget::new(Limits::default())).unwrap());
