@@ -195,9 +195,12 @@ fn dequantise(q: u16, lo: f32, hi: f32, max: u32) -> f32 {
     (lo + f64::from(q) * (hi - lo) / f64::from(max)) as f32
 }
 
-/// Merges meshes into one (the format holds a single mesh).
-fn merged(meshes: &[NamedMesh]) -> Result<Mesh, ExportError> {
-    let mut out = Mesh::default();
+/// Checks every mesh (in order, so the first bad one is named) and returns
+/// the index of each mesh's first vertex in the merged numbering (the format
+/// holds a single mesh) and the total vertex count.
+fn vertex_bases(meshes: &[NamedMesh]) -> Result<(Vec<u32>, usize), ExportError> {
+    let mut bases = Vec::with_capacity(meshes.len());
+    let mut total = 0usize;
     for nm in meshes {
         let m = &nm.mesh;
         let bad = |detail: String| ExportError::InvalidMesh { name: nm.name.clone(), detail };
@@ -210,121 +213,165 @@ fn merged(meshes: &[NamedMesh]) -> Result<Mesh, ExportError> {
         if m.positions.iter().flatten().any(|c| !c.is_finite()) {
             return Err(bad("non-finite position".into()));
         }
-        let base = out.positions.len();
         if let Some(&i) = m.indices.iter().find(|&&i| i as usize >= m.positions.len()) {
             return Err(bad(format!("index {i} out of range")));
         }
         let too_large = || ExportError::TooLarge { format: "strips", detail: "more than 2^32 - 2 vertices".into() };
-        let base32 = u32::try_from(base).map_err(|_| too_large())?;
-        if base + m.positions.len() >= RESTART as usize {
+        bases.push(u32::try_from(total).map_err(|_| too_large())?);
+        total += m.positions.len();
+        if total >= RESTART as usize {
             return Err(too_large());
         }
-        out.positions.extend_from_slice(&m.positions);
-        out.normals.extend_from_slice(&m.normals);
-        out.colours.extend_from_slice(&m.colours);
-        out.indices.extend(m.indices.iter().map(|&i| i + base32));
     }
-    Ok(out)
+    Ok((bases, total))
+}
+
+/// The bounding box of the vertices triangles use (zero when none do).
+fn used_bounds(meshes: &[NamedMesh]) -> ([f32; 3], [f32; 3]) {
+    let mut lo = [f32::INFINITY; 3];
+    let mut hi = [f32::NEG_INFINITY; 3];
+    let mut any = false;
+    for m in meshes {
+        for &i in &m.mesh.indices {
+            let p = m.mesh.positions[i as usize];
+            any = true;
+            for a in 0..3 {
+                lo[a] = lo[a].min(p[a]);
+                hi[a] = hi[a].max(p[a]);
+            }
+        }
+    }
+    if any {
+        (lo, hi)
+    } else {
+        ([0.0; 3], [0.0; 3])
+    }
+}
+
+/// The palette when the colours triangles use fit in one byte (sorted, so
+/// output is deterministic), else empty.
+fn palette_of(meshes: &[NamedMesh]) -> BTreeMap<[u8; 4], u8> {
+    let mut set = std::collections::BTreeSet::new();
+    let mut last = None;
+    for m in meshes {
+        for &i in &m.mesh.indices {
+            let c = m.mesh.colours[i as usize];
+            // Neighbouring corners mostly share a colour: skip the set then.
+            if last != Some(c) {
+                last = Some(c);
+                set.insert(c);
+                if set.len() > MAX_PALETTE {
+                    return BTreeMap::new();
+                }
+            }
+        }
+    }
+    set.into_iter().enumerate().map(|(k, c)| (c, k as u8)).collect()
+}
+
+/// Quantises every vertex of every mesh to the format's 16 bytes (merged
+/// numbering) and returns them with the merged triangle list, minus the
+/// triangles whose corners quantise to the same position (they cover no area).
+fn quantise(meshes: &[NamedMesh], bases: &[u32], total: usize, bounds: ([f32; 3], [f32; 3]), palette: Option<&BTreeMap<[u8; 4], u8>>, opts: &StripsOptions) -> (Vec<[u16; 8]>, Vec<u32>) {
+    let (lo, hi) = bounds;
+    let pmax = (1u32 << opts.position_bits) - 1;
+    let nmax = (1u32 << opts.normal_bits) - 1;
+    let ext: [f64; 3] = [0, 1, 2].map(|a| f64::from(hi[a]) - f64::from(lo[a]));
+    let mut quantised = Vec::with_capacity(total);
+    let mut last: Option<([u8; 4], [u8; 4])> = None;
+    let mut last_normal: Option<([f32; 3], [u16; 2])> = None;
+    for m in meshes {
+        let m = &m.mesh;
+        for ((p, &n), &c) in m.positions.iter().zip(&m.normals).zip(&m.colours) {
+            let q = |a: usize| if ext[a] > 0.0 { quantise_unit((f64::from(p[a]) - f64::from(lo[a])) / ext[a], pmax) } else { 0 };
+            // Neighbouring vertices mostly share a normal (flat faces): encode it once.
+            let n = match last_normal {
+                Some((from, to)) if from.map(f32::to_bits) == n.map(f32::to_bits) => to,
+                _ => {
+                    let to = oct_encode(n, nmax);
+                    last_normal = Some((n, to));
+                    to
+                }
+            };
+            let c = match palette {
+                Some(map) => match last {
+                    Some((from, to)) if from == c => to,
+                    _ => {
+                        let to = [map.get(&c).copied().unwrap_or(0), 0, 0, 0];
+                        last = Some((c, to));
+                        to
+                    }
+                },
+                None => c,
+            };
+            quantised.push([q(0), q(1), q(2), 0, n[0], n[1], u16::from_le_bytes([c[0], c[1]]), u16::from_le_bytes([c[2], c[3]])].map(u16::to_le));
+        }
+    }
+    let triangles: usize = meshes.iter().map(|m| m.mesh.indices.len()).sum();
+    let mut indices = Vec::with_capacity(triangles);
+    for (m, &base) in meshes.iter().zip(bases) {
+        for t in m.mesh.indices.chunks_exact(3) {
+            let t = [t[0] + base, t[1] + base, t[2] + base];
+            let p = |k: usize| &quantised[t[k] as usize][..3];
+            if p(0) != p(1) && p(1) != p(2) && p(0) != p(2) {
+                indices.extend_from_slice(&t);
+            }
+        }
+    }
+    (quantised, indices)
 }
 
 /// Encodes `meshes` (merged into one) as a strips file. Deterministic: the
 /// same meshes and options give the same bytes.
+///
+/// Built for models of millions of triangles: the meshes are read in place
+/// (never merged into a copy), the quantised vertices are the only
+/// vertex-sized copy until the strip is made, and the body is written
+/// straight into the output after its header.
 pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     opts.validate().map_err(|detail| ExportError::InvalidOptions { format: "strips", detail })?;
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
     budget.reserve_memory(super::estimated_size(super::Format::Strips, v, t))?;
-    let mesh = merged(meshes)?;
+    let (bases, total) = vertex_bases(meshes)?;
     // Each phase below is one pass over the model: the deadline is looked at between them.
     budget.check_deadline()?;
-
-    // Bounding box over the vertices triangles use.
-    let mut lo = [f32::INFINITY; 3];
-    let mut hi = [f32::NEG_INFINITY; 3];
-    for &i in &mesh.indices {
-        let p = mesh.positions[i as usize];
-        for a in 0..3 {
-            lo[a] = lo[a].min(p[a]);
-            hi[a] = hi[a].max(p[a]);
-        }
-    }
-    if mesh.indices.is_empty() {
-        (lo, hi) = ([0.0; 3], [0.0; 3]);
-    }
-
-    // Palette when the colours fit in one byte, sorted so output is deterministic.
-    let distinct: BTreeMap<[u8; 4], u8> = {
-        let mut set = std::collections::BTreeSet::new();
-        for &i in &mesh.indices {
-            set.insert(mesh.colours[i as usize]);
-            if set.len() > MAX_PALETTE {
-                break;
-            }
-        }
-        if set.len() <= MAX_PALETTE {
-            set.into_iter().enumerate().map(|(k, c)| (c, k as u8)).collect()
-        } else {
-            BTreeMap::new()
-        }
-    };
-    let palette = !mesh.indices.is_empty() && !distinct.is_empty();
-
-    let pmax = (1u32 << opts.position_bits) - 1;
-    let nmax = (1u32 << opts.normal_bits) - 1;
-    let quantised: Vec<[u16; 8]> = (0..mesh.positions.len())
-        .map(|i| {
-            let p = mesh.positions[i];
-            let q = |a: usize| {
-                let ext = f64::from(hi[a]) - f64::from(lo[a]);
-                if ext > 0.0 {
-                    quantise_unit((f64::from(p[a]) - f64::from(lo[a])) / ext, pmax)
-                } else {
-                    0
-                }
-            };
-            let n = oct_encode(mesh.normals[i], nmax);
-            let c = mesh.colours[i];
-            let c = if palette { [distinct.get(&c).copied().unwrap_or(0), 0, 0, 0] } else { c };
-            [q(0), q(1), q(2), 0, n[0], n[1], u16::from_le_bytes([c[0], c[1]]), u16::from_le_bytes([c[2], c[3]])].map(u16::to_le)
-        })
-        .collect();
-    // Triangles whose corners quantise to the same position cover no area; drop them.
-    let indices: Vec<u32> = mesh
-        .indices
-        .chunks_exact(3)
-        .filter(|t| {
-            let p = |k: usize| &quantised[t[k] as usize][..3];
-            p(0) != p(1) && p(1) != p(2) && p(0) != p(2)
-        })
-        .flatten()
-        .copied()
-        .collect();
-    budget.check_deadline()?;
-    let (welded, indices) = strip::weld(&quantised, &indices);
-    budget.check_deadline()?;
-    let (vertices, strip_indices) = strip::stripify(&welded, &indices);
+    let (lo, hi) = used_bounds(meshes);
+    let distinct = palette_of(meshes);
+    let palette = t > 0 && !distinct.is_empty();
+    let (quantised, indices) = quantise(meshes, &bases, total, (lo, hi), palette.then_some(&distinct), opts);
     budget.check_deadline()?;
     // The strip travels as its triangles, in strip order: the index buffer
     // codec stores them in fewer bytes than the sequence codec stores the
     // strip, and the decoder rebuilds the strip with `strip::restrip`.
-    let triangles = strip::unstripify(&strip_indices);
+    let (vertices, triangles) = strip::weld_stripify(&quantised, indices);
+    drop(quantised);
+    budget.check_deadline()?;
 
+    let len32 = |n: usize| u32::try_from(n).map_err(|_| ExportError::TooLarge { format: "strips", detail: "stream over 4 GiB".into() });
     let vstream = meshopt::encode_vertex_buffer_level(&vertices, 3, Some(1))
         .map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("vertex codec: {e:?}") })?;
-    let istream = meshopt::encode_index_buffer(&triangles, vertices.len())
+    let (vertex_count, triangle_count) = (len32(vertices.len())?, len32(triangles.len() / 3)?);
+    drop(vertices);
+    let istream = meshopt::encode_index_buffer(&triangles, vertex_count as usize)
         .map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("index codec: {e:?}") })?;
+    drop(triangles);
 
-    let mut body = Vec::with_capacity(distinct.len() * 4 + vstream.len() + istream.len() + 8);
+    // The header is filled in once the body's lengths are known.
+    let pal_len = if palette { distinct.len() * 4 } else { 0 };
+    let mut out = Vec::with_capacity(HEADER_LEN + pal_len + 8 + vstream.len() + istream.len() + TRAILER_LEN);
+    out.resize(HEADER_LEN, 0);
     if palette {
         for c in distinct.keys() {
-            body.extend_from_slice(c);
+            out.extend_from_slice(c);
         }
     }
-    let len32 = |n: usize| u32::try_from(n).map_err(|_| ExportError::TooLarge { format: "strips", detail: "stream over 4 GiB".into() });
-    body.extend_from_slice(&len32(vstream.len())?.to_le_bytes());
-    body.extend_from_slice(&vstream);
-    body.extend_from_slice(&len32(istream.len())?.to_le_bytes());
-    body.extend_from_slice(&istream);
-    let raw_len = len32(body.len())?;
+    out.extend_from_slice(&len32(vstream.len())?.to_le_bytes());
+    out.extend_from_slice(&vstream);
+    drop(vstream);
+    out.extend_from_slice(&len32(istream.len())?.to_le_bytes());
+    out.extend_from_slice(&istream);
+    drop(istream);
+    let raw_len = len32(out.len() - HEADER_LEN)?;
     let mut flags = 0u8;
     if palette {
         flags |= FLAG_PALETTE;
@@ -333,22 +380,25 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
         budget.check_deadline()?;
         flags |= FLAG_ZSTD;
         // Level 19, single-threaded, no checksum or dictionary: deterministic.
-        body = zstd::bulk::compress(&body, 19).map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("zstd: {e}") })?;
+        let body = zstd::bulk::compress(&out[HEADER_LEN..], 19).map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("zstd: {e}") })?;
+        out.truncate(HEADER_LEN);
+        out.extend_from_slice(&body);
     }
+    let body_len = len32(out.len() - HEADER_LEN)?;
 
-    let mut out = Vec::with_capacity(HEADER_LEN + body.len() + TRAILER_LEN);
-    out.extend_from_slice(&MAGIC);
-    out.extend_from_slice(&[VERSION, flags, opts.position_bits, opts.normal_bits]);
+    let mut header = Vec::with_capacity(HEADER_LEN);
+    header.extend_from_slice(&MAGIC);
+    header.extend_from_slice(&[VERSION, flags, opts.position_bits, opts.normal_bits]);
     for c in lo.iter().chain(&hi) {
-        out.extend_from_slice(&c.to_le_bytes());
+        header.extend_from_slice(&c.to_le_bytes());
     }
-    out.extend_from_slice(&len32(vertices.len())?.to_le_bytes());
-    out.extend_from_slice(&len32(triangles.len() / 3)?.to_le_bytes());
-    out.extend_from_slice(&(if palette { distinct.len() as u32 } else { 0 }).to_le_bytes());
-    out.extend_from_slice(&len32(body.len())?.to_le_bytes());
-    out.extend_from_slice(&raw_len.to_le_bytes());
-    debug_assert_eq!(out.len(), HEADER_LEN);
-    out.extend_from_slice(&body);
+    header.extend_from_slice(&vertex_count.to_le_bytes());
+    header.extend_from_slice(&triangle_count.to_le_bytes());
+    header.extend_from_slice(&(if palette { distinct.len() as u32 } else { 0 }).to_le_bytes());
+    header.extend_from_slice(&body_len.to_le_bytes());
+    header.extend_from_slice(&raw_len.to_le_bytes());
+    debug_assert_eq!(header.len(), HEADER_LEN);
+    out[..HEADER_LEN].copy_from_slice(&header);
     let crc = crc32fast::hash(&out);
     out.extend_from_slice(&crc.to_le_bytes());
     Ok(out)

@@ -91,6 +91,131 @@ pub fn stripify<T: Copy + Default>(vertices: &[T], indices: &[u32]) -> (Vec<T>, 
     (out, strip)
 }
 
+/// What `meshopt::generate_vertex_remap(vertices, Some(indices))` returns —
+/// the number of distinct vertices `indices` uses and, for each vertex, its
+/// number among them in order of first use (`u32::MAX` for unused ones) —
+/// computed faster for millions of vertices: meshoptimizer's table holds
+/// vertex numbers only, so every probe that meets another vertex reads that
+/// vertex (a cache miss) and compares it through `memcmp`. Here each slot
+/// holds the vertex number and 32 bits of its hash, so a probe reads a
+/// vertex only when the hashes agree. Open addressing, linear probing, a
+/// power of two of at least 1.25 slots per vertex (meshoptimizer's sizing).
+fn vertex_remap<T: bytemuck::Pod + PartialEq>(vertices: &[T], indices: &[u32]) -> (usize, Vec<u32>) {
+    const EMPTY: u64 = u64::MAX;
+    let slots = (vertices.len() + vertices.len() / 4).max(1).next_power_of_two();
+    let mask = slots - 1;
+    let mut table = vec![EMPTY; slots];
+    let hash = |v: &T| {
+        let mut h = 0x9e37_79b9_7f4a_7c15u64;
+        for chunk in bytemuck::bytes_of(v).chunks(8) {
+            let mut word = [0u8; 8];
+            word[..chunk.len()].copy_from_slice(chunk);
+            h = (h ^ u64::from_le_bytes(word)).wrapping_mul(0xff51_afd7_ed55_8ccd);
+            h ^= h >> 32;
+        }
+        h
+    };
+    let mut remap = vec![u32::MAX; vertices.len()];
+    let mut next = 0u32;
+    for &i in indices {
+        let i = i as usize;
+        if remap[i] != u32::MAX {
+            continue;
+        }
+        let v = &vertices[i];
+        let h = hash(v);
+        // The slot comes from the high bits, the tag from the low 32.
+        let tag = h & 0xffff_ffff;
+        let mut slot = (h >> 32) as usize & mask;
+        loop {
+            let entry = table[slot];
+            if entry == EMPTY {
+                table[slot] = (tag << 32) | i as u64;
+                remap[i] = next;
+                next += 1;
+                break;
+            }
+            let other = (entry & 0xffff_ffff) as usize;
+            if entry >> 32 == tag && vertices[other] == *v {
+                remap[i] = remap[other];
+                break;
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+    (next as usize, remap)
+}
+
+/// [`weld`], then [`stripify`], then [`unstripify`], in one pass that holds
+/// as few full-size arrays at a time as it can: the `strips` encoder's
+/// geometry step for models of millions of triangles. Returns the welded
+/// vertices in order of first use in the strip and the strip's triangles
+/// (three indices each, in strip order): exactly what
+/// `unstripify(&stripify(&weld(v, i).0, &weld(v, i).1).1)` and its vertices
+/// give, without the welded copy of the vertices (a welded vertex is read
+/// from the first original that maps to it) or a remapped copy of the strip.
+///
+/// Takes `indices` by value and reuses it. Every index must be below
+/// `vertices.len()`, and there must be fewer than `u32::MAX` vertices.
+pub fn weld_stripify<T: bytemuck::Pod + PartialEq>(vertices: &[T], mut indices: Vec<u32>) -> (Vec<T>, Vec<u32>) {
+    if indices.is_empty() || vertices.is_empty() {
+        return (Vec::new(), Vec::new());
+    }
+    let (unique, remap) = vertex_remap(vertices, &indices);
+    // The first original of each welded vertex (they are bitwise equal).
+    let mut first = vec![u32::MAX; unique];
+    for (i, &r) in remap.iter().enumerate() {
+        if let Some(slot) = first.get_mut(r as usize) {
+            if *slot == u32::MAX {
+                // Fits: callers have fewer than u32::MAX vertices.
+                *slot = i as u32;
+            }
+        }
+    }
+    for i in &mut indices {
+        *i = remap[*i as usize];
+    }
+    drop(remap);
+    // Triangles with a repeated index cover no area: drop them, in place.
+    let mut kept = 0;
+    for t in 0..indices.len() / 3 {
+        let [a, b, c] = [indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]];
+        if a != b && b != c && a != c {
+            indices[kept..kept + 3].copy_from_slice(&[a, b, c]);
+            kept += 3;
+        }
+    }
+    indices.truncate(kept);
+    if indices.is_empty() {
+        return (Vec::new(), Vec::new());
+    }
+    meshopt::optimize_vertex_cache_strip_in_place(&mut indices, unique);
+    // As in `stripify`: meshopt only fails on bad arguments, and an empty
+    // strip would lose the model, so fall back to one strip per triangle.
+    let strip = match meshopt::stripify(&indices, unique, RESTART) {
+        Ok(strip) => {
+            drop(indices);
+            strip
+        }
+        Err(_) => indices.chunks_exact(3).flat_map(|t| [t[0], t[1], t[2], RESTART]).collect(),
+    };
+    let (order, used) = first_use_remap(&strip, unique);
+    // Renumbering is one-to-one on the vertices the strip uses, so it can
+    // follow unstripifying (which only compares indices for equality).
+    let mut triangles = unstripify(&strip);
+    drop(strip);
+    for i in &mut triangles {
+        *i = order[*i as usize];
+    }
+    let mut out = vec![T::zeroed(); used];
+    for (&o, &f) in order.iter().zip(&first) {
+        if let (Some(slot), Some(v)) = (out.get_mut(o as usize), vertices.get(f as usize)) {
+            *slot = *v;
+        }
+    }
+    (out, triangles)
+}
+
 /// Rebuilds a strip from a triangle list whose triangles come in strip order
 /// (what [`unstripify`] of a [`stripify`] strip gives, possibly with each
 /// triangle rotated, as meshoptimizer's index buffer codec does). This is how
@@ -228,6 +353,27 @@ mod tests {
         // And a flipped mesh would not compare equal (the check can fail).
         let flipped: Vec<u32> = nondegenerate.chunks_exact(3).flat_map(|t| [t[0], t[2], t[1]]).collect();
         assert_ne!(tri_keys(&verts, &flipped), tri_keys(&sv, &back));
+    }
+
+    #[test]
+    fn weld_stripify_equals_the_three_passes() {
+        let (verts, idx) = sample();
+        // Duplicate some vertices so welding has work to do.
+        let mut dup = verts.clone();
+        dup.extend_from_slice(&verts[..20]);
+        let n = verts.len() as u32;
+        let idx2: Vec<u32> = idx.iter().enumerate().map(|(k, &i)| if k % 5 == 0 && i < 20 { i + n } else { i }).collect();
+        let (wv, wi) = weld(&dup, &idx2);
+        let (sv, strip) = stripify(&wv, &wi);
+        assert_eq!(weld_stripify(&dup, idx2.clone()), (sv, unstripify(&strip)));
+        assert_eq!(weld_stripify::<u32>(&[], vec![]), (vec![], vec![]));
+    }
+
+    #[test]
+    fn vertex_remap_is_meshopts() {
+        let verts: Vec<[u16; 8]> = (0..500u16).map(|k| [k % 37, k % 11, 0, 0, k % 3, 0, 0, 0]).collect();
+        let idx: Vec<u32> = (0..300u32).map(|k| (k * 7919) % 450).collect();
+        assert_eq!(vertex_remap(&verts, &idx), meshopt::generate_vertex_remap(&verts, Some(&idx)));
     }
 
     #[test]

@@ -402,7 +402,7 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
     }
     let scene = &model.scene;
     let print = opts.print;
-    let (meshes, graph, cut) = if print.enabled {
+    let (mut meshes, graph, cut) = if print.enabled {
         // Printing unites closed parts, so it needs them apart (and shows time 0).
         let parts = mesh::build_parts(scene, req.detail, budget)?;
         clock.lap(Phase::Mesh);
@@ -425,6 +425,10 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         clock.lap(Phase::Mesh);
     }
     let truncated = scene.truncated.or(cut);
+    if matches!(req.format, Format::Stl | Format::StlAscii) {
+        // Before the output is allocated, so a big model's peak stays under 2× the file.
+        export::stl::keep_positions_only(&mut meshes);
+    }
     budget.set_stage_share(None);
     let in_graph = graph.is_some();
     let meta = ExportMeta {
