@@ -1,147 +1,88 @@
-//! Which parts of a mesh are closed, outward-facing solids, whose back
-//! faces the rasteriser may skip (`docs/preview.md`, "Back faces").
+//! Whether a mesh is a closed, outward-facing surface, whose back faces the
+//! rasteriser may skip (`docs/preview.md`, "Back faces").
 //!
 //! Lighting is two-sided and open surfaces (an L-system leaf, a UniGrafix
 //! polygon, a sheet) must show both sides, so a back face may be skipped
-//! only where it can never be seen: on the surface of a solid, seen from
+//! only where it can never be seen: on the surface of a solid seen from
 //! outside, a ray meets a face turned towards the camera before any face
-//! turned away. The rule, per connected part of a mesh:
+//! turned away. The rule, for each mesh the pipeline hands over (the whole
+//! model, or one per primitive kind):
 //!
-//! 1. Corners at bit-identical positions are one vertex (−0 and +0 are
-//!    one), so a flat-shaded box, whose faces repeat their corners, is one
-//!    piece. Parts are the pieces connected through shared vertices.
-//! 2. A part is *closed* when every edge is run through as often in one
-//!    direction as in the other by its triangles: no open edge, no
-//!    neighbours wound against each other. Two boxes that share a face
-//!    (a Menger sponge) stay closed; a T-junction makes a part open.
-//! 3. A closed part is *outward* when its signed volume is positive.
+//! 1. Corners at bit-identical positions are one point (−0 and +0 are
+//!    one), so a flat-shaded box, whose faces repeat their corners, counts
+//!    as one surface.
+//! 2. The mesh is *closed* when every edge between two points is run
+//!    through as often in one direction as in the other by its triangles:
+//!    no open edge anywhere, no neighbours wound against each other. Boxes
+//!    sharing a face (a Menger sponge) stay closed; one leaf, one missing
+//!    triangle or a T-junction makes the whole mesh open.
+//! 3. A closed mesh is *outward* when its signed volume is positive.
 //!
-//! Only the triangles of closed, outward parts are culled when they face
-//! away from the camera; everything else is drawn on both sides, as before.
-//! The rule cannot see a surface that passes through itself with a fold
-//! turned inside out (a tube swept tighter than its radius); the meshers
-//! never make one on purpose (the winding test checks that every
-//! triangle's winding agrees with its normals).
+//! Step 2 is checked without tables: each directed edge adds a 128-bit hash
+//! of its two points and subtracts the hash of the reversed edge; the sum
+//! is zero exactly when the edges balance, up to a hash collision (about
+//! 2⁻¹²⁸ for any mesh not built to collide). A linear pass over the
+//! triangles in their own order: the exact check with a weld and an edge
+//! table was measured to cost more time than culling saved (random access
+//! into megabytes of tables).
+//!
+//! What the rule cannot see: a closed mesh whose total volume is positive
+//! but which holds an inward-wound closed part, or a surface that passes
+//! through itself with a fold turned inside out; there the picture would
+//! show what lies behind the inward part. The meshers wind every solid
+//! outward (the winding test checks every grammar's triangles against their
+//! normals), so only a hand-made inward solid among outward ones could.
 
-use crate::geom::weld::welded_triangles;
 use crate::geom::Mesh;
-use foldhash::fast::FixedState;
-use std::collections::HashMap;
 
-/// Bytes [`cullable`] holds per vertex (weld table, remap, first corners,
-/// parts, volumes, flags) and per index (the edge table), for the memory
-/// budget.
-pub const BYTES_PER_VERTEX: u64 = 64;
-/// See [`BYTES_PER_VERTEX`].
-pub const BYTES_PER_INDEX: u64 = 16;
-
-/// For every vertex of `mesh`, whether it belongs to a closed, outward
-/// part (so its triangles may have their back faces culled). `None` when
-/// `stop` asked to give up (the deadline passed). A mesh with an index out
-/// of range culls nothing.
-pub fn cullable(mesh: &Mesh, stop: &dyn Fn() -> bool) -> Option<Vec<bool>> {
-    let n = mesh.positions.len();
-    if mesh.indices.iter().any(|&i| i as usize >= n) {
-        return Some(vec![false; n]);
-    }
-    // Weld: every corner's vertex, and each vertex's first corner. foldhash,
-    // not std's SipHash, which was two thirds of this function's time.
-    let mut ids: HashMap<[u32; 3], u32, FixedState> = HashMap::with_capacity_and_hasher(n, FixedState::default());
-    let mut first: Vec<u32> = Vec::new();
-    let remap: Vec<u32> = (0..n as u32)
-        .map(|i| {
-            let key = mesh.positions[i as usize].map(|c| (c + 0.0).to_bits());
-            *ids.entry(key).or_insert_with(|| {
-                first.push(i);
-                first.len() as u32 - 1
-            })
-        })
-        .collect();
-    drop(ids);
-    if stop() {
-        return None;
-    }
-    let mut parts = Parts::new(first.len());
-    // Each edge once, as (low, high), counting +1 one way and −1 the other.
-    let mut balance: HashMap<u64, i32, FixedState> = HashMap::with_capacity_and_hasher(mesh.indices.len() / 2, FixedState::default());
-    for (_, t) in welded_triangles(&mesh.indices, &remap) {
-        parts.join(t[0], t[1]);
-        parts.join(t[1], t[2]);
-        for k in 0..3 {
-            let (p, q) = (t[k], t[(k + 1) % 3]);
-            let (key, step) = if p < q { (u64::from(p) << 32 | u64::from(q), 1) } else { (u64::from(q) << 32 | u64::from(p), -1) };
-            *balance.entry(key).or_insert(0) += step;
+/// Whether `mesh` is closed and outward, so its triangles facing away from
+/// the camera can never be seen. A mesh with no triangles, or with an index
+/// out of range, is not.
+pub fn closed_outward(mesh: &Mesh) -> bool {
+    let key = |i: u32| mesh.positions.get(i as usize).map(|p| p.map(|c| (c + 0.0).to_bits()));
+    let Some(origin) = mesh.positions.first().map(|p| p.map(f64::from)) else {
+        return false;
+    };
+    let (mut balance, mut volume) = ([0u64; 2], 0.0f64);
+    for t in mesh.indices.chunks_exact(3) {
+        let (Some(a), Some(b), Some(c)) = (key(t[0]), key(t[1]), key(t[2])) else {
+            return false;
+        };
+        for (p, q) in [(a, b), (b, c), (c, a)] {
+            let (there, back) = (edge_hash(p, q), edge_hash(q, p));
+            for k in 0..2 {
+                balance[k] = balance[k].wrapping_add(there[k]).wrapping_sub(back[k]);
+            }
         }
+        // Six times the signed volume of the tetrahedron (origin, a, b, c),
+        // about the first vertex so a model far from 0 keeps its precision.
+        let [p, q, r] = [a, b, c].map(|k| k.map(|bits| f64::from(f32::from_bits(bits))));
+        let [p, q, r] = [p, q, r].map(|v| [v[0] - origin[0], v[1] - origin[1], v[2] - origin[2]]);
+        volume += p[0] * (q[1] * r[2] - q[2] * r[1]) + p[1] * (q[2] * r[0] - q[0] * r[2]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
     }
-    if stop() {
-        return None;
-    }
-    let mut closed = vec![true; first.len()];
-    for (&key, &count) in &balance {
-        if count != 0 {
-            let part = parts.find((key >> 32) as u32);
-            closed[part as usize] = false;
-        }
-    }
-    drop(balance);
-    // Signed volume per part, about the part's own first vertex so a small
-    // part far from the origin keeps its precision.
-    let at = |v: u32| mesh.positions[first[v as usize] as usize].map(f64::from);
-    let mut volume = vec![0.0f64; first.len()];
-    for (_, t) in welded_triangles(&mesh.indices, &remap) {
-        let part = parts.find(t[0]);
-        let o = at(part);
-        let [a, b, c] = t.map(|v| {
-            let p = at(v);
-            [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
-        });
-        volume[part as usize] += a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-    }
-    let keep: Vec<bool> = (0..first.len() as u32)
-        .map(|v| {
-            let part = parts.find(v) as usize;
-            closed[part] && volume[part] > 0.0
-        })
-        .collect();
-    Some(remap.iter().map(|&v| keep[v as usize]).collect())
+    balance == [0, 0] && volume > 0.0
 }
 
-/// Connected parts: a union-find over welded vertices whose root is each
-/// part's first-joined representative.
-struct Parts {
-    parent: Vec<u32>,
-}
-
-impl Parts {
-    fn new(n: usize) -> Parts {
-        Parts { parent: (0..n as u32).collect() }
-    }
-
-    /// The part of vertex `v`, halving the path to it on the way.
-    #[inline]
-    fn find(&mut self, mut v: u32) -> u32 {
-        while self.parent[v as usize] != v {
-            let up = self.parent[self.parent[v as usize] as usize];
-            self.parent[v as usize] = up;
-            v = up;
+/// Two independent 64-bit hashes of the directed edge `p → q` (each point
+/// as its coordinates' bits): multiply–xorshift rounds (SplitMix64's
+/// constants), order-sensitive, so `p → q` and `q → p` differ.
+fn edge_hash(p: [u32; 3], q: [u32; 3]) -> [u64; 2] {
+    let words = [p[0], p[1], p[2], q[0], q[1], q[2]];
+    [(0x9e37_79b9_7f4a_7c15u64, 0xbf58_476d_1ce4_e5b9u64), (0x94d0_49bb_1331_11ebu64, 0x2545_f491_4f6c_dd1du64)].map(|(seed, mul)| {
+        let mut h = seed;
+        for w in words {
+            h = (h ^ u64::from(w)).wrapping_mul(mul);
+            h ^= h >> 29;
         }
-        v
-    }
-
-    /// Puts `a` and `b` in one part (the smaller root stays the root).
-    #[inline]
-    fn join(&mut self, a: u32, b: u32) {
-        let (a, b) = (self.find(a), self.find(b));
-        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-        self.parent[hi as usize] = lo;
-    }
+        h
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// A unit cube, flat-shaded (4 corners per face, 24 in all), outward.
+    /// A unit cube, flat-shaded (4 corners per face, 24 in all), wound outward or inward.
     fn cube(at: [f32; 3], inward: bool) -> Mesh {
         let faces: [[[f32; 3]; 4]; 6] = [
             [[0., 0., 1.], [1., 0., 1.], [1., 1., 1.], [0., 1., 1.]],
@@ -169,31 +110,32 @@ mod tests {
         m
     }
 
-    fn all(mesh: &Mesh) -> Vec<bool> {
-        cullable(mesh, &|| false).expect("not stopped")
-    }
-
     #[test]
-    fn an_outward_cube_is_cullable_an_inward_or_open_one_is_not() {
-        assert_eq!(all(&cube([0.0; 3], false)), vec![true; 24]);
-        assert_eq!(all(&cube([0.0; 3], true)), vec![false; 24]);
+    fn an_outward_cube_is_closed_outward_an_inward_or_open_one_is_not() {
+        assert!(closed_outward(&cube([0.0; 3], false)));
+        assert!(!closed_outward(&cube([0.0; 3], true)));
         let mut open = cube([0.0; 3], false);
         open.indices.truncate(30);
-        assert_eq!(all(&open), vec![false; 24]);
+        assert!(!closed_outward(&open));
+        // A corner at −0 is the same point as one at +0.
+        let mut signed = cube([0.0; 3], false);
+        signed.positions[0] = [-0.0, 0.0, 1.0];
+        assert!(closed_outward(&signed));
+        assert!(!closed_outward(&Mesh::default()));
+        let mut bad = cube([0.0; 3], false);
+        bad.indices[0] = 99;
+        assert!(!closed_outward(&bad));
     }
 
     #[test]
-    fn parts_are_judged_apart_and_a_shared_face_stays_closed() {
-        // Two cubes sharing a face (a Menger sponge's neighbours) are one closed part.
-        assert_eq!(all(&joined(cube([0.0; 3], false), cube([1.0, 0.0, 0.0], false))), vec![true; 48]);
-        // An open cube next to a closed one: only the closed one culls.
+    fn shared_faces_stay_closed_and_one_open_part_opens_the_mesh() {
+        // Two cubes sharing a face (a Menger sponge's neighbours), far from the origin.
+        assert!(closed_outward(&joined(cube([1000.0; 3], false), cube([1001.0, 1000.0, 1000.0], false))));
         let mut open = cube([5.0, 0.0, 0.0], false);
         open.indices.truncate(30);
-        let got = all(&joined(cube([0.0; 3], false), open));
-        assert_eq!(got, [vec![true; 24], vec![false; 24]].concat());
-        // An inward cube far away does not borrow the other's volume.
-        let got = all(&joined(cube([0.0; 3], false), cube([9.0, 0.0, 0.0], true)));
-        assert_eq!(got, [vec![true; 24], vec![false; 24]].concat());
+        assert!(!closed_outward(&joined(cube([0.0; 3], false), open)));
+        // An inward cube with an outward one of the same size: no volume, not culled.
+        assert!(!closed_outward(&joined(cube([0.0; 3], false), cube([9.0, 0.0, 0.0], true))));
     }
 
     #[test]
@@ -201,20 +143,17 @@ mod tests {
         use super::super::{camera::Framing, raster, shade::Lights, PreviewOptions, View};
         use crate::core::budget::{Budget, Limits};
         use crate::geom::NamedMesh;
-        let mesh = cube([0.0; 3], false);
-        let flags = all(&mesh);
-        let meshes = vec![NamedMesh { name: "model".into(), mesh }];
+        let meshes = vec![NamedMesh { name: "model".into(), mesh: cube([0.0; 3], false) }];
         for view in View::ALL {
             let options = PreviewOptions { size: 64, view, background: None };
             let frame = Framing::of(&meshes, view, 64, raster::samples_per_axis(64));
             let verts = vec![raster::project(&meshes[0].mesh, &frame, &Lights::default())];
-            let draw = |cull: Vec<bool>| {
+            let draw = |cull: bool| {
                 let mut budget = Budget::new(Limits::default());
                 let image = raster::draw(&meshes, &verts, &[cull], &options, &mut budget).expect("drawn");
                 (image, budget.steps())
             };
-            let (culled, culled_steps) = draw(flags.clone());
-            let (both, both_steps) = draw(vec![false; 24]);
+            let ((culled, culled_steps), (both, both_steps)) = (draw(true), draw(false));
             assert_eq!(culled, both, "{view:?}");
             assert!(culled_steps < both_steps, "{view:?}: {culled_steps} vs {both_steps}");
             assert!(culled.rgba.chunks(4).filter(|p| p[3] == 255).count() > 64 * 64 / 4, "{view:?}");

@@ -5,7 +5,7 @@
 //!
 //! The stage is split by job: [`camera`] (the view directions and the
 //! outlier-robust framing rule), [`shade`] (key, fill and rim light on the
-//! vertex colours), [`closed`] (which parts are closed solids, whose back
+//! vertex colours), [`closed`] (whether a mesh is a closed solid, whose back
 //! faces need not be drawn), [`raster`] (a fixed-point, supersampled
 //! triangle rasteriser with a depth buffer). `docs/preview.md` states the framing and
 //! lighting rules.
@@ -151,33 +151,12 @@ pub fn render(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budge
     options.validate().map_err(PreviewError::BadOptions)?;
     let vertex_bytes: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64 * raster::VERTEX_BYTES).sum();
     budget.reserve_memory(vertex_bytes)?;
-    let cull = cullable(meshes, budget);
-    let image = cull.and_then(|cull| {
-        let frame = camera::Framing::of(meshes, options.view, options.size, raster::samples_per_axis(options.size));
-        let lights = shade::Lights::default();
-        let vertices: Vec<Vec<raster::ScreenVertex>> = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights)).collect();
-        raster::draw(meshes, &vertices, &cull, options, budget)
-    });
+    // Which meshes are closed solids, their back faces culled (one linear pass each).
+    let cull: Vec<bool> = meshes.iter().map(|m| closed::closed_outward(&m.mesh)).collect();
+    let frame = camera::Framing::of(meshes, options.view, options.size, raster::samples_per_axis(options.size));
+    let lights = shade::Lights::default();
+    let vertices: Vec<Vec<raster::ScreenVertex>> = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights)).collect();
+    let image = raster::draw(meshes, &vertices, &cull, options, budget);
     budget.release_memory(vertex_bytes);
     Ok(image?)
-}
-
-/// [`closed::cullable`] for every mesh, its working memory reserved (and
-/// released) and the deadline checked while it runs.
-fn cullable(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<Vec<bool>>, LimitExceeded> {
-    let mut out = Vec::with_capacity(meshes.len());
-    for m in meshes {
-        let bytes = (m.mesh.positions.len() as u64 * closed::BYTES_PER_VERTEX).saturating_add(m.mesh.indices.len() as u64 * closed::BYTES_PER_INDEX);
-        budget.reserve_memory(bytes)?;
-        let flags = closed::cullable(&m.mesh, &|| budget.check_deadline().is_err());
-        budget.release_memory(bytes);
-        match flags {
-            Some(flags) => out.push(flags),
-            None => {
-                budget.check_deadline()?;
-                out.push(vec![false; m.mesh.positions.len()]);
-            }
-        }
-    }
-    Ok(out)
 }

@@ -60,14 +60,9 @@ fn is_backdrop(a: &ScreenVertex, b: &ScreenVertex, c: &ScreenVertex, width: i64)
     a.x.max(b.x).max(c.x) - a.x.min(b.x).min(c.x) > limit || a.y.max(b.y).max(c.y) - a.y.min(b.y).min(c.y) > limit
 }
 
-/// The placed corners of each triangle of `mesh` whose indices are in
-/// range, and whether it may be culled when it faces away (its first
-/// corner is in a closed, outward part: see [`super::closed`]).
-fn triangles<'a>(mesh: &'a Mesh, verts: &'a [ScreenVertex], cull: &'a [bool]) -> impl Iterator<Item = ([ScreenVertex; 3], bool)> + 'a {
-    mesh.indices.chunks_exact(3).filter_map(|t| {
-        let corners = [*verts.get(t[0] as usize)?, *verts.get(t[1] as usize)?, *verts.get(t[2] as usize)?];
-        Some((corners, cull.get(t[0] as usize).copied().unwrap_or(false)))
-    })
+/// The placed corners of each triangle of `mesh` whose indices are in range.
+fn triangles<'a>(mesh: &'a Mesh, verts: &'a [ScreenVertex]) -> impl Iterator<Item = [ScreenVertex; 3]> + 'a {
+    mesh.indices.chunks_exact(3).filter_map(|t| Some([*verts.get(t[0] as usize)?, *verts.get(t[1] as usize)?, *verts.get(t[2] as usize)?]))
 }
 
 /// Samples per pixel side: 4×4 up to 128 px (icons, where edges matter
@@ -94,9 +89,8 @@ pub struct ScreenVertex {
     pub rgb: [i64; 3],
 }
 
-/// Bytes the stage holds per vertex: the placed vertex, the framing's two
-/// coordinates and the cull flag ([`super::closed`]).
-pub const VERTEX_BYTES: u64 = std::mem::size_of::<ScreenVertex>() as u64 + 9;
+/// Bytes the stage holds per vertex: the placed vertex and the framing's two coordinates.
+pub const VERTEX_BYTES: u64 = std::mem::size_of::<ScreenVertex>() as u64 + 8;
 
 /// Places and lights every vertex of `mesh` (normals and colours missing
 /// from a mesh made by hand count as facing the camera and white).
@@ -186,9 +180,9 @@ impl Meter<'_> {
 
 /// Draws every triangle of `meshes` (placed as `vertices`, one list per
 /// mesh) into a picture, band by band, and resolves it to sRGB pixels.
-/// `cull` (one list per mesh, one flag per vertex) marks the vertices
-/// whose triangles are skipped when they face away from the camera.
-pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[Vec<bool>], options: &PreviewOptions, budget: &mut Budget) -> Result<Image, LimitExceeded> {
+/// `cull` (one flag per mesh) marks the meshes whose triangles are skipped
+/// when they face away from the camera (closed, outward ones: [`super::closed`]).
+pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[bool], options: &PreviewOptions, budget: &mut Budget) -> Result<Image, LimitExceeded> {
     let ss = i64::from(samples_per_axis(options.size));
     let width = i64::from(options.size) * ss;
     let band_rows = ((BAND_SAMPLES as i64 / width) / ss * ss).clamp(ss, width);
@@ -213,8 +207,8 @@ pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[Vec<bo
             if pass && !any_backdrop {
                 continue;
             }
-            for ((mesh, verts), cull) in meshes.iter().zip(vertices).zip(cull) {
-                for ([a, b, c], cull) in triangles(&mesh.mesh, verts, cull) {
+            for ((mesh, verts), &cull) in meshes.iter().zip(vertices).zip(cull) {
+                for [a, b, c] in triangles(&mesh.mesh, verts) {
                     if backdrop(&a, &b, &c) == pass {
                         band.triangle(a, b, c, cull, &mut meter)?;
                     }
