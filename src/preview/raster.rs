@@ -324,7 +324,7 @@ impl Band {
         if cull && area > 0 {
             return meter.add(1);
         }
-        // Both windings are drawn (lighting is two-sided); order the corners so the area is positive.
+        // Otherwise both windings are drawn (lighting is two-sided); order the corners so the area is positive.
         let (b, c, area) = if area < 0 { (c, b, -area) } else { (b, c, area) };
         let v = [a, b, c];
         // Sample centres are at (i + ½) samples; the box holds those inside the corners' extent.
