@@ -5,8 +5,9 @@
 //!
 //! The stage is split by job: [`camera`] (the view directions and the
 //! outlier-robust framing rule), [`shade`] (key, fill and rim light on the
-//! vertex colours), [`raster`] (a fixed-point, supersampled triangle
-//! rasteriser with a depth buffer). `docs/preview.md` states the framing and
+//! vertex colours), [`closed`] (whether a mesh is a closed solid, whose back
+//! faces need not be drawn), [`raster`] (a fixed-point, supersampled
+//! triangle rasteriser with a depth buffer). `docs/preview.md` states the framing and
 //! lighting rules.
 //!
 //! Determinism: every float is an IEEE basic operation in a fixed order (or
@@ -15,6 +16,7 @@
 //! the same pixels on every run and machine.
 
 pub mod camera;
+pub mod closed;
 pub mod raster;
 pub mod shade;
 pub mod sheet;
@@ -149,10 +151,12 @@ pub fn render(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budge
     options.validate().map_err(PreviewError::BadOptions)?;
     let vertex_bytes: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64 * raster::VERTEX_BYTES).sum();
     budget.reserve_memory(vertex_bytes)?;
+    // Which meshes are closed solids, their back faces culled (one linear pass each).
+    let cull: Vec<bool> = meshes.iter().map(|m| closed::closed_outward(&m.mesh)).collect();
     let frame = camera::Framing::of(meshes, options.view, options.size, raster::samples_per_axis(options.size));
     let lights = shade::Lights::default();
     let vertices: Vec<Vec<raster::ScreenVertex>> = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights)).collect();
-    let image = raster::draw(meshes, &vertices, options, budget);
+    let image = raster::draw(meshes, &vertices, &cull, options, budget);
     budget.release_memory(vertex_bytes);
     Ok(image?)
 }

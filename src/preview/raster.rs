@@ -180,7 +180,9 @@ impl Meter<'_> {
 
 /// Draws every triangle of `meshes` (placed as `vertices`, one list per
 /// mesh) into a picture, band by band, and resolves it to sRGB pixels.
-pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], options: &PreviewOptions, budget: &mut Budget) -> Result<Image, LimitExceeded> {
+/// `cull` (one flag per mesh) marks the meshes whose triangles are skipped
+/// when they face away from the camera (closed, outward ones: [`super::closed`]).
+pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[bool], options: &PreviewOptions, budget: &mut Budget) -> Result<Image, LimitExceeded> {
     let ss = i64::from(samples_per_axis(options.size));
     let width = i64::from(options.size) * ss;
     let band_rows = ((BAND_SAMPLES as i64 / width) / ss * ss).clamp(ss, width);
@@ -205,10 +207,10 @@ pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], options: &Prev
             if pass && !any_backdrop {
                 continue;
             }
-            for (mesh, verts) in meshes.iter().zip(vertices) {
+            for ((mesh, verts), &cull) in meshes.iter().zip(vertices).zip(cull) {
                 for [a, b, c] in triangles(&mesh.mesh, verts) {
                     if backdrop(&a, &b, &c) == pass {
-                        band.triangle(a, b, c, &mut meter)?;
+                        band.triangle(a, b, c, cull, &mut meter)?;
                     }
                 }
             }
@@ -310,13 +312,19 @@ impl Band {
     /// and that are nearer than what is there take its depth and colour.
     /// Each row is walked only over its covered span, found exactly from
     /// the edge functions, so a long sliver costs its samples, not its box.
-    fn triangle(&mut self, a: ScreenVertex, b: ScreenVertex, c: ScreenVertex, meter: &mut Meter<'_>) -> Result<(), LimitExceeded> {
+    /// With `cull`, a triangle facing away from the camera is skipped.
+    fn triangle(&mut self, a: ScreenVertex, b: ScreenVertex, c: ScreenVertex, cull: bool, meter: &mut Meter<'_>) -> Result<(), LimitExceeded> {
         let cross = |p: &ScreenVertex, q: &ScreenVertex, r: &ScreenVertex| (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
         let area = cross(&a, &b, &c);
+        // y runs down the picture, so a triangle wound counter-clockwise as
+        // the camera sees it (facing it) has a negative area here.
         if area == 0 {
             return Ok(());
         }
-        // Both windings are drawn (lighting is two-sided); order the corners so the area is positive.
+        if cull && area > 0 {
+            return meter.add(1);
+        }
+        // Otherwise both windings are drawn (lighting is two-sided); order the corners so the area is positive.
         let (b, c, area) = if area < 0 { (c, b, -area) } else { (b, c, area) };
         let v = [a, b, c];
         // Sample centres are at (i + ½) samples; the box holds those inside the corners' extent.
@@ -474,15 +482,15 @@ mod tests {
         // A 16×16 square split on its diagonal covers exactly its 256 sample centres.
         let mut b = band(32);
         let (p, q, r, s) = (vertex(4, 4), vertex(20, 4), vertex(20, 20), vertex(4, 20));
-        b.triangle(p, q, r, &mut meter).expect("budget");
+        b.triangle(p, q, r, false, &mut meter).expect("budget");
         let first = covered(&b);
-        b.triangle(p, r, s, &mut meter).expect("budget");
+        b.triangle(p, r, s, false, &mut meter).expect("budget");
         assert_eq!(covered(&b), 256);
         // The diagonal's 16 samples belong to one of the two: 120 + 136.
         assert_eq!((first, 256 - first), (136, 120));
         // Drawn alone, the second still leaves the diagonal to the first.
         let mut alone = band(32);
-        alone.triangle(s, r, p, &mut meter).expect("budget");
+        alone.triangle(s, r, p, false, &mut meter).expect("budget");
         assert_eq!(covered(&alone), 120);
         assert!(b.colour.iter().all(|&c| c == 0 || c == 0x3ff << 20));
     }
@@ -499,7 +507,7 @@ mod tests {
             let order = if near_first { [0, 1] } else { [1, 0] };
             for i in order {
                 let [a, bb, c] = tris[i];
-                b.triangle(a, bb, c, &mut meter).expect("budget");
+                b.triangle(a, bb, c, false, &mut meter).expect("budget");
             }
             assert!(b.colour.iter().zip(&b.depth).all(|(&c, &d)| d == EMPTY || c == 0x3ff << 10), "near_first {near_first}");
         }
@@ -510,7 +518,7 @@ mod tests {
         let mut budget = Budget::new(Limits { max_steps: 100, ..Limits::default() });
         let mut meter = Meter { budget: &mut budget, pending: 0 };
         let mut b = band(256);
-        let err = b.triangle(vertex(0, 0), vertex(256, 0), vertex(0, 256), &mut meter).expect_err("65536 samples cost 1025 steps");
+        let err = b.triangle(vertex(0, 0), vertex(256, 0), vertex(0, 256), false, &mut meter).expect_err("65536 samples cost 1025 steps");
         assert_eq!(err.limit, crate::core::budget::Limit::Steps);
         assert_eq!(covered(&b), 0);
     }
