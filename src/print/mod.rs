@@ -91,6 +91,12 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     let parts = union::split_parts(meshes, wall, budget)?;
     let (positions, indices) = union::unite(&parts.closed, budget)?;
     let colours = colour::triangle_colours(&parts.closed, &parts.colours, &positions, &indices, budget)?;
+    // Models are Y-up (glTF, the preview: a tower grows along +Y); printers
+    // build along +Z (3MF's build direction, slicers' convention). Turning
+    // +Y to +Z (a rotation, so winding and volume are kept) stands a tower
+    // or a vase on its foot and lays a gear or a pendant drawn in the XZ
+    // plane flat on the plate.
+    let positions: Vec<glam::DVec3> = positions.into_iter().map(|p| glam::DVec3::new(p.x, -p.z, p.y)).collect();
     let (lo, hi) = bounds(positions.iter().copied());
     let longest = (hi - lo).max_element();
     let scale = if options.size_um > 0 && longest > 0.0 { f64::from(options.size_um) / 1000.0 / longest } else { 1.0 };
