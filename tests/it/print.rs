@@ -338,3 +338,34 @@ fn colours_round_trip_through_3mf() {
     let bytes = std::fs::read(&stl).expect("stl");
     assert!(bytes[84..].chunks_exact(50).all(|t| t[48..50] == [0, 0]), "an STL attribute word is not zero");
 }
+
+/// The printable collection (`core::library::PRINTABLE`, marked `printable`
+/// in `GET /v1/grammars`): each grammar, printed at its default size (one
+/// unit is a millimetre), is one shell that admesh finds closed and
+/// consistently wound with no degenerate or disconnected facet, and that
+/// trimesh calls watertight. One trimesh process checks them all.
+#[test]
+fn the_printable_collection_prints_as_single_watertight_shells() {
+    let dir = tempdir();
+    let names = rulemesh::core::library::PRINTABLE;
+    assert!(names.len() >= 8, "{names:?}");
+    let mut files = Vec::new();
+    for name in names {
+        let g = repo().join("grammars").join(format!("{name}.mdg"));
+        let stl = dir.path().join(format!("{name}.stl"));
+        let out = render(&g, &stl, &[]);
+        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        let a = admesh(&stl);
+        assert_eq!((a.parts, a.backwards, a.degenerate, a.disconnected, a.open_edges), (1, 0, 0, 0, 0), "{name}: {}", a.raw);
+        files.push((name, stl, a.facets));
+    }
+    let code = "import sys, trimesh\nfor f in sys.argv[1:]:\n    m = trimesh.load(f, force='mesh')\n    print(m.is_watertight, len(m.faces), len(m.split(only_watertight=False)))";
+    let out = Command::new(trimesh_python()).args(["-c", code]).args(files.iter().map(|f| &f.1)).output().expect("python with trimesh (run scripts/test)");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), files.len(), "{text}");
+    for ((name, _, facets), line) in files.iter().zip(lines) {
+        assert_eq!(line, format!("True {facets} 1"), "{name}: trimesh (watertight, faces, bodies)");
+    }
+}
