@@ -56,10 +56,10 @@ const MATERIAL_BYTES: u64 = 64;
 /// Bytes a triangle's own colour (` pid="1" p1="…"`) adds at most.
 const TRIANGLE_COLOUR_BYTES: u64 = 24;
 
-/// The colour of triangle `k` of `mesh` (its first corner's: base materials
-/// colour a triangle evenly), linear RGBA8; opaque white without colours.
+/// The colour of triangle `k` of `mesh` ([`crate::geom::Mesh::triangle_colour`]),
+/// linear RGBA8; opaque white for a mesh without colours.
 fn triangle_colour(mesh: &crate::geom::Mesh, k: usize) -> [u8; 4] {
-    mesh.indices.get(3 * k).and_then(|&i| mesh.colours.get(i as usize)).copied().unwrap_or([255; 4])
+    mesh.triangle_colour(k).unwrap_or([255; 4])
 }
 
 /// The distinct triangle colours of `meshes` in order of first use (the

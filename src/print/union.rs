@@ -51,7 +51,8 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
         positions.extend(distinct.iter().map(|p| DVec3::from_array(p.map(f64::from))));
         for (k, t) in crate::geom::weld::welded_triangles(&m.mesh.indices, &remap) {
             tris.push(t.map(|i| i + base));
-            colours.push(triangle_colour(&m.mesh, k));
+            // Light grey for a mesh without colours.
+            colours.push(m.mesh.triangle_colour(k).unwrap_or(super::PLAIN));
         }
     }
     // Union-find over vertices joined by triangles.
@@ -152,14 +153,6 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
         return Err(PrintError::NothingPrintable(format!("none of the model's {total} parts is a closed solid: the first is not because {why}{size}")));
     }
     Ok(parts)
-}
-
-/// The model's colour of triangle `k` of `mesh`: its first corner's (a
-/// triangle has one colour in a 3MF; a primitive's corners agree anyway, a
-/// swept line's gradient changes from ring to ring). Light grey for a mesh
-/// without colours.
-fn triangle_colour(mesh: &crate::geom::Mesh, k: usize) -> [u8; 4] {
-    mesh.indices.get(3 * k).and_then(|&i| mesh.colours.get(i as usize)).copied().unwrap_or(super::PLAIN)
 }
 
 /// The closed prism `wall` thick whose middle is the triangle `t`, wound
