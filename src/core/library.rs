@@ -8,3 +8,15 @@ include!(concat!(env!("OUT_DIR"), "/grammars.rs"));
 pub fn source(name: &str) -> Option<&'static str> {
     BUILTIN.iter().find(|(n, _, _)| *n == name).map(|&(_, _, s)| s)
 }
+
+/// The printable collection: library grammars designed to be printed, each
+/// one watertight shell at its default size (in millimetres) when rendered
+/// with `print=true` (docs/print.md shows them; tests/it/collection.rs
+/// prints each and checks it with admesh and trimesh). `GET /v1/grammars`
+/// marks them `printable`, so an ordering backend can offer them.
+pub const PRINTABLE: &[&str] = &["gear", "lamp-shade", "lattice-cube", "ornament", "pendant", "ring", "rook", "vase"];
+
+/// Whether library grammar `name` is in the printable collection.
+pub fn is_printable(name: &str) -> bool {
+    PRINTABLE.contains(&name)
+}

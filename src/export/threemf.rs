@@ -3,6 +3,13 @@
 //! millimetres. One `<object>` per mesh, vertices welded by exact position
 //! (3MF requires shared vertices for a closed mesh).
 //!
+//! Colour for colour printers: every distinct triangle colour is a core-spec
+//! base material (`<basematerials>`, sRGB `displaycolor`); each object's
+//! default is its first triangle's, and a triangle of another colour names
+//! its own (`pid`, `p1`). Base materials are in the core specification, so
+//! every 3MF consumer must read them (docs/print.md says why not the
+//! materials extension's colour groups).
+//!
 //! Entries carry the zip format's fixed default timestamp, so the same model
 //! gives byte-identical files.
 
@@ -40,9 +47,60 @@ fn xml_escape(text: &str) -> String {
     out
 }
 
-/// The model XML for `meshes`, with the core `Application` metadata and,
-/// when given, the model's provenance as `rulemesh:` metadata.
-fn model_xml(meshes: &[NamedMesh], provenance: Option<&Provenance>) -> String {
+/// The resource id of the one `<basematerials>` group; objects follow it.
+const MATERIALS_ID: usize = 1;
+
+/// Bytes a base material's element takes at most.
+const MATERIAL_BYTES: u64 = 64;
+
+/// Bytes a triangle's own colour (` pid="1" p1="…"`) adds at most.
+const TRIANGLE_COLOUR_BYTES: u64 = 24;
+
+/// The colour of triangle `k` of `mesh` ([`crate::geom::Mesh::triangle_colour`]),
+/// linear RGBA8; opaque white for a mesh without colours.
+fn triangle_colour(mesh: &crate::geom::Mesh, k: usize) -> [u8; 4] {
+    mesh.triangle_colour(k).unwrap_or([255; 4])
+}
+
+/// The distinct triangle colours of `meshes` in order of first use (the
+/// base materials), and how many triangles differ from their object's
+/// default (the first triangle's colour).
+fn palette(meshes: &[NamedMesh]) -> (Vec<[u8; 4]>, u64) {
+    let mut colours = Vec::new();
+    let mut seen = std::collections::HashSet::new();
+    let mut own = 0;
+    for m in meshes {
+        let first = triangle_colour(&m.mesh, 0);
+        for k in 0..m.mesh.triangle_count() {
+            let c = triangle_colour(&m.mesh, k);
+            own += u64::from(c != first);
+            if seen.insert(c) {
+                colours.push(c);
+            }
+        }
+    }
+    (colours, own)
+}
+
+/// A linear RGBA8 colour as 3MF's sRGB `#RRGGBB` (`#RRGGBBAA` when not
+/// opaque; alpha is not gamma-encoded).
+fn display_colour(c: [u8; 4]) -> String {
+    let srgb = |v: u8| {
+        let l = f64::from(v) / 255.0;
+        let s = if l <= 0.003_130_8 { 12.92 * l } else { 1.055 * libm::pow(l, 1.0 / 2.4) - 0.055 };
+        (s * 255.0).round().clamp(0.0, 255.0) as u8
+    };
+    let [r, g, b] = [srgb(c[0]), srgb(c[1]), srgb(c[2])];
+    match c[3] {
+        255 => format!("#{r:02X}{g:02X}{b:02X}"),
+        a => format!("#{r:02X}{g:02X}{b:02X}{a:02X}"),
+    }
+}
+
+/// The model XML for `meshes` coloured from `colours` (their
+/// [`palette`]), with the core `Application` metadata and, when given, the
+/// model's provenance as `rulemesh:` metadata.
+fn model_xml(meshes: &[NamedMesh], colours: &[[u8; 4]], provenance: Option<&Provenance>) -> String {
     let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"");
     if provenance.is_some() {
         let _ = write!(s, " xmlns:rulemesh=\"{PROVENANCE_NAMESPACE}\"");
@@ -53,18 +111,33 @@ fn model_xml(meshes: &[NamedMesh], provenance: Option<&Provenance>) -> String {
         let _ = writeln!(s, "<metadata name=\"{name}\">{}</metadata>", xml_escape(&value));
     }
     s.push_str("<resources>\n");
+    let index: std::collections::HashMap<[u8; 4], usize> = colours.iter().enumerate().map(|(i, c)| (*c, i)).collect();
+    let _ = writeln!(s, "<basematerials id=\"{MATERIALS_ID}\">");
+    for c in colours {
+        let colour = display_colour(*c);
+        let _ = writeln!(s, "<base name=\"{colour}\" displaycolor=\"{colour}\"/>");
+    }
+    s.push_str("</basematerials>\n");
     let mut ids = Vec::new();
     for (k, m) in meshes.iter().enumerate().filter(|(_, m)| m.mesh.triangle_count() > 0) {
-        let id = k + 1;
+        let id = MATERIALS_ID + k + 1;
         ids.push(id);
-        let _ = writeln!(s, "<object id=\"{id}\" type=\"model\"><mesh><vertices>");
+        let default = index.get(&triangle_colour(&m.mesh, 0)).copied().unwrap_or(0);
+        let _ = writeln!(s, "<object id=\"{id}\" type=\"model\" pid=\"{MATERIALS_ID}\" pindex=\"{default}\"><mesh><vertices>");
         let (points, tris) = super::welded(&m.mesh);
         for p in &points {
             let _ = writeln!(s, "<vertex x=\"{}\" y=\"{}\" z=\"{}\"/>", p[0], p[1], p[2]);
         }
         s.push_str("</vertices><triangles>\n");
-        for (_, [a, b, c]) in tris {
-            let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
+        for (t, [a, b, c]) in tris {
+            match index.get(&triangle_colour(&m.mesh, t)).copied().unwrap_or(default) {
+                p if p == default => {
+                    let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
+                }
+                p => {
+                    let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\" pid=\"{MATERIALS_ID}\" p1=\"{p}\"/>");
+                }
+            }
         }
         s.push_str("</triangles></mesh></object>\n");
     }
@@ -81,10 +154,14 @@ fn model_xml(meshes: &[NamedMesh], provenance: Option<&Provenance>) -> String {
 pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let v: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
-    // The XML text and the zip each hold about the estimate; both live at once.
-    let bytes = super::estimated_size(super::Format::ThreeMf, v, t).saturating_mul(2);
+    // The XML text and the zip each hold about the estimate (plus the
+    // colours: the materials and the triangles of their own colour); both
+    // live at once.
+    let (colours, own) = palette(meshes);
+    let colour_bytes = (colours.len() as u64).saturating_mul(MATERIAL_BYTES).saturating_add(own.saturating_mul(TRIANGLE_COLOUR_BYTES));
+    let bytes = super::estimated_size(super::Format::ThreeMf, v, t).saturating_add(colour_bytes).saturating_mul(2);
     budget.reserve_memory(bytes)?;
-    let xml = model_xml(meshes, provenance);
+    let xml = model_xml(meshes, &colours, provenance);
     // The XML is most of the work; compressing it is the rest.
     budget.check_deadline()?;
     let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));

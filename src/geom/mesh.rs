@@ -20,6 +20,14 @@ impl Mesh {
         self.indices.len() / 3
     }
 
+    /// The colour of triangle `k`: its first corner's (`None` past the end
+    /// or without colours). A 3MF base material colours a triangle evenly,
+    /// and a primitive's corners agree anyway; a swept line's gradient
+    /// changes from ring to ring.
+    pub fn triangle_colour(&self, k: usize) -> Option<[u8; 4]> {
+        self.indices.get(3 * k).and_then(|&i| self.colours.get(i as usize)).copied()
+    }
+
     /// Bytes this mesh's buffers occupy (for the memory budget).
     pub fn byte_size(&self) -> u64 {
         (self.positions.len() * 12 + self.normals.len() * 12 + self.colours.len() * 4 + self.indices.len() * 4) as u64

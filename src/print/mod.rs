@@ -9,6 +9,7 @@
 //! so), turned outward, and united by Manifold (`manifold-rs`), whose exact
 //! predicates keep the result manifold even where surfaces touch.
 
+mod colour;
 mod report;
 mod union;
 
@@ -29,6 +30,9 @@ pub struct PrintOptions {
     /// Answer with the JSON printability report instead of the model.
     pub report: bool,
 }
+
+/// The colour of a triangle whose mesh has none (linear RGBA8, light grey).
+pub const PLAIN: [u8; 4] = [200, 200, 200, 255];
 
 /// The thinnest feature most FDM printers reproduce (a 0.4 mm nozzle's two perimeters).
 pub const MIN_FEATURE_MM: f64 = 0.8;
@@ -86,6 +90,13 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     };
     let parts = union::split_parts(meshes, wall, budget)?;
     let (positions, indices) = union::unite(&parts.closed, budget)?;
+    let colours = colour::triangle_colours(&parts.closed, &parts.colours, &positions, &indices, budget)?;
+    // Models are Y-up (glTF, the preview: a tower grows along +Y); printers
+    // build along +Z (3MF's build direction, slicers' convention). Turning
+    // +Y to +Z (a rotation, so winding and volume are kept) stands a tower
+    // or a vase on its foot and lays a gear or a pendant drawn in the XZ
+    // plane flat on the plate.
+    let positions: Vec<glam::DVec3> = positions.into_iter().map(|p| glam::DVec3::new(p.x, -p.z, p.y)).collect();
     let (lo, hi) = bounds(positions.iter().copied());
     let longest = (hi - lo).max_element();
     let scale = if options.size_um > 0 && longest > 0.0 { f64::from(options.size_um) / 1000.0 / longest } else { 1.0 };
@@ -95,8 +106,9 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     // Manifold leaves edges a few f32 ulps long, which slicers and checkers
     // (trimesh merges within 1e-8) fuse into non-manifold edges: collapse
     // edges shorter than a millionth of the size.
-    let (scaled, indices) = collapse_short_edges(scaled, &indices, (longest * scale) * 1e-6);
-    let mesh = flat_mesh(&scaled, &indices);
+    let (scaled, indices, kept) = collapse_short_edges(scaled, &indices, (longest * scale) * 1e-6);
+    let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
+    let mesh = flat_mesh(&scaled, &indices, &colours);
     let mut report = measure(&scaled, &indices);
     report.parts = parts.closed.len() as u64;
     report.skipped_parts = parts.skipped;
@@ -109,10 +121,11 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
 }
 
 /// Merges the two ends of every edge shorter than `eps` (and vertices at
-/// identical positions), then drops the triangles that thereby lose an edge.
+/// identical positions), then drops the triangles that thereby lose an edge;
+/// also gives the index of each kept triangle in `indices`.
 /// Collapsing only along edges keeps the surface closed and manifold; merging
 /// unconnected near points could pinch it.
-fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> (Vec<[f32; 3]>, Vec<u32>) {
+fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> (Vec<[f32; 3]>, Vec<u32>, Vec<usize>) {
     let mut root: Vec<u32> = (0..positions.len() as u32).collect();
     fn find(root: &mut [u32], mut v: u32) -> u32 {
         while root[v as usize] != v {
@@ -137,10 +150,12 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
     let merged: Vec<[f32; 3]> = (0..positions.len() as u32).map(|v| positions[find(&mut root, v) as usize]).collect();
     let (welded, remap) = crate::geom::weld::weld_by(merged, crate::geom::weld::f32_key);
     let mut out = Vec::with_capacity(indices.len());
-    for (_, t) in crate::geom::weld::welded_triangles(indices, &remap) {
+    let mut kept = Vec::with_capacity(indices.len() / 3);
+    for (k, t) in crate::geom::weld::welded_triangles(indices, &remap) {
         out.extend_from_slice(&t);
+        kept.push(k);
     }
-    (welded, out)
+    (welded, out, kept)
 }
 
 /// The bounding box (min and max corners) of `points`.
@@ -149,17 +164,18 @@ fn bounds(points: impl IntoIterator<Item = glam::DVec3>) -> (glam::DVec3, glam::
 }
 
 /// A flat-shaded mesh: three vertices per triangle (positions copied bit for
-/// bit, so welding by position restores the shared vertices), light grey.
-fn flat_mesh(positions: &[[f32; 3]], indices: &[u32]) -> Mesh {
+/// bit, so welding by position restores the shared vertices), each triangle
+/// in its colour.
+fn flat_mesh(positions: &[[f32; 3]], indices: &[u32], colours: &[[u8; 4]]) -> Mesh {
     let mut m = Mesh::default();
-    for t in indices.chunks_exact(3) {
+    for (t, colour) in indices.chunks_exact(3).zip(colours) {
         let [a, b, c] = [0, 1, 2].map(|k| glam::Vec3::from_array(positions[t[k] as usize]));
         let n = (b - a).cross(c - a).normalize_or(glam::Vec3::Z).to_array();
         for p in [a, b, c] {
             m.indices.push(m.positions.len() as u32);
             m.positions.push(p.to_array());
             m.normals.push(n);
-            m.colours.push([200, 200, 200, 255]);
+            m.colours.push(*colour);
         }
     }
     m

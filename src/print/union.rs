@@ -11,6 +11,10 @@ use std::collections::HashMap;
 pub(super) struct Parts {
     /// Closed, outward-oriented parts.
     pub closed: Vec<HalfEdgeMesh>,
+    /// The model's colour of each triangle of each closed part (parallel to
+    /// `closed` and to each part's triangles): what the union's triangles
+    /// take their colour from.
+    pub colours: Vec<Vec<[u8; 4]>>,
     /// Parts that are open or not manifold and were left out.
     pub skipped: u64,
     /// Parts that are open or not manifold (free-vertex surfaces, loose
@@ -37,6 +41,7 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
     budget.charge_steps(triangles)?;
     let mut positions: Vec<DVec3> = Vec::new();
     let mut tris: Vec<[u32; 3]> = Vec::with_capacity(triangles as usize);
+    let mut colours: Vec<[u8; 4]> = Vec::with_capacity(triangles as usize);
     let mut parent: Vec<u32> = Vec::new();
     for m in meshes {
         // Each mesh welds on its own: touching parts of different meshes stay apart.
@@ -44,7 +49,11 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
         // Fits: the vertex total is bounded by the meshes' u32 indices.
         let base = positions.len() as u32;
         positions.extend(distinct.iter().map(|p| DVec3::from_array(p.map(f64::from))));
-        tris.extend(crate::geom::weld::welded_triangles(&m.mesh.indices, &remap).map(|(_, t)| t.map(|i| i + base)));
+        for (k, t) in crate::geom::weld::welded_triangles(&m.mesh.indices, &remap) {
+            tris.push(t.map(|i| i + base));
+            // Light grey for a mesh without colours.
+            colours.push(m.mesh.triangle_colour(k).unwrap_or(super::PLAIN));
+        }
     }
     // Union-find over vertices joined by triangles.
     parent.extend(0..positions.len() as u32);
@@ -64,28 +73,28 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
             }
         }
     }
-    // Group triangles by root, in order of first appearance (deterministic).
+    // Group triangles (their indices) by root, in order of first appearance (deterministic).
     let mut group_of: HashMap<u32, usize> = HashMap::new();
-    let mut groups: Vec<Vec<[u32; 3]>> = Vec::new();
-    for t in &tris {
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    for (k, t) in tris.iter().enumerate() {
         let r = find(&mut parent, t[0]);
         let g = *group_of.entry(r).or_insert_with(|| {
             groups.push(Vec::new());
             groups.len() - 1
         });
-        groups[g].push(*t);
+        groups[g].push(k);
     }
-    let mut parts = Parts { closed: Vec::new(), skipped: 0, thickened: 0, min_extent: f64::INFINITY };
-    // The open or non-manifold groups (their triangles), and why the first one is not a solid.
-    let mut open: Vec<Vec<[u32; 3]>> = Vec::new();
+    let mut parts = Parts { closed: Vec::new(), colours: Vec::new(), skipped: 0, thickened: 0, min_extent: f64::INFINITY };
+    // The open or non-manifold groups (their triangles' indices), and why the first one is not a solid.
+    let mut open: Vec<Vec<usize>> = Vec::new();
     let mut why: Option<String> = None;
     for g in groups {
         let mut local: HashMap<u32, u32> = HashMap::new();
         let mut pos = Vec::new();
-        let tris: Vec<[u32; 3]> = g
+        let local_tris: Vec<[u32; 3]> = g
             .iter()
-            .map(|t| {
-                t.map(|v| {
+            .map(|&k| {
+                tris[k].map(|v| {
                     *local.entry(v).or_insert_with(|| {
                         pos.push(positions[v as usize]);
                         (pos.len() - 1) as u32
@@ -93,16 +102,17 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
                 })
             })
             .collect();
-        let flipped: Vec<[u32; 3]> = tris.iter().map(|t| [t[0], t[2], t[1]]).collect();
+        let flipped: Vec<[u32; 3]> = local_tris.iter().map(|t| [t[0], t[2], t[1]]).collect();
         // Why it is not a solid, and whether it can become a wall: only open
         // surfaces can; one that touches itself (the Koch curve's tube)
         // would become a hollow shell of itself.
-        let (reason, thickenable) = match HalfEdgeMesh::new(pos.clone(), tris) {
+        let (reason, thickenable) = match HalfEdgeMesh::new(pos.clone(), local_tris) {
             Ok(m) if m.is_closed() && m.nonmanifold_vertices().is_empty() => {
                 let m = if m.signed_volume() < 0.0 { HalfEdgeMesh::new(pos, flipped).unwrap_or(m) } else { m };
                 let (lo, hi) = super::bounds(m.positions.iter().copied());
                 parts.min_extent = parts.min_extent.min((hi - lo).min_element());
                 parts.closed.push(m);
+                parts.colours.push(g.iter().map(|&k| colours[k]).collect());
                 continue;
             }
             Ok(m) if !m.is_closed() => (format!("it is an open surface ({} boundary edges)", m.boundary_edges().len()), true),
@@ -121,8 +131,12 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
     let open_triangles: usize = open.iter().map(Vec::len).sum();
     if parts.closed.is_empty() && wall > 0.0 && open_triangles <= MAX_THICKENED_TRIANGLES {
         budget.charge_steps(open_triangles as u64 * 8)?;
-        let corners = open.iter().flatten().map(|t| t.map(|v| positions[v as usize]));
-        parts.closed.extend(corners.filter_map(|t| prism(&t, wall)));
+        for &k in open.iter().flatten() {
+            if let Some(p) = prism(&tris[k].map(|v| positions[v as usize]), wall) {
+                parts.colours.push(vec![colours[k]; p.face_count()]);
+                parts.closed.push(p);
+            }
+        }
         parts.thickened = open.len() as u64;
         parts.min_extent = wall;
     } else {

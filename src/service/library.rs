@@ -65,6 +65,9 @@ pub struct GrammarInfo {
     pub description: String,
     /// Its parameters with defaults and ranges.
     pub params: Vec<ParamInfo>,
+    /// Whether it is in the printable collection: designed to print as one
+    /// watertight shell at its default size, in millimetres (`print=true`).
+    pub printable: bool,
     /// A parse error, if the grammar does not parse with this engine.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
@@ -106,7 +109,8 @@ impl Builtin {
             ),
             Err(e) => (Vec::new(), Some(e.to_string())),
         };
-        GrammarInfo { name: self.name, language: self.language.name(), description: description(self.source), params, error }
+        let printable = crate::core::library::is_printable(self.name);
+        GrammarInfo { name: self.name, language: self.language.name(), description: description(self.source), params, printable, error }
     }
 }
 

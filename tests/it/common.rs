@@ -101,6 +101,10 @@ pub struct AdmeshReport {
     pub parts: u64,
     pub degenerate: u64,
     pub reversed: u64,
+    /// Edges whose two faces are wound the same way.
+    pub backwards: u64,
+    /// Facets with at least one edge no other facet shares.
+    pub disconnected: u64,
     pub volume: f64,
     pub raw: String,
 }
@@ -132,6 +136,8 @@ pub fn admesh(file: &Path) -> AdmeshReport {
         parts: first_num("Number of parts") as u64,
         degenerate: first_num("Degenerate facets") as u64,
         reversed: first_num("Facets reversed") as u64,
+        backwards: first_num("Backwards edges") as u64,
+        disconnected: first_num("Total disconnected facets") as u64,
         volume,
         raw,
     }

@@ -265,3 +265,107 @@ fn a_line_that_meets_itself_prints_as_one_part() {
         assert!(report["nonmanifold_edges"].as_u64() > Some(0) && report["warnings"].to_string().contains("not watertight"), "{report}");
     }
 }
+
+/// Each triangle of a 3MF file as lib3mf (the 3MF Consortium's reader;
+/// trimesh ignores 3MF colours) reads it: its centroid and its base
+/// material's sRGB display colour.
+fn lib3mf_triangle_colours(file: &Path) -> Vec<([f64; 3], [u8; 4])> {
+    let code = r#"import sys, lib3mf
+w = lib3mf.get_wrapper()
+model = w.CreateModel()
+model.QueryReader("3mf").ReadFromFile(sys.argv[1])
+groups = {}
+it = model.GetBaseMaterialGroups()
+while it.MoveNext():
+    g = it.GetCurrentBaseMaterialGroup()
+    groups[g.GetResourceID()] = {i: g.GetDisplayColor(i) for i in g.GetAllPropertyIDs()}
+objs = model.GetMeshObjects()
+while objs.MoveNext():
+    o = objs.GetCurrentMeshObject()
+    vs = o.GetVertices()
+    for t, p in zip(o.GetTriangleIndices(), o.GetAllTriangleProperties()):
+        c = groups[p.ResourceID][p.PropertyIDs[0]]
+        x = [sum(vs[i].Coordinates[k] for i in t.Indices) / 3 for k in range(3)]
+        print(x[0], x[1], x[2], c.Red, c.Green, c.Blue, c.Alpha)
+"#;
+    let out = Command::new(trimesh_python()).args(["-c", code]).arg(file).output().expect("python with lib3mf (run scripts/test)");
+    assert!(out.status.success(), "lib3mf on {}: {}", file.display(), String::from_utf8_lossy(&out.stderr));
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| {
+            let v: Vec<f64> = l.split_whitespace().map(|f| f.parse().expect("number")).collect();
+            ([v[0], v[1], v[2]], [v[3] as u8, v[4] as u8, v[5] as u8, v[6] as u8])
+        })
+        .collect()
+}
+
+/// 3MF carries the model's colours as base materials, per triangle, through
+/// the union of `print=true` as well; lib3mf reads them back. STL stays plain.
+#[test]
+fn colours_round_trip_through_3mf() {
+    let dir = tempdir();
+    // A red box and a blue one overlapping by half: printed (one unit is a
+    // millimetre, centred in x), the red end is at x < -0.25, the blue at x > 0.25.
+    let src = "rule R { BOX { R 1 } BOX { x 0.5 B 1 } }";
+    let mf = dir.path().join("two.3mf");
+    let out = run(&["render", "-", "--language", "mdg", "--print", "-o", mf.to_str().expect("utf-8")], Some(src.as_bytes()));
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let tris = lib3mf_triangle_colours(&mf);
+    let colour_where = |keep: &dyn Fn(f64) -> bool| -> Vec<[u8; 4]> {
+        let mut c: Vec<[u8; 4]> = tris.iter().filter(|(p, _)| keep(p[0])).map(|(_, c)| *c).collect();
+        c.sort();
+        c.dedup();
+        c
+    };
+    let red = colour_where(&|x| x < -0.26);
+    let blue = colour_where(&|x| x > 0.26);
+    assert_eq!((red.len(), blue.len()), (1, 1), "one colour at each end: {red:?} {blue:?}");
+    let (red, blue) = (red[0], blue[0]);
+    assert!(red[0] > red[2] && blue[2] > blue[0] && red[3] == 255, "red end {red:?}, blue end {blue:?}");
+    // The faces where the two boxes overlap take one of the two colours.
+    assert!(tris.iter().all(|(_, c)| *c == red || *c == blue), "{tris:?}");
+    // The gem's three colours (a crown, facets and a halo of spheres) in a
+    // plain 3MF, one object per mesh.
+    let gem = dir.path().join("gem.3mf");
+    assert!(run(&["render", repo().join("grammars/gem.mdg").to_str().expect("utf-8"), "-o", gem.to_str().expect("utf-8")], None).status.success());
+    let mut colours: Vec<[u8; 4]> = lib3mf_triangle_colours(&gem).into_iter().map(|(_, c)| c).collect();
+    colours.sort();
+    colours.dedup();
+    assert_eq!(colours.len(), 3, "{colours:?}");
+    // STL has no colour: every triangle's attribute word is zero.
+    let stl = dir.path().join("two.stl");
+    assert!(run(&["render", "-", "--language", "mdg", "--print", "-o", stl.to_str().expect("utf-8")], Some(src.as_bytes())).status.success());
+    let bytes = std::fs::read(&stl).expect("stl");
+    assert!(bytes[84..].chunks_exact(50).all(|t| t[48..50] == [0, 0]), "an STL attribute word is not zero");
+}
+
+/// The printable collection (`core::library::PRINTABLE`, marked `printable`
+/// in `GET /v1/grammars`): each grammar, printed at its default size (one
+/// unit is a millimetre), is one shell that admesh finds closed and
+/// consistently wound with no degenerate or disconnected facet, and that
+/// trimesh calls watertight. One trimesh process checks them all.
+#[test]
+fn the_printable_collection_prints_as_single_watertight_shells() {
+    let dir = tempdir();
+    let names = rulemesh::core::library::PRINTABLE;
+    assert!(names.len() >= 8, "{names:?}");
+    let mut files = Vec::new();
+    for name in names {
+        let g = repo().join("grammars").join(format!("{name}.mdg"));
+        let stl = dir.path().join(format!("{name}.stl"));
+        let out = render(&g, &stl, &[]);
+        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        let a = admesh(&stl);
+        assert_eq!((a.parts, a.backwards, a.degenerate, a.disconnected, a.open_edges), (1, 0, 0, 0, 0), "{name}: {}", a.raw);
+        files.push((name, stl, a.facets));
+    }
+    let code = "import sys, trimesh\nfor f in sys.argv[1:]:\n    m = trimesh.load(f, force='mesh')\n    print(m.is_watertight, len(m.faces), len(m.split(only_watertight=False)))";
+    let out = Command::new(trimesh_python()).args(["-c", code]).args(files.iter().map(|f| &f.1)).output().expect("python with trimesh (run scripts/test)");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), files.len(), "{text}");
+    for ((name, _, facets), line) in files.iter().zip(lines) {
+        assert_eq!(line, format!("True {facets} 1"), "{name}: trimesh (watertight, faces, bodies)");
+    }
+}

@@ -16,8 +16,12 @@ async fn health_grammars_metrics_and_404s() {
     for n in ["gem", "menger", "tree", "stochastic"] {
         assert!(names.contains(&n), "{names:?}");
     }
+    // The printable collection is marked, and nothing else is.
+    let printable: Vec<&str> = grammars.iter().filter(|g| g["printable"] == true).filter_map(|g| g["name"].as_str()).collect();
+    assert_eq!(printable, rulemesh::core::library::PRINTABLE, "{list}");
     for g in grammars {
         assert_eq!(g["language"], "mdg");
+        assert!(g["printable"].is_boolean(), "{g}");
         assert!(g["params"].is_array());
         assert!(!g["description"].as_str().unwrap_or("").is_empty(), "{g}");
         assert!(g.get("error").is_none(), "built-in grammar does not parse: {g}");
@@ -414,6 +418,7 @@ async fn openapi_document_lists_every_route_with_methods_and_errors() {
         assert!(doc["components"]["schemas"].get(schema).is_some(), "schema {schema}");
     }
     assert!(doc["components"]["schemas"]["RenderBody"]["properties"]["on_limit"].is_object());
+    assert_eq!(doc["components"]["schemas"]["GrammarInfo"]["properties"]["printable"]["type"], "boolean");
     // The batch body is the render body with `source` optional, plus the batch's own fields.
     let batch = &doc["components"]["schemas"]["BatchBody"];
     for field in ["source", "grammar", "seeds", "sweep", "on_limit", "limits"] {
