@@ -115,8 +115,13 @@ fn bar(a: DVec3, b: DVec3, r: f64) -> Option<(PrimitiveKind, DMat3, DVec3)> {
     if !(d.length() > 0.0) || !(r > 0.0) {
         return None;
     }
-    let u = d.any_orthonormal_vector() * (2.0 * r);
-    let v = d.normalize().cross(u.normalize()) * (2.0 * r);
+    // `any_orthonormal_vector` needs a unit input: given `d` itself it gave a
+    // vector neither unit nor perpendicular, so bars were sheared and of
+    // uneven thickness (and had no TRS form for instancing).
+    let axis = d.normalize();
+    let u = axis.any_orthonormal_vector();
+    let v = axis.cross(u);
+    let (u, v) = (u * (2.0 * r), v * (2.0 * r));
     Some((PrimitiveKind::Box, DMat3::from_cols(d, u, v), (a + b) * 0.5))
 }
 
@@ -163,6 +168,22 @@ mod tests {
         for (i, (a, b)) in edges.iter().enumerate() {
             assert_eq!((*b - *a).length(), 1.0);
             assert!(edges[..i].iter().all(|e| e != &(*a, *b)));
+        }
+    }
+
+    #[test]
+    fn bars_are_square_and_perpendicular_to_their_edge() {
+        for (a, b) in [(DVec3::ZERO, DVec3::new(3.0, 0.5, -2.0)), (DVec3::ONE, DVec3::new(1.0, 1.0, 0.2)), (DVec3::ZERO, DVec3::new(0.0, 0.0, -4.0))] {
+            let (_, m, centre) = bar(a, b, 0.25).expect("a bar");
+            assert_eq!(centre, (a + b) * 0.5);
+            assert!((m.x_axis - (b - a)).length() < 1e-12);
+            for axis in [m.y_axis, m.z_axis] {
+                assert!((axis.length() - 0.5).abs() < 1e-12, "{axis}");
+                assert!(axis.dot(m.x_axis).abs() < 1e-12);
+            }
+            assert!(m.y_axis.dot(m.z_axis).abs() < 1e-12);
+            // Right-handed, so the box keeps its outward winding.
+            assert!(m.determinant() > 0.0);
         }
     }
 
