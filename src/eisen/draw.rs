@@ -9,6 +9,7 @@ use super::{BuildOptions, Built};
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::core::PrimitiveKind;
 use crate::lang::eisen::Primitive;
+use crate::model::instancing;
 use crate::model::scene::{AffineInstance, FreeVertex, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
 use glam::{DMat3, DMat4, DVec3, Mat3};
 
@@ -78,26 +79,34 @@ impl Canvas<'_> {
             (Primitive::Mesh, _) => faces.extend(at.previous.map(|from| mesh_solid(&from, &m)).unwrap_or_default()),
             (Primitive::Template, None) => return Ok(()),
         }
-        let triangles: u64 = placed.iter().map(|(k, ..)| crate::geom::primitives::triangle_count(*k, self.opts.detail)).sum::<u64>() + faces.len() as u64;
-        self.built.objects += 1;
-        if triangles == 0 {
-            return Ok(());
-        }
-        self.budget.charge_primitive(triangles)?;
-        let downstream: u64 = placed.iter().map(|(k, ..)| self.opts.downstream_bytes[*k as usize]).sum::<u64>()
-            + 3 * faces.len() as u64 * self.opts.vertex_bytes;
-        let stored = AFFINE_INSTANCE_BYTES * placed.len() as u64 + 3 * FREE_VERTEX_BYTES * faces.len() as u64;
-        self.budget.reserve_memory(stored.saturating_add(downstream))?;
-        self.built.promised = self.built.promised.saturating_add(downstream);
-        for (kind, l, t) in placed {
-            self.built.scene.affine.push(AffineInstance {
+        let placed: Vec<AffineInstance> = placed
+            .into_iter()
+            .map(|(kind, l, t)| AffineInstance {
                 kind,
                 linear: Mat3::from_cols(l.x_axis.as_vec3(), l.y_axis.as_vec3(), l.z_axis.as_vec3()),
                 translation: t.as_vec3(),
                 colour,
                 class,
-            });
+            })
+            .collect();
+        let flat = |a: &AffineInstance| crate::geom::primitives::triangle_count(a.kind, self.opts.detail);
+        self.built.objects += 1;
+        if placed.iter().map(flat).sum::<u64>() + faces.len() as u64 == 0 {
+            return Ok(());
         }
+        // Under instanced output a repeated mesh costs a triangle and an
+        // instance's bytes after its first placement (`Tally`).
+        let (mut triangles, mut downstream) = (faces.len() as u64, 3 * faces.len() as u64 * self.opts.vertex_bytes);
+        for a in &placed {
+            let key = instancing::Placement::of_affine(a).map(|p| p.key);
+            let (t, b) = self.built.tally.cost(key, flat(a), self.opts.downstream_bytes[a.kind as usize]);
+            (triangles, downstream) = (triangles + t, downstream.saturating_add(b));
+        }
+        self.budget.charge_primitive(triangles)?;
+        let stored = AFFINE_INSTANCE_BYTES * placed.len() as u64 + 3 * FREE_VERTEX_BYTES * faces.len() as u64;
+        self.budget.reserve_memory(stored.saturating_add(downstream))?;
+        self.built.promised = self.built.promised.saturating_add(downstream);
+        self.built.scene.affine.extend(placed);
         for [a, b, c] in faces {
             let n = (b - a).cross(c - a);
             let Some(n) = n.try_normalize() else { continue };
