@@ -172,7 +172,7 @@ struct RenderArgs {
     /// Scale and move the model into a unit box centred at the origin (every format).
     #[arg(long)]
     fit_unit_box: bool,
-    /// glb/gltf of instanced L-systems: gpu (EXT_mesh_gpu_instancing) or flat (plain meshes).
+    /// glb/gltf: gpu (each mesh placed more than once written once, EXT_mesh_gpu_instancing) or flat (plain meshes).
     #[arg(long, value_enum, default_value = "gpu")]
     instancing: Instancing,
     /// Merge every part into one watertight, outward-oriented solid in millimetres for 3D printing (docs/print.md).

@@ -5,7 +5,9 @@
 //
 // Usage: node scripts/three-check/check.mjs FILE.glb...
 //
-// Prints one JSON line per file: {"file", "ok", "triangles", "meshes",
+// Prints one JSON line per file: {"file", "ok", "triangles" (instanced
+// meshes count once per instance), "meshes", "instances", "coloured" (instances
+// with an instanceColor),
 // "animations", "error"?}, then a closing line `three-check: N passed, M failed`
 // on stderr; exits 1 if any file failed, 2 if the browser or three.js is
 // missing. Needs (scripts/test installs them): Debian's `chromium`

@@ -58,6 +58,9 @@ pub struct BuildOptions {
     pub downstream_bytes: [u64; 9],
     /// Bytes meshing and export need per free vertex (triangles, meshes).
     pub vertex_bytes: u64,
+    /// Bytes per GPU instance when the output instances repeated meshes
+    /// ([`Downstream::per_instance`](crate::model::Downstream::per_instance)).
+    pub per_instance: Option<u64>,
 }
 
 /// What the builder made.
@@ -71,6 +74,8 @@ pub struct Built {
     pub promised: u64,
     /// Generations run (breadth-first) or rule states applied (depth-first).
     pub generations: u64,
+    /// What each placement is charged (instanced output charges repeats as instances).
+    pub tally: crate::model::instancing::Tally,
 }
 
 /// The state a rule runs in: Structure Synth's `State` (State.h:21-37).
@@ -173,6 +178,7 @@ pub fn build(script: &Script, opts: &BuildOptions, budget: &mut Budget) -> Resul
         view: None,
     };
     b.built.scene.classes = script.classes.clone();
+    b.built.tally = crate::model::instancing::Tally::new(opts.per_instance);
     let start = RuleState {
         what: Pending::Top,
         state: State { matrix: DMat4::IDENTITY, previous: None, hsv: [0.0, 1.0, 1.0], alpha: 1.0, depths: Vec::new(), seed: 0 },

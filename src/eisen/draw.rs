@@ -9,6 +9,7 @@ use super::{BuildOptions, Built};
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::core::PrimitiveKind;
 use crate::lang::eisen::Primitive;
+use crate::model::instancing;
 use crate::model::scene::{AffineInstance, FreeVertex, AFFINE_INSTANCE_BYTES, FREE_VERTEX_BYTES};
 use glam::{DMat3, DMat4, DVec3, Mat3};
 
@@ -78,26 +79,34 @@ impl Canvas<'_> {
             (Primitive::Mesh, _) => faces.extend(at.previous.map(|from| mesh_solid(&from, &m)).unwrap_or_default()),
             (Primitive::Template, None) => return Ok(()),
         }
-        let triangles: u64 = placed.iter().map(|(k, ..)| crate::geom::primitives::triangle_count(*k, self.opts.detail)).sum::<u64>() + faces.len() as u64;
-        self.built.objects += 1;
-        if triangles == 0 {
-            return Ok(());
-        }
-        self.budget.charge_primitive(triangles)?;
-        let downstream: u64 = placed.iter().map(|(k, ..)| self.opts.downstream_bytes[*k as usize]).sum::<u64>()
-            + 3 * faces.len() as u64 * self.opts.vertex_bytes;
-        let stored = AFFINE_INSTANCE_BYTES * placed.len() as u64 + 3 * FREE_VERTEX_BYTES * faces.len() as u64;
-        self.budget.reserve_memory(stored.saturating_add(downstream))?;
-        self.built.promised = self.built.promised.saturating_add(downstream);
-        for (kind, l, t) in placed {
-            self.built.scene.affine.push(AffineInstance {
+        let placed: Vec<AffineInstance> = placed
+            .into_iter()
+            .map(|(kind, l, t)| AffineInstance {
                 kind,
                 linear: Mat3::from_cols(l.x_axis.as_vec3(), l.y_axis.as_vec3(), l.z_axis.as_vec3()),
                 translation: t.as_vec3(),
                 colour,
                 class,
-            });
+            })
+            .collect();
+        let flat = |a: &AffineInstance| crate::geom::primitives::triangle_count(a.kind, self.opts.detail);
+        self.built.objects += 1;
+        if placed.iter().map(flat).sum::<u64>() + faces.len() as u64 == 0 {
+            return Ok(());
         }
+        // Under instanced output a repeated mesh costs a triangle and an
+        // instance's bytes after its first placement (`Tally`).
+        let (mut triangles, mut downstream) = (faces.len() as u64, 3 * faces.len() as u64 * self.opts.vertex_bytes);
+        for a in &placed {
+            let key = instancing::Placement::of_affine(a).map(|p| p.key);
+            let (t, b) = self.built.tally.cost(key, flat(a), self.opts.downstream_bytes[a.kind as usize]);
+            (triangles, downstream) = (triangles + t, downstream.saturating_add(b));
+        }
+        self.budget.charge_primitive(triangles)?;
+        let stored = AFFINE_INSTANCE_BYTES * placed.len() as u64 + 3 * FREE_VERTEX_BYTES * faces.len() as u64;
+        self.budget.reserve_memory(stored.saturating_add(downstream))?;
+        self.built.promised = self.built.promised.saturating_add(downstream);
+        self.built.scene.affine.extend(placed);
         for [a, b, c] in faces {
             let n = (b - a).cross(c - a);
             let Some(n) = n.try_normalize() else { continue };
@@ -115,8 +124,13 @@ fn bar(a: DVec3, b: DVec3, r: f64) -> Option<(PrimitiveKind, DMat3, DVec3)> {
     if !(d.length() > 0.0) || !(r > 0.0) {
         return None;
     }
-    let u = d.any_orthonormal_vector() * (2.0 * r);
-    let v = d.normalize().cross(u.normalize()) * (2.0 * r);
+    // `any_orthonormal_vector` needs a unit input: given `d` itself it gave a
+    // vector neither unit nor perpendicular, so bars were sheared and of
+    // uneven thickness (and had no TRS form for instancing).
+    let axis = d.normalize();
+    let u = axis.any_orthonormal_vector();
+    let v = axis.cross(u);
+    let (u, v) = (u * (2.0 * r), v * (2.0 * r));
     Some((PrimitiveKind::Box, DMat3::from_cols(d, u, v), (a + b) * 0.5))
 }
 
@@ -163,6 +177,22 @@ mod tests {
         for (i, (a, b)) in edges.iter().enumerate() {
             assert_eq!((*b - *a).length(), 1.0);
             assert!(edges[..i].iter().all(|e| e != &(*a, *b)));
+        }
+    }
+
+    #[test]
+    fn bars_are_square_and_perpendicular_to_their_edge() {
+        for (a, b) in [(DVec3::ZERO, DVec3::new(3.0, 0.5, -2.0)), (DVec3::ONE, DVec3::new(1.0, 1.0, 0.2)), (DVec3::ZERO, DVec3::new(0.0, 0.0, -4.0))] {
+            let (_, m, centre) = bar(a, b, 0.25).expect("a bar");
+            assert_eq!(centre, (a + b) * 0.5);
+            assert!((m.x_axis - (b - a)).length() < 1e-12);
+            for axis in [m.y_axis, m.z_axis] {
+                assert!((axis.length() - 0.5).abs() < 1e-12, "{axis}");
+                assert!(axis.dot(m.x_axis).abs() < 1e-12);
+            }
+            assert!(m.y_axis.dot(m.z_axis).abs() < 1e-12);
+            // Right-handed, so the box keeps its outward winding.
+            assert!(m.determinant() > 0.0);
         }
     }
 

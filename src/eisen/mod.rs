@@ -114,5 +114,6 @@ pub(crate) fn build_options(req: &BuildRequest<'_>, line_radius: f64) -> BuildOp
         line_radius,
         downstream_bytes: PrimitiveKind::ALL.map(|k| cost.bytes(primitives::vertex_count(k, req.detail), primitives::triangle_count(k, req.detail))),
         vertex_bytes: cost.bytes(1, 0) + cost.bytes(0, 1).div_ceil(3),
+        per_instance: cost.per_instance,
     }
 }

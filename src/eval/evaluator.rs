@@ -23,6 +23,7 @@ use crate::geom::{primitives, sweep};
 use crate::lang::ir::{Program, RuleTransform};
 use crate::model::animation::Rig;
 use crate::model::scene::Scene;
+use crate::model::instancing::{Placement, Tally};
 use crate::model::{Downstream, EvalError};
 
 /// Options for one evaluation that do not come from the source.
@@ -46,8 +47,11 @@ pub struct EvalOptions {
 /// The memory promised for later stages by `scene`'s instances under `options`.
 pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
     let d = &options.downstream;
+    // The machine's charges replayed: primitives and shapes are tallied apart.
+    let mut tally = Tally::new(d.per_instance);
     let instances = scene.instances.iter().fold(0u64, |acc, i| {
-        acc.saturating_add(d.bytes(primitives::vertex_count(i.kind, options.detail), primitives::triangle_count(i.kind, options.detail)))
+        let bytes = d.bytes(primitives::vertex_count(i.kind, options.detail), primitives::triangle_count(i.kind, options.detail));
+        acc.saturating_add(tally.cost(Placement::of_instance(i).map(|p| p.key), 0, bytes).1)
     });
     let lines = scene.lines.iter().fold(0u64, |acc, l| {
         let n = line_sides(scene, l.profile, options.detail);
@@ -57,7 +61,7 @@ pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
     let vertices = d.bytes(1, 1).saturating_mul(scene.vertices.len() as u64);
     let shapes = scene.shape_instances.iter().fold(0u64, |acc, s| {
         let (v, t) = scene.shapes.get(s.shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, (p.indices.len() / 3) as u64));
-        acc.saturating_add(d.bytes(v, t))
+        acc.saturating_add(tally.cost(Placement::of_shape(s).map(|p| p.key), 0, d.bytes(v, t)).1)
     });
     instances.saturating_add(lines).saturating_add(vertices).saturating_add(shapes)
 }

@@ -18,6 +18,7 @@ use crate::geom::primitives;
 use crate::lang::ir::{Adjust, GroupId, Item, Iterate, PrimitiveKind, Program, RuleTransform, Target};
 use crate::model::animation::Timeline;
 use crate::model::scene::{Instance, Scene, ShapeInstance, INSTANCE_BYTES, SHAPE_INSTANCE_BYTES};
+use crate::model::instancing::{Placement, Tally};
 use crate::model::{Downstream, EvalError};
 use glam::DVec3;
 use std::collections::HashMap;
@@ -146,6 +147,8 @@ pub(super) struct Machine<'p, 'b> {
     /// call stack): a rule already here is a cycle, and the chain's length
     /// is bounded so the call stack is (see `paths::MAX_CAPTURE_NESTING`).
     pub(super) capturing: Vec<GroupId>,
+    /// What each placement costs when the output instances repeated meshes.
+    pub(super) tally: Tally,
 }
 
 impl<'p, 'b> Machine<'p, 'b> {
@@ -168,6 +171,7 @@ impl<'p, 'b> Machine<'p, 'b> {
             track_index: HashMap::new(),
             mesh_shape: HashMap::new(),
             capturing: Vec::new(),
+            tally: Tally::new(ev.cost.per_instance),
         }
     }
 
@@ -307,28 +311,32 @@ impl<'p, 'b> Machine<'p, 'b> {
                     _ => return Ok(()),
                 };
                 let (v, t) = self.scene.shapes.get(shape as usize).map_or((0, 0), |p| (p.positions.len() as u64, (p.indices.len() / 3) as u64));
-                self.budget.charge_triangles(t)?;
-                self.budget.reserve_memory(SHAPE_INSTANCE_BYTES.saturating_add(self.ev.cost.bytes(v, t)))?;
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
-                self.scene.shape_instances.push(ShapeInstance { shape, frame: ctx.frame, colour: colour.map(|c| c.clamp(0.0, 1.0) as f32) });
+                let placed = ShapeInstance { shape, frame: ctx.frame, colour: colour.map(|c| c.clamp(0.0, 1.0) as f32) };
+                let (t, bytes) = self.tally.cost(Placement::of_shape(&placed).map(|p| p.key), t, self.ev.cost.bytes(v, t));
+                self.budget.charge_triangles(t)?;
+                self.budget.reserve_memory(SHAPE_INSTANCE_BYTES.saturating_add(bytes))?;
+                self.scene.shape_instances.push(placed);
                 self.tag(|r| &mut r.shape_instance_bone, ctx.bone)?;
                 self.set_terminal(ctx.ns, ctx.frame);
                 Ok(())
             }
             Target::Primitive(kind) => {
                 self.budget.charge_step()?;
-                self.budget.charge_primitive(self.ev.tris[kind as usize])?;
-                self.budget.reserve_memory(self.ev.downstream[kind as usize])?;
+                let mut colour = ctx.colour;
+                colour[3] += 1.0;
+                let placed = Instance::new(kind, &ctx.frame, colour);
+                let (t, bytes) = self.tally.cost(Placement::of_instance(&placed).map(|p| p.key), self.ev.tris[kind as usize], self.ev.downstream[kind as usize]);
+                self.budget.charge_primitive(t)?;
+                self.budget.reserve_memory(bytes)?;
                 let instances = &mut self.scene.instances;
                 if instances.len() == instances.capacity() {
                     let grow = instances.capacity().max(64);
                     self.budget.reserve_memory(grow as u64 * INSTANCE_BYTES)?;
                     instances.reserve_exact(grow);
                 }
-                let mut colour = ctx.colour;
-                colour[3] += 1.0;
-                instances.push(Instance::new(kind, &ctx.frame, colour));
+                instances.push(placed);
                 self.tag(|r| &mut r.instance_bone, ctx.bone)?;
                 self.set_terminal(ctx.ns, ctx.frame);
                 Ok(())

@@ -38,7 +38,7 @@ use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 
 pub(super) use super::gltf_buffer::{base64, check_mesh};
-pub use super::gltf_instanced::{write_instanced, InstanceSink, EXT_INSTANCING};
+pub use super::gltf_instanced::{write_instanced, InstanceData, InstanceLayout, InstanceSink, EXT_INSTANCING};
 
 /// Writes a binary glTF (.glb): 12-byte header, JSON chunk padded with spaces,
 /// BIN chunk padded with zeros (omitted when there is no geometry).

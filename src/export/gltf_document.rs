@@ -58,12 +58,31 @@ struct Instancing {
     attributes: InstanceAttributes,
 }
 
-/// The per-instance attributes rulemesh writes (rigid instances: no SCALE).
+/// The per-instance attributes rulemesh writes: rigid L-system segments
+/// have no SCALE and carry their colour in their mesh; placed primitives
+/// have SCALE and `_COLOR_0` (float RGB, which three.js reads into
+/// `InstancedMesh.instanceColor`).
 #[derive(serde::Serialize)]
 #[serde(rename_all = "UPPERCASE")]
 struct InstanceAttributes {
     translation: u32,
     rotation: u32,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    scale: Option<u32>,
+    #[serde(rename = "_COLOR_0", skip_serializing_if = "Option::is_none")]
+    colour: Option<u32>,
+}
+
+/// The accessors of one instanced node's attributes.
+pub(super) struct InstanceAccessors {
+    /// TRANSLATION.
+    pub(super) translation: Index<json::Accessor>,
+    /// ROTATION.
+    pub(super) rotation: Index<json::Accessor>,
+    /// SCALE, when written.
+    pub(super) scale: Option<Index<json::Accessor>>,
+    /// `_COLOR_0`, when written.
+    pub(super) colour: Option<Index<json::Accessor>>,
 }
 
 /// One extension object keyed by its name, for gltf-json's extension maps.
@@ -245,9 +264,11 @@ impl Doc {
     }
 
     /// Draws `node`'s mesh once per instance with `EXT_mesh_gpu_instancing`,
-    /// reading each instance's translation and rotation from the accessors.
-    pub(super) fn instance(&mut self, node: Index<json::Node>, translation: Index<json::Accessor>, rotation: Index<json::Accessor>) -> Result<(), ExportError> {
-        let ext = Instancing { attributes: InstanceAttributes { translation: translation.value() as u32, rotation: rotation.value() as u32 } };
+    /// reading each instance's attributes from `a`.
+    pub(super) fn instance(&mut self, node: Index<json::Node>, a: InstanceAccessors) -> Result<(), ExportError> {
+        let index = |i: Index<json::Accessor>| i.value() as u32;
+        let attributes = InstanceAttributes { translation: index(a.translation), rotation: index(a.rotation), scale: a.scale.map(index), colour: a.colour.map(index) };
+        let ext = Instancing { attributes };
         let others = extension(EXT_INSTANCING, ext)?;
         let Some(n) = self.root.nodes.get_mut(node.value()) else {
             return Err(super::gltf_buffer::invalid("model", "an instanced node is missing from the document"));

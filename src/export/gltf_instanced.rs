@@ -1,13 +1,16 @@
-//! The GPU-instanced glTF writer: the plain document with each mesh's
-//! per-instance TRANSLATION and ROTATION data appended to the buffer and
-//! `EXT_mesh_gpu_instancing` on its node. Instances are streamed straight
-//! into the output, so memory stays at the output size; this is the writer
-//! behind `format=glb`/`gltf` of instancing L-systems (`super::instanced`).
+//! The GPU-instanced glTF writer: the plain document with each instanced
+//! mesh's per-instance TRANSLATION and ROTATION (and SCALE and `_COLOR_0`
+//! where the layout has them) appended to the buffer and
+//! `EXT_mesh_gpu_instancing` on its node; meshes placed once stay plain in
+//! the same document. Instances are streamed straight into the output, so
+//! memory stays at the output size; this is the writer behind
+//! `format=glb`/`gltf` of instancing L-systems and of every scene with a
+//! repeated mesh (`super::instanced`).
 
 use super::gltf_buffer::{
     accessor, align4, base64_len, find, invalid, place, view, write_buffer, Base64, Sink, Tracks, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
 };
-use super::gltf_document::plain;
+use super::gltf_document::{plain, InstanceAccessors};
 pub use super::gltf_document::EXT_INSTANCING;
 use super::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
@@ -15,40 +18,93 @@ use crate::geom::NamedMesh;
 use gltf_json as json;
 use json::accessor::{ComponentType, Type};
 
-/// Receives one instance: the index of its mesh, its translation and its unit rotation (x, y, z, w).
-pub type InstanceSink<'s> = dyn FnMut(usize, [f32; 3], [f32; 4]) + 's;
+/// Which per-instance attributes a document carries besides TRANSLATION
+/// and ROTATION: SCALE (per-axis, positive) and `_COLOR_0` (float RGB, the
+/// attribute three.js's GLTFLoader reads into `InstancedMesh.instanceColor`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct InstanceLayout {
+    /// Write SCALE.
+    pub scale: bool,
+    /// Write `_COLOR_0`.
+    pub colour: bool,
+}
+
+impl InstanceLayout {
+    /// Bytes one instance takes in the buffer.
+    pub const fn bytes(self) -> u64 {
+        12 + 16 + if self.scale { 12 } else { 0 } + if self.colour { 12 } else { 0 }
+    }
+}
+
+/// One instance as written (SCALE and colour only where the layout has them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InstanceData {
+    /// Translation.
+    pub translation: [f32; 3],
+    /// Unit rotation (x, y, z, w).
+    pub rotation: [f32; 4],
+    /// Per-axis scale.
+    pub scale: [f32; 3],
+    /// Linear RGB.
+    pub colour: [f32; 3],
+}
+
+/// Receives one instance: the index of its mesh and its data.
+pub type InstanceSink<'s> = dyn FnMut(usize, &InstanceData) + 's;
+
+/// Where one instanced mesh's per-instance data lives in the buffer.
+#[derive(Debug, Clone, Copy)]
+struct Region {
+    translation: u64,
+    rotation: u64,
+    scale: u64,
+    colour: u64,
+}
 
 /// Writes an instanced glTF (`glb`: binary, else JSON with an embedded
-/// buffer): each of `meshes` once, drawn `counts[i]` times through
-/// `EXT_mesh_gpu_instancing` (listed in `extensionsUsed` and
-/// `extensionsRequired`) with per-instance TRANSLATION (float VEC3) and
-/// ROTATION (float VEC4) accessors. Instances are rigid, so there is no SCALE.
+/// buffer): each of `meshes` with `counts[i] > 0` once, drawn `counts[i]`
+/// times through `EXT_mesh_gpu_instancing` (listed in `extensionsUsed` and
+/// `extensionsRequired`) with per-instance TRANSLATION (float VEC3),
+/// ROTATION (float VEC4) and, as `layout` says, SCALE (float VEC3) and
+/// `_COLOR_0` (float VEC3); the meshes with `counts[i] == 0` are plain.
 ///
 /// The document is the plain one ([`write_glb`]'s layout) with the instance
 /// data appended to the buffer. `feed` hands every instance to its sink, in
 /// any order; each one is written straight into the output at its mesh's
 /// next slot, so memory stays at the output size however many there are.
-/// Fails with [`ExportError::InvalidMesh`] if `feed` gives other counts.
+/// Fails with [`ExportError::InvalidMesh`] if `feed` gives other counts or
+/// an instanced mesh has no triangles.
 pub fn write_instanced(
     meshes: &[NamedMesh],
     counts: &[u64],
+    layout: InstanceLayout,
     meta: &ExportMeta,
     glb: bool,
     budget: &mut Budget,
     feed: &mut dyn FnMut(&mut InstanceSink<'_>),
 ) -> Result<Vec<u8>, ExportError> {
     let (placed, geometry_len) = place(meshes)?;
-    if placed.len() != meshes.len() || counts.len() != meshes.len() || counts.iter().any(|&c| c == 0) {
-        return Err(invalid("model", "every instanced mesh needs triangles and at least one instance"));
+    let instanced = counts.iter().filter(|&&c| c > 0).count();
+    if counts.len() != meshes.len() || instanced == 0 || placed.iter().filter(|(_, p)| counts[p.mesh] > 0).count() != instanced {
+        return Err(invalid("model", "every instanced mesh needs triangles, and at least one mesh instances"));
     }
-    // Instance regions: translations then rotations per mesh, after the geometry.
-    let mut regions = Vec::with_capacity(counts.len());
+    // Instance regions after the geometry: per instanced mesh, translations,
+    // rotations, then scales and colours when written.
+    let mut regions = vec![None; counts.len()];
     let mut end = align4(geometry_len);
-    for &c in counts {
-        let t = end;
-        let r = t.saturating_add(c.saturating_mul(12));
-        end = r.saturating_add(c.saturating_mul(16));
-        regions.push((t, r));
+    for (slot, &c) in regions.iter_mut().zip(counts) {
+        if c == 0 {
+            continue;
+        }
+        let mut next = |bytes: u64| {
+            let at = end;
+            end = end.saturating_add(c.saturating_mul(bytes));
+            at
+        };
+        let (translation, rotation) = (next(12), next(16));
+        let scale = if layout.scale { next(12) } else { 0 };
+        let colour = if layout.colour { next(12) } else { 0 };
+        *slot = Some(Region { translation, rotation, scale, colour });
     }
     if end > MAX_BYTES {
         return Err(ExportError::TooLarge { format: "glTF", detail: format!("buffer of {end} bytes exceeds the 4 GiB limit") });
@@ -57,12 +113,26 @@ pub fn write_instanced(
     let (mut doc, nodes, Some(buffer)) = plain(&placed, end, &Tracks::default(), meta, uri) else {
         return Err(invalid("model", "an instanced model needs a buffer"));
     };
-    for ((&c, &(t, r)), &node) in counts.iter().zip(&regions).zip(&nodes) {
-        let tv = doc.root.push(view(buffer, t, 12 * c, None));
-        let rv = doc.root.push(view(buffer, r, 16 * c, None));
-        let ta = doc.root.push(accessor(tv, c as usize, ComponentType::F32, Type::Vec3, false));
-        let ra = doc.root.push(accessor(rv, c as usize, ComponentType::F32, Type::Vec4, false));
-        doc.instance(node, ta, ra)?;
+    for ((_, p), &node) in placed.iter().zip(&nodes) {
+        let (c, Some(region)) = (counts[p.mesh], regions[p.mesh]) else { continue };
+        // Views, then accessors, in attribute order (an L-system's documents
+        // keep the bytes they had before SCALE and colour existed).
+        let attributes: Vec<(u64, u64)> =
+            [Some((region.translation, 12)), Some((region.rotation, 16)), layout.scale.then_some((region.scale, 12)), layout.colour.then_some((region.colour, 12))]
+                .into_iter()
+                .flatten()
+                .collect();
+        let views: Vec<_> = attributes.iter().map(|&(at, size)| doc.root.push(view(buffer, at, size * c, None))).collect();
+        let mut accessors = views.iter().zip(&attributes).map(|(&v, &(_, size))| {
+            let kind = if size == 16 { Type::Vec4 } else { Type::Vec3 };
+            doc.root.push(accessor(v, c as usize, ComponentType::F32, kind, false))
+        }).collect::<Vec<_>>().into_iter();
+        let (Some(translation), Some(rotation)) = (accessors.next(), accessors.next()) else {
+            return Err(invalid("model", "instance accessors missing"));
+        };
+        let scale = if layout.scale { accessors.next() } else { None };
+        let colour = if layout.colour { accessors.next() } else { None };
+        doc.instance(node, InstanceAccessors { translation, rotation, scale, colour })?;
     }
     let json_bytes = doc.finish(meta)?.to_vec()?;
     let bin_len = end as usize;
@@ -96,8 +166,14 @@ pub fn write_instanced(
     let mut overflow = false;
     {
         let bin = &mut out[bin_at..];
-        feed(&mut |mesh, t, r| {
-            let (Some(n), Some(&c), Some(&(to, ro))) = (written.get_mut(mesh), counts.get(mesh), regions.get(mesh)) else {
+        let mut put = |at: u64, values: &[f32]| {
+            for (k, v) in values.iter().enumerate() {
+                let i = at as usize + 4 * k;
+                bin[i..i + 4].copy_from_slice(&v.to_le_bytes());
+            }
+        };
+        feed(&mut |mesh, d| {
+            let (Some(n), Some(&c), Some(Some(r))) = (written.get_mut(mesh), counts.get(mesh), regions.get(mesh)) else {
                 overflow = true;
                 return;
             };
@@ -105,12 +181,13 @@ pub fn write_instanced(
                 overflow = true;
                 return;
             }
-            let (ta, ra) = ((to + 12 * *n) as usize, (ro + 16 * *n) as usize);
-            for (k, v) in t.iter().enumerate() {
-                bin[ta + 4 * k..ta + 4 * k + 4].copy_from_slice(&v.to_le_bytes());
+            put(r.translation + 12 * *n, &d.translation);
+            put(r.rotation + 16 * *n, &d.rotation);
+            if layout.scale {
+                put(r.scale + 12 * *n, &d.scale);
             }
-            for (k, v) in r.iter().enumerate() {
-                bin[ra + 4 * k..ra + 4 * k + 4].copy_from_slice(&v.to_le_bytes());
+            if layout.colour {
+                put(r.colour + 12 * *n, &d.colour);
             }
             *n += 1;
         });

@@ -1,13 +1,80 @@
-//! Instanced glTF of an object-instancing hierarchy: one mesh per (leaf
-//! shape, colour), drawn once per leaf with `EXT_mesh_gpu_instancing`, so
-//! the output grows with the distinct shapes and the leaf count, never with
-//! the triangles of the expansion.
+//! Instanced glTF (`EXT_mesh_gpu_instancing`), so the output grows with the
+//! distinct meshes and the placements, never with the triangles of the
+//! expansion:
+//! * of an object-instancing hierarchy ([`write_instanced`], L-systems): one
+//!   mesh per (leaf shape, colour), drawn once per leaf;
+//! * of a flat scene ([`write_scene`], every other language): each mesh
+//!   placed more than once ([`Plan`]) written once and drawn per placement
+//!   with its translation, rotation, per-axis scale and colour, beside the
+//!   plain meshes of everything else.
 
+use super::gltf::{InstanceData, InstanceLayout};
 use super::{ExportError, ExportMeta};
 use crate::core::Budget;
 use crate::geom::mesh::mesh_bytes;
 use crate::geom::{Mesh, NamedMesh};
-use crate::model::Hierarchy;
+use crate::model::instancing::{self, MeshKey, Plan, Source};
+use crate::model::{Hierarchy, Scene};
+
+/// The per-instance attributes of an instanced scene: placements scale per
+/// axis and each has its own colour.
+pub const SCENE_LAYOUT: InstanceLayout = InstanceLayout { scale: true, colour: true };
+
+/// Output bytes per instance of an instanced scene (what a front end
+/// promises per placement after a mesh's first).
+pub const SCENE_INSTANCE_BYTES: u64 = SCENE_LAYOUT.bytes();
+
+/// The name of an instanced scene's mesh (and of its material, when each
+/// mesh has its own): the class for a non-default EisenScript class (as its
+/// plain mesh is named), else the primitive's keyword or `shape-N`.
+fn mesh_name(key: &MeshKey, classes: &[String]) -> String {
+    match (classes.get(key.class as usize).filter(|c| key.class > 0 && !c.is_empty()), key.source) {
+        (Some(class), _) => class.clone(),
+        (None, Source::Primitive(kind)) => kind.name().to_ascii_lowercase(),
+        (None, Source::Shape(s)) => format!("shape-{s}"),
+    }
+}
+
+/// The meshes `plan` writes once, in its order: each prototype (mirrored
+/// where its key says) with white vertex colours, since every instance
+/// carries its own. Charged to `budget`; call before [`Plan::residual`]
+/// moves the scene's shapes out.
+pub fn prototypes(plan: &Plan, scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, ExportError> {
+    let mut out = Vec::with_capacity(plan.meshes().len());
+    for (key, _) in plan.meshes() {
+        let name = mesh_name(key, &scene.classes);
+        let p = instancing::prototype(key, scene, detail).ok_or_else(|| ExportError::InvalidMesh { name: name.clone(), detail: "no such shape".into() })?;
+        budget.reserve_memory(mesh_bytes(p.positions.len() as u64, p.indices.len() as u64 / 3))?;
+        let mesh = Mesh { colours: vec![[255; 4]; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
+        out.push(NamedMesh { name, mesh });
+    }
+    Ok(out)
+}
+
+/// Writes a flat scene as instanced glTF: the `prototypes` of `plan` (from
+/// [`prototypes`]), each drawn once per placement, then the `plain` meshes
+/// of the rest (the meshed [`Plan::residual`]). The placements are read
+/// from `scene` as `plan` walks it and written straight into the output.
+pub fn write_scene(
+    scene: &Scene,
+    plan: &Plan,
+    prototypes: Vec<NamedMesh>,
+    plain: Vec<NamedMesh>,
+    meta: &ExportMeta,
+    glb: bool,
+    budget: &mut Budget,
+) -> Result<Vec<u8>, ExportError> {
+    let mut counts: Vec<u64> = plan.meshes().iter().map(|m| m.1).collect();
+    counts.resize(counts.len() + plain.len(), 0);
+    let mut meshes = prototypes;
+    meshes.extend(plain);
+    super::gltf::write_instanced(&meshes, &counts, SCENE_LAYOUT, meta, glb, budget, &mut |sink| {
+        plan.walk(scene, &mut |slot, p| {
+            let [r, g, b, _] = p.colour.map(|c| f32::from(c) / 255.0);
+            sink(slot, &InstanceData { translation: p.translation.to_array(), rotation: p.rotation.to_array(), scale: p.scale.to_array(), colour: [r, g, b] });
+        });
+    })
+}
 
 /// Writes `h` as instanced glTF: one mesh per (leaf shape, colour), one
 /// instance per leaf, transforms written as the hierarchy is walked;
@@ -34,10 +101,12 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, provenance: Option
         // writer needs a buffer to point its instances into (fuzz finding).
         return if glb { super::gltf::write_glb(&[], &meta, budget) } else { super::gltf::write_gltf(&[], &meta, budget) };
     }
-    let bytes = super::gltf::write_instanced(&meshes, &counts, &meta, glb, budget, &mut |sink| {
+    let rigid = InstanceLayout::default();
+    let bytes = super::gltf::write_instanced(&meshes, &counts, rigid, &meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };
-            sink(mesh, leaf.translation.as_vec3().to_array(), leaf.rotation.as_quat().normalize().to_array());
+            let rotation = leaf.rotation.as_quat().normalize().to_array();
+            sink(mesh, &InstanceData { translation: leaf.translation.as_vec3().to_array(), rotation, scale: [1.0; 3], colour: [1.0; 3] });
         })
     })?;
     Ok(bytes)

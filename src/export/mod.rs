@@ -130,12 +130,15 @@ impl Format {
     }
 }
 
-/// How an instanced model (an L-system that instances) is written as glTF.
+/// How glb/gltf write a model whose meshes repeat (an instancing L-system,
+/// or any scene that places a mesh more than once).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
 pub enum Instancing {
-    /// One mesh per distinct segment look, drawn per instance with
-    /// `EXT_mesh_gpu_instancing` (a required extension).
+    /// Each repeated mesh (an L-system's segment look; a primitive kind,
+    /// class and mirroring, or a `mesh` shape, placed more than once) written
+    /// once and drawn per instance with `EXT_mesh_gpu_instancing` (a
+    /// required extension); the rest plain (docs/service.md, *GPU instancing*).
     #[default]
     Gpu,
     /// The same geometry expanded into plain meshes, for loaders without the extension.
@@ -240,7 +243,7 @@ pub struct ExportOptions {
     /// Scale and move the model into a unit box centred at the origin (every
     /// format): its longest side becomes 1, its bounding box centre the origin.
     pub fit_unit_box: bool,
-    /// `glb`/`gltf` of instanced L-systems: GPU instancing or the flat fallback.
+    /// `glb`/`gltf`: GPU instancing of repeated meshes or the flat fallback.
     pub instancing: Instancing,
     /// Printable output: one watertight solid in millimetres (`docs/print.md`).
     /// A pipeline stage before export ([`crate::pipeline`]); exporters ignore it.

@@ -29,14 +29,10 @@ pub enum MeshLayout {
     PerKind,
 }
 
-/// Whether an instance yields usable geometry. Instances with scale 0 collapse
-/// to a point (every triangle degenerate), and non-finite transforms would
-/// poison bounds and normals, so both are skipped rather than written.
+/// Whether an instance yields usable geometry ([`Instance::is_drawable`]:
+/// scale 0 and non-finite transforms are skipped rather than written).
 pub fn is_drawable(instance: &Instance) -> bool {
-    instance.scale != 0.0
-        && instance.scale.is_finite()
-        && instance.translation.is_finite()
-        && instance.rotation.is_finite()
+    instance.is_drawable()
 }
 
 /// Transforms every instance's prototype into world space and merges them,

@@ -9,6 +9,7 @@ pub mod camera;
 pub mod error;
 pub mod graph;
 pub mod hierarchy;
+pub mod instancing;
 pub mod request;
 pub mod scene;
 

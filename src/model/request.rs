@@ -16,6 +16,12 @@ pub struct Downstream {
     pub per_vertex: u64,
     /// Bytes per triangle.
     pub per_triangle: u64,
+    /// Bytes per GPU instance when the output writes a mesh placed more
+    /// than once only once (instanced glTF), so the placements after a
+    /// mesh's first are charged as instances, not as triangles
+    /// ([`Tally`](crate::model::instancing::Tally)); `None` when every
+    /// placement is tessellated.
+    pub per_instance: Option<u64>,
 }
 
 impl Downstream {

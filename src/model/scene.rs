@@ -39,6 +39,14 @@ impl Instance {
         }
     }
 
+    /// Whether the instance yields usable geometry. Instances with scale 0
+    /// collapse to a point (every triangle degenerate), and non-finite
+    /// transforms would poison bounds and normals, so both are skipped
+    /// rather than written, flat or instanced.
+    pub fn is_drawable(&self) -> bool {
+        self.scale != 0.0 && self.scale.is_finite() && self.translation.is_finite() && self.rotation.is_finite()
+    }
+
     /// The instance's placement as a frame (in f64, for composing).
     pub fn frame(&self) -> Frame {
         Frame {

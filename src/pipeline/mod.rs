@@ -20,7 +20,7 @@ use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instan
 use crate::geom;
 use crate::lang::{self, Language};
 use crate::mesh::{self, MeshLayout};
-use crate::model::{BuildError, BuildRequest, Downstream, EvalError, HierarchyUse, Model};
+use crate::model::{instancing, BuildError, BuildRequest, Downstream, EvalError, HierarchyUse, Model};
 use crate::print::PrintError;
 use std::collections::BTreeMap;
 use std::time::Duration;
@@ -272,13 +272,26 @@ fn hierarchy_use(req: &RenderRequest) -> HierarchyUse {
     }
 }
 
+/// Whether glb/gltf output writes each repeated mesh once with
+/// `EXT_mesh_gpu_instancing` (`instancing: gpu`, the default): plain glTF
+/// only — compact (welded, quantised, meshopt), fitted and printed output
+/// is flat.
+fn gpu_instancing(req: &RenderRequest) -> bool {
+    let opts = &req.export_options;
+    matches!(req.format, Format::Glb | Format::Gltf) && opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled
+}
+
 /// Bytes the mesh buffers and the encoded output need per vertex and per
-/// triangle (both are linear in the counts beyond a fixed `overhead`).
+/// triangle (both are linear in the counts beyond a fixed `overhead`), and
+/// per instance when the output instances repeated meshes.
 fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
     let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
+    // A .gltf holds its buffer as base64 (4/3) after building it raw.
+    let per_instance = export::instanced::SCENE_INSTANCE_BYTES * if req.format == Format::Gltf { 3 } else { 1 };
     Downstream {
         per_vertex: geom::mesh::mesh_bytes(1, 0).saturating_add(est(1, 0)),
         per_triangle: geom::mesh::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+        per_instance: gpu_instancing(req).then_some(per_instance),
     }
 }
 
@@ -386,10 +399,9 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
 fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     let opts = &req.export_options;
     if let Some(h) = model.hierarchy.take() {
-        let gpu = opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled;
         let bytes = match req.format {
             Format::Scene => Some(export::scene::write_scene(&h, Some(&provenance), budget)?),
-            Format::Glb | Format::Gltf if gpu => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, Some(&provenance), budget)?),
+            Format::Glb | Format::Gltf if gpu_instancing(req) => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, Some(&provenance), budget)?),
             _ => None,
         };
         match bytes {
@@ -398,6 +410,13 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
                 return Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated));
             }
             None => model.scene = h.expand(req.detail, budget)?,
+        }
+    }
+    // Animation and camera paths play in a node graph, which is written flat.
+    let graph_route = (model.scene.rig.is_some() || model.scene.camera.as_ref().is_some_and(|c| c.is_path())) && graph_capable(req);
+    if gpu_instancing(req) && !graph_route {
+        if let Some(out) = instanced_scene(&mut model, &provenance, req, budget, clock)? {
+            return Ok(out);
         }
     }
     let scene = &model.scene;
@@ -414,8 +433,14 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
             return Ok(summary(bytes, &model, report.triangles, scene.truncated));
         }
         (solid, None, None)
-    } else if (scene.rig.is_some() || scene.camera.as_ref().is_some_and(|c| c.is_path())) && graph_capable(req) {
+    } else if graph_route {
         let (meshes, graph) = mesh::build_with_graph(scene, req.detail, req.layout, budget)?;
+        if gpu_instancing(req) {
+            // The front end charged repeats as instances, but a node graph
+            // is written flat: its triangles meet the limit here.
+            let drawn: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+            budget.check_total(Limit::Triangles, drawn)?;
+        }
         (meshes, Some(graph), None)
     } else {
         let (meshes, cut) = mesh::build_meshes_until(scene, req.detail, req.layout, req.on_limit, budget)?;
@@ -447,20 +472,70 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         clock.lap(Phase::Preview);
         (export::png::write_png(&image, &export::png::text_chunks(meta.provenance.as_ref()), budget)?, drawn, truncated)
     } else {
-        match export::export_with(req.format, &meshes, &meta, opts, budget) {
-            Ok(bytes) => (bytes, drawn, truncated),
-            Err(ExportError::Limit(e)) if e.limit == Limit::Deadline && req.on_limit == OnLimit::Truncate => {
-                // Too late to write what was made: under `truncate` the answer is
-                // an empty model that says why, still (nearly) within the deadline.
-                budget.lift_deadline();
-                let meta = ExportMeta { truncated: true, graph: None, ..meta };
-                (export::export_with(req.format, &[], &meta, opts, budget)?, 0, truncated.or(Some(e)))
-            }
-            Err(e) => return Err(e.into()),
-        }
+        let written = export::export_with(req.format, &meshes, &meta, opts, budget);
+        empty_if_late(written, drawn, truncated, meta, req, budget)?
     };
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
+}
+
+/// The written model with its triangles and truncation, or — when writing
+/// failed at the deadline under `truncate` — too late to write what was
+/// made: the answer is then an empty model that says why, still (nearly)
+/// within the deadline.
+fn empty_if_late(
+    written: Result<Vec<u8>, ExportError>,
+    drawn: u64,
+    truncated: Option<LimitExceeded>,
+    meta: ExportMeta,
+    req: &RenderRequest,
+    budget: &mut Budget,
+) -> Result<(Vec<u8>, u64, Option<LimitExceeded>), RenderError> {
+    match written {
+        Ok(bytes) => Ok((bytes, drawn, truncated)),
+        Err(ExportError::Limit(e)) if e.limit == Limit::Deadline && req.on_limit == OnLimit::Truncate => {
+            budget.lift_deadline();
+            let meta = ExportMeta { truncated: true, graph: None, ..meta };
+            Ok((export::export_with(req.format, &[], &meta, &req.export_options, budget)?, 0, truncated.or(Some(e))))
+        }
+        Err(e) => Err(e.into()),
+    }
+}
+
+/// A flat scene as GPU-instanced glTF: every mesh placed more than once
+/// written once and drawn per placement, the rest meshed plain beside it.
+/// `None` when no mesh repeats (the plain writer then makes the same bytes
+/// a flat request would).
+fn instanced_scene(model: &mut Model, provenance: &Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<Option<RenderOutput>, RenderError> {
+    let plan = instancing::Plan::new(&model.scene);
+    if plan.is_empty() {
+        return Ok(None);
+    }
+    let prototypes = export::instanced::prototypes(&plan, &model.scene, req.detail, budget)?;
+    let residual = plan.residual(&mut model.scene, budget)?;
+    let (meshes, cut) = mesh::build_meshes_until(&residual, req.detail, req.layout, req.on_limit, budget)?;
+    budget.release_memory(instancing::residual_bytes(instancing::residual_counts(&residual)));
+    drop(residual);
+    clock.lap(Phase::Mesh);
+    budget.set_stage_share(None);
+    let truncated = model.scene.truncated.or(cut);
+    let instanced = plan.meshes().iter().zip(&prototypes).map(|((_, n), p)| n.saturating_mul(p.mesh.triangle_count() as u64));
+    let drawn = meshes.iter().map(|m| m.mesh.triangle_count() as u64).chain(instanced).fold(0u64, u64::saturating_add);
+    let scene = &model.scene;
+    let meta = ExportMeta {
+        background: scene.background,
+        truncated: truncated.is_some(),
+        graph: None,
+        material_per_mesh: !scene.classes.is_empty(),
+        camera: scene.camera.clone(),
+        provenance: Some(provenance.clone()),
+    };
+    let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| {
+        export::instanced::write_scene(scene, &plan, prototypes, meshes, &meta, req.format == Format::Glb, budget)
+    });
+    let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req, budget)?;
+    clock.lap(Phase::Export);
+    Ok(Some(summary(bytes, model, triangles, truncated)))
 }
 
 /// The output of a render whose bytes are written (times are filled in by [`render`]).

@@ -155,8 +155,9 @@ pub struct RenderBody {
     pub compress: Option<String>,
     /// `"unit"`: scale and move the model into a unit box centred at the origin; `"none"` (default) leaves it.
     pub fit: Option<String>,
-    /// `glb`/`gltf` of instanced L-systems: `"gpu"` (default, `EXT_mesh_gpu_instancing`)
-    /// or `"flat"` (plain meshes, for loaders without the extension).
+    /// `glb`/`gltf`: `"gpu"` (default: each mesh placed more than once is
+    /// written once, `EXT_mesh_gpu_instancing`) or `"flat"` (plain meshes,
+    /// for loaders without the extension).
     pub instancing: Option<String>,
     /// Merge every part into one watertight solid in millimetres for 3D printing (default false).
     pub print: Option<bool>,

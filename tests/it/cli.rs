@@ -23,7 +23,8 @@ fn position_count(bytes: &[u8]) -> u64 {
 #[test]
 fn params_override_defaults_and_are_checked() {
     let render = |extra: &[&str]| {
-        let mut args = vec!["render", "-", "--language", "mdg", "--format", "glb"];
+        // Flat: the test counts the boxes' vertices.
+        let mut args = vec!["render", "-", "--language", "mdg", "--format", "glb", "--instancing", "flat"];
         args.extend_from_slice(extra);
         run(&args, Some(PARAM_SRC.as_bytes()))
     };
@@ -54,7 +55,8 @@ fn params_override_defaults_and_are_checked() {
 #[test]
 fn per_kind_layout_gives_one_mesh_per_primitive_kind() {
     let src = b"startshape A\nrule A { BOX {} SPHERE { x 2 } BOX { x 4 } CONE { x 6 } }";
-    let out = run(&["render", "-", "--language", "mdg", "--layout", "per-kind"], Some(src));
+    // Flat: instanced output would write the two boxes as one instanced mesh.
+    let out = run(&["render", "-", "--language", "mdg", "--layout", "per-kind", "--instancing", "flat"], Some(src));
     assert!(out.status.success());
     let json = glb_json(&out.stdout);
     let names: Vec<&str> = json["meshes"].as_array().expect("meshes").iter().map(|m| m["name"].as_str().expect("name")).collect();
@@ -63,7 +65,7 @@ fn per_kind_layout_gives_one_mesh_per_primitive_kind() {
     let root = &json["nodes"][json["scenes"][0]["nodes"][0].as_u64().expect("root") as usize];
     assert!(root.get("matrix").is_none() && root.get("translation").is_none());
     assert_eq!(root["children"].as_array().expect("children").len(), 3);
-    let merged = run(&["render", "-", "--language", "mdg"], Some(src));
+    let merged = run(&["render", "-", "--language", "mdg", "--instancing", "flat"], Some(src));
     assert_eq!(glb_json(&merged.stdout)["meshes"].as_array().expect("meshes").len(), 1);
 }
 
@@ -90,7 +92,7 @@ fn language_and_format_are_detected() {
 #[test]
 fn truncated_glb_is_marked_in_extras() {
     let src = b"startshape A\nrule A { 100 * {x 1} BOX {} }";
-    let out = run(&["render", "-", "--language", "mdg", "--max-primitives", "10", "--on-limit", "truncate"], Some(src));
+    let out = run(&["render", "-", "--language", "mdg", "--max-primitives", "10", "--on-limit", "truncate", "--instancing", "flat"], Some(src));
     assert!(out.status.success());
     let json = glb_json(&out.stdout);
     assert_eq!(json["scenes"][0]["extras"]["truncated"], serde_json::Value::Bool(true));

@@ -191,3 +191,18 @@ pub fn stderr_lines(child: &mut std::process::Child) -> std::sync::mpsc::Receive
     });
     rx
 }
+
+/// Runs the three.js harness on `files` in one browser session. Fails when
+/// Chromium or three is missing (scripts/test installs both): a skipped check
+/// would pass without checking anything.
+pub fn three_check(files: &[PathBuf]) -> Vec<serde_json::Value> {
+    let out = Command::new("node").arg(repo().join("scripts/three-check/check.mjs")).args(files).output().expect("node runs");
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_ne!(out.status.code(), Some(2), "the three.js check cannot run (scripts/test installs Chromium, three and playwright-core): {stderr}");
+    let reports: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("three-check line {l:?}: {e}")))
+        .collect();
+    assert_eq!(reports.len(), files.len(), "one report per file; stderr:\n{stderr}");
+    reports
+}

@@ -7,14 +7,16 @@
 //! Also: the same options on the HTTP route give the CLI's bytes, and
 //! `--fit-unit-box` puts the model in the unit box.
 
-use crate::common::{self, grammar_files, repo, run, tempdir, validate_gltf};
+use crate::common::{self, grammar_files, repo, run, tempdir, three_check, validate_gltf};
 use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
 /// The variants: file suffix and extra CLI arguments.
+/// "plain" is the flat file (`--instancing flat`): the compact variants are
+/// flat too, so it is what they shrink (the default instanced file of a
+/// grammar with repeated meshes is smaller still; tests/it/gpu_instancing.rs).
 const VARIANTS: &[(&str, &[&str])] = &[
-    ("plain", &[]),
+    ("plain", &["--instancing", "flat"]),
     ("weld", &["--weld"]),
     ("quant", &["--quantize"]),
     ("meshopt", &["--compress", "meshopt"]),
@@ -40,21 +42,6 @@ fn bin_len(bytes: &[u8]) -> usize {
 fn glb_json(bytes: &[u8]) -> Value {
     let jl = u32::from_le_bytes(bytes[12..16].try_into().expect("4 bytes")) as usize;
     serde_json::from_slice(&bytes[20..20 + jl]).expect("GLB JSON chunk")
-}
-
-/// Runs the three.js harness on `files` in one browser session. Fails when
-/// Chromium or three is missing (scripts/test installs both): a skipped check
-/// would pass without checking anything.
-fn three_check(files: &[PathBuf]) -> Vec<Value> {
-    let out = Command::new("node").arg(repo().join("scripts/three-check/check.mjs")).args(files).output().expect("node runs");
-    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_ne!(out.status.code(), Some(2), "the three.js check cannot run (scripts/test installs Chromium, three and playwright-core): {stderr}");
-    let reports: Vec<Value> = String::from_utf8_lossy(&out.stdout)
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("three-check line {l:?}: {e}")))
-        .collect();
-    assert_eq!(reports.len(), files.len(), "one report per file; stderr:\n{stderr}");
-    reports
 }
 
 #[test]

@@ -5,12 +5,16 @@
 //! "Colour").
 
 use crate::picture::Picture;
-use rulemesh::export::Format;
+use rulemesh::export::{ExportOptions, Format, Instancing};
 use rulemesh::lang::Language;
 use rulemesh::pipeline::{render, RenderRequest};
 
+/// The model as plain meshes (`instancing: flat`), whose vertex colours
+/// `glb_colours` reads (an instanced mesh is white, its colour per instance:
+/// tests/it/gpu_instancing.rs checks those against these).
 fn bytes(source: &str, format: Format) -> Vec<u8> {
-    let req = RenderRequest { language: Some(Language::Mdg), format, ..RenderRequest::default() };
+    let export_options = ExportOptions { instancing: Instancing::Flat, ..ExportOptions::default() };
+    let req = RenderRequest { language: Some(Language::Mdg), format, export_options, ..RenderRequest::default() };
     render(source.as_bytes(), &req).unwrap_or_else(|e| panic!("{source}: {e}")).bytes
 }
 

@@ -102,9 +102,10 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
     ];
     if matches!(language, Language::Lsystem | Language::Etol) {
         v.push(("scene", with(Format::Scene, &|_| {})));
-        v.push(("glb-flat", with(Format::Glb, &|r| r.export_options.instancing = Instancing::Flat)));
-        v.push(("gltf-flat", with(Format::Gltf, &|r| r.export_options.instancing = Instancing::Flat)));
     }
+    // glb/gltf instance repeated meshes by default; the flat files are pinned too.
+    v.push(("glb-flat", with(Format::Glb, &|r| r.export_options.instancing = Instancing::Flat)));
+    v.push(("gltf-flat", with(Format::Gltf, &|r| r.export_options.instancing = Instancing::Flat)));
     v
 }
 

@@ -51,14 +51,23 @@ fn infinite_recursion_stops_at_the_depth_limit() {
 
 #[test]
 fn a_billion_iterations_stop_at_a_limit() {
-    // Each box promises ~1.7 kB of mesh and output buffers, so under 64 MB
-    // the memory limit binds after ~38 000 boxes, during evaluation.
+    // Flat, each box promises ~1.7 kB of mesh and output buffers, so under
+    // 64 MB the memory limit binds after ~38 000 boxes, during evaluation.
     expect(
         "billion",
         b"startshape A\nrule A { 1000000000 * {x 1} BOX {} }",
-        &[],
+        &["--instancing", "flat"],
         3,
         "limit exceeded: memory (configured 64000000,",
+    );
+    // Instanced (the default), a repeated box costs 52 bytes of output and
+    // its stored placement, so the primitive limit binds first.
+    expect(
+        "billion-instanced",
+        b"startshape A\nrule A { 1000000000 * {x 1} BOX {} }",
+        &[],
+        3,
+        "limit exceeded: primitives (configured 200000, reached 200001)",
     );
     expect(
         "billion-primitives",
@@ -70,9 +79,17 @@ fn a_billion_iterations_stop_at_a_limit() {
     expect(
         "billion-triangles",
         b"startshape A\nrule A { 1000000000 * {x 1} BOX {} }",
-        &["--max-triangles", "12000"],
+        &["--max-triangles", "12000", "--instancing", "flat"],
         3,
         "limit exceeded: triangles (configured 12000, reached 12012)",
+    );
+    // Instanced: the box's 12 triangles once, then one per further box.
+    expect(
+        "billion-triangles-instanced",
+        b"startshape A\nrule A { 1000000000 * {x 1} BOX {} }",
+        &["--max-triangles", "12000"],
+        3,
+        "limit exceeded: triangles (configured 12000, reached 12001)",
     );
 }
 

@@ -20,6 +20,7 @@ mod docs;
 mod eisen;
 mod gallery;
 mod golden;
+mod gpu_instancing;
 mod grammars;
 mod hostile;
 mod icons;

@@ -26,7 +26,7 @@ fn built(src: &str, seed: u64) -> Built {
 /// What the builder makes of `src` with request seed `seed` under `limits`.
 fn built_under(src: &str, seed: u64, limits: Limits) -> Built {
     let script = parse(src.as_bytes(), &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-    let opts = BuildOptions { seed, detail: 8, on_limit: OnLimit::Error, line_radius: 0.01, downstream_bytes: [0; 9], vertex_bytes: 0 };
+    let opts = BuildOptions { seed, detail: 8, on_limit: OnLimit::Error, line_radius: 0.01, downstream_bytes: [0; 9], vertex_bytes: 0, per_instance: None };
     let mut budget = rulemesh::core::Budget::new(limits);
     build(&script, &opts, &mut budget).unwrap_or_else(|e| panic!("{e}"))
 }
@@ -335,7 +335,7 @@ fn nine_worthies_ends_at_its_maxobjects_as_in_structure_synth() {
     assert_eq!(b.generations, 1937);
     // Under the default limits it ends at the triangle limit, not at a depth.
     let script = parse(src.as_bytes(), &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-    let opts = BuildOptions { seed: 0, detail: 8, on_limit: OnLimit::Error, line_radius: 0.01, downstream_bytes: [0; 9], vertex_bytes: 0 };
+    let opts = BuildOptions { seed: 0, detail: 8, on_limit: OnLimit::Error, line_radius: 0.01, downstream_bytes: [0; 9], vertex_bytes: 0, per_instance: None };
     let err = build(&script, &opts, &mut rulemesh::core::Budget::new(Limits::default())).err().map(|e| e.to_string());
     assert!(err.as_deref().is_some_and(|e| e.contains("triangles")), "{err:?}");
     // Ball.es (`set maxdepth 2000`): one `R1` chain queuing itself and a box each
