@@ -1,35 +1,47 @@
-//! `format=scene`: rulemesh's compact object-instancing format
-//! (`docs/scene-format.md`), the seed 001 hierarchy written as it is, so its
-//! size grows with the number of distinct subtrees, not with the segments.
+//! `format=scene`: rulemesh's compact instancing format
+//! (`docs/scene-format.md`). Version 2 carries a model as it was made:
+//! primitive instances (kind, transform, colour; tessellated by the reader
+//! at the detail in the header), the meshes that are not instances (swept
+//! lines, free triangles, isosurfaces and modified meshes as prototypes
+//! placed by instances) and the L-system object hierarchy, so its size grows
+//! with what the grammar placed, not with triangles.
 //!
-//! Little-endian throughout. A 24-byte header (magic `RMSC`, version, flags,
-//! shape and object counts, expanded leaf count), then 28 bytes per leaf
-//! shape, then the objects children first, each a `u32` entry count and 36
-//! bytes per entry. [`decode_scene`] reads it back into a [`Hierarchy`]
-//! (for tests and clients written in Rust).
+//! This module holds what both versions share: the constants, the errors,
+//! the byte reader, the header and the hierarchy section. Version 1 (an
+//! L-system hierarchy alone, entries in f32) is still read. The v2 writer is
+//! [`write_scene`](super::scene_v2::write_scene); [`decode_scene_meshes`]
+//! (`scene_decode`) rebuilds the flat formats' meshes from either version.
 
-use super::{ExportError, Provenance};
-use crate::core::budget::Budget;
-use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
+use super::scene_decode::parse_v2;
+pub use super::scene_decode::{decode_scene_meshes, DecodedScene};
+pub use super::scene_v2::write_scene;
 use crate::core::PrimitiveKind;
+use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
 use glam::{DQuat, DVec3};
 
 /// The first four bytes of every scene file.
 pub const MAGIC: &[u8; 4] = b"RMSC";
-/// The format version this module writes and reads.
-pub const VERSION: u16 = 1;
+/// The format version this module writes.
+pub const VERSION: u16 = 2;
+/// The first version (an L-system hierarchy alone), still read.
+pub const VERSION_1: u16 = 1;
 /// Header flag: the model was cut short by a limit.
 pub const FLAG_TRUNCATED: u16 = 1;
 /// Header flag: a provenance block follows the header (a `u32` byte length,
 /// then that many bytes of UTF-8 JSON: engine, language, seed, parameters,
-/// model key; see [`Provenance::json`]).
+/// model key; see [`Provenance::json`](super::Provenance::json)).
 pub const FLAG_PROVENANCE: u16 = 2;
-/// Bytes of the header.
-pub const HEADER_BYTES: u64 = 24;
-/// Bytes per leaf shape record.
+/// Bytes of the version 1 header.
+pub const HEADER_BYTES_V1: usize = 24;
+/// Bytes of the version 2 header.
+pub const HEADER_BYTES: usize = 20;
+/// Bytes per leaf shape record (both versions).
 pub const SHAPE_BYTES: u64 = 28;
-/// Bytes per entry record.
-pub const ENTRY_BYTES: u64 = 36;
+/// Bytes per hierarchy entry in version 1 (f32 transform).
+pub const ENTRY_BYTES_V1: u64 = 36;
+/// Bytes per hierarchy entry in version 2 (f64 transform, so a reader walks
+/// the very numbers the server walked).
+pub const ENTRY_BYTES: u64 = 64;
 /// Bit of an entry's reference that marks a leaf shape (else an object).
 pub const SHAPE_BIT: u32 = 1 << 31;
 
@@ -37,7 +49,7 @@ pub const SHAPE_BIT: u32 = 1 << 31;
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum SceneError {
     /// The magic or the version is wrong.
-    #[error("not a rulemesh scene (version {VERSION}) file")]
+    #[error("not a rulemesh scene (version 1 or {VERSION}) file")]
     NotScene,
     /// The data ends early or has trailing bytes.
     #[error("scene file is {0}")]
@@ -59,115 +71,119 @@ pub enum SceneError {
     /// The provenance block is not UTF-8 JSON, or a flag bit is unknown.
     #[error("scene header is malformed: {0}")]
     Header(&'static str),
-}
-
-/// Exact encoded size of `h` with a provenance block of `provenance` bytes
-/// (0 for none).
-pub fn encoded_size(h: &Hierarchy, provenance: usize) -> u64 {
-    let entries: u64 = h.entry_count();
-    let block = if provenance > 0 { 4 + provenance as u64 } else { 0 };
-    HEADER_BYTES + block + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + ENTRY_BYTES * entries
-}
-
-fn put_f32s(out: &mut Vec<u8>, v: &[f32]) {
-    for x in v {
-        out.extend_from_slice(&x.to_le_bytes());
-    }
-}
-
-/// Writes `h` (with `provenance` after the header when given), reserving
-/// its exact size in `budget` first.
-pub fn write_scene(h: &Hierarchy, provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    let block = provenance.map(|p| p.json().to_string()).unwrap_or_default();
-    let size = encoded_size(h, block.len());
-    let too_large = |what: &str| ExportError::TooLarge { format: "scene", detail: format!("more than 2³¹ {what}") };
-    if h.shapes.len() as u64 >= u64::from(SHAPE_BIT) {
-        return Err(too_large("shapes"));
-    }
-    if h.objects.len() as u64 >= u64::from(SHAPE_BIT) || h.objects.iter().any(|o| o.entries.len() as u64 > u64::from(u32::MAX)) {
-        return Err(too_large("objects or entries"));
-    }
-    budget.reserve_memory(size)?;
-    let mut out = Vec::with_capacity(size as usize);
-    out.extend_from_slice(MAGIC);
-    out.extend_from_slice(&VERSION.to_le_bytes());
-    let flags = if h.truncated.is_some() { FLAG_TRUNCATED } else { 0 } | if block.is_empty() { 0 } else { FLAG_PROVENANCE };
-    out.extend_from_slice(&flags.to_le_bytes());
-    out.extend_from_slice(&(h.shapes.len() as u32).to_le_bytes());
-    out.extend_from_slice(&(h.objects.len() as u32).to_le_bytes());
-    out.extend_from_slice(&h.leaves().to_le_bytes());
-    if !block.is_empty() {
-        let len = u32::try_from(block.len()).map_err(|_| too_large("provenance bytes"))?;
-        out.extend_from_slice(&len.to_le_bytes());
-        out.extend_from_slice(block.as_bytes());
-    }
-    for s in &h.shapes {
-        out.extend_from_slice(&[s.kind as u8, u8::from(s.tube), 0, 0]);
-        put_f32s(&mut out, &s.scale);
-        put_f32s(&mut out, &s.offset);
-    }
-    for o in &h.objects {
-        // Fits: checked above.
-        out.extend_from_slice(&(o.entries.len() as u32).to_le_bytes());
-        for e in &o.entries {
-            let r = match e.target {
-                Target::Object(i) => i,
-                Target::Shape(i) => i | SHAPE_BIT,
-            };
-            out.extend_from_slice(&r.to_le_bytes());
-            put_f32s(&mut out, &e.translation.as_vec3().to_array());
-            put_f32s(&mut out, &e.rotation.as_quat().normalize().to_array());
-            out.extend_from_slice(&e.colour);
-        }
-    }
-    debug_assert_eq!(out.len() as u64, size);
-    Ok(out)
+    /// A mesh, run or record of a version 2 file is malformed.
+    #[error("scene mesh {mesh} is malformed: {detail}")]
+    Record {
+        /// Index of the mesh in the file.
+        mesh: u32,
+        /// What is wrong.
+        detail: &'static str,
+    },
+    /// Decoding would make more triangles than the caller allows.
+    #[error("scene expands to {0} triangles, more than allowed")]
+    TooLarge(u64),
 }
 
 /// A cursor over the input that fails with [`SceneError::Length`] at the end.
-struct Reader<'a> {
-    bytes: &'a [u8],
-    at: usize,
+pub(super) struct Reader<'a> {
+    pub(super) bytes: &'a [u8],
+    pub(super) at: usize,
 }
 
-impl Reader<'_> {
-    fn take<const N: usize>(&mut self) -> Result<[u8; N], SceneError> {
-        let end = self.at.checked_add(N).ok_or(SceneError::Length("truncated"))?;
-        let s = self.bytes.get(self.at..end).ok_or(SceneError::Length("truncated"))?;
-        self.at = end;
+impl<'a> Reader<'a> {
+    pub(super) fn take<const N: usize>(&mut self) -> Result<[u8; N], SceneError> {
+        let s = self.slice(N)?;
         let mut a = [0u8; N];
         a.copy_from_slice(s);
         Ok(a)
     }
-    fn u32(&mut self) -> Result<u32, SceneError> {
+    pub(super) fn slice(&mut self, n: usize) -> Result<&'a [u8], SceneError> {
+        let end = self.at.checked_add(n).ok_or(SceneError::Length("truncated"))?;
+        let s = self.bytes.get(self.at..end).ok_or(SceneError::Length("truncated"))?;
+        self.at = end;
+        Ok(s)
+    }
+    pub(super) fn u8(&mut self) -> Result<u8, SceneError> {
+        Ok(self.take::<1>()?[0])
+    }
+    pub(super) fn u16(&mut self) -> Result<u16, SceneError> {
+        Ok(u16::from_le_bytes(self.take()?))
+    }
+    pub(super) fn u32(&mut self) -> Result<u32, SceneError> {
         Ok(u32::from_le_bytes(self.take()?))
     }
-    fn f32s<const N: usize>(&mut self) -> Result<[f32; N], SceneError> {
+    pub(super) fn f32s<const N: usize>(&mut self) -> Result<[f32; N], SceneError> {
         let mut v = [0f32; N];
         for x in &mut v {
             *x = f32::from_le_bytes(self.take()?);
         }
         Ok(v)
     }
+    pub(super) fn f64s<const N: usize>(&mut self) -> Result<[f64; N], SceneError> {
+        let mut v = [0f64; N];
+        for x in &mut v {
+            *x = f64::from_le_bytes(self.take()?);
+        }
+        Ok(v)
+    }
+    /// Bytes left to read.
+    pub(super) fn left(&self) -> u64 {
+        self.bytes.len().saturating_sub(self.at) as u64
+    }
+    /// Fails unless `count` records of at least `each` bytes can still follow,
+    /// so a count is never an allocation the payload does not justify.
+    pub(super) fn room(&self, count: u64, each: u64) -> Result<(), SceneError> {
+        if count.saturating_mul(each.max(1)) > self.left() {
+            return Err(SceneError::Length("truncated"));
+        }
+        Ok(())
+    }
 }
 
-/// The header fields: flags, shape and object counts, and the provenance
-/// block (a JSON object) when the flag says there is one.
-fn read_header(r: &mut Reader<'_>) -> Result<(u16, u32, u32, Option<serde_json::Value>), SceneError> {
-    if &r.take::<4>()? != MAGIC || u16::from_le_bytes(r.take()?) != VERSION {
+/// A scene file's header, either version.
+pub(super) struct Header {
+    /// 1 or 2.
+    pub(super) version: u16,
+    /// Header flags.
+    pub(super) flags: u16,
+    /// Tessellation detail (version 2; `None` in version 1, which does not say).
+    pub(super) detail: Option<u32>,
+    /// Version 1: leaf shape and object counts. Version 2: palette and prototype counts.
+    pub(super) counts: (u32, u32),
+    /// The provenance block, when the flag says there is one.
+    pub(super) provenance: Option<serde_json::Value>,
+}
+
+/// Reads the header (and the provenance block) of either version.
+pub(super) fn read_header(r: &mut Reader<'_>) -> Result<Header, SceneError> {
+    if &r.take::<4>()? != MAGIC {
         return Err(SceneError::NotScene);
     }
-    let flags = u16::from_le_bytes(r.take()?);
+    let version = r.u16()?;
+    if version != VERSION_1 && version != VERSION {
+        return Err(SceneError::NotScene);
+    }
+    let flags = r.u16()?;
     if flags & !(FLAG_TRUNCATED | FLAG_PROVENANCE) != 0 {
         return Err(SceneError::Header("unknown flag bits"));
     }
-    let (nshapes, nobjects) = (r.u32()?, r.u32()?);
-    let _leaves = u64::from_le_bytes(r.take()?);
+    let (detail, counts) = if version == VERSION_1 {
+        let counts = (r.u32()?, r.u32()?);
+        let _leaves = u64::from_le_bytes(r.take()?);
+        (None, counts)
+    } else {
+        let detail = u32::from(r.u16()?);
+        if !(crate::geom::MIN_DETAIL..=crate::geom::MAX_DETAIL).contains(&detail) {
+            return Err(SceneError::Header("detail out of range"));
+        }
+        if r.u16()? != 0 {
+            return Err(SceneError::Header("reserved bytes are not zero"));
+        }
+        (Some(detail), (r.u32()?, r.u32()?))
+    };
     let provenance = if flags & FLAG_PROVENANCE != 0 {
         let len = r.u32()? as usize;
-        let end = r.at.checked_add(len).ok_or(SceneError::Length("truncated"))?;
-        let text = r.bytes.get(r.at..end).ok_or(SceneError::Length("truncated"))?;
-        r.at = end;
+        let text = r.slice(len)?;
         let text = std::str::from_utf8(text).map_err(|_| SceneError::Header("provenance is not UTF-8"))?;
         match serde_json::from_str::<serde_json::Value>(text) {
             Ok(v) if v.is_object() => Some(v),
@@ -176,42 +192,69 @@ fn read_header(r: &mut Reader<'_>) -> Result<(u16, u32, u32, Option<serde_json::
     } else {
         None
     };
-    Ok((flags, nshapes, nobjects, provenance))
+    Ok(Header { version, flags, detail, counts, provenance })
 }
 
 /// The provenance a scene file carries (engine, language, seed, parameters,
-/// model key), as JSON, without decoding the hierarchy.
+/// model key), as JSON, without decoding the rest.
 pub fn scene_provenance(bytes: &[u8]) -> Result<Option<serde_json::Value>, SceneError> {
-    Ok(read_header(&mut Reader { bytes, at: 0 })?.3)
+    Ok(read_header(&mut Reader { bytes, at: 0 })?.provenance)
 }
 
-/// Reads a scene file back into a hierarchy (leaf counts recomputed; the
-/// truncation flag becomes a placeholder [`Hierarchy::truncated`] of the
-/// memory limit, since the file does not say which limit it was).
-pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
-    let mut r = Reader { bytes, at: 0 };
-    let (flags, nshapes, nobjects, _provenance) = read_header(&mut r)?;
-    // Every record is at least 4 bytes, so counts beyond the length are malformed, not allocations to make.
-    if (u64::from(nshapes) + u64::from(nobjects)).saturating_mul(4) > bytes.len() as u64 {
-        return Err(SceneError::Length("truncated"));
+/// Writes the hierarchy section's body (leaf shapes, then objects with f64
+/// entries); the caller writes the two counts first.
+pub(super) fn put_hierarchy(out: &mut Vec<u8>, h: &Hierarchy) {
+    for s in &h.shapes {
+        out.extend_from_slice(&[s.kind as u8, u8::from(s.tube), 0, 0]);
+        for x in s.scale.iter().chain(&s.offset) {
+            out.extend_from_slice(&x.to_le_bytes());
+        }
     }
+    for o in &h.objects {
+        // Fits: the writer checked every count against 2³¹.
+        out.extend_from_slice(&(o.entries.len() as u32).to_le_bytes());
+        for e in &o.entries {
+            let r = match e.target {
+                Target::Object(i) => i,
+                Target::Shape(i) => i | SHAPE_BIT,
+            };
+            out.extend_from_slice(&r.to_le_bytes());
+            for x in e.translation.to_array().iter().chain(&e.rotation.to_array()) {
+                out.extend_from_slice(&x.to_le_bytes());
+            }
+            out.extend_from_slice(&e.colour);
+        }
+    }
+}
+
+/// Reads `nshapes` leaf shapes and `nobjects` objects; `wide` entries (version
+/// 2) hold f64 transforms, narrow ones (version 1) f32.
+pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wide: bool) -> Result<Hierarchy, SceneError> {
+    r.room(u64::from(nshapes), SHAPE_BYTES)?;
+    r.room(u64::from(nobjects), 4)?;
     let mut h = Hierarchy { shapes: Vec::with_capacity(nshapes as usize), objects: Vec::with_capacity(nobjects as usize), truncated: None };
     for _ in 0..nshapes {
         let [k, flags, _, _] = r.take::<4>()?;
         let kind = *PrimitiveKind::ALL.get(k as usize).ok_or(SceneError::Kind(k))?;
         let (scale, offset) = (r.f32s::<3>()?, r.f32s::<3>()?);
+        if scale.iter().chain(&offset).any(|v| !v.is_finite()) {
+            return Err(SceneError::Header("non-finite leaf shape"));
+        }
         h.shapes.push(LeafShape { kind, scale, offset, tube: flags & 1 != 0 });
     }
+    let entry_bytes = if wide { ENTRY_BYTES } else { ENTRY_BYTES_V1 };
     for o in 0..nobjects {
         let n = r.u32()?;
-        if u64::from(n).saturating_mul(ENTRY_BYTES) > (bytes.len() - r.at) as u64 {
-            return Err(SceneError::Length("truncated"));
-        }
+        r.room(u64::from(n), entry_bytes)?;
         let mut obj = Object { entries: Vec::with_capacity(n as usize), leaves: 0 };
         for _ in 0..n {
             let raw = r.u32()?;
             let target = if raw & SHAPE_BIT != 0 { Target::Shape(raw & !SHAPE_BIT) } else { Target::Object(raw) };
-            let (t, q) = (r.f32s::<3>()?, r.f32s::<4>()?);
+            let (t, q) = if wide {
+                (r.f64s::<3>()?, r.f64s::<4>()?)
+            } else {
+                (r.f32s::<3>()?.map(f64::from), r.f32s::<4>()?.map(f64::from))
+            };
             let colour = r.take::<4>()?;
             if t.iter().chain(&q).any(|v| !v.is_finite()) {
                 return Err(SceneError::NonFinite(o));
@@ -222,17 +265,36 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
                 _ => return Err(SceneError::Reference { object: o, target: raw }),
             };
             obj.leaves = obj.leaves.saturating_add(leaves);
-            let translation = DVec3::new(t[0].into(), t[1].into(), t[2].into());
-            let rotation = DQuat::from_xyzw(q[0].into(), q[1].into(), q[2].into(), q[3].into());
-            obj.entries.push(Entry { target, translation, rotation, colour });
+            obj.entries.push(Entry { target, translation: DVec3::from_array(t), rotation: DQuat::from_array(q), colour });
         }
         h.objects.push(obj);
     }
-    if r.at != bytes.len() {
-        return Err(SceneError::Length("followed by trailing bytes"));
-    }
-    if flags & FLAG_TRUNCATED != 0 {
-        h.truncated = Some(crate::core::LimitExceeded::recorded(crate::core::Limit::Memory));
-    }
+    Ok(h)
+}
+
+/// The truncation placeholder a decoded file carries: the file says a limit
+/// cut the model short, not which, so the memory limit stands for it.
+pub(super) fn truncation(flags: u16) -> Option<crate::core::LimitExceeded> {
+    (flags & FLAG_TRUNCATED != 0).then(|| crate::core::LimitExceeded::recorded(crate::core::Limit::Memory))
+}
+
+/// Reads the object hierarchy of a scene file of either version (leaf counts
+/// recomputed; the truncation flag becomes a placeholder
+/// [`Hierarchy::truncated`] of the memory limit). A version 2 file without a
+/// hierarchy gives an empty one; [`decode_scene_meshes`] reads everything.
+pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
+    let mut r = Reader { bytes, at: 0 };
+    let header = read_header(&mut r)?;
+    let mut h = if header.version == VERSION_1 {
+        let (nshapes, nobjects) = header.counts;
+        let h = read_hierarchy(&mut r, nshapes, nobjects, false)?;
+        if r.at != bytes.len() {
+            return Err(SceneError::Length("followed by trailing bytes"));
+        }
+        h
+    } else {
+        parse_v2(&mut r, &header)?.hierarchy
+    };
+    h.truncated = truncation(header.flags);
     Ok(h)
 }
