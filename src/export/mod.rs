@@ -11,6 +11,7 @@ pub mod png;
 pub mod provenance;
 pub mod scene;
 mod scene_decode;
+mod scene_format;
 mod scene_v2;
 pub mod stl;
 pub mod strips;

@@ -8,7 +8,7 @@
 //! flat formats' meshes bit for bit. `clients/js/scene.mjs` does the same in
 //! JavaScript.
 
-use super::scene::{read_header, read_hierarchy, truncation, Header, Reader, SceneError, VERSION_1};
+use super::scene_format::{read_header, read_hierarchy, truncation, Header, Reader, SceneError, VERSION_1};
 use super::scene_v2::{index_width, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY, RUN_MESH, RUN_PLACED, RUN_PRIMITIVES};
 use crate::core::frame::Frame;
 use crate::core::PrimitiveKind;
@@ -127,7 +127,7 @@ fn read_mesh(r: &mut Reader<'_>, with_colours: bool, mesh: u32) -> Result<Mesh, 
 }
 
 /// Reads a version 2 file after its header.
-pub(super) fn parse_v2(r: &mut Reader<'_>, header: &Header) -> Result<Parsed, SceneError> {
+fn parse_v2(r: &mut Reader<'_>, header: &Header) -> Result<Parsed, SceneError> {
     let (ncolours, nprotos) = header.counts;
     r.room(u64::from(ncolours), 4)?;
     let palette: Vec<[u8; 4]> = (0..ncolours).map(|_| r.take::<4>()).collect::<Result<_, _>>()?;
@@ -195,6 +195,27 @@ pub(super) fn parse_v2(r: &mut Reader<'_>, header: &Header) -> Result<Parsed, Sc
         return Err(SceneError::Length("followed by trailing bytes"));
     }
     Ok(Parsed { protos, hierarchy, meshes })
+}
+
+/// Reads the object hierarchy of a scene file of either version (leaf counts
+/// recomputed; the truncation flag becomes a placeholder
+/// [`Hierarchy::truncated`] of the memory limit). A version 2 file without a
+/// hierarchy gives an empty one; [`decode_scene_meshes`] reads everything.
+pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
+    let mut r = Reader { bytes, at: 0 };
+    let header = read_header(&mut r)?;
+    let mut h = if header.version == VERSION_1 {
+        let (nshapes, nobjects) = header.counts;
+        let h = read_hierarchy(&mut r, nshapes, nobjects, false)?;
+        if r.at != bytes.len() {
+            return Err(SceneError::Length("followed by trailing bytes"));
+        }
+        h
+    } else {
+        parse_v2(&mut r, &header)?.hierarchy
+    };
+    h.truncated = truncation(header.flags);
+    Ok(h)
 }
 
 /// Triangles the runs make at `detail` (saturating).

@@ -11,7 +11,7 @@
 //! colours the bytes it writes, so nothing is lost; a palette keeps colours
 //! to one byte a record for most models.
 
-use super::scene::{put_hierarchy, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION};
+use super::scene_format::{put_hierarchy, ENTRY_BYTES, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION};
 use super::{ExportError, Provenance};
 use crate::core::budget::Budget;
 use crate::core::PrimitiveKind;
@@ -225,7 +225,7 @@ pub fn write_scene(
     }
     let mut size = HEADER_BYTES as u64 + if block.is_empty() { 0 } else { 4 + block.len() as u64 };
     size += 4 * order.len() as u64 + protos.iter().map(prototype_bytes).sum::<u64>();
-    size += 8 + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + super::scene::ENTRY_BYTES * h.entry_count();
+    size += 8 + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + ENTRY_BYTES * h.entry_count();
     size += 4;
     let mut triangles = 0u64;
     for m in &plan {
