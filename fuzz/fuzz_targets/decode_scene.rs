@@ -1,5 +1,5 @@
-//! The scene (object-instancing hierarchy) decoder on arbitrary bytes: a
-//! hierarchy or a typed error, never a panic.
+//! The scene decoder on arbitrary bytes (versions 1 and 2): a hierarchy and
+//! meshes, or a typed error, never a panic.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 
@@ -8,4 +8,6 @@ fuzz_target!(|data: &[u8]| {
         // Counting leaves walks every reference the decoder accepted.
         let _ = h.leaves();
     }
+    // Tessellating every record, under a triangle cap so a tiny file cannot ask for hours.
+    let _ = rulemesh::export::scene::decode_scene_meshes(data, 16, 1_000_000);
 });

@@ -10,6 +10,9 @@ pub mod instanced;
 pub mod png;
 pub mod provenance;
 pub mod scene;
+mod scene_decode;
+mod scene_format;
+mod scene_v2;
 pub mod stl;
 pub mod strips;
 pub mod threemf;
@@ -295,7 +298,7 @@ pub fn export_with(
         Format::StlAscii => stl::write_ascii(meshes, budget),
         Format::Scene => Err(ExportError::InvalidOptions {
             format: "scene",
-            detail: "the scene format writes object hierarchies, which only L-systems make; meshes cannot be written as one".into(),
+            detail: "the scene format is written from the model (instances, hierarchy), not from meshes".into(),
         }),
         Format::ThreeMf => threemf::write_3mf(meshes, meta.provenance.as_ref(), budget),
         Format::Ug => ug::write_ug(meshes, budget),

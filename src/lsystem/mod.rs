@@ -61,8 +61,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         },
     };
     let wants = match req.hierarchy {
-        HierarchyUse::Required => true,
-        HierarchyUse::Preferred => dag.is_some(),
+        HierarchyUse::Required | HierarchyUse::Preferred => dag.is_some(),
         HierarchyUse::Never => false,
     };
     if wants {
@@ -72,7 +71,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
                 let primitives = h.leaves();
                 return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), primitives, warnings: sys.warnings, promised: 0, seed });
             }
-            Err(EvalError::Limit(_)) if truncating && req.hierarchy != HierarchyUse::Required => budget.rewind(mark),
+            Err(EvalError::Limit(_)) if truncating => budget.rewind(mark),
             Err(e) => return Err(e.into()),
         }
     }
@@ -154,7 +153,13 @@ fn hierarchy(sys: &lang_ls::LSystem, dag: Option<&dag::StringDag>, seed: u64, re
             h
         }
     };
-    budget.check_total(Limit::Primitives, h.leaves())?;
-    budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
+    if req.hierarchy == HierarchyUse::Required {
+        // `format=scene` writes the hierarchy as it is: the primitive limit
+        // charges its entries and leaf shapes, and no triangle is made.
+        budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?;
+    } else {
+        budget.check_total(Limit::Primitives, h.leaves())?;
+        budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
+    }
     Ok(h)
 }

@@ -236,7 +236,9 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget, cutoff: &mut Cutoff) -> Res
 
 /// Triangles from free `VERTEX` calls: every three consecutive vertices, in
 /// the order and winding the grammar gave (a trailing one or two are dropped).
-fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+/// Public so the scene writer (`export::scene_v2`) ships the very mesh the
+/// flat formats write.
+pub fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
     let t = vertices.len() / 3;
     if t == 0 {
         return Ok(None);
@@ -349,8 +351,10 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, cutoff: 
     Ok(())
 }
 
-/// Appends `proto` transformed by `inst` to `mesh`.
-fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
+/// Appends `proto` transformed by `inst` to `mesh`. Public so the scene
+/// decoder (`export::scene_v2`) places primitives with the same arithmetic as
+/// the flat formats, triangle for triangle.
+pub fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
     append_mapped(mesh, proto, instance_map(inst), inst.colour, inst.parity);
 }
 
@@ -359,8 +363,9 @@ fn instance_map(inst: &Instance) -> (Mat3, Mat3, Vec3) {
     (inst.linear(), inst.normal_matrix(), inst.translation)
 }
 
-/// Appends `proto` mapped by the affine `inst` to `mesh`.
-fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
+/// Appends `proto` mapped by the affine `inst` to `mesh` (public for the
+/// scene decoder, like [`append_instance`]).
+pub fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
     append_mapped(mesh, proto, (inst.linear, inst.normal_matrix(), inst.translation), inst.colour, inst.parity());
 }
 

@@ -39,7 +39,10 @@ pub enum HierarchyUse {
     /// A hierarchy where the language builds one cheaply (glTF: instanced or
     /// expanded), else flat geometry.
     Preferred,
-    /// Only a hierarchy will do (`format=scene`).
+    /// The output writes a hierarchy as it is (`format=scene`), so its size,
+    /// not its expansion's, is what the limits charge; where the language
+    /// builds none cheaply, flat geometry, as for [`HierarchyUse::Preferred`]
+    /// (so a scene holds the same model as the flat formats).
     Required,
 }
 

@@ -352,9 +352,6 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     check_request(req)?;
     Budget::check_source(&req.limits, source.len() as u64)?;
     let language = language_of(source, req.language)?;
-    if req.format == Format::Scene && !matches!(language, Language::Lsystem | Language::Etol) {
-        return Err(RenderError::BadRequest("format `scene` writes object-instancing hierarchies, which only L-systems make".into()));
-    }
     let truncating = req.on_limit == OnLimit::Truncate;
     let mut budget = budget_for(req.limits);
     let mut clock = StageClock::start();
@@ -398,9 +395,16 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
 /// written as it is or expanded, then printing or meshing, then export.
 fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     let opts = &req.export_options;
+    if req.format == Format::Scene {
+        // Instances, hierarchy and the meshes that are not instances, as made (docs/scene-format.md).
+        let h = model.hierarchy.take();
+        let (bytes, triangles) = export::scene::write_scene(&model.scene, h.as_ref(), req.detail, req.layout, Some(&provenance), budget)?;
+        clock.lap(Phase::Export);
+        let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
+        return Ok(summary(bytes, &model, triangles, truncated));
+    }
     if let Some(h) = model.hierarchy.take() {
         let bytes = match req.format {
-            Format::Scene => Some(export::scene::write_scene(&h, Some(&provenance), budget)?),
             Format::Glb | Format::Gltf if gpu_instancing(req) => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, Some(&provenance), budget)?),
             _ => None,
         };

@@ -130,7 +130,7 @@ pub struct RenderBody {
     #[schema(value_type = BTreeMap<String, ParamValueSchema>)]
     pub params: BTreeMap<String, ParamValue>,
     /// `"glb"` (default), `"gltf"`, `"stl"`, `"stl-ascii"`, `"strips"`,
-    /// `"scene"` (L-systems only: the object-instancing hierarchy), `"3mf"`,
+    /// `"scene"` (instances, meshes and hierarchies; docs/scene-format.md), `"3mf"`,
     /// `"ug"` or `"png"` (a preview picture).
     pub format: Option<String>,
     /// Limits, each clamped to the server's ceiling.

@@ -18,15 +18,15 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 /// One source to render: its table name, language, bytes and script folder.
-struct Case {
-    name: String,
-    language: Language,
-    source: Vec<u8>,
-    script_dir: Option<PathBuf>,
+pub(crate) struct Case {
+    pub(crate) name: String,
+    pub(crate) language: Language,
+    pub(crate) source: Vec<u8>,
+    pub(crate) script_dir: Option<PathBuf>,
 }
 
 /// Every case, in a fixed order.
-fn cases() -> Vec<Case> {
+pub(crate) fn cases() -> Vec<Case> {
     let mut out = Vec::new();
     let from_dir = |dir: PathBuf, out: &mut Vec<Case>| {
         let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).expect("folder exists").map(|e| e.expect("entry").path()).collect();
@@ -99,10 +99,8 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
         ("glb-detail-4", with(Format::Glb, &|r| r.detail = 4)),
         // The preview stage at its defaults (256 px, three-quarter, transparent).
         ("png", with(Format::Png, &|_| {})),
+        ("scene", with(Format::Scene, &|_| {})),
     ];
-    if matches!(language, Language::Lsystem | Language::Etol) {
-        v.push(("scene", with(Format::Scene, &|_| {})));
-    }
     // glb/gltf instance repeated meshes by default; the flat files are pinned too.
     v.push(("glb-flat", with(Format::Glb, &|r| r.export_options.instancing = Instancing::Flat)));
     v.push(("gltf-flat", with(Format::Gltf, &|r| r.export_options.instancing = Instancing::Flat)));

@@ -85,9 +85,10 @@ fn sierpinski_tetrahedron_is_4096_spheres_in_six_levels_of_four() {
     assert_eq!((h.objects.len(), fours, h.entry_count()), (7, 6, 25), "{:?}", h.objects.iter().map(|o| o.entries.len()).collect::<Vec<_>>());
     let scene = ok(&src, &req(Format::Scene));
     assert_eq!(scene.primitives, 4096);
-    // Under 1 100 bytes besides the provenance block (a length and its JSON).
-    let block = 4 + u32::from_le_bytes(scene.bytes[24..28].try_into().expect("4 bytes")) as usize;
-    assert!(scene.bytes.len() - block < 1100, "{} with a block of {block}", scene.bytes.len());
+    // Under 1 900 bytes besides the provenance block (a length and its JSON):
+    // version 2 keeps the entries in f64, 64 bytes each.
+    let block = 4 + u32::from_le_bytes(scene.bytes[20..24].try_into().expect("4 bytes")) as usize;
+    assert!(scene.bytes.len() - block < 1900, "{} with a block of {block}", scene.bytes.len());
 }
 
 /// The scene file decodes to the leaves the flat path draws: for a `shape:`
@@ -140,19 +141,20 @@ fn malformed_scene_files_are_errors_not_panics() {
     extra.push(0);
     assert_eq!(decode_scene(&extra).map(|_| ()), Err(SceneError::Length("followed by trailing bytes")));
     // The provenance block after the header: engine, language, seed, params, model key.
-    let block = u32::from_le_bytes(good[24..28].try_into().expect("4 bytes")) as usize;
+    let block = u32::from_le_bytes(good[20..24].try_into().expect("4 bytes")) as usize;
     let provenance = rulemesh::export::scene::scene_provenance(&good).expect("reads").expect("present");
     assert_eq!((provenance["language"].as_str(), provenance["seed"].as_str()), (Some("lsystem"), Some("0")), "{provenance}");
     assert_eq!(provenance["model_key"].as_str().map(str::len), Some(64), "{provenance}");
     let mut json = good.clone();
-    json[28] = b'[';
+    json[24] = b'[';
     assert_eq!(decode_scene(&json).map(|_| ()), Err(SceneError::Header("provenance is not a JSON object")));
     let mut flags = good.clone();
     flags[6] |= 4;
     assert_eq!(decode_scene(&flags).map(|_| ()), Err(SceneError::Header("unknown flag bits")));
     // A reference to a later object.
     let mut forward = good;
-    let first_entry = 24 + 4 + block + 28 + 4;
+    // Header, block, no palette or prototypes, the two hierarchy counts, one leaf shape, an entry count.
+    let first_entry = 20 + 4 + block + 8 + 28 + 4;
     forward[first_entry..first_entry + 4].copy_from_slice(&5u32.to_le_bytes());
     assert_eq!(decode_scene(&forward).map(|_| ()), Err(SceneError::Reference { object: 0, target: 5 }));
 }
@@ -241,7 +243,10 @@ fn ten_million_segments_render_as_a_scene_of_a_few_kilobytes() {
     let limits = Limits { max_primitives: 20_000_000, max_triangles: 1_000_000_000, ..Limits::default() };
     let out = ok(&src, &RenderRequest { limits, ..req(Format::Scene) });
     assert_eq!(out.primitives, 10_000_000);
-    assert!(out.bytes.len() < 4096, "{}", out.bytes.len());
+    // Version 2 keeps the 70 entries in f64 (64 bytes each).
+    assert!(out.bytes.len() < 6000, "{}", out.bytes.len());
+    // The limits charge the 77 entries and shapes written, so the defaults do.
+    assert_eq!(ok(&src, &req(Format::Scene)).bytes, out.bytes);
     let h = decode_scene(&out.bytes).expect("decodes");
     assert_eq!((h.objects.len(), h.entry_count()), (7, 70));
     let sys = parse(&src).expect("parses");
@@ -275,7 +280,7 @@ fn same_seed_same_bytes_and_variety_makes_seeds_differ() {
     let one = |seed| ok(exact.as_bytes(), &RenderRequest { seed: Some(seed), ..req(Format::Scene) }).bytes;
     assert_eq!(one(1), one(1));
     assert_ne!(one(1), one(2));
-    assert_eq!(decode_scene(&one(1)).expect("decodes").objects.len(), 1);
+    assert!(decode_scene(&one(1)).expect("decodes").objects.is_empty());
 }
 
 #[test]
@@ -290,12 +295,17 @@ fn systems_that_cannot_instance_still_render_every_format() {
         let stl = ok(src, &req(Format::Stl));
         let scene = ok(src, &req(Format::Scene));
         assert_eq!(scene.primitives, stl.primitives, "{why}");
-        assert_eq!(decode_scene(&scene.bytes).expect("decodes").leaves(), stl.primitives, "{why}");
+        // The scene holds the flat model the turtle drew (its swept lines), as the STL does.
+        let d = rulemesh::export::scene::decode_scene_meshes(&scene.bytes, 16, u64::MAX).expect("decodes");
+        assert_eq!(d.meshes.iter().map(|m| m.mesh.indices.len() as u64 / 3).sum::<u64>(), stl.triangles, "{why}");
+        // The unbalanced DAG still instances (its hierarchy comes from the derived string), as in the flat glb.
+        assert_eq!(decode_scene(&scene.bytes).expect("decodes").objects.is_empty(), why != "unbalanced", "{why}");
         assert!(ok(src, &req(Format::Glb)).primitives > 0, "{why}");
     }
-    // Only L-systems make hierarchies.
-    let e = render(b"startshape A\nrule A { BOX {} }\n", &RenderRequest { language: Some(Language::Mdg), ..req(Format::Scene) });
-    assert!(matches!(e, Err(RenderError::BadRequest(_))));
+    // Only L-systems make hierarchies; other languages' scenes hold their instances.
+    let mdg = ok(b"startshape A\nrule A { BOX {} }\n", &RenderRequest { language: Some(Language::Mdg), ..req(Format::Scene) });
+    assert!(decode_scene(&mdg.bytes).expect("decodes").objects.is_empty());
+    assert_eq!(mdg.triangles, 12);
 }
 
 #[test]
@@ -304,9 +314,16 @@ fn budgets_bind_the_dag_and_its_expansion() {
     let counter = b"iterations: 200\naxiom: A(0)\nA(i) -> F(1) A(i+1) B(i)\nB(i) -> F(0.5) B(i+1)\n";
     let limits = Limits { max_steps: 300, ..Limits::default() };
     assert_eq!(limit_of(render(counter, &RenderRequest { limits, ..req(Format::Scene) })), Some(Limit::Steps));
-    // Triangles of the expansion are a limit even when nothing is expanded.
-    let limits = Limits { max_triangles: 1_000, ..Limits::default() };
-    assert_eq!(limit_of(render(&grammar("sierpinski-bush.ls"), &RenderRequest { limits, ..req(Format::Scene) })), Some(Limit::Triangles));
+    // A scene charges what it writes (entries), not the triangles of the
+    // expansion; a flat glb charges those.
+    let limits = Limits { max_triangles: 1_000, max_primitives: 100, ..Limits::default() };
+    let flat = ExportOptions { instancing: Instancing::Flat, ..ExportOptions::default() };
+    let scene = ok(&grammar("sierpinski-bush.ls"), &RenderRequest { limits, ..req(Format::Scene) });
+    assert_eq!(scene.primitives, 35_310);
+    assert!(limit_of(render(&grammar("sierpinski-bush.ls"), &RenderRequest { limits, export_options: flat, ..req(Format::Glb) })).is_some());
+    // Its entries and shapes are still limited.
+    let limits = Limits { max_primitives: 10, ..Limits::default() };
+    assert_eq!(limit_of(render(&grammar("sierpinski-bush.ls"), &RenderRequest { limits, ..req(Format::Scene) })), Some(Limit::Primitives));
     // The flat fallback truncates on request.
     let limits = Limits { max_primitives: 1_000, ..Limits::default() };
     let flat = ExportOptions { instancing: Instancing::Flat, ..ExportOptions::default() };
@@ -355,14 +372,24 @@ fn ten_million_segment_scene_stays_small_in_memory_and_hostile_growth_fails_clea
     assert!(ok, "{err}");
     // The bound is 50 MB; the scene needs a few MB (no string, no meshes).
     assert!(rss < 50_000_000, "peak RSS {rss} bytes");
-    // 3^60 modules: refused from the DAG's counts, in bounded memory, for every format.
+    // 3^60 modules: refused from the DAG's counts, in bounded memory, for
+    // every format that expands them; a scene writes the 60-level hierarchy
+    // as it is (the limits charge its entries), and a decoder refuses to expand it.
     let dir2 = tempdir();
     let hostile = dir2.path().join("hostile.ls");
     std::fs::write(&hostile, "iterations: 60\naxiom: A\nA -> F[+A][-A]A\n").expect("write");
     for ext in ["rmscene", "glb", "stl"] {
         let o = dir2.path().join(format!("out.{ext}"));
         let (rss, ok, err) = measured(&["render", hostile.to_str().expect("utf-8"), "-o", o.to_str().expect("utf-8"), "--max-memory", "64000000"]);
-        assert!(!ok && err.contains("limit exceeded"), "{ext}: {err}");
+        if ext == "rmscene" {
+            assert!(ok, "{err}");
+            let bytes = std::fs::read(&o).expect("scene written");
+            assert!(bytes.len() < 20_000, "{}", bytes.len());
+            let e = rulemesh::export::scene::decode_scene_meshes(&bytes, 16, 1_000_000_000).expect_err("too many triangles");
+            assert!(matches!(e, SceneError::TooLarge(_)), "{e}");
+        } else {
+            assert!(!ok && err.contains("limit exceeded"), "{ext}: {err}");
+        }
         assert!(rss < 128_000_000, "{ext}: peak RSS {rss}");
     }
 }

@@ -33,6 +33,7 @@ mod modifiers;
 mod preview;
 mod provenance;
 mod print;
+mod scene;
 mod selectors;
 mod sheet;
 mod ssfidelity;

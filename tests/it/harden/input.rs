@@ -47,21 +47,24 @@ async fn mdg_preprocessor_multibyte_macro_body_over_http_is_400_with_position() 
 async fn http_request_scene_format_for_a_mesh_language_is_400_not_500() {
     let (srv, base) = start(config()).await;
     let fuzzed = "#define _nF -6 Fngumessage3333333333333333333330000m00000000000000se~e89161220]()475278678lrystem";
-    // The fuzzed source reads as EisenScript, which makes no hierarchy (a 400
-    // saying so); a bare `box` is no language the detector knows (a 400 saying that).
-    for (source, says) in [(fuzzed, "only L-systems make"), ("box\n", "cannot detect the language")] {
-        let r = client().post(format!("{base}/v1/render")).json(&json!({"source": source, "format": "scene"})).send().await.expect("post");
-        assert_eq!(r.status(), 400, "{source}");
-        let e = error_of(r).await;
-        assert_eq!(e["code"], "bad_request", "{e}");
-        assert!(e["message"].as_str().is_some_and(|m| m.contains(says)), "{e}");
-    }
-    let err = grpc(&srv)
+    // Every language renders as a scene (version 2) now: the fuzzed source
+    // reads as EisenScript and is answered without an internal error; a bare
+    // `box` is no language the detector knows (a 400 saying that).
+    let r = client().post(format!("{base}/v1/render")).json(&json!({"source": fuzzed, "format": "scene"})).send().await.expect("post");
+    assert_ne!(r.status(), 500, "{fuzzed}");
+    let r = client().post(format!("{base}/v1/render")).json(&json!({"source": "box\n", "format": "scene"})).send().await.expect("post");
+    assert_eq!(r.status(), 400);
+    let e = error_of(r).await;
+    assert_eq!(e["code"], "bad_request", "{e}");
+    assert!(e["message"].as_str().is_some_and(|m| m.contains("cannot detect the language")), "{e}");
+    let reply = grpc(&srv)
         .await
         .render(rulemesh::service::grpc::pb::RenderRequest { source: "box\n".into(), language: "eisenscript".into(), format: "scene".into(), ..Default::default() })
         .await
-        .expect_err("a bad request");
-    assert_eq!(err.code(), tonic::Code::InvalidArgument);
+        .expect("an EisenScript box renders as a scene")
+        .into_inner();
+    let d = rulemesh::export::scene::decode_scene_meshes(&reply.model, 16, 1_000).expect("decodes");
+    assert_eq!(d.meshes.iter().map(|m| m.mesh.indices.len() / 3).sum::<usize>(), 12);
     stop(srv).await;
 }
 

@@ -76,8 +76,12 @@ async fn lsystems_render_as_scenes_and_instanced_or_flat_gltf() {
     assert!(gpu.len() * 20 < flat.len());
     let bad = post(&base, "/v1/render", &json!({"source": source, "instancing": "sometimes"})).await;
     assert_eq!(bad.status(), 400);
+    // Every language renders as a scene (version 2): the MDG's primitives as instances.
     let mdg = post(&base, "/v1/render", &json!({"source": small("scene"), "format": "scene"})).await;
-    assert_eq!(mdg.status(), 400);
+    assert_eq!(mdg.status(), 200);
+    assert_eq!(header(&mdg, "content-type"), "application/vnd.rulemesh.scene");
+    let meshes = rulemesh::export::scene::decode_scene_meshes(&mdg.bytes().await.expect("body"), 16, 1_000_000).expect("decodes").meshes;
+    assert!(meshes.iter().any(|m| !m.mesh.indices.is_empty()));
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }
