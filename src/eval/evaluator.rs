@@ -147,6 +147,7 @@ mod tests {
             divisor: divisor.map(num),
             step,
             body: Box::new(body),
+            continues: false,
             site,
             span: Span::new(1, 1),
         })

@@ -254,6 +254,11 @@ impl<'p, 'b> Machine<'p, 'b> {
                 Ok(())
             }
             Item::Iterate(it) => {
+                let ns = first_call_site(&it.body).map_or(0, |site| self.ev.program.namespaces.of(site));
+                let ctx = match (it.continues, self.last_terminal.get(ns as usize).copied().flatten()) {
+                    (true, Some(frame)) => Ctx { frame, ..ctx },
+                    _ => ctx,
+                };
                 let mut env = Env { params: self.ev.params, key: ctx.key.child(it.site, 0), pos: ctx.frame.translation };
                 let count = finite(&it.count, &mut env, it.span, "iteration count")?;
                 if count < 0.0 || count.fract() != 0.0 {
@@ -385,6 +390,23 @@ impl<'p, 'b> Machine<'p, 'b> {
     pub(super) fn set_terminal(&mut self, ns: u32, frame: Frame) {
         if let Some(t) = self.last_terminal.get_mut(ns as usize) {
             *t = Some(frame);
+        }
+    }
+}
+
+/// The call site of the first call `item` reaches (through iterators and
+/// blocks): the namespace a continued iterator reads its pen from is its
+/// body's (`\\ 3 * {rx 10} X.LINETO{}` continues in `X`).
+fn first_call_site(item: &Item) -> Option<u32> {
+    let mut cur = item;
+    loop {
+        match cur {
+            Item::Call(c) => return Some(c.site),
+            Item::Iterate(it) => cur = &it.body,
+            Item::Block(b) => match b.first() {
+                Some(first) => cur = first,
+                None => return None,
+            },
         }
     }
 }

@@ -269,6 +269,12 @@ pub struct Iterate {
     pub step: Vec<Adjust>,
     /// What each copy runs.
     pub body: Box<Item>,
+    /// Written after `\` (`\ 10/10 * {rx 120} LINETO{}`): the copies are
+    /// placed relative to the frame where the namespace's last terminal
+    /// left off, as a continued call is, instead of the enclosing frame. A
+    /// `\` inside the body (`2 * {} \ ABCB{}`) continues each copy's call
+    /// instead, which discards the iterator's step (docs/mdg.md).
+    pub continues: bool,
     /// Unique per iterator site; combined with the copy index for random streams.
     pub site: u32,
     /// Where the iterator is written.

@@ -145,3 +145,36 @@ fn free_vertices_make_triangles_and_facenormals_sets_their_normals() {
     let tris = decode_stl(&out.stdout);
     assert_eq!(tris.len(), 1, "the fourth vertex makes no triangle");
 }
+
+#[test]
+fn smooth_triangle_is_a_closed_triangle_because_a_continued_iterator_turns_the_pen() {
+    // Seed 000's SMOOTH_TRIANGLE listing (L749–756), verbatim: `\` before
+    // `10/10 * {rx 120} LINETO{}` places the copies from the last terminal's
+    // frame, so the pen turns 120° on the spot after each unit side and the
+    // path closes into an equilateral triangle in the plane x = 0. (Before,
+    // each copy continued on its own and dropped the turn: a 3-unit rod.)
+    let s = scene_of(
+        "startshape T\nrule T { MOVETO {} SMOOTH_TRIANGLE {} }\nrule SMOOTH_TRIANGLE {\n  LINETO{z 1} \\\n  10/10 * {rx 120} LINETO{} \\\n  LINETO{z 1} \\\n  10/10 * {rx 120} LINETO{} \\\n  LINETO{z 1} \\\n  10/10 * {rx 120} LINETO{} \\\n}\n",
+    );
+    assert_eq!(s.lines.len(), 1);
+    let mut corners: Vec<DVec3> = s.lines[0].points.iter().map(|p| p.frame.translation).collect();
+    corners.dedup_by(|a, b| (*a - *b).length() < 1e-9);
+    let want = [DVec3::ZERO, DVec3::new(0.0, 0.0, 1.0), DVec3::new(0.0, -(3f64.sqrt()) / 2.0, 0.5), DVec3::ZERO];
+    assert_eq!(corners.len(), want.len(), "{corners:?}");
+    for (got, want) in corners.iter().zip(want) {
+        assert!((*got - want).length() < 1e-9, "{corners:?}");
+    }
+}
+
+#[test]
+fn a_continuation_inside_an_iterator_continues_each_copy() {
+    // `3 * {x 5} \ BOX{z 1}` (C.4's LAYERS form): each copy's call starts
+    // from the last terminal (the box before it), so the boxes chain along
+    // z and the step is not applied; `\ 3 * {x 5} BOX{}` starts the iterator there instead.
+    let inside = scene_of("rule A { MOVETO { y 2 } 3 * {x 5} \\ BOX { z 1 } }");
+    let z: Vec<[f32; 3]> = inside.instances.iter().map(|i| i.translation.to_array()).collect();
+    assert_eq!(z, [[0.0, 2.0, 1.0], [0.0, 2.0, 2.0], [0.0, 2.0, 3.0]]);
+    let before = scene_of("rule A { MOVETO { y 2 } \\ 3 * {x 5} BOX {} }");
+    let x: Vec<[f32; 3]> = before.instances.iter().map(|i| i.translation.to_array()).collect();
+    assert_eq!(x, [[5.0, 2.0, 0.0], [10.0, 2.0, 0.0], [15.0, 2.0, 0.0]]);
+}

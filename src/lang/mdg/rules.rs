@@ -221,11 +221,14 @@ impl<'a> Parser<'a> {
             }
         };
         self.leave();
-        Ok(Item::Iterate(Iterate { count: count.expr, divisor, step, body: Box::new(body), site, span: start }))
+        Ok(Item::Iterate(Iterate { count: count.expr, divisor, step, body: Box::new(body), continues: false, site, span: start }))
     }
 }
 
-/// Marks the first call an item reaches (through iterators) as continuing.
+/// Marks the item after `\\` as continuing: a call, an iterator (whose
+/// copies are then placed from the last terminal's frame, so
+/// SMOOTH_TRIANGLE's `\\ 10/10 * {rx 120} LINETO{}` turns the pen), or the
+/// first of a block's items.
 fn mark_continuation(item: &mut Item) {
     let mut cur = item;
     loop {
@@ -234,7 +237,10 @@ fn mark_continuation(item: &mut Item) {
                 c.continues = true;
                 return;
             }
-            Item::Iterate(it) => cur = &mut it.body,
+            Item::Iterate(it) => {
+                it.continues = true;
+                return;
+            }
             Item::Block(b) => match b.first_mut() {
                 Some(first) => cur = first,
                 None => return,

@@ -90,6 +90,7 @@ fn parses_the_basic_example_into_exact_ir() {
                         continues: false,
                         span: Span::new(1, 34),
                     })),
+                    continues: false,
                     site: 0,
                     span: Span::new(1, 23),
                 })],
@@ -494,7 +495,7 @@ fn selectors_and_continuation() {
     assert_eq!(body.len(), 3);
     let continues = |i: &Item| match i {
         Item::Call(c) => c.continues,
-        Item::Iterate(it) => matches!(&*it.body, Item::Call(c) if c.continues),
+        Item::Iterate(it) => it.continues || matches!(&*it.body, Item::Call(c) if c.continues),
         Item::Block(_) => false,
     };
     assert_eq!(body.iter().map(continues).collect::<Vec<_>>(), [false, true, true]);
