@@ -55,5 +55,31 @@ impl Picture {
         let black: f64 = drawn.iter().filter(|p| p[..3].iter().all(|&c| c <= 16)).map(weight).sum();
         black / drawn.iter().map(weight).sum::<f64>().max(1.0)
     }
-}
 
+    /// The 30° hue sectors that hold at least `min_share` of the fully
+    /// covered pixels, counting only coloured ones (max − min channel ≥ 40):
+    /// lighting changes a surface's brightness, not its hue, so a plant with
+    /// brown stems and green leaves fills two sectors and a one-colour plant
+    /// one.
+    pub fn hue_sectors(&self, min_share: f64) -> Vec<usize> {
+        let mut sectors = [0usize; 12];
+        let mut opaque = 0usize;
+        for (_, _, p) in self.pixels().filter(|(_, _, p)| p[3] == 255) {
+            opaque += 1;
+            let [r, g, b] = [p[0], p[1], p[2]].map(f64::from);
+            let (max, min) = (r.max(g).max(b), r.min(g).min(b));
+            if max - min < 40.0 {
+                continue;
+            }
+            let h = if max == r {
+                60.0 * ((g - b) / (max - min)).rem_euclid(6.0)
+            } else if max == g {
+                60.0 * ((b - r) / (max - min) + 2.0)
+            } else {
+                60.0 * ((r - g) / (max - min) + 4.0)
+            };
+            sectors[((h / 30.0) as usize).min(11)] += 1;
+        }
+        (0..12).filter(|&k| opaque > 0 && sectors[k] as f64 >= min_share * opaque as f64).collect()
+    }
+}

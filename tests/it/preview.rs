@@ -130,6 +130,32 @@ fn every_library_grammar_is_drawn_centred_and_not_mostly_background() {
     assert!(off_centre.is_empty(), "previews not centred or not filling 60–90 %: {}", off_centre.join(", "));
 }
 
+/// Issue 19: "every L-system plant has more than one colour" (ABOP-style
+/// stems and leaves). Every `.ls` grammar is named here as a plant or not,
+/// so a new one has to be classified.
+#[test]
+fn every_l_system_plant_has_more_than_one_colour() {
+    const PLANTS: [&str; 11] = [
+        "bush3d.ls", "grass.ls", "hogeweg.ls", "plant-a.ls", "plant-b.ls", "plant-c.ls", "plant-d.ls", "plant-e.ls", "plant-f.ls", "stochastic-plant.ls", "tropism-tree.ls",
+    ];
+    // Curves and fractals: seed 001's Sierpinski bush is the instancing
+    // benchmark's self-similar figure, not an ABOP plant.
+    const NOT_PLANTS: [&str; 4] = ["hilbert3d.ls", "koch.ls", "sierpinski-bush.ls", "sierpinski-tetrahedron.ls"];
+    let mut one_colour = Vec::new();
+    for (name, language, source) in library().into_iter().filter(|(_, l, _)| *l == Language::Lsystem) {
+        assert!(PLANTS.contains(&name.as_str()) != NOT_PLANTS.contains(&name.as_str()), "{name}: classify it as a plant or not");
+        if !PLANTS.contains(&name.as_str()) {
+            continue;
+        }
+        let out = render(&source, &png_request(language, PreviewOptions::default())).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let sectors = Picture::decode(&out.bytes).hue_sectors(0.02);
+        if sectors.len() < 2 {
+            one_colour.push(format!("{name} (hue sectors {sectors:?})"));
+        }
+    }
+    assert!(one_colour.is_empty(), "plants drawn in one colour: {}", one_colour.join(", "));
+}
+
 #[test]
 fn a_preview_carries_engine_language_and_seed_and_is_the_same_twice() {
     let source = std::fs::read(repo().join("grammars/gem.mdg")).expect("gem");
