@@ -58,8 +58,8 @@ pub(super) fn findings(r: &PrintReport, profile: &PrinterProfile) -> Vec<Finding
             out.push(Finding {
                 code: FindingCode::ThinWall,
                 message: format!(
-                    "thinnest feature is a wall {t:.3} mm thick at ({:.2}, {:.2}, {:.2}) mm, below the printer's {min_wall} mm minimum ({} of {} places measured are thinner): it may not print (raise size_mm)",
-                    at[0], at[1], at[2], r.thin_wall_places, r.wall_rays
+                    "thinnest feature is a wall {t:.3} mm thick at ({:.2}, {:.2}, {:.2}) mm, below the printer's {min_wall} mm minimum ({} of {} places measured are thinner, {:.1} mm² of surface): it may not print (raise size_mm)",
+                    at[0], at[1], at[2], r.thin_wall_places, r.wall_rays, r.thin_wall_area_mm2
                 ),
                 position_mm: Some(at),
                 value: Some(t),

@@ -149,6 +149,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
         report.thinnest_wall_at_mm = walls.thinnest.map(|w| w.1);
         report.wall_rays = walls.rays;
         report.thin_wall_places = walls.thin;
+        report.thin_wall_area_mm2 = walls.thin_area;
         report.judge(&options.profile);
     }
     Ok((vec![NamedMesh { name: "print".into(), mesh }], report))

@@ -43,6 +43,8 @@ pub struct PrintReport {
     pub wall_rays: u64,
     /// Rays that measured less than the profile's minimum wall.
     pub thin_wall_places: u64,
+    /// The surface area those rays left from (mm²).
+    pub thin_wall_area_mm2: f64,
     /// The printer profile the findings are judged against.
     pub profile: ProfileReport,
     /// Model units per millimetre applied.
