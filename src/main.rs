@@ -184,6 +184,15 @@ struct RenderArgs {
     /// With --print: write the JSON printability report instead of the model.
     #[arg(long, requires = "print")]
     print_report: bool,
+    /// With --print: the printer's thinnest wall or feature in mm (default 0.8); thinner walls are reported as thin_wall.
+    #[arg(long, value_name = "MM", requires = "print")]
+    min_wall_mm: Option<f64>,
+    /// With --print: the printer's build volume XxYxZ in mm (default 250x210x210); a larger model is reported as too_big.
+    #[arg(long, value_name = "XxYxZ", requires = "print")]
+    build_volume_mm: Option<String>,
+    /// With --print: the most triangles the printer accepts (default 1000000); more are reported as too_many_triangles.
+    #[arg(long, value_name = "N", requires = "print")]
+    triangle_ceiling: Option<u64>,
     /// png: width and height in pixels (16-2048).
     #[arg(long, default_value_t = rulemesh::preview::DEFAULT_SIZE)]
     size: u32,
@@ -279,6 +288,14 @@ fn parse_params(raw: &[String]) -> Result<BTreeMap<String, ParamValue>, Failure>
         .collect()
 }
 
+/// The printer profile of `--min-wall-mm`, `--build-volume-mm` and
+/// `--triangle-ceiling` (each checked; a bad one is a usage error).
+fn printer_profile(args: &RenderArgs) -> Result<rulemesh::print::PrinterProfile, Failure> {
+    let usage = |e: rulemesh::print::PrintError| Failure::new(EXIT_USAGE, e.to_string());
+    let build = args.build_volume_mm.as_deref().map(rulemesh::print::profile::parse_build_volume).transpose().map_err(usage)?;
+    rulemesh::print::PrinterProfile::from_request(args.min_wall_mm, build.as_deref(), args.triangle_ceiling).map_err(usage)
+}
+
 fn limits_from(args: &RenderArgs) -> Limits {
     let d = Limits::default();
     Limits {
@@ -349,6 +366,7 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
                     None => 0,
                 },
                 report: args.print_report,
+                profile: printer_profile(&args)?,
             },
             preview: rulemesh::preview::PreviewOptions {
                 size: args.size,

@@ -142,6 +142,15 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
     if p.enabled {
         e.u64("print.size_um", p.size_um.into());
         e.field("print.report", &[u8::from(p.report)]);
+        // Only a profile other than the default: requests that name none
+        // (or name the default) keep the keys they had before profiles.
+        if p.profile != crate::print::PrinterProfile::default() {
+            e.u64("print.min_wall_um", p.profile.min_wall_um.into());
+            for side in p.profile.build_um {
+                e.u64("print.build_um", side.into());
+            }
+            e.u64("print.triangle_ceiling", p.profile.triangle_ceiling.into());
+        }
     }
     e.u64("detail", req.detail.into());
     e.field("layout", layout_name(req.layout).as_bytes());
@@ -205,5 +214,25 @@ mod tests {
         // The timeout does not change a finished model.
         let t = RenderRequest { limits: Limits { timeout_ms: 1, ..Limits::default() }, ..base.clone() };
         assert_eq!(k, cache_key(src, &t));
+    }
+
+    #[test]
+    fn each_printer_profile_value_changes_a_print_key_and_the_default_changes_none() {
+        use crate::print::{PrintOptions, PrinterProfile};
+        let src = b"startshape A\nrule A { BOX {} }\n";
+        let mut print = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
+        print.export_options.print = PrintOptions { enabled: true, ..PrintOptions::default() };
+        let k = cache_key(src, &print);
+        let d = PrinterProfile::default();
+        for profile in [PrinterProfile { min_wall_um: 400, ..d }, PrinterProfile { build_um: [250_000, 210_000, 200_000], ..d }, PrinterProfile { triangle_ceiling: 10, ..d }] {
+            let mut p = print.clone();
+            p.export_options.print.profile = profile;
+            assert_ne!(k, cache_key(src, &p), "{profile:?}");
+        }
+        // The default named explicitly is the same request.
+        let named = PrinterProfile::from_request(Some(0.8), Some(&[250.0, 210.0, 210.0]), Some(1_000_000)).expect("valid");
+        let mut p = print.clone();
+        p.export_options.print.profile = named;
+        assert_eq!(k, cache_key(src, &p));
     }
 }

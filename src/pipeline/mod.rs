@@ -185,8 +185,9 @@ impl From<PrintError> for RenderError {
     fn from(e: PrintError) -> Self {
         match e {
             PrintError::Limit(l) => RenderError::Limit(l),
-            // The model has nothing closed to print, or the size is off: the request's fault.
-            e @ (PrintError::NothingPrintable(_) | PrintError::BadSize(_)) => RenderError::Unprintable(e),
+            // The model has nothing closed to print, or an option is off: the request's fault.
+            e @ PrintError::NothingPrintable(_) => RenderError::Unprintable(e),
+            e if e.is_bad_option() => RenderError::Unprintable(e),
             other => RenderError::Export(ExportError::Print(other)),
         }
     }

@@ -9,11 +9,17 @@
 //! so), turned outward, and united by Manifold (`manifold-rs`), whose exact
 //! predicates keep the result manifold even where surfaces touch.
 
+mod bvh;
 mod colour;
+pub mod findings;
+pub mod profile;
 mod report;
+pub mod thickness;
 mod union;
 
-pub use report::{measure, measure_stl, PrintReport};
+pub use findings::{Finding, FindingCode};
+pub use profile::PrinterProfile;
+pub use report::{measure, measure_stl, PrintReport, ProfileReport};
 
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh};
@@ -29,13 +35,13 @@ pub struct PrintOptions {
     pub size_um: u32,
     /// Answer with the JSON printability report instead of the model.
     pub report: bool,
+    /// What the printer can make: the report's findings are judged against
+    /// it, and open surfaces are thickened to its minimum wall.
+    pub profile: PrinterProfile,
 }
 
 /// The colour of a triangle whose mesh has none (linear RGBA8, light grey).
 pub const PLAIN: [u8; 4] = [200, 200, 200, 255];
-
-/// The thinnest feature most FDM printers reproduce (a 0.4 mm nozzle's two perimeters).
-pub const MIN_FEATURE_MM: f64 = 0.8;
 
 /// The thickest wall an open surface is given, as a fraction of the model's
 /// longest side.
@@ -56,6 +62,22 @@ pub enum PrintError {
     /// The size is out of range.
     #[error("size_mm must be in (0, 10000], found {0}")]
     BadSize(f64),
+    /// The printer profile's minimum wall is out of range.
+    #[error("min_wall_mm must be in (0, 100], found {0}")]
+    BadMinWall(f64),
+    /// The printer profile's build volume is not three sizes in range.
+    #[error("build_volume_mm: {0}")]
+    BadBuildVolume(String),
+    /// The printer profile's triangle ceiling is out of range.
+    #[error("triangle_ceiling must be in 1..=100000000, found {0}")]
+    BadTriangleCeiling(u64),
+}
+
+impl PrintError {
+    /// Whether the request's print options are at fault (a 400), not the model.
+    pub fn is_bad_option(&self) -> bool {
+        matches!(self, PrintError::BadSize(_) | PrintError::BadMinWall(_) | PrintError::BadBuildVolume(_) | PrintError::BadTriangleCeiling(_))
+    }
 }
 
 /// Reads a `size_mm` value into micrometres.
@@ -68,20 +90,25 @@ pub fn size_um(size_mm: f64) -> Result<u32, PrintError> {
 
 /// Unites every closed part of `meshes` into one solid in millimetres and
 /// measures it. The result is one mesh named "print" with flat normals.
+/// With `options.report`, also measures the walls and judges the result
+/// against the printer profile (the findings); without, the report is only
+/// the measurements the response headers need.
 pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
+    options.profile.validate()?;
+    let min_wall = options.profile.min_wall_mm();
     // Open surfaces become walls of the thinnest printable thickness at the
-    // printed size, but at most 5 % of the model (a 1-unit-is-1-mm model
-    // would otherwise turn into a blob of 0.8 mm walls).
+    // printed size (the profile's minimum wall), but at most 5 % of the model
+    // (a 1-unit-is-1-mm model would otherwise turn into a blob of 0.8 mm walls).
     let (lo, hi) = bounds(meshes.iter().flat_map(|m| m.mesh.positions.iter()).map(|p| glam::Vec3::from_array(*p).as_dvec3()));
     let extent = (hi - lo).max_element();
     // The walls themselves add up to their thickness w to the longest side,
-    // so the final scale is at least size / (extent + w): w = 0.8 · (extent + w)
-    // / size keeps them at 0.8 mm or more once scaled.
+    // so the final scale is at least size / (extent + w): w = m · (extent + w)
+    // / size keeps them at the minimum m or more once scaled.
     let wall = if extent > 0.0 && extent.is_finite() {
         let size = f64::from(options.size_um) / 1000.0;
         let w = match options.size_um {
-            0 => MIN_FEATURE_MM,
-            _ if size > MIN_FEATURE_MM => MIN_FEATURE_MM * extent / (size - MIN_FEATURE_MM),
+            0 => min_wall,
+            _ if size > min_wall => min_wall * extent / (size - min_wall),
             _ => f64::INFINITY,
         };
         w.min(MAX_WALL_FRACTION * extent)
@@ -116,7 +143,15 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     report.wall_mm = if parts.thickened > 0 { wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
-    report.add_warnings(parts.skipped);
+    if options.report {
+        let walls = thickness::measure_walls(&scaled, &indices, min_wall, budget)?;
+        report.thinnest_wall_mm = walls.thinnest.map(|w| w.0);
+        report.thinnest_wall_at_mm = walls.thinnest.map(|w| w.1);
+        report.wall_rays = walls.rays;
+        report.thin_wall_places = walls.thin;
+        report.thin_wall_area_mm2 = walls.thin_area;
+        report.judge(&options.profile);
+    }
     Ok((vec![NamedMesh { name: "print".into(), mesh }], report))
 }
 

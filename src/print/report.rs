@@ -1,6 +1,8 @@
-//! The printability report: what a slicer would want to know first.
+//! The printability report: what a slicer would want to know first, and
+//! what is wrong against the printer profile ([`super::findings`]).
 
-use super::MIN_FEATURE_MM;
+use super::findings::Finding;
+use super::profile::PrinterProfile;
 use crate::geom::halfedge::HalfEdgeMesh;
 use glam::DVec3;
 use serde::Serialize;
@@ -29,44 +31,51 @@ pub struct PrintReport {
     pub thickened_parts: u64,
     /// Thickness of those walls (mm); 0 when nothing was thickened.
     pub wall_mm: f64,
-    /// Smallest bounding-box side of any part (mm): an estimate of the thinnest feature.
+    /// Smallest bounding-box side of any part (mm): a rough estimate of the
+    /// thinnest feature, kept for older clients; `thinnest_wall_mm` is measured.
     pub min_feature_mm: f64,
+    /// The thinnest wall measured (mm, by rays inward from the surface,
+    /// [`super::thickness`]); `None` when nothing was measured.
+    pub thinnest_wall_mm: Option<f64>,
+    /// Where that wall starts on the surface (mm).
+    pub thinnest_wall_at_mm: Option<[f64; 3]>,
+    /// Rays cast to measure walls (one per triangle, or an even sample of at most 50,000).
+    pub wall_rays: u64,
+    /// Rays that measured less than the profile's minimum wall.
+    pub thin_wall_places: u64,
+    /// The surface area those rays left from (mm²).
+    pub thin_wall_area_mm2: f64,
+    /// The printer profile the findings are judged against.
+    pub profile: ProfileReport,
     /// Model units per millimetre applied.
     pub scale: f64,
     /// Edges with other than two faces, or two faces wound the same way: where
     /// parts touch only along an edge or at a point, the union is not a 2-manifold.
     pub nonmanifold_edges: u64,
-    /// Human-readable problems (thin features, several shells, skipped parts).
+    /// What is wrong against the profile: codes, messages, places, values.
+    pub findings: Vec<Finding>,
+    /// The findings' messages (kept for clients that read text).
     pub warnings: Vec<String>,
 }
 
+/// The printer profile as the report shows it, in millimetres.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct ProfileReport {
+    /// Thinnest wall the printer makes (mm).
+    pub min_wall_mm: f64,
+    /// Build volume x, y, z (mm).
+    pub build_volume_mm: [f64; 3],
+    /// Most triangles accepted.
+    pub triangle_ceiling: u64,
+}
+
 impl PrintReport {
-    /// Adds the warnings the numbers imply.
-    pub(super) fn add_warnings(&mut self, skipped: u64) {
-        if self.min_feature_mm < MIN_FEATURE_MM {
-            self.warnings.push(format!(
-                "thinnest feature is about {:.3} mm, below {MIN_FEATURE_MM} mm: it may not print (raise size_mm)",
-                self.min_feature_mm
-            ));
-        }
-        if self.shells > 1 {
-            self.warnings.push(format!("{} separate shells: the parts do not all touch (or the solid has inner cavities)", self.shells));
-        }
-        if self.thickened_parts > 0 {
-            self.warnings.push(format!(
-                "the model has no solid: its {} open or non-manifold parts (surfaces without volume) were thickened into walls {:.3} mm thick",
-                self.thickened_parts, self.wall_mm
-            ));
-        }
-        if skipped > 0 {
-            self.warnings.push(format!("{skipped} open or non-manifold parts (e.g. free-vertex surfaces) were left out"));
-        }
-        if !self.is_watertight {
-            self.warnings.push(format!(
-                "the result is not watertight: {} edges are not shared by exactly two oppositely wound faces (parts that touch only along an edge or at a point); separate them slightly or thicken the contact",
-                self.nonmanifold_edges
-            ));
-        }
+    /// Judges the measurements against `profile`: the findings, and the
+    /// warnings (their messages).
+    pub(super) fn judge(&mut self, profile: &PrinterProfile) {
+        self.profile = ProfileReport { min_wall_mm: profile.min_wall_mm(), build_volume_mm: profile.build_mm(), triangle_ceiling: profile.triangle_ceiling.into() };
+        self.findings = super::findings::findings(self, profile);
+        self.warnings = self.findings.iter().map(|f| f.message.clone()).collect();
     }
 
     /// The report as HTTP header pairs (`X-Print-…`), for responses that carry the model.

@@ -129,8 +129,8 @@ impl From<RenderError> for ServiceError {
             RenderError::Parse(p) => ServiceError::Parse(p),
             RenderError::Limit(l) => ServiceError::Limit(l),
             RenderError::Eval(e) => ServiceError::Eval(e),
-            // A size out of range is a bad parameter; a model with nothing to print is unprocessable.
-            RenderError::Unprintable(p @ crate::print::PrintError::BadSize(_)) => ServiceError::BadRequest(format!("print: {p}")),
+            // A size or profile out of range is a bad parameter; a model with nothing to print is unprocessable.
+            RenderError::Unprintable(p) if p.is_bad_option() => ServiceError::BadRequest(format!("print: {p}")),
             e @ RenderError::Unprintable(_) => ServiceError::Unprocessable { code: "unprintable", message: e.to_string() },
             e @ RenderError::TooLarge { .. } => ServiceError::Unprocessable { code: "output_too_large", message: e.to_string() },
             // Options the format cannot honour for this request (the scene
@@ -289,5 +289,7 @@ mod tests {
         assert!(unprintable.to_string().starts_with("print: "), "{unprintable}");
         let size: ServiceError = RenderError::Unprintable(PrintError::BadSize(0.0)).into();
         assert_eq!((size.http_status(), size.code()), (StatusCode::BAD_REQUEST, "bad_request"));
+        let wall: ServiceError = RenderError::Unprintable(PrintError::BadMinWall(0.0)).into();
+        assert_eq!((wall.http_status(), wall.code(), wall.grpc_code()), (StatusCode::BAD_REQUEST, "bad_request", tonic::Code::InvalidArgument));
     }
 }

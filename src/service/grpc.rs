@@ -69,6 +69,10 @@ impl From<pb::RenderRequest> for RenderBody {
             print: r.print,
             size_mm: r.size_mm,
             print_report: r.print_report,
+            min_wall_mm: r.min_wall_mm,
+            // Absent and empty are the same on the wire: the default volume.
+            build_volume_mm: if r.build_volume_mm.is_empty() { None } else { Some(r.build_volume_mm) },
+            triangle_ceiling: r.triangle_ceiling,
             size: r.size,
             view: non_empty(r.view),
             background: non_empty(r.background),

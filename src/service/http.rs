@@ -464,6 +464,9 @@ async fn model_get(
                 "print" => body.print = Some(v.parse().map_err(|_| bad("print must be true or false"))?),
                 "size_mm" => body.size_mm = Some(v.parse().map_err(|_| bad("size_mm must be a number"))?),
                 "print_report" => body.print_report = Some(v.parse().map_err(|_| bad("print_report must be true or false"))?),
+                "min_wall_mm" => body.min_wall_mm = Some(v.parse().map_err(|_| bad("min_wall_mm must be a number"))?),
+                "build_volume_mm" => body.build_volume_mm = Some(crate::print::profile::parse_build_volume(&v).map_err(|e| bad(&e.to_string()))?),
+                "triangle_ceiling" => body.triangle_ceiling = Some(v.parse().map_err(|_| bad("triangle_ceiling must be a whole number"))?),
                 "size" => body.size = Some(v.parse().map_err(|_| bad("size must be a whole number of pixels"))?),
                 "view" => body.view = Some(v.clone()),
                 "background" => body.background = Some(v.clone()),
@@ -471,7 +474,7 @@ async fn model_get(
                     Some(p) if !p.is_empty() => {
                         body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
                     }
-                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, size, view, background, p.<name>)")),
+                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, min_wall_mm, build_volume_mm, triangle_ceiling, size, view, background, p.<name>)")),
                 },
             }
         }

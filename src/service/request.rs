@@ -165,6 +165,16 @@ pub struct RenderBody {
     pub size_mm: Option<f64>,
     /// With `print`: answer with the JSON printability report instead of the model.
     pub print_report: Option<bool>,
+    /// With `print`: the printer's thinnest wall or feature in millimetres,
+    /// in (0, 100] (default 0.8); thinner walls are reported as `thin_wall`
+    /// and open surfaces are thickened to it.
+    pub min_wall_mm: Option<f64>,
+    /// With `print`: the printer's build volume x, y, z in millimetres, each
+    /// in (0, 10000] (default [250, 210, 210]); a larger model is reported as `too_big`.
+    pub build_volume_mm: Option<Vec<f64>>,
+    /// With `print`: the most triangles the printer accepts, 1 to 10⁸
+    /// (default 1,000,000); more are reported as `too_many_triangles`.
+    pub triangle_ceiling: Option<u64>,
     /// `png` only: width and height in pixels (16–2048, default 256).
     pub size: Option<u32>,
     /// `png` only: `"three-quarter"` (default), `"front"`, `"top"` or `"iso"`.
@@ -282,17 +292,21 @@ pub fn parse_fit(name: Option<&str>) -> Result<bool, ServiceError> {
     }
 }
 
-/// Reads the print fields; `size_mm` and `print_report` need `print`.
-pub fn print_options(print: Option<bool>, size_mm: Option<f64>, report: Option<bool>) -> Result<crate::print::PrintOptions, ServiceError> {
-    let enabled = print.unwrap_or(false);
-    if !enabled && (size_mm.is_some() || report == Some(true)) {
-        return Err(ServiceError::BadRequest("size_mm and print_report need print=true".into()));
+/// Reads the print fields of `body`; the others (`size_mm`, `print_report`
+/// and the printer profile) need `print`.
+pub fn print_options(body: &RenderBody) -> Result<crate::print::PrintOptions, ServiceError> {
+    let enabled = body.print.unwrap_or(false);
+    let profile_named = body.min_wall_mm.is_some() || body.build_volume_mm.is_some() || body.triangle_ceiling.is_some();
+    if !enabled && (body.size_mm.is_some() || body.print_report == Some(true) || profile_named) {
+        return Err(ServiceError::BadRequest("size_mm, print_report, min_wall_mm, build_volume_mm and triangle_ceiling need print=true".into()));
     }
-    let size_um = match size_mm {
-        Some(mm) => crate::print::size_um(mm).map_err(|e| ServiceError::BadRequest(e.to_string()))?,
+    let bad = |e: crate::print::PrintError| ServiceError::BadRequest(format!("print: {e}"));
+    let size_um = match body.size_mm {
+        Some(mm) => crate::print::size_um(mm).map_err(bad)?,
         None => 0,
     };
-    Ok(crate::print::PrintOptions { enabled, size_um, report: report.unwrap_or(false) })
+    let profile = crate::print::PrinterProfile::from_request(body.min_wall_mm, body.build_volume_mm.as_deref(), body.triangle_ceiling).map_err(bad)?;
+    Ok(crate::print::PrintOptions { enabled, size_um, report: body.print_report.unwrap_or(false), profile })
 }
 
 impl RenderBody {
@@ -300,6 +314,7 @@ impl RenderBody {
     pub fn plan(self, ceiling: &Limits, no_cache: bool) -> Result<RenderPlan, ServiceError> {
         let format = parse_format(self.format.as_deref())?;
         let preview = preview_options(format, self.size, self.view.as_deref(), self.background.as_deref())?;
+        let print = print_options(&self)?;
         let request = RenderRequest {
             language: parse_language(self.language.as_deref())?,
             seed: self.seed,
@@ -324,7 +339,6 @@ impl RenderBody {
                 };
                 let fit_unit_box = parse_fit(self.fit.as_deref())?;
                 let instancing = parse_instancing(self.instancing.as_deref())?;
-                let print = print_options(self.print, self.size_mm, self.print_report)?;
                 ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview }
             },
             // The service reads no files: Builder.load takes library grammars only.

@@ -147,14 +147,26 @@ fn options() -> Value {
             "print": { "type": "boolean", "default": false },
             "size_mm": { "type": "number", "exclusiveMinimum": 0, "maximum": 10000 },
             "print_report": { "type": "boolean", "default": false },
+            "min_wall_mm": { "type": "number", "exclusiveMinimum": 0, "maximum": crate::print::profile::MAX_MIN_WALL_MM, "default": f64::from(crate::print::profile::DEFAULT_MIN_WALL_UM) / 1000.0 },
+            "build_volume_mm": {
+                "type": "array",
+                "items": { "type": "number", "exclusiveMinimum": 0, "maximum": crate::print::profile::MAX_BUILD_MM },
+                "minItems": 3,
+                "maxItems": 3,
+                "default": crate::print::profile::DEFAULT_BUILD_UM.map(|v| f64::from(v) / 1000.0)
+            },
+            "triangle_ceiling": { "type": "integer", "minimum": 1, "maximum": crate::print::profile::MAX_TRIANGLE_CEILING, "default": crate::print::profile::DEFAULT_TRIANGLE_CEILING },
             "size": { "type": "integer", "minimum": crate::preview::MIN_SIZE, "maximum": crate::preview::MAX_SIZE, "default": crate::preview::DEFAULT_SIZE },
             "view": { "enum": views, "default": crate::preview::View::default().name() },
             "background": { "type": "string", "pattern": "^\\s*(|[Tt][Rr][Aa][Nn][Ss][Pp][Aa][Rr][Ee][Nn][Tt]|#?[0-9A-Fa-f]{6})\\s*$", "default": "transparent" }
         },
-        // `size_mm` and `print_report` only with `print: true`.
+        // `size_mm`, `print_report` and the printer profile only with `print: true`.
         "dependentSchemas": {
             "size_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
             "print_report": { "properties": { "print": { "const": true } }, "required": ["print"] },
+            "min_wall_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
+            "build_volume_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
+            "triangle_ceiling": { "properties": { "print": { "const": true } }, "required": ["print"] },
             // `size`, `view` and `background` only with `format: png`.
             "size": { "properties": { "format": { "const": "png" } }, "required": ["format"] },
             "view": { "properties": { "format": { "const": "png" } }, "required": ["format"] },

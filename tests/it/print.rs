@@ -143,6 +143,62 @@ fn overlapping_parts_are_united() {
     assert_eq!(out.status.code(), Some(2));
 }
 
+/// The findings of a report, as (code, value to a micrometre) pairs.
+fn findings(report: &serde_json::Value) -> Vec<(String, Option<f64>)> {
+    let um = |v: f64| (v * 1000.0).round() / 1000.0;
+    report["findings"].as_array().expect("findings").iter().map(|f| (f["code"].as_str().expect("code").to_string(), f["value"].as_f64().map(um))).collect()
+}
+
+/// The printer profile through the CLI, on `tests/data/print/thin-plate.mdg`
+/// (20 × 20 × 0.5 mm at `--size-mm 20`): the measured thinnest wall is the
+/// plate's 0.5 mm and is flagged against the default 0.8 mm minimum, not
+/// against 0.4 mm; too big for a small build volume; too many triangles
+/// under a low ceiling; a bad profile value is a usage error.
+#[test]
+fn printer_profile_findings_through_the_cli() {
+    let plate = repo().join("tests/data/print/thin-plate.mdg");
+    let report = |size: &str, extra: &[&str]| {
+        let mut args = vec!["render", plate.to_str().expect("utf-8"), "--print", "--print-report", "--size-mm", size, "-o", "-"];
+        args.extend_from_slice(extra);
+        let out = run(&args, None);
+        assert!(out.status.success(), "{extra:?}: {}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).expect("report is JSON")
+    };
+    let r = report("20", &[]);
+    let bbox: Vec<f64> = r["bbox_mm"].as_array().expect("bbox").iter().map(|v| v.as_f64().expect("mm")).collect();
+    assert!((bbox[0] - 20.0).abs() < 1e-3 && (bbox[1] - 20.0).abs() < 1e-3 && (bbox[2] - 0.5).abs() < 1e-3, "{r}");
+    let thinnest = r["thinnest_wall_mm"].as_f64().expect("measured");
+    assert!((thinnest - 0.5).abs() < 0.1, "{r}");
+    let thin = &r["findings"][0];
+    assert_eq!(thin["code"], "thin_wall", "{r}");
+    assert!((thin["value"].as_f64().expect("value") - 0.5).abs() < 0.1, "{r}");
+    // The place is on the plate's top or bottom face (z 0.5 or 0).
+    let z = thin["position_mm"][2].as_f64().expect("position");
+    assert!(z.abs() < 1e-3 || (z - 0.5).abs() < 1e-3, "{r}");
+    assert_eq!(findings(&r), vec![("thin_wall".to_string(), Some(0.5))]);
+    assert_eq!(r["profile"], serde_json::json!({ "min_wall_mm": 0.8, "build_volume_mm": [250.0, 210.0, 210.0], "triangle_ceiling": 1_000_000 }));
+    assert!(r["warnings"][0].as_str().expect("warning").contains("thinnest feature"), "{r}");
+    // A printer that makes 0.4 mm walls: nothing to say.
+    let r = report("20", &["--min-wall-mm", "0.4"]);
+    assert_eq!(findings(&r), vec![], "{r}");
+    assert_eq!(r["profile"]["min_wall_mm"], 0.4);
+    // Over a low triangle ceiling (the plate is 12 triangles).
+    let r = report("20", &["--min-wall-mm", "0.4", "--triangle-ceiling", "4"]);
+    assert_eq!(findings(&r), vec![("too_many_triangles".to_string(), Some(12.0))], "{r}");
+    // 300 mm across does not fit the default 250 × 210 × 210 mm: 90 mm over along y.
+    let r = report("300", &[]);
+    assert_eq!(findings(&r), vec![("too_big".to_string(), Some(90.0))], "{r}");
+    // A given build volume it fits: nothing to say (the plate is 7.5 mm thick).
+    let r = report("300", &["--build-volume-mm", "300x300x10"]);
+    assert_eq!(findings(&r), vec![], "{r}");
+    // Out of range: usage errors.
+    for bad in [["--min-wall-mm", "0"], ["--build-volume-mm", "1x2"], ["--triangle-ceiling", "0"]] {
+        let mut args = vec!["render", plate.to_str().expect("utf-8"), "--print", "--print-report", "-o", "-"];
+        args.extend_from_slice(&bad);
+        assert_eq!(run(&args, None).status.code(), Some(2), "{bad:?}");
+    }
+}
+
 #[test]
 fn every_example_in_docs_print_prints_watertight() {
     let doc = std::fs::read_to_string(repo().join("docs/print.md")).expect("docs/print.md");

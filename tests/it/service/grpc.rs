@@ -33,6 +33,13 @@ async fn grpc_matches_http_and_maps_errors() {
     let req = pb::RenderRequest { source: source.clone(), format: "3mf".into(), print: Some(true), size_mm: Some(40.0), ..Default::default() };
     let reply = g.render(req).await.expect("Render print").into_inner();
     assert!(reply.model == http.as_ref() && http.starts_with(b"PK"), "gRPC and HTTP print bytes differ");
+    // The printer profile too: a low ceiling is a finding, a bad minimum wall is INVALID_ARGUMENT.
+    let boxes = "rule R { BOX {} BOX { x 0.5 } }".to_string();
+    let req = pb::RenderRequest { source: boxes.clone(), print: Some(true), print_report: Some(true), triangle_ceiling: Some(4), build_volume_mm: vec![250.0, 210.0, 210.0], ..Default::default() };
+    let report: Value = serde_json::from_slice(&g.render(req).await.expect("Render report").into_inner().model).expect("report");
+    assert!(report["findings"].as_array().expect("findings").iter().any(|f| f["code"] == "too_many_triangles"), "{report}");
+    let err = g.render(pb::RenderRequest { source: boxes, print: Some(true), min_wall_mm: Some(0.0), ..Default::default() }).await.expect_err("bad wall");
+    assert_eq!(err.code(), tonic::Code::InvalidArgument);
 
     let err = g.render(pb::RenderRequest { source: "startshape A\nrule A { BOX { x } }".into(), ..Default::default() }).await.expect_err("parse error");
     assert_eq!(err.code(), tonic::Code::InvalidArgument);

@@ -549,6 +549,43 @@ async fn print_3mf_ug_stack_and_report_over_http() {
     // Built-in grammars print through the models route too.
     let r = client().get(format!("{base}/v1/models/tower.stl?print=true&size_mm=40")).send().await.expect("request");
     assert_eq!(r.status(), 200);
+    // The printer profile: the test plate's 0.5 mm wall (at 20 mm) is thin
+    // against the default 0.8 mm, not against 0.4 mm; a small build volume
+    // and a low triangle ceiling are findings too.
+    let plate = std::fs::read_to_string(common::repo().join("tests/data/print/thin-plate.mdg")).expect("plate");
+    let report = |extra: Value| {
+        let mut body = json!({"source": plate, "print": true, "size_mm": 20, "print_report": true});
+        body.as_object_mut().expect("object").extend(extra.as_object().expect("object").clone());
+        let base = base.clone();
+        async move {
+            let r = post(&base, "/v1/render", &body).await;
+            assert_eq!(r.status(), 200, "{body}");
+            r.json::<Value>().await.expect("report")
+        }
+    };
+    let codes = |r: &Value| r["findings"].as_array().expect("findings").iter().map(|f| f["code"].as_str().expect("code").to_string()).collect::<Vec<_>>();
+    let r = report(json!({})).await;
+    assert_eq!(codes(&r), ["thin_wall"], "{r}");
+    assert!((r["thinnest_wall_mm"].as_f64().expect("mm") - 0.5).abs() < 0.1, "{r}");
+    let r = report(json!({"min_wall_mm": 0.4})).await;
+    assert_eq!(codes(&r), Vec::<String>::new(), "{r}");
+    let r = report(json!({"min_wall_mm": 0.4, "build_volume_mm": [10, 10, 10], "triangle_ceiling": 4})).await;
+    assert_eq!(codes(&r), ["too_big", "too_many_triangles"], "{r}");
+    assert_eq!(r["profile"]["build_volume_mm"], json!([10.0, 10.0, 10.0]));
+    // The models route takes the profile as query parameters.
+    let r = client().get(format!("{base}/v1/models/rook.stl?print=true&print_report=true&build_volume_mm=10x10x10")).send().await.expect("request");
+    assert_eq!(r.status(), 200);
+    let r: Value = r.json().await.expect("report");
+    assert!(codes(&r).contains(&"too_big".to_string()), "{r}");
+    // Out of range, malformed, or without print: 400.
+    for bad in [json!({"min_wall_mm": 0}), json!({"min_wall_mm": 101}), json!({"build_volume_mm": [1, 2]}), json!({"build_volume_mm": [1, 2, -3]}), json!({"triangle_ceiling": 0})] {
+        let mut body = json!({"source": source, "print": true});
+        body.as_object_mut().expect("object").extend(bad.as_object().expect("object").clone());
+        let r = post(&base, "/v1/render", &body).await;
+        assert_eq!(r.status(), 400, "{body}");
+    }
+    let r = post(&base, "/v1/render", &json!({"source": source, "min_wall_mm": 0.4})).await;
+    assert_eq!(r.status(), 400);
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }

@@ -76,6 +76,10 @@ async fn schemas_validate_and_agree_with_the_server() {
         (json!({ "detail": 1000 }), false),
         (json!({ "size_mm": 40 }), false),
         (json!({ "print": true, "size_mm": 40, "format": "3mf" }), true),
+        (json!({ "print": true, "min_wall_mm": 0.4, "build_volume_mm": [100, 100, 50], "triangle_ceiling": 5000, "format": "stl" }), true),
+        (json!({ "min_wall_mm": 0.4 }), false),
+        (json!({ "print": true, "build_volume_mm": [100, 100] }), false),
+        (json!({ "print": true, "triangle_ceiling": 0 }), false),
         (json!({ "seed": "-1" }), false),
     ];
     let instances: Vec<Value> = cases.iter().map(|(v, _)| v.clone()).collect();
