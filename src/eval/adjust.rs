@@ -22,6 +22,16 @@ pub(super) struct Delta {
 
 impl Delta {
     const IDENTITY: Delta = Delta { frame: Frame::IDENTITY, colour: [0.0; 4] };
+
+    /// The frame change (applied in the caller's local frame).
+    pub(super) fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// The colour offsets added.
+    pub(super) fn colour(&self) -> [f64; 4] {
+        self.colour
+    }
 }
 
 /// The state a piece of work runs in.

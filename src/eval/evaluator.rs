@@ -24,7 +24,7 @@ use crate::lang::ir::{Program, RuleTransform};
 use crate::model::animation::Rig;
 use crate::model::scene::Scene;
 use crate::model::instancing::{Placement, Tally};
-use crate::model::{Downstream, EvalError};
+use crate::model::{Downstream, EvalError, Hierarchy};
 
 /// Options for one evaluation that do not come from the source.
 #[derive(Debug, Clone, PartialEq)]
@@ -87,6 +87,25 @@ fn base_colour(program: &Program) -> [f64; 4] {
     } else {
         [NEUTRAL_GREY, NEUTRAL_GREY, NEUTRAL_GREY, 0.0]
     }
+}
+
+/// The memoised derivation of `program` as an object hierarchy
+/// (`eval::memo`), or `None` when some reachable rule uses a construct that
+/// cannot be shared (`eval::share`) or when nothing would be shared (no
+/// object is placed twice), in which case nothing was charged to `budget`.
+/// Its leaves, walked, are the instances [`evaluate`] places, in order.
+pub fn evaluate_hierarchy(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Option<Hierarchy>, EvalError> {
+    let ev = Evaluator::new(program, params, options)?;
+    if !super::share::shareable(&ev) {
+        return Ok(None);
+    }
+    let mark = budget.mark();
+    let h = super::memo::build(&ev, base_colour(program), budget)?;
+    if h.multiplicities().iter().all(|&m| m <= 1) {
+        budget.rewind(mark);
+        return Ok(None);
+    }
+    Ok(Some(h))
 }
 
 /// Evaluates `program` with bound `params` into a scene, under `budget`.

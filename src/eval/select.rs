@@ -8,16 +8,17 @@ use crate::core::Span;
 use crate::lang::ir::{GroupId, Rule, RuleGroup, Selector};
 use crate::model::EvalError;
 
+/// The rule a threshold selector picks for `value`: the one with the
+/// smallest weight that is at least `value` (none when no weight is).
+pub(super) fn threshold(rules: &[Rule], value: f64) -> Option<&Rule> {
+    rules.iter().filter(|r| r.weight >= value).min_by(|a, b| a.weight.total_cmp(&b.weight))
+}
+
 impl<'p, 'b> Machine<'p, 'b> {
     /// Picks the alternative of `group` that a call in `ctx` runs, if any.
     pub(super) fn select(&mut self, g: GroupId, group: &'p RuleGroup, ctx: &Ctx) -> Result<Option<&'p Rule>, EvalError> {
         let rules = &group.rules;
-        let threshold = |value: f64| {
-            rules
-                .iter()
-                .filter(|r| r.weight >= value)
-                .min_by(|a, b| a.weight.total_cmp(&b.weight))
-        };
+        let threshold = |value: f64| threshold(rules, value);
         Ok(match &group.selector {
             Selector::Random if rules.len() == 1 => rules.first(),
             Selector::Random => {

@@ -101,12 +101,14 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, provenance: Option
         // writer needs a buffer to point its instances into (fuzz finding).
         return if glb { super::gltf::write_glb(&[], &meta, budget) } else { super::gltf::write_gltf(&[], &meta, budget) };
     }
-    let rigid = InstanceLayout::default();
-    let bytes = super::gltf::write_instanced(&meshes, &counts, rigid, &meta, glb, budget, &mut |sink| {
+    // Rigid (L-system) hierarchies write no SCALE; MDG's similarities a uniform one.
+    let layout = InstanceLayout { scale: h.is_scaled(), colour: false };
+    let bytes = super::gltf::write_instanced(&meshes, &counts, layout, &meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };
             let rotation = leaf.rotation.as_quat().normalize().to_array();
-            sink(mesh, &InstanceData { translation: leaf.translation.as_vec3().to_array(), rotation, scale: [1.0; 3], colour: [1.0; 3] });
+            let s = leaf.scale as f32;
+            sink(mesh, &InstanceData { translation: leaf.translation.as_vec3().to_array(), rotation, scale: [s; 3], colour: [1.0; 3] });
         })
     })?;
     Ok(bytes)

@@ -8,9 +8,8 @@
 //! flat formats' meshes bit for bit. `clients/js/scene.mjs` does the same in
 //! JavaScript.
 
-use super::scene_format::{read_header, read_hierarchy, truncation, Header, Reader, SceneError, VERSION_1};
+use super::scene_format::{read_header, FLAG_SCALED, read_hierarchy, truncation, Header, Reader, SceneError, VERSION_1};
 use super::scene_v2::{index_width, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY, RUN_MESH, RUN_PLACED, RUN_PRIMITIVES};
-use crate::core::frame::Frame;
 use crate::core::PrimitiveKind;
 use crate::geom::primitives::{self, Prototype};
 use crate::geom::{Mesh, NamedMesh};
@@ -138,7 +137,7 @@ fn parse_v2(r: &mut Reader<'_>, header: &Header) -> Result<Parsed, SceneError> {
         protos.push(Prototype { positions: m.positions, normals: m.normals, indices: m.indices });
     }
     let (nshapes, nobjects) = (r.u32()?, r.u32()?);
-    let hierarchy = read_hierarchy(r, nshapes, nobjects, true)?;
+    let hierarchy = read_hierarchy(r, nshapes, nobjects, true, header.flags & FLAG_SCALED != 0)?;
     let w = index_width(palette.len());
     let nmeshes = r.u32()?;
     r.room(u64::from(nmeshes), 6)?;
@@ -206,7 +205,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
     let header = read_header(&mut r)?;
     let mut h = if header.version == VERSION_1 {
         let (nshapes, nobjects) = header.counts;
-        let h = read_hierarchy(&mut r, nshapes, nobjects, false)?;
+        let h = read_hierarchy(&mut r, nshapes, nobjects, false, false)?;
         if r.at != bytes.len() {
             return Err(SceneError::Length("followed by trailing bytes"));
         }
@@ -241,7 +240,7 @@ fn triangles(p: &Parsed, detail: u32) -> u64 {
 fn append_hierarchy(mesh: &mut Mesh, h: &Hierarchy, detail: u32) {
     let protos: Vec<Prototype> = h.shapes.iter().map(|s| s.prototype(detail)).collect();
     h.walk(&mut |leaf| {
-        let frame = Frame { translation: leaf.translation, rotation: leaf.rotation, scale: 1.0, parity: false };
+        let frame = leaf.frame();
         let colour = leaf.colour.map(|c| f64::from(f32::from(c) / 255.0));
         let inst = Instance::new(PrimitiveKind::Box, &frame, colour);
         if let Some(p) = protos.get(leaf.shape as usize) {
@@ -261,7 +260,7 @@ pub fn decode_scene_meshes(bytes: &[u8], v1_detail: u32, max_triangles: u64) -> 
     let header = read_header(&mut r)?;
     let (parsed, detail) = if header.version == VERSION_1 {
         let (nshapes, nobjects) = header.counts;
-        let hierarchy = read_hierarchy(&mut r, nshapes, nobjects, false)?;
+        let hierarchy = read_hierarchy(&mut r, nshapes, nobjects, false, false)?;
         if r.at != bytes.len() {
             return Err(SceneError::Length("followed by trailing bytes"));
         }

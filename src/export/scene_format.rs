@@ -19,6 +19,11 @@ pub const FLAG_TRUNCATED: u16 = 1;
 /// then that many bytes of UTF-8 JSON: engine, language, seed, parameters,
 /// model key; see [`Provenance::json`](super::Provenance::json)).
 pub const FLAG_PROVENANCE: u16 = 2;
+/// Header flag (version 2): every hierarchy entry carries a uniform scale
+/// (an `f64` after its rotation, [`ENTRY_BYTES_SCALED`] bytes an entry), as
+/// MDG hierarchies need; set only when some entry's scale is not 1, so a
+/// rigid (L-system) hierarchy is written exactly as before the flag existed.
+pub const FLAG_SCALED: u16 = 4;
 /// Bytes of the version 1 header.
 pub const HEADER_BYTES_V1: usize = 24;
 /// Bytes of the version 2 header.
@@ -30,6 +35,8 @@ pub const ENTRY_BYTES_V1: u64 = 36;
 /// Bytes per hierarchy entry in version 2 (f64 transform, so a reader walks
 /// the very numbers the server walked).
 pub const ENTRY_BYTES: u64 = 64;
+/// Bytes per hierarchy entry in version 2 under [`FLAG_SCALED`].
+pub const ENTRY_BYTES_SCALED: u64 = 72;
 /// Bit of an entry's reference that marks a leaf shape (else an object).
 pub const SHAPE_BIT: u32 = 1 << 31;
 
@@ -152,7 +159,8 @@ pub(super) fn read_header(r: &mut Reader<'_>) -> Result<Header, SceneError> {
         return Err(SceneError::NotScene);
     }
     let flags = r.u16()?;
-    if flags & !(FLAG_TRUNCATED | FLAG_PROVENANCE) != 0 {
+    let known = FLAG_TRUNCATED | FLAG_PROVENANCE | if version == VERSION { FLAG_SCALED } else { 0 };
+    if flags & !known != 0 {
         return Err(SceneError::Header("unknown flag bits"));
     }
     let (detail, counts) = if version == VERSION_1 {
@@ -190,8 +198,9 @@ pub fn scene_provenance(bytes: &[u8]) -> Result<Option<serde_json::Value>, Scene
 }
 
 /// Writes the hierarchy section's body (leaf shapes, then objects with f64
-/// entries); the caller writes the two counts first.
-pub(super) fn put_hierarchy(out: &mut Vec<u8>, h: &Hierarchy) {
+/// entries, each with its scale when `scaled`, which the header's
+/// [`FLAG_SCALED`] says); the caller writes the two counts first.
+pub(super) fn put_hierarchy(out: &mut Vec<u8>, h: &Hierarchy, scaled: bool) {
     for s in &h.shapes {
         out.extend_from_slice(&[s.kind as u8, u8::from(s.tube), 0, 0]);
         for x in s.scale.iter().chain(&s.offset) {
@@ -210,14 +219,18 @@ pub(super) fn put_hierarchy(out: &mut Vec<u8>, h: &Hierarchy) {
             for x in e.translation.to_array().iter().chain(&e.rotation.to_array()) {
                 out.extend_from_slice(&x.to_le_bytes());
             }
+            if scaled {
+                out.extend_from_slice(&e.scale.to_le_bytes());
+            }
             out.extend_from_slice(&e.colour);
         }
     }
 }
 
 /// Reads `nshapes` leaf shapes and `nobjects` objects; `wide` entries (version
-/// 2) hold f64 transforms, narrow ones (version 1) f32.
-pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wide: bool) -> Result<Hierarchy, SceneError> {
+/// 2) hold f64 transforms, narrow ones (version 1) f32; `scaled` ones (the
+/// header's [`FLAG_SCALED`]) also a positive f64 scale.
+pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wide: bool, scaled: bool) -> Result<Hierarchy, SceneError> {
     r.room(u64::from(nshapes), SHAPE_BYTES)?;
     r.room(u64::from(nobjects), 4)?;
     let mut h = Hierarchy { shapes: Vec::with_capacity(nshapes as usize), objects: Vec::with_capacity(nobjects as usize), truncated: None };
@@ -230,7 +243,11 @@ pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wi
         }
         h.shapes.push(LeafShape { kind, scale, offset, tube: flags & 1 != 0 });
     }
-    let entry_bytes = if wide { ENTRY_BYTES } else { ENTRY_BYTES_V1 };
+    let entry_bytes = match (wide, scaled) {
+        (false, _) => ENTRY_BYTES_V1,
+        (true, false) => ENTRY_BYTES,
+        (true, true) => ENTRY_BYTES_SCALED,
+    };
     for o in 0..nobjects {
         let n = r.u32()?;
         r.room(u64::from(n), entry_bytes)?;
@@ -243,8 +260,9 @@ pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wi
             } else {
                 (r.f32s::<3>()?.map(f64::from), r.f32s::<4>()?.map(f64::from))
             };
+            let scale = if scaled { r.f64s::<1>()?[0] } else { 1.0 };
             let colour = r.take::<4>()?;
-            if t.iter().chain(&q).any(|v| !v.is_finite()) {
+            if t.iter().chain(&q).any(|v| !v.is_finite()) || !(scale.is_finite() && scale > 0.0) {
                 return Err(SceneError::NonFinite(o));
             }
             let leaves = match target {
@@ -253,7 +271,7 @@ pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wi
                 _ => return Err(SceneError::Reference { object: o, target: raw }),
             };
             obj.leaves = obj.leaves.saturating_add(leaves);
-            obj.entries.push(Entry { target, translation: DVec3::from_array(t), rotation: DQuat::from_array(q), colour });
+            obj.entries.push(Entry { target, translation: DVec3::from_array(t), rotation: DQuat::from_array(q), scale, colour });
         }
         h.objects.push(obj);
     }

@@ -11,7 +11,7 @@
 //! colours the bytes it writes, so nothing is lost; a palette keeps colours
 //! to one byte a record for most models.
 
-use super::scene_format::{put_hierarchy, ENTRY_BYTES, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION};
+use super::scene_format::{put_hierarchy, ENTRY_BYTES, ENTRY_BYTES_SCALED, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION};
 use super::{ExportError, Provenance};
 use crate::core::budget::Budget;
 use crate::core::PrimitiveKind;
@@ -225,7 +225,9 @@ pub fn write_scene(
     }
     let mut size = HEADER_BYTES as u64 + if block.is_empty() { 0 } else { 4 + block.len() as u64 };
     size += 4 * order.len() as u64 + protos.iter().map(prototype_bytes).sum::<u64>();
-    size += 8 + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + ENTRY_BYTES * h.entry_count();
+    let scaled = h.is_scaled();
+    let entry_bytes = if scaled { ENTRY_BYTES_SCALED } else { ENTRY_BYTES };
+    size += 8 + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + entry_bytes * h.entry_count();
     size += 4;
     let mut triangles = 0u64;
     for m in &plan {
@@ -244,7 +246,7 @@ pub fn write_scene(
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&VERSION.to_le_bytes());
     let truncated = hierarchy.map_or(scene.truncated, |h| h.truncated);
-    let flags = if truncated.is_some() { FLAG_TRUNCATED } else { 0 } | if block.is_empty() { 0 } else { FLAG_PROVENANCE };
+    let flags = if truncated.is_some() { FLAG_TRUNCATED } else { 0 } | if block.is_empty() { 0 } else { FLAG_PROVENANCE } | if scaled { FLAG_SCALED } else { 0 };
     out.extend_from_slice(&flags.to_le_bytes());
     // Fits: the pipeline checked detail ≤ MAX_DETAIL.
     out.extend_from_slice(&(detail as u16).to_le_bytes());
@@ -271,7 +273,7 @@ pub fn write_scene(
     }
     put_u32(&mut out, h.shapes.len() as u32);
     put_u32(&mut out, h.objects.len() as u32);
-    put_hierarchy(&mut out, h);
+    put_hierarchy(&mut out, h, scaled);
     put_u32(&mut out, u32::try_from(plan.len()).map_err(|_| too_large("meshes"))?);
     for m in &plan {
         out.extend_from_slice(&u16::try_from(m.name.len()).map_err(|_| too_large("bytes in a mesh name"))?.to_le_bytes());

@@ -59,7 +59,7 @@ pub fn build(sys: &LSystem, dag: &StringDag, budget: &mut Budget) -> Result<Hier
         // The root must be last and exist: wrap whatever it aliased (or nothing).
         let entries = built
             .object
-            .map(|o| vec![Entry { target: Target::Object(o), translation: DVec3::ZERO, rotation: DQuat::IDENTITY, colour: [0; 4] }])
+            .map(|o| vec![Entry { target: Target::Object(o), translation: DVec3::ZERO, rotation: DQuat::IDENTITY, scale: 1.0, colour: [0; 4] }])
             .unwrap_or_default();
         let leaves = built.object.map_or(0, |o| b.out.objects[o as usize].leaves);
         b.out.objects.push(Object { entries, leaves });
@@ -98,7 +98,7 @@ impl Builder<'_, '_> {
                     for leaf in t.take_leaves() {
                         self.budget.reserve_memory(ENTRY_BYTES)?;
                         let s = self.shape(leaf.shape);
-                        entries.push(Entry { target: Target::Shape(s), translation: leaf.pos, rotation: leaf.rot, colour: leaf.colour });
+                        entries.push(Entry { target: Target::Shape(s), translation: leaf.pos, rotation: leaf.rot, scale: 1.0, colour: leaf.colour });
                         leaves = leaves.saturating_add(1);
                     }
                 }
@@ -108,7 +108,7 @@ impl Builder<'_, '_> {
                     if let Some(o) = sub.object {
                         self.budget.reserve_memory(ENTRY_BYTES)?;
                         let (pos, rot) = t.pose();
-                        entries.push(Entry { target: Target::Object(o), translation: pos, rotation: rot, colour: [0; 4] });
+                        entries.push(Entry { target: Target::Object(o), translation: pos, rotation: rot, scale: 1.0, colour: [0; 4] });
                         leaves = leaves.saturating_add(self.out.objects[o as usize].leaves);
                     }
                     t.follow(sub.pos, sub.rot, sub.width, sub.colour);

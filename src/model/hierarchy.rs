@@ -39,10 +39,25 @@ pub struct LeafShape {
 }
 
 impl LeafShape {
+    /// The bare unit primitive (MDG's leaves): no scale, no offset, so its
+    /// prototype is the tessellation the flat mesher uses, bit for bit.
+    pub fn primitive(kind: PrimitiveKind) -> LeafShape {
+        LeafShape { kind, scale: [1.0; 3], offset: [0.0; 3], tube: false }
+    }
+
+    /// True for a [`LeafShape::primitive`]: its prototype is left untouched
+    /// (scaling by 1 would still renormalise the normals and lose -0.0).
+    pub fn is_bare(&self) -> bool {
+        self.scale == [1.0; 3] && self.offset == [0.0; 3] && !self.tube
+    }
+
     /// The primitive tessellated at `detail` with this shape's scale and offset
     /// baked in (normals follow the inverse transpose of the scale).
     pub fn prototype(&self, detail: u32) -> Prototype {
         let mut p = primitives::tessellate(self.kind, self.detail(detail));
+        if self.is_bare() {
+            return p;
+        }
         let [sx, sy, sz] = self.scale;
         for v in &mut p.positions {
             *v = [v[0] * sx + self.offset[0], v[1] * sy + self.offset[1], v[2] * sz + self.offset[2]];
@@ -79,7 +94,9 @@ pub enum Target {
     Shape(u32),
 }
 
-/// One placement inside an object: a target in a rigid frame relative to the object's.
+/// One placement inside an object: a target in a frame relative to the
+/// object's, rigid (L-systems) or a similarity (MDG: a uniform scale too;
+/// mirrored frames are never shared, so there is no parity).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Entry {
     /// What is placed.
@@ -88,6 +105,10 @@ pub struct Entry {
     pub translation: DVec3,
     /// The target's rotation relative to the object (unit).
     pub rotation: DQuat,
+    /// The target's uniform scale relative to the object (1 for rigid entries,
+    /// always > 0): composed as [`Frame::then`] composes, so a walk reproduces
+    /// the frames of the derivation it was built from bit for bit.
+    pub scale: f64,
     /// Linear RGBA of a leaf in 0..=255 (objects carry their leaves' own colours; 0 for them).
     pub colour: [u8; 4],
 }
@@ -110,8 +131,17 @@ pub struct PlacedLeaf {
     pub translation: DVec3,
     /// World rotation (unit).
     pub rotation: DQuat,
+    /// World uniform scale (1 in a rigid hierarchy).
+    pub scale: f64,
     /// Linear RGBA in 0..=255.
     pub colour: [u8; 4],
+}
+
+impl PlacedLeaf {
+    /// The leaf's world frame (never mirrored).
+    pub fn frame(&self) -> Frame {
+        Frame { translation: self.translation, rotation: self.rotation, scale: self.scale, parity: false }
+    }
 }
 
 /// An object-instancing hierarchy; see the module documentation.
@@ -138,8 +168,7 @@ impl Hierarchy {
         scene.shapes = self.shapes.iter().map(|s| s.prototype(detail)).collect();
         scene.shape_instances.reserve_exact(self.leaves() as usize);
         self.walk(&mut |leaf| {
-            let frame = Frame { translation: leaf.translation, rotation: leaf.rotation, scale: 1.0, parity: false };
-            scene.shape_instances.push(ShapeInstance { shape: leaf.shape, frame, colour: leaf.colour.map(|c| f32::from(c) / 255.0) });
+            scene.shape_instances.push(ShapeInstance { shape: leaf.shape, frame: leaf.frame(), colour: leaf.colour.map(|c| f32::from(c) / 255.0) });
         });
         scene.truncated = self.truncated;
         Ok(scene)
@@ -148,6 +177,12 @@ impl Hierarchy {
     /// Leaves in the full expansion (0 when there is no root).
     pub fn leaves(&self) -> u64 {
         self.objects.last().map_or(0, |o| o.leaves)
+    }
+
+    /// True when some entry scales its target (an MDG hierarchy): the scene
+    /// format then writes each entry's scale and instanced glTF a SCALE per instance.
+    pub fn is_scaled(&self) -> bool {
+        self.objects.iter().flat_map(|o| &o.entries).any(|e| e.scale != 1.0)
     }
 
     /// Entries over all objects: the size of the hierarchy.
@@ -205,21 +240,21 @@ impl Hierarchy {
     /// which [`Hierarchy::leaves`] tells before walking.
     pub fn walk(&self, f: &mut dyn FnMut(&PlacedLeaf)) {
         let Some(root) = self.objects.len().checked_sub(1) else { return };
-        // (object, next entry, object's world translation and rotation)
-        let mut stack: Vec<(usize, usize, DVec3, DQuat)> = vec![(root, 0, DVec3::ZERO, DQuat::IDENTITY)];
+        // (object, next entry, object's world frame). `Frame::then` with scale
+        // 1 is the rigid composition t + r·t', (r·r')‾ bit for bit.
+        let mut stack: Vec<(usize, usize, Frame)> = vec![(root, 0, Frame::IDENTITY)];
         while let Some(top) = stack.last_mut() {
-            let (object, next, t, r) = *top;
+            let (object, next, world) = *top;
             let Some(e) = self.objects.get(object).and_then(|o| o.entries.get(next)) else {
                 stack.pop();
                 continue;
             };
             top.1 += 1;
-            let translation = t + r * e.translation;
-            let rotation = (r * e.rotation).normalize();
+            let here = world.then(&Frame { translation: e.translation, rotation: e.rotation, scale: e.scale, parity: false });
             match e.target {
-                Target::Object(c) if (c as usize) < object => stack.push((c as usize, 0, translation, rotation)),
+                Target::Object(c) if (c as usize) < object => stack.push((c as usize, 0, here)),
                 Target::Object(_) => {}
-                Target::Shape(shape) => f(&PlacedLeaf { shape, translation, rotation, colour: e.colour }),
+                Target::Shape(shape) => f(&PlacedLeaf { shape, translation: here.translation, rotation: here.rotation, scale: here.scale, colour: e.colour }),
             }
         }
     }
