@@ -25,6 +25,7 @@ export class SceneError extends Error {
 
 const FLAG_TRUNCATED = 1;
 const FLAG_PROVENANCE = 2;
+const FLAG_SCALED = 4; // version 2: hierarchy entries carry an f64 uniform scale (MDG)
 const SHAPE_BIT = 0x80000000;
 const RUN_PRIMITIVES = 1, RUN_AFFINE = 2, RUN_PLACED = 3, RUN_MESH = 4, RUN_HIERARCHY = 5;
 const PARITY_BIT = 0x80;
@@ -197,6 +198,9 @@ function quatNormalizeF32(q) {
 function leafPrototype(shape, detail) {
   const d = shape.tube ? Math.max(Math.floor(detail / 2), 4) : detail;
   const p = prototype(shape.kind, d);
+  // A bare primitive (MDG's leaves, LeafShape::is_bare) is used untouched.
+  const bare = !shape.tube && shape.scale.every((x) => x === 1) && shape.offset.every((x) => x === 0);
+  if (bare) return p;
   const [sx, sy, sz] = shape.scale, [ox, oy, oz] = shape.offset;
   const positions = new Float32Array(p.positions.length);
   const normals = new Float32Array(p.normals.length);
@@ -220,19 +224,21 @@ function leafPrototype(shape, detail) {
 function walk(h, leaf) {
   const root = h.objects.length - 1;
   if (root < 0) return;
-  const stack = [[root, 0, [0, 0, 0], [0, 0, 0, 1]]];
+  // Frame::then: t + s·(r·t'), (r·r')‾, s·s' (s = 1 in rigid hierarchies: exact).
+  const stack = [[root, 0, [0, 0, 0], [0, 0, 0, 1], 1]];
   while (stack.length) {
     const top = stack[stack.length - 1];
-    const [object, next, t, r] = top;
+    const [object, next, t, r, s] = top;
     const entries = h.objects[object];
     if (next >= entries.length) { stack.pop(); continue; }
     top[1]++;
     const e = entries[next];
     const rv = quatMulVec(r, e.t);
-    const translation = [t[0] + rv[0], t[1] + rv[1], t[2] + rv[2]];
+    const translation = [t[0] + s * rv[0], t[1] + s * rv[1], t[2] + s * rv[2]];
     const rotation = quatNormalize(quatMul(r, e.q));
-    if (e.shape >= 0) leaf(e.shape, translation, rotation, e.colour);
-    else if (e.object < object) stack.push([e.object, 0, translation, rotation]);
+    const scale = s * e.s;
+    if (e.shape >= 0) leaf(e.shape, translation, rotation, e.colour, scale);
+    else if (e.object < object) stack.push([e.object, 0, translation, rotation, scale]);
   }
 }
 
@@ -257,7 +263,7 @@ function leafCount(h) {
   return leaves.length ? leaves[leaves.length - 1] : 0;
 }
 
-function readHierarchy(r, nshapes, nobjects, wide) {
+function readHierarchy(r, nshapes, nobjects, wide, scaled = false) {
   r.room(nshapes, 28);
   r.room(nobjects, 4);
   const shapes = [];
@@ -270,17 +276,19 @@ function readHierarchy(r, nshapes, nobjects, wide) {
   const objects = [];
   for (let o = 0; o < nobjects; o++) {
     const n = r.u32();
-    r.room(n, wide ? 64 : 36);
+    r.room(n, wide ? (scaled ? 72 : 64) : 36);
     const entries = [];
     for (let k = 0; k < n; k++) {
       const raw = r.u32();
       const t = finite(wide ? [r.f64(), r.f64(), r.f64()] : r.f32s(3));
       const q = finite(wide ? [r.f64(), r.f64(), r.f64(), r.f64()] : r.f32s(4));
+      const s = scaled ? r.f64() : 1;
+      if (!(Number.isFinite(s) && s > 0)) throw new SceneError('non-finite number in scene');
       const colour = r.bytes(4);
       const isShape = raw >= SHAPE_BIT;
       const idx = isShape ? raw - SHAPE_BIT : raw;
       if (isShape ? idx >= nshapes : idx >= o) throw new SceneError(`object ${o} refers to ${raw}, which is not an earlier object or a known shape`);
-      entries.push({ shape: isShape ? idx : -1, object: isShape ? -1 : idx, t, q, colour });
+      entries.push({ shape: isShape ? idx : -1, object: isShape ? -1 : idx, t, q, s, colour });
     }
     objects.push(entries);
   }
@@ -293,7 +301,7 @@ function readHeader(r) {
   const version = r.u16();
   if (version !== 1 && version !== 2) throw new SceneError(`unknown scene version ${version}`);
   const flags = r.u16();
-  if (flags & ~(FLAG_TRUNCATED | FLAG_PROVENANCE)) throw new SceneError('unknown flag bits');
+  if (flags & ~(FLAG_TRUNCATED | FLAG_PROVENANCE | (version === 2 ? FLAG_SCALED : 0))) throw new SceneError('unknown flag bits');
   let detail = null, counts;
   if (version === 1) {
     counts = [r.u32(), r.u32()];
@@ -344,7 +352,7 @@ function parseV2(r, header) {
   r.room(nprotos, 8);
   const protos = [];
   for (let i = 0; i < nprotos; i++) protos.push(readMesh(r, false));
-  const hierarchy = readHierarchy(r, r.u32(), r.u32(), true);
+  const hierarchy = readHierarchy(r, r.u32(), r.u32(), true, (header.flags & FLAG_SCALED) !== 0);
   const w = ncolours <= 256 ? 1 : ncolours <= 65536 ? 2 : 4;
   const colour = () => {
     const i = w === 1 ? r.u8() : w === 2 ? r.u16() : r.u32();
@@ -471,12 +479,13 @@ export function decodeScene(bytes, { detail: v1Detail = 16, maxTriangles = 50e6 
         for (let k = 0; k < m.indices.length; k++) out.indices[out.ni++] = base + m.indices[k];
         out.nv += m.positions.length / 3;
       } else {
-        walk(h, (shape, t, q, colour) => {
-          // Instance::new: translation and rotation rounded to f32, the rotation renormalised in f32.
+        walk(h, (shape, t, q, colour, scale) => {
+          // Instance::new: translation, rotation and scale rounded to f32, the rotation renormalised in f32.
           const tf = [f(t[0]), f(t[1]), f(t[2])];
           const qf = quatNormalizeF32([f(q[0]), f(q[1]), f(q[2]), f(q[3])]);
-          if (!tf.every(Number.isFinite) || !qf.every(Number.isFinite)) return;
-          appendMapped(out, leafProto(shape), similarityMap(tf, qf, 1, false), colour);
+          const sf = f(scale);
+          if (!tf.every(Number.isFinite) || !qf.every(Number.isFinite) || !Number.isFinite(sf) || sf === 0) return;
+          appendMapped(out, leafProto(shape), similarityMap(tf, qf, sf, false), colour);
         });
       }
     }

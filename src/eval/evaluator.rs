@@ -108,13 +108,18 @@ pub fn evaluate_hierarchy(program: &Program, params: &[f64], options: &EvalOptio
     Ok(Some(h))
 }
 
+/// The program's `background` colour as the scene carries it.
+pub(super) fn background(program: &Program) -> Option<[f32; 4]> {
+    program.directives.background.map(|c| c.map(|v| v.clamp(0.0, 1.0) as f32))
+}
+
 /// Evaluates `program` with bound `params` into a scene, under `budget`.
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
     let ev = Evaluator::new(program, params, options)?;
     let seed = options.seed.or(program.directives.randseed).unwrap_or(0);
     let animated = program.groups.iter().flat_map(|g| &g.rules).any(|r| matches!(r.transform, RuleTransform::Animate(_)));
     let scene = Scene {
-        background: program.directives.background.map(|c| c.map(|v| v.clamp(0.0, 1.0) as f32)),
+        background: background(program),
         rig: animated.then(|| Rig::new(ev.timeline)),
         ..Scene::default()
     };

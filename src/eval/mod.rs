@@ -40,7 +40,7 @@ pub fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, bu
     // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
     let seed = req.seed.or(program.directives.randseed).unwrap_or(0);
     if let Some(h) = hierarchy(&program, &params, &options, req, budget)? {
-        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene::default(), hierarchy: Some(h), warnings: program.warnings });
+        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(&program), ..Scene::default() }, hierarchy: Some(h), warnings: program.warnings });
     }
     let scene = evaluate(&program, &params, &options, budget)?;
     Ok(Model {

@@ -76,40 +76,52 @@ pub fn write_scene(
     })
 }
 
-/// Writes `h` as instanced glTF: one mesh per (leaf shape, colour), one
-/// instance per leaf, transforms written as the hierarchy is walked;
-/// `provenance` goes in `asset.extras`.
-pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, provenance: Option<&super::Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+/// Writes `h` as instanced glTF, one instance per leaf, transforms written
+/// as the hierarchy is walked. With `per_instance_colour` (MDG, whose flat
+/// scenes instance that way) there is one white mesh per leaf shape, named
+/// by its primitive, and each instance carries its colour and scale, so the
+/// file is what [`write_scene`] makes of the expanded scene; without it
+/// (L-systems) one mesh per (leaf shape, colour), and a SCALE only when some
+/// entry scales. `meta` carries the background, truncation and provenance.
+pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta, per_instance_colour: bool, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let counts = h.leaf_counts();
+    // Mesh of each (shape, colour): by shape alone when colours are per instance.
     let mut index: Vec<Vec<([u8; 4], usize)>> = vec![Vec::new(); h.shapes.len()];
-    let mut meshes = Vec::with_capacity(counts.len());
-    for (i, &(shape, colour)) in counts.keys().enumerate() {
+    let mut meshes: Vec<NamedMesh> = Vec::with_capacity(counts.len());
+    let mut mesh_counts: Vec<u64> = Vec::with_capacity(counts.len());
+    for (&(shape, colour), &n) in &counts {
         let Some(s) = h.shapes.get(shape as usize) else { continue };
+        let Some(slot) = index.get_mut(shape as usize) else { continue };
+        if per_instance_colour {
+            if let Some(&(_, m)) = slot.first() {
+                mesh_counts[m] = mesh_counts[m].saturating_add(n);
+                continue;
+            }
+        }
         let p = s.prototype(detail);
         budget.reserve_memory(mesh_bytes(p.positions.len() as u64, p.indices.len() as u64 / 3))?;
-        let mesh = Mesh { colours: vec![colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
-        meshes.push(NamedMesh { name: format!("segment-{i}"), mesh });
-        if let Some(v) = index.get_mut(shape as usize) {
-            v.push((colour, i));
-        }
+        let (vertex_colour, name) = if per_instance_colour { ([255; 4], s.kind.name().to_ascii_lowercase()) } else { (colour, format!("segment-{}", meshes.len())) };
+        let mesh = Mesh { colours: vec![vertex_colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
+        slot.push((colour, meshes.len()));
+        meshes.push(NamedMesh { name, mesh });
+        mesh_counts.push(n);
     }
-    let counts: Vec<u64> = counts.values().copied().collect();
-    let meta = ExportMeta { background: None, truncated: h.truncated.is_some(), graph: None, material_per_mesh: false, camera: None, provenance: provenance.cloned() };
     if meshes.is_empty() {
         // Nothing is drawn (an axiom of symbols no turtle command draws): an
         // empty model, written as the flat writers write one — the instanced
         // writer needs a buffer to point its instances into (fuzz finding).
-        return if glb { super::gltf::write_glb(&[], &meta, budget) } else { super::gltf::write_gltf(&[], &meta, budget) };
+        return if glb { super::gltf::write_glb(&[], meta, budget) } else { super::gltf::write_gltf(&[], meta, budget) };
     }
-    // Rigid (L-system) hierarchies write no SCALE; MDG's similarities a uniform one.
-    let layout = InstanceLayout { scale: h.is_scaled(), colour: false };
-    let bytes = super::gltf::write_instanced(&meshes, &counts, layout, &meta, glb, budget, &mut |sink| {
+    let layout = if per_instance_colour { SCENE_LAYOUT } else { InstanceLayout { scale: h.is_scaled(), colour: false } };
+    super::gltf::write_instanced(&meshes, &mesh_counts, layout, meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
-            let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };
+            let Some(slot) = index.get(leaf.shape as usize) else { return };
+            let found = if per_instance_colour { slot.first() } else { slot.iter().find(|(c, _)| *c == leaf.colour) };
+            let Some(&(_, mesh)) = found else { return };
             let rotation = leaf.rotation.as_quat().normalize().to_array();
             let s = leaf.scale as f32;
-            sink(mesh, &InstanceData { translation: leaf.translation.as_vec3().to_array(), rotation, scale: [s; 3], colour: [1.0; 3] });
+            let [r, g, b, _] = leaf.colour.map(|c| f32::from(c) / 255.0);
+            sink(mesh, &InstanceData { translation: leaf.translation.as_vec3().to_array(), rotation, scale: [s; 3], colour: [r, g, b] });
         })
-    })?;
-    Ok(bytes)
+    })
 }

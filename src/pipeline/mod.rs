@@ -406,7 +406,19 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
     }
     if let Some(h) = model.hierarchy.take() {
         let bytes = match req.format {
-            Format::Glb | Format::Gltf if gpu_instancing(req) => Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, Some(&provenance), budget)?),
+            Format::Glb | Format::Gltf if gpu_instancing(req) => {
+                let meta = ExportMeta {
+                    background: model.scene.background,
+                    truncated: h.truncated.is_some(),
+                    graph: None,
+                    material_per_mesh: false,
+                    camera: None,
+                    provenance: Some(provenance.clone()),
+                };
+                // MDG's instances carry their colours, as its flat scenes' do; L-systems' meshes do.
+                let per_instance_colour = !matches!(model.language, Language::Lsystem | Language::Etol);
+                Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, &meta, per_instance_colour, budget)?)
+            }
             _ => None,
         };
         match bytes {

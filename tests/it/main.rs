@@ -29,6 +29,7 @@ mod invariants;
 mod lines;
 mod winding;
 mod lsystem;
+mod mdg_hierarchy;
 mod modifiers;
 mod preview;
 mod provenance;
