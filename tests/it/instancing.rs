@@ -149,8 +149,12 @@ fn malformed_scene_files_are_errors_not_panics() {
     json[24] = b'[';
     assert_eq!(decode_scene(&json).map(|_| ()), Err(SceneError::Header("provenance is not a JSON object")));
     let mut flags = good.clone();
-    flags[6] |= 4;
+    flags[6] |= 8;
     assert_eq!(decode_scene(&flags).map(|_| ()), Err(SceneError::Header("unknown flag bits")));
+    // Flag 4 (scaled entries, MDG) makes every entry 8 bytes longer: this file is then short.
+    let mut scaled = good.clone();
+    scaled[6] |= 4;
+    assert_eq!(decode_scene(&scaled).map(|_| ()), Err(SceneError::Length("truncated")));
     // A reference to a later object.
     let mut forward = good;
     // Header, block, no palette or prototypes, the two hierarchy counts, one leaf shape, an entry count.
