@@ -1,7 +1,8 @@
 //! Object-instancing hierarchies (seed 001 §2.2, §4.2): objects that are
-//! lists of (child object or leaf shape, rigid transform, colour).
+//! lists of (child object or leaf shape, rigid or similarity transform, colour).
 //!
-//! A [`Hierarchy`] is what an instanced L-system evaluates to instead of a flat
+//! A [`Hierarchy`] is what an instanced L-system (or a shareable MDG
+//! grammar, `eval::memo`) evaluates to instead of a flat
 //! [`Scene`](crate::model::Scene): each distinct subtree of the derivation is one
 //! object, placed wherever the subtree occurs, so the hierarchy grows with the
 //! number of distinct subtrees (the b-grammar), not with the number of

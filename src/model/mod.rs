@@ -28,10 +28,11 @@ use crate::lang::Language;
 pub struct Model {
     /// The language the source was read as.
     pub language: Language,
-    /// The flat geometry (empty when the model is a [`Model::hierarchy`]).
+    /// The flat geometry (empty, but for the background, when the model is a [`Model::hierarchy`]).
     pub scene: Scene,
     /// The instancing hierarchy, when the language built one instead of a
-    /// flat scene (context-free L-systems, when the request can use it).
+    /// flat scene (context-free L-systems and shareable MDG grammars, when
+    /// the request can use it; the scene then keeps only the background).
     pub hierarchy: Option<Hierarchy>,
     /// Primitives as the language counts them (instances, segments, objects).
     pub primitives: u64,

@@ -34,6 +34,10 @@ fn ok(src: &[u8], r: &RenderRequest) -> RenderOutput {
     render(src, r).unwrap_or_else(|e| panic!("{e}"))
 }
 
+/// A bush whose two branches tint red and green: a subtree's key then
+/// holds its inherited colour, (d + 1)(d + 2)/2 objects for d levels.
+const TINTED: &[u8] = b"startshape B\nmaxdepth 6\nrule B { BOX {} B { y 1 rz 25 s 0.8 R 0.1 } B { y 1 rz -25 s 0.8 G 0.1 } }\n";
+
 /// The library's hierarchy of `src` (None: not shared) and its flat derivation.
 fn both(src: &[u8]) -> (Option<Hierarchy>, Scene) {
     let program = lang::parse(Language::Mdg, src).expect("parses");
@@ -64,7 +68,7 @@ fn the_262k_box_bush_is_a_scene_of_18_objects() {
 #[test]
 fn walking_the_hierarchy_gives_the_flat_derivation_bit_for_bit() {
     let menger = std::fs::read(repo().join("grammars/menger.mdg")).expect("grammar");
-    for (name, src) in [("bush 9", bush(9)), ("menger", menger)] {
+    for (name, src) in [("bush 9", bush(9)), ("menger", menger), ("tinted", TINTED.to_vec())] {
         let (h, scene) = both(&src);
         let h = h.unwrap_or_else(|| panic!("{name} is shared"));
         let mut walked = Vec::new();
@@ -85,6 +89,22 @@ fn walking_the_hierarchy_gives_the_flat_derivation_bit_for_bit() {
     assert_eq!(d.meshes.iter().map(|m| m.mesh.indices.len() as u64 / 3).sum::<u64>(), stl.triangles);
     let tris: Vec<[[f32; 3]; 3]> = d.meshes.iter().flat_map(|m| m.mesh.indices.chunks_exact(3).map(|t| t.iter().map(|&i| m.mesh.positions[i as usize]).collect::<Vec<_>>().try_into().expect("3"))).collect();
     assert!(tris == crate::common::decode_stl(&stl.bytes), "decoded scene differs from the STL");
+    // The JavaScript decoder walks scaled entries to the Rust decoder's meshes.
+    let dir = tempdir();
+    for (name, src) in [("bush-7", bush(7)), ("tinted", TINTED.to_vec())] {
+        let bytes = ok(&src, &req(Format::Scene)).bytes;
+        let d = decode_scene_meshes(&bytes, 16, u64::MAX).expect("decodes");
+        crate::scene::write_fixture(dir.path(), name, &bytes, &d);
+    }
+    assert_eq!(decode_scene(&ok(TINTED, &req(Format::Scene)).bytes).expect("decodes").objects.len(), 28);
+    let o = std::process::Command::new("node")
+        .arg("--test")
+        .arg(repo().join("clients/js/scene.test.mjs"))
+        .env("SCENE_FIXTURES", dir.path())
+        .output()
+        .unwrap_or_else(|e| panic!("node cannot run (scripts/test installs it): {e}"));
+    let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success() && text.contains("# fail 0"), "{text}");
 }
 
 #[test]

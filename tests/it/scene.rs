@@ -114,7 +114,7 @@ fn summary(d: &DecodedScene) -> Value {
 }
 
 /// Writes `name.rmscene` and the Rust decoder's `name.scene.json` for the JS test.
-fn write_fixture(dir: &Path, name: &str, bytes: &[u8], d: &DecodedScene) {
+pub(crate) fn write_fixture(dir: &Path, name: &str, bytes: &[u8], d: &DecodedScene) {
     std::fs::write(dir.join(format!("{name}.rmscene")), bytes).expect("write");
     std::fs::write(dir.join(format!("{name}.scene.json")), serde_json::to_vec(&summary(d)).expect("json")).expect("write");
 }
