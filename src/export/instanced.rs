@@ -5,24 +5,31 @@
 //!   mesh per (leaf shape, colour), drawn once per leaf;
 //! * of a flat scene ([`write_scene`], every other language): each mesh
 //!   placed more than once ([`Plan`]) written once and drawn per placement
-//!   with its translation, rotation, per-axis scale and colour, beside the
-//!   plain meshes of everything else.
+//!   with its translation and, where they differ between its placements,
+//!   rotation, per-axis scale and colour, beside the plain meshes of
+//!   everything else.
 
 use super::gltf::{InstanceData, InstanceLayout};
 use super::{ExportError, ExportMeta};
 use crate::core::Budget;
 use crate::geom::mesh::mesh_bytes;
 use crate::geom::{Mesh, NamedMesh};
-use crate::model::instancing::{self, MeshKey, Plan, Source};
+use crate::model::instancing::{self, MeshKey, Plan, Source, Varying};
 use crate::model::{Hierarchy, Scene};
 
-/// The per-instance attributes of an instanced scene: placements scale per
-/// axis and each has its own colour.
-pub const SCENE_LAYOUT: InstanceLayout = InstanceLayout { scale: true, colour: true };
+/// The most per-instance attributes an instanced scene's mesh carries:
+/// placements rotate, scale per axis and each has its own colour.
+pub const SCENE_LAYOUT: InstanceLayout = InstanceLayout { rotation: true, scale: true, colour: true };
 
-/// Output bytes per instance of an instanced scene (what a front end
-/// promises per placement after a mesh's first).
+/// Output bytes per instance of an instanced scene at most (what a front
+/// end promises per placement after a mesh's first, before it knows which
+/// attributes vary).
 pub const SCENE_INSTANCE_BYTES: u64 = SCENE_LAYOUT.bytes();
+
+/// The attributes a mesh's instances carry: those that vary between them.
+fn layout(v: &Varying) -> InstanceLayout {
+    InstanceLayout { rotation: v.rotation, scale: v.scale, colour: v.colour }
+}
 
 /// The name of an instanced scene's mesh (and of its material, when each
 /// mesh has its own): the class for a non-default EisenScript class (as its
@@ -36,16 +43,18 @@ fn mesh_name(key: &MeshKey, classes: &[String]) -> String {
 }
 
 /// The meshes `plan` writes once, in its order: each prototype (mirrored
-/// where its key says) with white vertex colours, since every instance
-/// carries its own. Charged to `budget`; call before [`Plan::residual`]
-/// moves the scene's shapes out.
+/// where its key says) with white vertex colours where every instance
+/// carries its own colour, else with the one colour all its instances share.
+/// Charged to `budget`; call before [`Plan::residual`] moves the scene's
+/// shapes out.
 pub fn prototypes(plan: &Plan, scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, ExportError> {
     let mut out = Vec::with_capacity(plan.meshes().len());
-    for (key, _) in plan.meshes() {
+    for ((key, _), varying) in plan.meshes().iter().zip(plan.varying()) {
         let name = mesh_name(key, &scene.classes);
         let p = instancing::prototype(key, scene, detail).ok_or_else(|| ExportError::InvalidMesh { name: name.clone(), detail: "no such shape".into() })?;
         budget.reserve_memory(mesh_bytes(p.positions.len() as u64, p.indices.len() as u64 / 3))?;
-        let mesh = Mesh { colours: vec![[255; 4]; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
+        let colour = if varying.colour { [255; 4] } else { varying.first_colour };
+        let mesh = Mesh { colours: vec![colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
         out.push(NamedMesh { name, mesh });
     }
     Ok(out)
@@ -66,9 +75,11 @@ pub fn write_scene(
 ) -> Result<Vec<u8>, ExportError> {
     let mut counts: Vec<u64> = plan.meshes().iter().map(|m| m.1).collect();
     counts.resize(counts.len() + plain.len(), 0);
+    let mut layouts: Vec<InstanceLayout> = plan.varying().iter().map(layout).collect();
+    layouts.resize(counts.len(), InstanceLayout::default());
     let mut meshes = prototypes;
     meshes.extend(plain);
-    super::gltf::write_instanced(&meshes, &counts, SCENE_LAYOUT, meta, glb, budget, &mut |sink| {
+    super::gltf::write_instanced(&meshes, &counts, &layouts, meta, glb, budget, &mut |sink| {
         plan.walk(scene, &mut |slot, p| {
             let [r, g, b, _] = p.colour.map(|c| f32::from(c) / 255.0);
             sink(slot, &InstanceData { translation: p.translation.to_array(), rotation: p.rotation.to_array(), scale: p.scale.to_array(), colour: [r, g, b] });
@@ -101,8 +112,8 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, provenance: Option
         // writer needs a buffer to point its instances into (fuzz finding).
         return if glb { super::gltf::write_glb(&[], &meta, budget) } else { super::gltf::write_gltf(&[], &meta, budget) };
     }
-    let rigid = InstanceLayout::default();
-    let bytes = super::gltf::write_instanced(&meshes, &counts, rigid, &meta, glb, budget, &mut |sink| {
+    let rigid = vec![InstanceLayout { rotation: true, ..InstanceLayout::default() }; counts.len()];
+    let bytes = super::gltf::write_instanced(&meshes, &counts, &rigid, &meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             let Some(&(_, mesh)) = index.get(leaf.shape as usize).and_then(|v| v.iter().find(|(c, _)| *c == leaf.colour)) else { return };
             let rotation = leaf.rotation.as_quat().normalize().to_array();
