@@ -1,5 +1,5 @@
 //! The leaf layer every other module may use: budgets and limits, seeded
-//! random streams (and Structure Synth's Mersenne Twister), similarity frames, primitive kinds, request parameter
+//! random streams (and Structure Synth's Mersenne Twister), similarity frames, primitive kinds, colour quantisation, request parameter
 //! values, source positions and diagnostics, and the embedded grammar
 //! library. Nothing here knows about languages, scenes or formats.
 
@@ -10,6 +10,7 @@ pub mod library;
 pub mod mtrand;
 pub mod param;
 pub mod primitive;
+pub mod quantise;
 pub mod rng;
 pub mod timing;
 

@@ -60,13 +60,15 @@ struct Instancing {
 
 /// The per-instance attributes rulemesh writes: rigid L-system segments
 /// have no SCALE and carry their colour in their mesh; placed primitives
-/// have SCALE and `_COLOR_0` (float RGB, which three.js reads into
-/// `InstancedMesh.instanceColor`).
+/// have ROTATION, SCALE and `_COLOR_0` (float RGB, which three.js reads into
+/// `InstancedMesh.instanceColor`) where they differ between instances, and a
+/// colour all instances share in their mesh.
 #[derive(serde::Serialize)]
 #[serde(rename_all = "UPPERCASE")]
 struct InstanceAttributes {
     translation: u32,
-    rotation: u32,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rotation: Option<u32>,
     #[serde(skip_serializing_if = "Option::is_none")]
     scale: Option<u32>,
     #[serde(rename = "_COLOR_0", skip_serializing_if = "Option::is_none")]
@@ -77,8 +79,8 @@ struct InstanceAttributes {
 pub(super) struct InstanceAccessors {
     /// TRANSLATION.
     pub(super) translation: Index<json::Accessor>,
-    /// ROTATION.
-    pub(super) rotation: Index<json::Accessor>,
+    /// ROTATION, when written.
+    pub(super) rotation: Option<Index<json::Accessor>>,
     /// SCALE, when written.
     pub(super) scale: Option<Index<json::Accessor>>,
     /// `_COLOR_0`, when written.
@@ -267,7 +269,7 @@ impl Doc {
     /// reading each instance's attributes from `a`.
     pub(super) fn instance(&mut self, node: Index<json::Node>, a: InstanceAccessors) -> Result<(), ExportError> {
         let index = |i: Index<json::Accessor>| i.value() as u32;
-        let attributes = InstanceAttributes { translation: index(a.translation), rotation: index(a.rotation), scale: a.scale.map(index), colour: a.colour.map(index) };
+        let attributes = InstanceAttributes { translation: index(a.translation), rotation: a.rotation.map(index), scale: a.scale.map(index), colour: a.colour.map(index) };
         let ext = Instancing { attributes };
         let others = extension(EXT_INSTANCING, ext)?;
         let Some(n) = self.root.nodes.get_mut(node.value()) else {

@@ -1,6 +1,6 @@
 //! The GPU-instanced glTF writer: the plain document with each instanced
-//! mesh's per-instance TRANSLATION and ROTATION (and SCALE and `_COLOR_0`
-//! where the layout has them) appended to the buffer and
+//! mesh's per-instance TRANSLATION (and ROTATION, SCALE and `_COLOR_0`
+//! where its layout has them) appended to the buffer and
 //! `EXT_mesh_gpu_instancing` on its node; meshes placed once stay plain in
 //! the same document. Instances are streamed straight into the output, so
 //! memory stays at the output size; this is the writer behind
@@ -18,11 +18,16 @@ use crate::geom::NamedMesh;
 use gltf_json as json;
 use json::accessor::{ComponentType, Type};
 
-/// Which per-instance attributes a document carries besides TRANSLATION
-/// and ROTATION: SCALE (per-axis, positive) and `_COLOR_0` (float RGB, the
-/// attribute three.js's GLTFLoader reads into `InstancedMesh.instanceColor`).
+/// Which per-instance attributes an instanced mesh carries besides
+/// TRANSLATION: ROTATION (unit quaternion), SCALE (per-axis, positive) and
+/// `_COLOR_0` (float RGB, the attribute three.js's GLTFLoader reads into
+/// `InstancedMesh.instanceColor`). An attribute left out is the identity for
+/// every instance (the extension's default), so a mesh whose instances are
+/// only moved carries 12 bytes per instance.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct InstanceLayout {
+    /// Write ROTATION.
+    pub rotation: bool,
     /// Write SCALE.
     pub scale: bool,
     /// Write `_COLOR_0`.
@@ -32,11 +37,11 @@ pub struct InstanceLayout {
 impl InstanceLayout {
     /// Bytes one instance takes in the buffer.
     pub const fn bytes(self) -> u64 {
-        12 + 16 + if self.scale { 12 } else { 0 } + if self.colour { 12 } else { 0 }
+        12 + if self.rotation { 16 } else { 0 } + if self.scale { 12 } else { 0 } + if self.colour { 12 } else { 0 }
     }
 }
 
-/// One instance as written (SCALE and colour only where the layout has them).
+/// One instance as written (rotation, scale and colour only where its mesh's layout has them).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InstanceData {
     /// Translation.
@@ -64,8 +69,8 @@ struct Region {
 /// Writes an instanced glTF (`glb`: binary, else JSON with an embedded
 /// buffer): each of `meshes` with `counts[i] > 0` once, drawn `counts[i]`
 /// times through `EXT_mesh_gpu_instancing` (listed in `extensionsUsed` and
-/// `extensionsRequired`) with per-instance TRANSLATION (float VEC3),
-/// ROTATION (float VEC4) and, as `layout` says, SCALE (float VEC3) and
+/// `extensionsRequired`) with per-instance TRANSLATION (float VEC3) and, as
+/// `layouts[i]` says, ROTATION (float VEC4), SCALE (float VEC3) and
 /// `_COLOR_0` (float VEC3); the meshes with `counts[i] == 0` are plain.
 ///
 /// The document is the plain one ([`write_glb`]'s layout) with the instance
@@ -77,7 +82,7 @@ struct Region {
 pub fn write_instanced(
     meshes: &[NamedMesh],
     counts: &[u64],
-    layout: InstanceLayout,
+    layouts: &[InstanceLayout],
     meta: &ExportMeta,
     glb: bool,
     budget: &mut Budget,
@@ -85,14 +90,14 @@ pub fn write_instanced(
 ) -> Result<Vec<u8>, ExportError> {
     let (placed, geometry_len) = place(meshes)?;
     let instanced = counts.iter().filter(|&&c| c > 0).count();
-    if counts.len() != meshes.len() || instanced == 0 || placed.iter().filter(|(_, p)| counts[p.mesh] > 0).count() != instanced {
+    if counts.len() != meshes.len() || layouts.len() != meshes.len() || instanced == 0 || placed.iter().filter(|(_, p)| counts[p.mesh] > 0).count() != instanced {
         return Err(invalid("model", "every instanced mesh needs triangles, and at least one mesh instances"));
     }
     // Instance regions after the geometry: per instanced mesh, translations,
-    // rotations, then scales and colours when written.
+    // then rotations, scales and colours when written.
     let mut regions = vec![None; counts.len()];
     let mut end = align4(geometry_len);
-    for (slot, &c) in regions.iter_mut().zip(counts) {
+    for ((slot, &c), layout) in regions.iter_mut().zip(counts).zip(layouts) {
         if c == 0 {
             continue;
         }
@@ -101,7 +106,8 @@ pub fn write_instanced(
             end = end.saturating_add(c.saturating_mul(bytes));
             at
         };
-        let (translation, rotation) = (next(12), next(16));
+        let translation = next(12);
+        let rotation = if layout.rotation { next(16) } else { 0 };
         let scale = if layout.scale { next(12) } else { 0 };
         let colour = if layout.colour { next(12) } else { 0 };
         *slot = Some(Region { translation, rotation, scale, colour });
@@ -114,11 +120,15 @@ pub fn write_instanced(
         return Err(invalid("model", "an instanced model needs a buffer"));
     };
     for ((_, p), &node) in placed.iter().zip(&nodes) {
-        let (c, Some(region)) = (counts[p.mesh], regions[p.mesh]) else { continue };
+        let (c, layout, Some(region)) = (counts[p.mesh], layouts[p.mesh], regions[p.mesh]) else { continue };
         // Views, then accessors, in attribute order (an L-system's documents
         // keep the bytes they had before SCALE and colour existed).
-        let attributes: Vec<(u64, u64)> =
-            [Some((region.translation, 12)), Some((region.rotation, 16)), layout.scale.then_some((region.scale, 12)), layout.colour.then_some((region.colour, 12))]
+        let attributes: Vec<(u64, u64)> = [
+            Some((region.translation, 12)),
+            layout.rotation.then_some((region.rotation, 16)),
+            layout.scale.then_some((region.scale, 12)),
+            layout.colour.then_some((region.colour, 12)),
+        ]
                 .into_iter()
                 .flatten()
                 .collect();
@@ -127,9 +137,10 @@ pub fn write_instanced(
             let kind = if size == 16 { Type::Vec4 } else { Type::Vec3 };
             doc.root.push(accessor(v, c as usize, ComponentType::F32, kind, false))
         }).collect::<Vec<_>>().into_iter();
-        let (Some(translation), Some(rotation)) = (accessors.next(), accessors.next()) else {
+        let Some(translation) = accessors.next() else {
             return Err(invalid("model", "instance accessors missing"));
         };
+        let rotation = if layout.rotation { accessors.next() } else { None };
         let scale = if layout.scale { accessors.next() } else { None };
         let colour = if layout.colour { accessors.next() } else { None };
         doc.instance(node, InstanceAccessors { translation, rotation, scale, colour })?;
@@ -173,7 +184,7 @@ pub fn write_instanced(
             }
         };
         feed(&mut |mesh, d| {
-            let (Some(n), Some(&c), Some(Some(r))) = (written.get_mut(mesh), counts.get(mesh), regions.get(mesh)) else {
+            let (Some(n), Some(&c), Some(layout), Some(Some(r))) = (written.get_mut(mesh), counts.get(mesh), layouts.get(mesh), regions.get(mesh)) else {
                 overflow = true;
                 return;
             };
@@ -182,7 +193,9 @@ pub fn write_instanced(
                 return;
             }
             put(r.translation + 12 * *n, &d.translation);
-            put(r.rotation + 16 * *n, &d.rotation);
+            if layout.rotation {
+                put(r.rotation + 16 * *n, &d.rotation);
+            }
             if layout.scale {
                 put(r.scale + 12 * *n, &d.scale);
             }

@@ -1,28 +1,38 @@
 //! Instanced glTF (`EXT_mesh_gpu_instancing`), so the output grows with the
 //! distinct meshes and the placements, never with the triangles of the
 //! expansion:
-//! * of an object-instancing hierarchy ([`write_instanced`], L-systems): one
-//!   mesh per (leaf shape, colour), drawn once per leaf;
+//! * of an object-instancing hierarchy ([`write_instanced`], L-systems and
+//!   MDG): one mesh per (leaf shape, colour) (MDG: per leaf shape, its
+//!   colour per instance), drawn once per leaf;
 //! * of a flat scene ([`write_scene`], every other language): each mesh
 //!   placed more than once ([`Plan`]) written once and drawn per placement
-//!   with its translation, rotation, per-axis scale and colour, beside the
-//!   plain meshes of everything else.
+//!   with its translation and, where they differ between its placements,
+//!   rotation, per-axis scale and colour, beside the plain meshes of
+//!   everything else.
 
 use super::gltf::{InstanceData, InstanceLayout};
 use super::{ExportError, ExportMeta};
 use crate::core::Budget;
 use crate::geom::mesh::mesh_bytes;
 use crate::geom::{Mesh, NamedMesh};
-use crate::model::instancing::{self, MeshKey, Plan, Source};
+use crate::model::instancing::{self, MeshKey, Plan, Source, Varying};
+use crate::model::hierarchy::PlacedLeaf;
 use crate::model::{Hierarchy, Scene};
+use glam::{Quat, Vec3};
 
-/// The per-instance attributes of an instanced scene: placements scale per
-/// axis and each has its own colour.
-pub const SCENE_LAYOUT: InstanceLayout = InstanceLayout { scale: true, colour: true };
+/// The most per-instance attributes an instanced scene's mesh carries:
+/// placements rotate, scale per axis and each has its own colour.
+pub const SCENE_LAYOUT: InstanceLayout = InstanceLayout { rotation: true, scale: true, colour: true };
 
-/// Output bytes per instance of an instanced scene (what a front end
-/// promises per placement after a mesh's first).
+/// Output bytes per instance of an instanced scene at most (what a front
+/// end promises per placement after a mesh's first, before it knows which
+/// attributes vary).
 pub const SCENE_INSTANCE_BYTES: u64 = SCENE_LAYOUT.bytes();
+
+/// The attributes a mesh's instances carry: those that vary between them.
+fn layout(v: &Varying) -> InstanceLayout {
+    InstanceLayout { rotation: v.rotation, scale: v.scale, colour: v.colour }
+}
 
 /// The name of an instanced scene's mesh (and of its material, when each
 /// mesh has its own): the class for a non-default EisenScript class (as its
@@ -36,16 +46,18 @@ fn mesh_name(key: &MeshKey, classes: &[String]) -> String {
 }
 
 /// The meshes `plan` writes once, in its order: each prototype (mirrored
-/// where its key says) with white vertex colours, since every instance
-/// carries its own. Charged to `budget`; call before [`Plan::residual`]
-/// moves the scene's shapes out.
+/// where its key says) with white vertex colours where every instance
+/// carries its own colour, else with the one colour all its instances share.
+/// Charged to `budget`; call before [`Plan::residual`] moves the scene's
+/// shapes out.
 pub fn prototypes(plan: &Plan, scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, ExportError> {
     let mut out = Vec::with_capacity(plan.meshes().len());
-    for (key, _) in plan.meshes() {
+    for ((key, _), varying) in plan.meshes().iter().zip(plan.varying()) {
         let name = mesh_name(key, &scene.classes);
         let p = instancing::prototype(key, scene, detail).ok_or_else(|| ExportError::InvalidMesh { name: name.clone(), detail: "no such shape".into() })?;
         budget.reserve_memory(mesh_bytes(p.positions.len() as u64, p.indices.len() as u64 / 3))?;
-        let mesh = Mesh { colours: vec![[255; 4]; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
+        let colour = if varying.colour { [255; 4] } else { varying.first_colour };
+        let mesh = Mesh { colours: vec![colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
         out.push(NamedMesh { name, mesh });
     }
     Ok(out)
@@ -66,9 +78,11 @@ pub fn write_scene(
 ) -> Result<Vec<u8>, ExportError> {
     let mut counts: Vec<u64> = plan.meshes().iter().map(|m| m.1).collect();
     counts.resize(counts.len() + plain.len(), 0);
+    let mut layouts: Vec<InstanceLayout> = plan.varying().iter().map(layout).collect();
+    layouts.resize(counts.len(), InstanceLayout::default());
     let mut meshes = prototypes;
     meshes.extend(plain);
-    super::gltf::write_instanced(&meshes, &counts, SCENE_LAYOUT, meta, glb, budget, &mut |sink| {
+    super::gltf::write_instanced(&meshes, &counts, &layouts, meta, glb, budget, &mut |sink| {
         plan.walk(scene, &mut |slot, p| {
             let [r, g, b, _] = p.colour.map(|c| f32::from(c) / 255.0);
             sink(slot, &InstanceData { translation: p.translation.to_array(), rotation: p.rotation.to_array(), scale: p.scale.to_array(), colour: [r, g, b] });
@@ -78,33 +92,67 @@ pub fn write_scene(
 
 /// Writes `h` as instanced glTF, one instance per leaf, transforms written
 /// as the hierarchy is walked. With `per_instance_colour` (MDG, whose flat
-/// scenes instance that way) there is one white mesh per leaf shape, named
-/// by its primitive, and each instance carries its colour and scale, so the
-/// file is what [`write_scene`] makes of the expanded scene; without it
-/// (L-systems) one mesh per (leaf shape, colour), and a SCALE only when some
+/// scenes instance that way) there is one mesh per leaf shape, named by its
+/// primitive, whose instances carry rotation, scale and colour where they
+/// vary (a first walk finds out), so the file is the one [`write_scene`]
+/// makes of the expanded scene; without it (L-systems) one mesh per (leaf
+/// shape, colour) with TRANSLATION and ROTATION, and SCALE only when some
 /// entry scales. `meta` carries the background, truncation and provenance.
 pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta, per_instance_colour: bool, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let counts = h.leaf_counts();
     // Mesh of each (shape, colour): by shape alone when colours are per instance.
     let mut index: Vec<Vec<([u8; 4], usize)>> = vec![Vec::new(); h.shapes.len()];
-    let mut meshes: Vec<NamedMesh> = Vec::with_capacity(counts.len());
+    let mut shapes: Vec<u32> = Vec::with_capacity(counts.len());
     let mut mesh_counts: Vec<u64> = Vec::with_capacity(counts.len());
     for (&(shape, colour), &n) in &counts {
-        let Some(s) = h.shapes.get(shape as usize) else { continue };
         let Some(slot) = index.get_mut(shape as usize) else { continue };
-        if per_instance_colour {
-            if let Some(&(_, m)) = slot.first() {
-                mesh_counts[m] = mesh_counts[m].saturating_add(n);
-                continue;
+        match slot.first() {
+            Some(&(_, m)) if per_instance_colour => mesh_counts[m] = mesh_counts[m].saturating_add(n),
+            _ => {
+                slot.push((colour, shapes.len()));
+                shapes.push(shape);
+                mesh_counts.push(n);
             }
         }
+    }
+    let mesh_of = |leaf: &PlacedLeaf| {
+        let slot = index.get(leaf.shape as usize)?;
+        let found = if per_instance_colour { slot.first() } else { slot.iter().find(|(c, _)| *c == leaf.colour) };
+        found.map(|&(_, mesh)| mesh)
+    };
+    // As `Placement::of_instance` of the leaf's `Instance` (the f32 values the mesher uses).
+    let placement = |leaf: &PlacedLeaf| {
+        let [r, g, b, _] = leaf.colour.map(|c| f32::from(c) / 255.0);
+        InstanceData {
+            translation: leaf.translation.as_vec3().to_array(),
+            rotation: leaf.rotation.as_quat().normalize().to_array(),
+            scale: [leaf.scale as f32; 3],
+            colour: [r, g, b],
+        }
+    };
+    // What varies per mesh, as Plan records it of the flat scene (MDG only).
+    let mut varying = vec![(Varying::NONE, 0u64); if per_instance_colour { shapes.len() } else { 0 }];
+    if per_instance_colour {
+        h.walk(&mut |leaf| {
+            let Some((v, seen)) = mesh_of(leaf).and_then(|m| varying.get_mut(m)) else { return };
+            let d = placement(leaf);
+            v.see_values(Quat::from_array(d.rotation), Vec3::from_array(d.scale), leaf.colour, *seen == 0);
+            *seen += 1;
+        });
+    }
+    let rigid = InstanceLayout { rotation: true, scale: h.is_scaled(), colour: false };
+    let layouts: Vec<InstanceLayout> = if per_instance_colour { varying.iter().map(|(v, _)| layout(v)).collect() } else { vec![rigid; shapes.len()] };
+    let mut meshes = Vec::with_capacity(shapes.len());
+    for (m, &shape) in shapes.iter().enumerate() {
+        let Some(s) = h.shapes.get(shape as usize) else { continue };
         let p = s.prototype(detail);
         budget.reserve_memory(mesh_bytes(p.positions.len() as u64, p.indices.len() as u64 / 3))?;
-        let (vertex_colour, name) = if per_instance_colour { ([255; 4], s.kind.name().to_ascii_lowercase()) } else { (colour, format!("segment-{}", meshes.len())) };
-        let mesh = Mesh { colours: vec![vertex_colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
-        slot.push((colour, meshes.len()));
+        let (colour, name) = match varying.get(m) {
+            Some((v, _)) => (if v.colour { [255; 4] } else { v.first_colour }, s.kind.name().to_ascii_lowercase()),
+            None => (index.get(shape as usize).and_then(|v| v.iter().find(|(_, i)| *i == m)).map_or([255; 4], |e| e.0), format!("segment-{m}")),
+        };
+        let mesh = Mesh { colours: vec![colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
         meshes.push(NamedMesh { name, mesh });
-        mesh_counts.push(n);
     }
     if meshes.is_empty() {
         // Nothing is drawn (an axiom of symbols no turtle command draws): an
@@ -112,16 +160,11 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta,
         // writer needs a buffer to point its instances into (fuzz finding).
         return if glb { super::gltf::write_glb(&[], meta, budget) } else { super::gltf::write_gltf(&[], meta, budget) };
     }
-    let layout = if per_instance_colour { SCENE_LAYOUT } else { InstanceLayout { scale: h.is_scaled(), colour: false } };
-    super::gltf::write_instanced(&meshes, &mesh_counts, layout, meta, glb, budget, &mut |sink| {
+    super::gltf::write_instanced(&meshes, &mesh_counts, &layouts, meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
-            let Some(slot) = index.get(leaf.shape as usize) else { return };
-            let found = if per_instance_colour { slot.first() } else { slot.iter().find(|(c, _)| *c == leaf.colour) };
-            let Some(&(_, mesh)) = found else { return };
-            let rotation = leaf.rotation.as_quat().normalize().to_array();
-            let s = leaf.scale as f32;
-            let [r, g, b, _] = leaf.colour.map(|c| f32::from(c) / 255.0);
-            sink(mesh, &InstanceData { translation: leaf.translation.as_vec3().to_array(), rotation, scale: [s; 3], colour: [r, g, b] });
+            if let Some(mesh) = mesh_of(leaf) {
+                sink(mesh, &placement(leaf));
+            }
         })
     })
 }

@@ -66,7 +66,7 @@ fn placed(scene: &Scene) -> impl Iterator<Item = (u32, Instance)> + '_ {
 
 /// The byte a mesher writes for a colour channel.
 fn quantise(c: [f32; 4]) -> [u8; 4] {
-    c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+    crate::core::quantise::rgba8(c)
 }
 
 /// The meshes [`crate::mesh::build_meshes`] would make, as runs; the lines

@@ -107,7 +107,7 @@ fn centre(points: &[DVec3]) -> DVec3 {
 }
 
 fn colour8(c: [f32; 4]) -> [u8; 4] {
-    c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+    crate::core::quantise::rgba8(c)
 }
 
 fn push(mesh: &mut Mesh, p: DVec3, n: DVec3, c: [u8; 4]) -> u32 {

@@ -248,7 +248,7 @@ pub fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Op
     let mesh = Mesh {
         positions: used.iter().map(|v| v.position.as_vec3().to_array()).collect(),
         normals: used.iter().map(|v| v.normal.as_vec3().to_array()).collect(),
-        colours: used.iter().map(|v| v.colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8)).collect(),
+        colours: used.iter().map(|v| crate::core::quantise::rgba8(v.colour)).collect(),
         // Fits: the vertex budget keeps counts far below u32::MAX.
         indices: (0..3 * t as u32).collect(),
     };
@@ -390,7 +390,7 @@ fn append_mapped_until<E>(
     flip: bool,
     stop: &mut dyn FnMut() -> Result<bool, E>,
 ) -> Result<bool, E> {
-    let colour = colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    let colour = crate::core::quantise::rgba8(colour);
     let (vertices, indices) = (mesh.positions.len(), mesh.indices.len());
     // Fits: the caller checked the total vertex count against u32::MAX.
     let base = vertices as u32;

@@ -74,6 +74,8 @@ struct Drawn {
     inside_out: u64,
     /// Negative SCALE components written.
     negative_scales: u64,
+    /// Instances of nodes that carry `_COLOR_0`.
+    coloured: u64,
 }
 
 /// Expands every mesh node of `glb` (each instance of an instanced one, by
@@ -91,8 +93,16 @@ fn drawn(glb: &[u8]) -> Drawn {
         let ext = &node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"];
         let placements: Vec<(DVec3, DQuat, DVec3)> = if ext.is_object() {
             let t = vec3s(read(&j, bin, &ext["TRANSLATION"]));
-            let r: Vec<DQuat> = read(&j, bin, &ext["ROTATION"]).chunks_exact(4).map(|q| DQuat::from_xyzw(q[0], q[1], q[2], q[3])).collect();
+            // A missing ROTATION or SCALE is the identity for every instance.
+            let r: Vec<DQuat> = if ext["ROTATION"].is_null() {
+                vec![DQuat::IDENTITY; t.len()]
+            } else {
+                read(&j, bin, &ext["ROTATION"]).chunks_exact(4).map(|q| DQuat::from_xyzw(q[0], q[1], q[2], q[3])).collect()
+            };
             let s = if ext["SCALE"].is_null() { vec![DVec3::ONE; t.len()] } else { vec3s(read(&j, bin, &ext["SCALE"])) };
+            if !ext["_COLOR_0"].is_null() {
+                d.coloured += t.len() as u64;
+            }
             d.negative_scales += s.iter().map(|s| [s.x, s.y, s.z].iter().filter(|&&c| c < 0.0).count() as u64).sum::<u64>();
             d.instances += t.len() as u64;
             t.into_iter().zip(r).zip(s).map(|((t, r), s)| (t, r, s)).collect()
@@ -183,7 +193,7 @@ fn library_grammars_instance_validate_and_load_in_three_like_their_flat_twins() 
         let (gpu, plain) = (ok(&src, &r), ok(&src, &flat(&r)));
         assert_eq!((gpu.primitives, gpu.triangles), (plain.primitives, plain.triangles), "{name}");
         differences.extend(drawing_differences(&name, &gpu.bytes, &plain.bytes));
-        let instances = drawn(&gpu.bytes).instances;
+        let Drawn { instances, coloured, .. } = drawn(&gpu.bytes);
         instanced_grammars += usize::from(instances > 0);
         // Icons share names with grammars (tree.mdg): number the files.
         let glb = dir.path().join(format!("{}-{name}.glb", expected.len()));
@@ -191,7 +201,7 @@ fn library_grammars_instance_validate_and_load_in_three_like_their_flat_twins() 
         let gltf = dir.path().join(format!("{}-{name}.gltf", expected.len()));
         std::fs::write(&gltf, ok(&src, &RenderRequest { format: Format::Gltf, ..r }).bytes).expect("write");
         files.extend([glb, gltf]);
-        expected.push((name, gpu.triangles, instances, language != Language::Lsystem));
+        expected.push((name, gpu.triangles, instances, coloured));
     }
     assert!(differences.is_empty(), "{}", differences.join("\n"));
     assert!(instanced_grammars >= 20, "only {instanced_grammars} grammars instance");
@@ -203,8 +213,8 @@ fn library_grammars_instance_validate_and_load_in_three_like_their_flat_twins() 
         assert_eq!(r["ok"], true, "{name} does not load in three.js: {r}");
         assert_eq!(r["triangles"].as_u64(), Some(*triangles), "{name}: {r}");
         assert_eq!(r["instances"].as_u64(), Some(*instances), "{name}: {r}");
-        // Scene instances carry `_COLOR_0`, which three.js makes `instanceColor`.
-        assert_eq!(r["coloured"].as_u64(), Some(if *coloured { *instances } else { 0 }), "{name}: {r}");
+        // `_COLOR_0` (on meshes whose instances differ in colour) becomes three.js's `instanceColor`.
+        assert_eq!(r["coloured"].as_u64(), Some(*coloured), "{name}: {r}");
     }
 }
 
@@ -317,4 +327,37 @@ fn read_u8(j: &Value, bin: &[u8], i: &Value) -> Vec<u8> {
     let view = &j["bufferViews"][a["bufferView"].as_u64().expect("view") as usize];
     let at = view["byteOffset"].as_u64().unwrap_or(0) as usize;
     bin[at..at + 4 * a["count"].as_u64().expect("count") as usize].to_vec()
+}
+
+/// Attributes that do not vary between a mesh's instances are left out
+/// (the extension's identity) and one shared colour goes into the mesh: a
+/// grid of one-colour boxes carries TRANSLATION alone, 12 bytes per box,
+/// and draws and colours what its flat twin does.
+#[test]
+fn instances_that_only_move_carry_translation_alone() {
+    let src = b"startshape A\nrule A { 10 * {x 2} Row {} }\nrule Row { 10 * {y 2} BOX { G 1 } }\n";
+    let r = req(Language::Mdg, Format::Glb);
+    let (gpu, plain) = (ok(src, &r), ok(src, &flat(&r)));
+    let (j, bin) = chunks(&gpu.bytes);
+    let node = j["nodes"].as_array().expect("nodes").iter().find(|n| n["name"] == "box").expect("the box node");
+    let attributes = node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"].as_object().expect("instanced");
+    assert_eq!(attributes.keys().collect::<Vec<_>>(), ["TRANSLATION"]);
+    assert_eq!(j["accessors"][attributes["TRANSLATION"].as_u64().expect("accessor") as usize]["count"], 100);
+    let d = drawn(&gpu.bytes);
+    assert_eq!((d.instances, d.coloured, d.triangles), (100, 0, 1200));
+    assert_same_drawing("grid", &gpu.bytes, &plain.bytes);
+    // The shared colour is in the prototype's vertex colours, as in every flat box.
+    let mesh = node["mesh"].as_u64().expect("mesh") as usize;
+    let colours = read_u8(&j, bin, &j["meshes"][mesh]["primitives"][0]["attributes"]["COLOR_0"]);
+    let (pj, pbin) = chunks(&plain.bytes);
+    let flat_colours = read_u8(&pj, pbin, &pj["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"]);
+    assert_eq!(colours.chunks_exact(4).collect::<std::collections::BTreeSet<_>>(), flat_colours.chunks_exact(4).collect());
+    assert_eq!(colours.chunks_exact(4).collect::<std::collections::BTreeSet<_>>().len(), 1);
+    assert_eq!(&colours[..4], [0, 255, 0, 255], "green");
+    // Rotated copies keep ROTATION.
+    let turned = b"startshape A\nrule A { 10 * {rz 30} BOX {} }\n";
+    let (j, _) = chunks(&ok(turned, &r).bytes);
+    let node = j["nodes"].as_array().expect("nodes").iter().find(|n| n["name"] == "box").expect("the box node");
+    let keys: Vec<String> = node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"].as_object().expect("instanced").keys().cloned().collect();
+    assert_eq!(keys, ["ROTATION", "TRANSLATION"]);
 }
