@@ -130,25 +130,41 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta,
             colour: [r, g, b],
         }
     };
-    // What varies per mesh, as Plan records it of the flat scene (MDG only).
-    let mut varying = vec![(Varying::NONE, 0u64); if per_instance_colour { shapes.len() } else { 0 }];
-    if per_instance_colour {
-        h.walk(&mut |leaf| {
-            let Some((v, seen)) = mesh_of(leaf).and_then(|m| varying.get_mut(m)) else { return };
-            let d = placement(leaf);
-            v.see_values(Quat::from_array(d.rotation), Vec3::from_array(d.scale), leaf.colour, *seen == 0);
-            *seen += 1;
+    // What varies per mesh, as `Plan` records it of the flat scene (MDG
+    // only; exact comparisons): colours from the leaf counts (a leaf's colour
+    // is its entry's), rotation and scale by a walk that stops once every
+    // mesh has both.
+    let none = Varying { rotation: false, scale: false, colour: false, first_colour: [255; 4] };
+    let mut varying: Vec<Option<Varying>> = vec![None; if per_instance_colour { shapes.len() } else { 0 }];
+    for (&(shape, colour), _) in counts.iter().filter(|_| per_instance_colour) {
+        let Some(v) = index.get(shape as usize).and_then(|v| v.first()).and_then(|e| varying.get_mut(e.1)) else { continue };
+        match v {
+            None => *v = Some(Varying { first_colour: colour, ..none }),
+            Some(v) => v.colour |= v.first_colour != colour,
+        }
+    }
+    let mut open = varying.len();
+    if open > 0 {
+        h.walk_while(&mut |leaf| {
+            let Some(Some(v)) = mesh_of(leaf).and_then(|m| varying.get_mut(m)) else { return true };
+            if !(v.rotation && v.scale) {
+                let d = placement(leaf);
+                v.rotation |= Quat::from_array(d.rotation) != Quat::IDENTITY;
+                v.scale |= Vec3::from_array(d.scale) != Vec3::ONE;
+                open -= usize::from(v.rotation && v.scale);
+            }
+            open > 0
         });
     }
     let rigid = InstanceLayout { rotation: true, scale: h.is_scaled(), colour: false };
-    let layouts: Vec<InstanceLayout> = if per_instance_colour { varying.iter().map(|(v, _)| layout(v)).collect() } else { vec![rigid; shapes.len()] };
+    let layouts: Vec<InstanceLayout> = if per_instance_colour { varying.iter().map(|v| v.as_ref().map_or(rigid, layout)).collect() } else { vec![rigid; shapes.len()] };
     let mut meshes = Vec::with_capacity(shapes.len());
     for (m, &shape) in shapes.iter().enumerate() {
         let Some(s) = h.shapes.get(shape as usize) else { continue };
         let p = s.prototype(detail);
         budget.reserve_memory(mesh_bytes(p.positions.len() as u64, p.indices.len() as u64 / 3))?;
-        let (colour, name) = match varying.get(m) {
-            Some((v, _)) => (if v.colour { [255; 4] } else { v.first_colour }, s.kind.name().to_ascii_lowercase()),
+        let (colour, name) = match varying.get(m).copied().flatten() {
+            Some(v) => (if v.colour { [255; 4] } else { v.first_colour }, s.kind.name().to_ascii_lowercase()),
             None => (index.get(shape as usize).and_then(|v| v.iter().find(|(_, i)| *i == m)).map_or([255; 4], |e| e.0), format!("segment-{m}")),
         };
         let mesh = Mesh { colours: vec![colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };

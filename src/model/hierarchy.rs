@@ -240,6 +240,15 @@ impl Hierarchy {
     /// cannot overflow the thread's stack; its cost is the number of leaves,
     /// which [`Hierarchy::leaves`] tells before walking.
     pub fn walk(&self, f: &mut dyn FnMut(&PlacedLeaf)) {
+        self.walk_while(&mut |leaf| {
+            f(leaf);
+            true
+        });
+    }
+
+    /// [`Hierarchy::walk`] that stops as soon as `f` returns false (a
+    /// question about the leaves answered before the last one).
+    pub fn walk_while(&self, f: &mut dyn FnMut(&PlacedLeaf) -> bool) {
         let Some(root) = self.objects.len().checked_sub(1) else { return };
         // (object, next entry, object's world frame). `Frame::then` with scale
         // 1 is the rigid composition t + r·t', (r·r')‾ bit for bit.
@@ -255,7 +264,11 @@ impl Hierarchy {
             match e.target {
                 Target::Object(c) if (c as usize) < object => stack.push((c as usize, 0, here)),
                 Target::Object(_) => {}
-                Target::Shape(shape) => f(&PlacedLeaf { shape, translation: here.translation, rotation: here.rotation, scale: here.scale, colour: e.colour }),
+                Target::Shape(shape) => {
+                    if !f(&PlacedLeaf { shape, translation: here.translation, rotation: here.rotation, scale: here.scale, colour: e.colour }) {
+                        return;
+                    }
+                }
             }
         }
     }

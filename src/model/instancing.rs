@@ -200,25 +200,18 @@ pub struct Varying {
 
 impl Varying {
     /// Nothing varies yet: the state before the first placement is seen.
-    pub const NONE: Varying = Varying { rotation: false, scale: false, colour: false, first_colour: [0; 4] };
+    const NONE: Varying = Varying { rotation: false, scale: false, colour: false, first_colour: [0; 4] };
 
     /// Notes one more placement; `first` says whether it is the mesh's first.
     fn see(&mut self, p: &Placement, first: bool) {
-        self.see_values(p.rotation, p.scale, p.colour, first);
-    }
-
-    /// Notes one more placement by its rotation, scale and colour (what a
-    /// hierarchy's walk gives, with no [`Placement`] made); `first` says
-    /// whether it is the mesh's first.
-    pub fn see_values(&mut self, rotation: Quat, scale: Vec3, colour: [u8; 4], first: bool) {
         // Exact comparisons: only a placement that is exactly the identity
         // may lose its attribute, so the instanced output stays exact.
-        self.rotation |= rotation != Quat::IDENTITY;
-        self.scale |= scale != Vec3::ONE;
+        self.rotation |= p.rotation != Quat::IDENTITY;
+        self.scale |= p.scale != Vec3::ONE;
         if first {
-            self.first_colour = colour;
+            self.first_colour = p.colour;
         } else {
-            self.colour |= colour != self.first_colour;
+            self.colour |= p.colour != self.first_colour;
         }
     }
 }
