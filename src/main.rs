@@ -151,6 +151,9 @@ struct RenderArgs {
     /// One merged mesh or one mesh per primitive kind.
     #[arg(long, value_enum, default_value = "merged")]
     layout: MeshLayout,
+    /// A Structure Synth JavaScript movie only: build its K-th saved picture alone (0-based), as Structure Synth renders one picture at a time.
+    #[arg(long, value_name = "K")]
+    frame: Option<u32>,
     /// strips format: bits per position axis (8, 10, 12 or 16).
     #[arg(long, default_value_t = StripsOptions::default().position_bits)]
     position_bits: u8,
@@ -375,6 +378,7 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
             },
         },
         script_dir: Some(script_dir_of(&args.file)),
+        frame: args.frame,
     };
     let source = read_source(&args.file, limits.max_source_bytes)?;
     let Some(list) = &args.seeds else {

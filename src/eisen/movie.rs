@@ -10,6 +10,11 @@
 //! (STL, strips, printing, quantised glTF, …) show frame 0, as they show
 //! time 0 of any animation. A script that builds but pictures nothing shows
 //! its last build; one that builds nothing gives an empty model.
+//!
+//! A request's `frame: k` builds the k-th picture alone (the script still
+//! runs whole, recording every picture's text, which costs little): how
+//! Structure Synth itself renders a movie, one picture under its own
+//! limits at a time, where the whole movie under one budget may not fit.
 
 use super::build::{self, Built};
 use super::{build_options, parse_bound};
@@ -37,7 +42,12 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     let movie = js::run(text, loader, seed, req.on_limit == OnLimit::Truncate, budget)?;
     clock.lap(Phase::Parse);
     let mut warnings = movie.warnings;
-    let texts: Vec<&String> = if movie.frames.is_empty() { movie.last_build.iter().collect() } else { movie.frames.iter().collect() };
+    let texts: Vec<&String> = match req.frame {
+        // One picture, as Structure Synth builds and renders each picture alone.
+        Some(k) => vec![movie.frames.get(k as usize).ok_or_else(|| no_such_frame(k, movie.frames.len()))?],
+        None if movie.frames.is_empty() => movie.last_build.iter().collect(),
+        None => movie.frames.iter().collect(),
+    };
     if texts.is_empty() {
         warnings.push(Diagnostic::warning(Span::new(1, 1), "the script built nothing: the model is empty"));
     }
@@ -97,6 +107,15 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     let (mut scene, primitives) = assemble(frames, animated, budget)?;
     scene.truncated = truncated;
     Ok(Model { language: Language::Eisenscript, scene, hierarchy: None, primitives, warnings, promised: 0, seed })
+}
+
+/// The error for a `frame` the script does not save.
+fn no_such_frame(k: u32, saved: usize) -> EvalError {
+    let message = match saved {
+        0 => format!("the script saves no picture, so it has no frame {k} (without `frame` it shows what it built last)"),
+        n => format!("the script saves {n} pictures (frames 0 to {}); there is no frame {k}", n - 1),
+    };
+    EvalError::Frame { message }
 }
 
 /// One scene of `frames`: frame 0 alone unless `animated` and there are

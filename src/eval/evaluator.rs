@@ -51,7 +51,7 @@ pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
     let mut tally = Tally::new(d.per_instance);
     let instances = scene.instances.iter().fold(0u64, |acc, i| {
         let bytes = d.bytes(primitives::vertex_count(i.kind, options.detail), primitives::triangle_count(i.kind, options.detail));
-        acc.saturating_add(tally.cost(Placement::of_instance(i).map(|p| p.key), 0, bytes).1)
+        acc.saturating_add(tally.cost(Placement::key_of_instance(i), 0, bytes).1)
     });
     let lines = scene.lines.iter().fold(0u64, |acc, l| {
         let n = line_sides(scene, l.profile, options.detail);

@@ -194,31 +194,42 @@ impl<'p, 'b> Machine<'p, 'b> {
             if self.capture.as_ref().is_some_and(|c| c.frame_limit.is_some_and(|l| c.frames.len() >= l)) {
                 return Ok(());
             }
+            // Items and copies advance in place on top of the stack, where
+            // popping and pushing them back would copy a few hundred bytes
+            // per item (a tenth of a million-box grid's evaluation). The
+            // stack then holds exactly what it held before, in order.
+            match self.stack.last_mut() {
+                None => return Ok(()),
+                Some(Task::Items { items, next, ctx }) => {
+                    let (items, at, ctx) = (*items, *next, *ctx);
+                    if at + 1 < items.len() {
+                        *next = at + 1;
+                    } else {
+                        self.stack.pop();
+                    }
+                    let Some(item) = items.get(at) else { continue };
+                    self.run_item(item, ctx)?;
+                    continue;
+                }
+                Some(Task::Copies { it, k, count, step, current, base_key }) => {
+                    self.budget.charge_step()?;
+                    let (it, at, this, base_key) = (*it, *k, *current, *base_key);
+                    if at < *count {
+                        let (frame, colour) = this.apply(step);
+                        *current = Ctx { frame, colour, ..this };
+                        *k = at + 1;
+                    } else {
+                        self.stack.pop();
+                    }
+                    let ctx = Ctx { key: base_key.child(it.site, at), ..this };
+                    self.run_item(&it.body, ctx)?;
+                    continue;
+                }
+                Some(Task::Convolve { .. }) => {}
+            }
             let Some(task) = self.stack.pop() else { return Ok(()) };
             match task {
-                Task::Items { items, next, ctx } => {
-                    let Some(item) = items.get(next) else { continue };
-                    if next + 1 < items.len() {
-                        self.stack.push(Task::Items { items, next: next + 1, ctx });
-                    }
-                    self.run_item(item, ctx)?;
-                }
-                Task::Copies { it, k, count, step, current, base_key } => {
-                    self.budget.charge_step()?;
-                    if k < count {
-                        let (frame, colour) = current.apply(&step);
-                        self.stack.push(Task::Copies {
-                            it,
-                            k: k + 1,
-                            count,
-                            step,
-                            current: Ctx { frame, colour, ..current },
-                            base_key,
-                        });
-                    }
-                    let ctx = Ctx { key: base_key.child(it.site, k), ..current };
-                    self.run_item(&it.body, ctx)?;
-                }
+                Task::Items { .. } | Task::Copies { .. } => {}
                 Task::Convolve { body, frames, i, ctx } => {
                     self.budget.charge_step()?;
                     let Some(f) = frames.get(i) else { continue };
@@ -332,7 +343,7 @@ impl<'p, 'b> Machine<'p, 'b> {
                 let mut colour = ctx.colour;
                 colour[3] += 1.0;
                 let placed = Instance::new(kind, &ctx.frame, colour);
-                let (t, bytes) = self.tally.cost(Placement::of_instance(&placed).map(|p| p.key), self.ev.tris[kind as usize], self.ev.downstream[kind as usize]);
+                let (t, bytes) = self.tally.cost(Placement::key_of_instance(&placed), self.ev.tris[kind as usize], self.ev.downstream[kind as usize]);
                 self.budget.charge_primitive(t)?;
                 self.budget.reserve_memory(bytes)?;
                 let instances = &mut self.scene.instances;

@@ -63,6 +63,13 @@ pub enum EvalError {
         /// QuickJS's message.
         message: String,
     },
+    /// The request's `frame` does not name a picture: the source is not a
+    /// JavaScript movie, or the movie saves fewer pictures.
+    #[error("frame: {message}")]
+    Frame {
+        /// What is wrong, with the number of pictures the script saves.
+        message: String,
+    },
     /// `Builder.load` could not load the file it names (refused path, missing
     /// file, or no such library grammar in the service).
     #[error("Builder.load(\"{name}\"): {reason}")]

@@ -97,6 +97,13 @@ pub fn rgba8(colour: [f32; 4]) -> [u8; 4] {
 }
 
 impl Placement {
+    /// The mesh a drawable similarity instance places: [`Placement::of_instance`]'s
+    /// key without the rest, which the evaluator's per-primitive charge
+    /// ([`Tally::cost`]) does not need.
+    pub fn key_of_instance(i: &Instance) -> Option<MeshKey> {
+        i.is_drawable().then_some(MeshKey { class: 0, source: Source::Primitive(i.kind), mirrored: i.parity })
+    }
+
     /// A drawable similarity instance (MDG, stacking strings, UniGrafix, L-system turtles).
     pub fn of_instance(i: &Instance) -> Option<Placement> {
         i.is_drawable().then(|| Placement {

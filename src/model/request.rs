@@ -68,4 +68,7 @@ pub struct BuildRequest<'a> {
     /// The folder a Structure Synth JavaScript script's `Builder.load` reads
     /// from; `None` (the service) loads built-in library grammars only.
     pub script_dir: Option<&'a Path>,
+    /// Build only this picture of a JavaScript movie (see
+    /// `RenderRequest::frame`); `None` builds every picture.
+    pub frame: Option<u32>,
 }

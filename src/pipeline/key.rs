@@ -117,6 +117,10 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
             ParamValue::Text(t) => e.field("param.text", t.as_bytes()),
         }
     }
+    // Only when given, so every other request keeps its key.
+    if let Some(k) = req.frame {
+        e.u64("frame", k.into());
+    }
     e.field("format", req.format.name().as_bytes());
     if req.format == Format::Strips {
         let o = &req.export_options.strips;

@@ -69,6 +69,11 @@ pub struct RenderRequest {
     /// reads from (the CLI passes the script's folder). `None` — the service —
     /// reads no files: only built-in library grammars load.
     pub script_dir: Option<std::path::PathBuf>,
+    /// One picture of a Structure Synth JavaScript movie (0-based: the k-th
+    /// picture-saving call), built alone as Structure Synth renders each
+    /// picture; `None` builds the whole movie as one animated model. Other
+    /// sources refuse it.
+    pub frame: Option<u32>,
 }
 
 impl Default for RenderRequest {
@@ -84,6 +89,7 @@ impl Default for RenderRequest {
             layout: MeshLayout::Merged,
             export_options: ExportOptions::default(),
             script_dir: None,
+            frame: None,
         }
     }
 }
@@ -298,6 +304,10 @@ fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
 
 /// Calls the front end of `language`.
 fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    if req.frame.is_some() && !(language == Language::Eisenscript && lang::eisen::is_javascript(source)) {
+        let message = format!("`frame` picks one picture of a Structure Synth JavaScript movie (a `#javascript` script); this source is {}, not a movie", language.name());
+        return Err(EvalError::Frame { message }.into());
+    }
     match language {
         Language::Mdg | Language::Stack | Language::Ug => crate::eval::build_model(language, source, req, budget, clock),
         Language::Lsystem => crate::lsystem::build_model(source, req, budget, clock),
@@ -369,6 +379,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         hierarchy: hierarchy_use(req),
         animated: graph_capable(req),
         script_dir: req.script_dir.as_deref(),
+        frame: req.frame,
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     let mut model = build_model(language, source, &build, &mut budget, &mut clock)?;

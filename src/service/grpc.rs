@@ -56,6 +56,7 @@ impl From<pb::RenderRequest> for RenderBody {
             }),
             on_limit: non_empty(r.on_limit),
             detail: r.detail,
+            frame: r.frame,
             layout: non_empty(r.layout),
             // Out-of-range values become 0, which validation rejects with a message.
             position_bits: r.position_bits.map(|b| u8::try_from(b).unwrap_or(0)),

@@ -139,6 +139,11 @@ pub struct RenderBody {
     pub on_limit: Option<String>,
     /// Tessellation detail.
     pub detail: Option<u32>,
+    /// A Structure Synth JavaScript movie only: build its k-th saved
+    /// picture alone (0-based), as Structure Synth renders one picture at a
+    /// time; absent, the whole movie is one animated model. Any other source
+    /// answers 400 `eval_error`.
+    pub frame: Option<u32>,
     /// `"merged"` (default) or `"per-kind"`.
     pub layout: Option<String>,
     /// `strips` only: bits per position axis (8, 10, 12 or 16; default 16).
@@ -343,6 +348,7 @@ impl RenderBody {
             },
             // The service reads no files: Builder.load takes library grammars only.
             script_dir: None,
+            frame: self.frame,
         };
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
         let key = cache_key(&source, &request);

@@ -136,6 +136,7 @@ fn options() -> Value {
             "on_limit": { "enum": ["error", "truncate"], "default": "error" },
             "detail": { "type": "integer", "minimum": crate::geom::MIN_DETAIL, "maximum": crate::geom::MAX_DETAIL, "default": crate::geom::DEFAULT_DETAIL },
             "layout": { "enum": ["merged", "per-kind"], "default": "merged" },
+            "frame": { "type": "integer", "minimum": 0, "maximum": u32::MAX },
             "position_bits": { "enum": [8, 10, 12, 16], "default": 16 },
             "normal_bits": { "enum": [8, 16], "default": 8 },
             "zstd": { "type": "boolean", "default": false },

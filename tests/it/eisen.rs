@@ -334,10 +334,13 @@ fn scripts_under(dir: &Path) -> Vec<PathBuf> {
 /// which. City of Glass (2.99 M triangles flat in 53 651 objects),
 /// NineWorthies (2.92 M in 52 218) and Nouveau3 (4.41 M in 19 700 at detail
 /// 16) stopped at memory or triangles when every object was tessellated;
-/// as instanced glb they render (a box or sphere mesh and 52 bytes per
-/// object, docs/service.md *GPU instancing*). The movie builds 1 001 frames
-/// under one budget and is written flat (it is animated), so it still ends
-/// at a limit, now the primitive count (docs/eisenscript.md, *Limits*).
+/// as instanced glb they render (a box or sphere mesh and at most 52 bytes
+/// per object, docs/service.md *GPU instancing*). The movie asked for whole
+/// builds 1 001 pictures (about 24 M objects) under one budget, written flat
+/// (it is animated), so it ends at the primitive count; Structure Synth
+/// builds and renders each picture alone, which `frame` does, and every
+/// picture renders at default limits
+/// (`debian_movie_renders_every_picture_alone_at_default_limits`).
 const LIMITED: [(&str, Limit); 1] = [("Tutorials/JavaScript - Movie.es", Limit::Primitives)];
 
 #[test]
@@ -429,6 +432,61 @@ fn javascript_movie_frames_play_as_a_step_animation() {
     // A script that builds but pictures nothing shows its last build.
     let built = "#javascript\nBuilder.load(\"frame.es\");\nBuilder.define(\"n\", 4);\nBuilder.build();\n";
     assert_eq!(movie(built, req(Format::Glb)).0.unwrap().primitives, 4);
+}
+
+/// `frame: k` builds the k-th saved picture alone; a frame the script does
+/// not save, or a source that is no movie, is a typed error saying why.
+#[test]
+fn javascript_movie_frame_builds_one_picture() {
+    let one = |k: u32| movie(MOVIE, RenderRequest { frame: Some(k), ..req(Format::Glb) }).0;
+    let outs: Vec<rulemesh::RenderOutput> = (0..3).map(|k| one(k).unwrap_or_else(|e| panic!("frame {k}: {e}"))).collect();
+    // frame.es with n = k + 1: k + 1 boxes, unanimated.
+    assert_eq!(outs.iter().map(|o| o.primitives).collect::<Vec<_>>(), [1, 2, 3]);
+    let j: serde_json::Value = serde_json::from_slice(&movie(MOVIE, RenderRequest { frame: Some(2), ..req(Format::Gltf) }).0.unwrap().bytes).expect("glTF JSON");
+    assert!(j["animations"].is_null(), "one picture plays no animation");
+    assert_eq!(one(1).unwrap().bytes, outs[1].bytes, "same frame, same bytes");
+    assert_ne!(outs[1].bytes, outs[2].bytes);
+    let frame_error = |r: Result<rulemesh::RenderOutput, RenderError>| match r {
+        Err(RenderError::Eval(e @ rulemesh::model::EvalError::Frame { .. })) => e.to_string(),
+        other => panic!("expected a frame error, got {other:?}"),
+    };
+    assert_eq!(frame_error(one(3)), "frame: the script saves 3 pictures (frames 0 to 2); there is no frame 3");
+    let built = "#javascript\nBuilder.load(\"frame.es\");\nBuilder.build();\n";
+    assert!(frame_error(movie(built, RenderRequest { frame: Some(0), ..req(Format::Glb) }).0).contains("saves no picture"));
+    let plain = render(b"box\n", &RenderRequest { frame: Some(0), ..req(Format::Glb) });
+    assert!(frame_error(plain).contains("this source is eisenscript, not a movie"));
+    let mdg = render(b"startshape A\nrule A { BOX {} }\n", &RenderRequest { language: Some(Language::Mdg), frame: Some(0), ..req(Format::Glb) });
+    assert!(frame_error(mdg).contains("this source is mdg"));
+}
+
+/// Debian's movie, one picture at a time as Structure Synth renders it: the
+/// first, the middle and the last (the largest: `maxdepth` rises with the
+/// frame, so every other picture is smaller) render at default limits,
+/// validator-clean, with the objects of NouveauMovie.es built with that
+/// picture's `#define`s (`_rz` = 360 c, `_md` = 20 + 3000 c, c = k / 1000).
+#[test]
+fn debian_movie_renders_every_picture_alone_at_default_limits() {
+    let dir = Path::new("/usr/share/structure-synth/Examples/Tutorials");
+    assert!(dir.is_dir(), "{} is missing: install Debian's structure-synth package (scripts/test does)", dir.display());
+    let js = std::fs::read(dir.join("JavaScript - Movie.es")).expect("the movie");
+    let nouveau = std::fs::read_to_string(dir.join("NouveauMovie.es")).expect("NouveauMovie.es");
+    let tmp = tempdir();
+    let mut paths = Vec::new();
+    for (k, objects) in [(0u32, 240u64), (500, 23_984), (1000, 47_712)] {
+        let r = RenderRequest { language: Some(Language::Eisenscript), script_dir: Some(dir.to_path_buf()), frame: Some(k), ..req(Format::Glb) };
+        let out = render(&js, &r).unwrap_or_else(|e| panic!("frame {k}: {e}"));
+        assert_eq!(out.primitives, objects, "frame {k}");
+        let c = f64::from(k) / 1000.0;
+        let text = nouveau.replace("#define _rz 0", &format!("#define _rz {}", c * 360.0)).replace("#define _md 1000", &format!("#define _md {}", 20.0 + c * 3000.0));
+        let direct = render(text.as_bytes(), &RenderRequest { language: Some(Language::Eisenscript), ..req(Format::Glb) }).expect("NouveauMovie.es");
+        assert_eq!((direct.primitives, direct.triangles), (out.primitives, out.triangles), "frame {k}");
+        let path = tmp.path().join(format!("frame-{k}.glb"));
+        std::fs::write(&path, &out.bytes).expect("write");
+        paths.push(path);
+    }
+    for (path, (errors, _, report)) in paths.iter().zip(validate_gltf(&paths)) {
+        assert_eq!(errors, 0, "{}: {report}", path.display());
+    }
 }
 
 #[test]

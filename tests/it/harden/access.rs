@@ -11,6 +11,8 @@ use tonic::metadata::MetadataValue;
 const SLOW: &str = "startshape A\nrule A { 100000 * { x 1 } B {} }\nrule B { 100000 * { y 1 } C {} }\nrule C { }\n";
 
 const JS: &str = "#javascript\nBuilder.load(\"NouveauMovie.es\");\nBuilder.build();\n";
+/// A movie of two pictures that loads nothing: one box, then two.
+const INLINE_MOVIE: &str = "#javascript\nBuilder.append(\"box\");\nBuilder.build();\nBuilder.raytraceToFile(\"a.png\", true);\nBuilder.append(\"{ x 2 } box\");\nBuilder.build();\nBuilder.raytraceToFile(\"b.png\", true);\n";
 
 fn key(name: &str, secret: &str) -> ApiKeySpec {
     ApiKeySpec::new(name, secret)
@@ -200,6 +202,24 @@ async fn javascript_switch_over_http_and_grpc() {
             assert_eq!(err["code"], "eval_error", "{err}");
             assert!(err["message"].as_str().is_some_and(|m| m.contains("reads no files")), "{err}");
             assert_eq!(r2.status(), 400);
+            assert_eq!(e.code(), tonic::Code::InvalidArgument);
+            // `frame` builds one picture of a movie, over both doors.
+            let post = |body: serde_json::Value| client().post(format!("{base}/v1/render")).json(&body).send();
+            let r = post(json!({"source": INLINE_MOVIE, "frame": 1})).await.expect("post");
+            assert_eq!((r.status().as_u16(), r.headers().get("x-rulemesh-primitives").and_then(|v| v.to_str().ok())), (200, Some("2")));
+            let r = post(json!({"source": INLINE_MOVIE, "frame": 0})).await.expect("post");
+            assert_eq!((r.status().as_u16(), r.headers().get("x-rulemesh-primitives").and_then(|v| v.to_str().ok())), (200, Some("1")));
+            for body in [json!({"source": INLINE_MOVIE, "frame": 2}), json!({"source": "box\n", "language": "eisenscript", "frame": 0})] {
+                let r = post(body).await.expect("post");
+                assert_eq!(r.status(), 400);
+                let err = error_of(r).await;
+                assert_eq!(err["code"], "eval_error", "{err}");
+                assert!(err["message"].as_str().is_some_and(|m| m.starts_with("frame: ")), "{err}");
+            }
+            let mut g = grpc(&srv).await;
+            let one = g.render(pb::RenderRequest { source: INLINE_MOVIE.into(), frame: Some(1), ..Default::default() }).await.expect("frame 1");
+            assert_eq!(one.into_inner().meta.map(|m| m.primitives), Some(2));
+            let e = g.render(pb::RenderRequest { source: INLINE_MOVIE.into(), frame: Some(7), ..Default::default() }).await.expect_err("no frame 7");
             assert_eq!(e.code(), tonic::Code::InvalidArgument);
         } else {
             for r in [r, r2] {
