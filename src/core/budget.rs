@@ -413,6 +413,17 @@ impl Budget {
         }
     }
 
+    /// Time left before [`Budget::check_deadline`] fails (zero once it
+    /// has), or `None` without a deadline: for work that cannot check the
+    /// deadline itself and must be told when to stop (a Manifold union).
+    pub fn time_left(&self) -> Option<Duration> {
+        let end = match (self.deadline, self.stage_deadline) {
+            (Some(d), Some(s)) => Some(d.min(s)),
+            (d, _) => d,
+        }?;
+        Some(end.saturating_duration_since(Instant::now()))
+    }
+
     /// Time since the budget was created.
     pub fn elapsed(&self) -> Duration {
         self.started.elapsed()
