@@ -482,6 +482,19 @@ mod tests {
     }
 
     #[test]
+    fn time_left_counts_down_to_the_deadline_or_the_stage_share() {
+        let mut b = Budget::new(Limits { timeout_ms: 10_000, ..Limits::default() });
+        let left = b.time_left().unwrap();
+        assert!(left <= Duration::from_millis(10_000) && left > Duration::from_millis(9_000), "{left:?}");
+        b.set_stage_share(Some(0.5));
+        assert!(b.time_left().unwrap() <= Duration::from_millis(5_000));
+        b.lift_deadline();
+        assert_eq!(b.time_left(), None);
+        let b = Budget::new(Limits { timeout_ms: 0, ..Limits::default() });
+        assert_eq!(b.time_left(), Some(Duration::ZERO));
+    }
+
+    #[test]
     fn clamping_respects_the_ceiling() {
         let big = Limits { max_primitives: u64::MAX, ..Limits::default() };
         assert_eq!(big.clamped_to(&Limits::ceiling()).max_primitives, Limits::ceiling().max_primitives);
