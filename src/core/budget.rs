@@ -413,6 +413,17 @@ impl Budget {
         }
     }
 
+    /// Time left before [`Budget::check_deadline`] fails (zero once it
+    /// has), or `None` without a deadline: for work that cannot check the
+    /// deadline itself and must be told when to stop (a Manifold union).
+    pub fn time_left(&self) -> Option<Duration> {
+        let end = match (self.deadline, self.stage_deadline) {
+            (Some(d), Some(s)) => Some(d.min(s)),
+            (d, _) => d,
+        }?;
+        Some(end.saturating_duration_since(Instant::now()))
+    }
+
     /// Time since the budget was created.
     pub fn elapsed(&self) -> Duration {
         self.started.elapsed()
@@ -468,6 +479,19 @@ mod tests {
         assert_eq!((e.limit, e.configured, e.reached), (Limit::Deadline, 1000, 1500));
         // A watchdog that fires on the tick of the deadline still reports it crossed.
         assert_eq!(LimitExceeded::deadline_passed(1000, 1000).reached, 1001);
+    }
+
+    #[test]
+    fn time_left_counts_down_to_the_deadline_or_the_stage_share() {
+        let mut b = Budget::new(Limits { timeout_ms: 10_000, ..Limits::default() });
+        let left = b.time_left().unwrap();
+        assert!(left <= Duration::from_millis(10_000) && left > Duration::from_millis(9_000), "{left:?}");
+        b.set_stage_share(Some(0.5));
+        assert!(b.time_left().unwrap() <= Duration::from_millis(5_000));
+        b.lift_deadline();
+        assert_eq!(b.time_left(), None);
+        let b = Budget::new(Limits { timeout_ms: 0, ..Limits::default() });
+        assert_eq!(b.time_left(), Some(Duration::ZERO));
     }
 
     #[test]

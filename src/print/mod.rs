@@ -116,24 +116,24 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
         0.0
     };
     let parts = union::split_parts(meshes, wall, budget)?;
-    let (positions, indices) = union::unite(&parts.closed, budget)?;
-    let colours = colour::triangle_colours(&parts.closed, &parts.colours, &positions, &indices, budget)?;
-    // Models are Y-up (glTF, the preview: a tower grows along +Y); printers
-    // build along +Z (3MF's build direction, slicers' convention). Turning
-    // +Y to +Z (a rotation, so winding and volume are kept) stands a tower
-    // or a vase on its foot and lays a gear or a pendant drawn in the XZ
-    // plane flat on the plate.
-    let positions: Vec<glam::DVec3> = positions.into_iter().map(|p| glam::DVec3::new(p.x, -p.z, p.y)).collect();
-    let (lo, hi) = bounds(positions.iter().copied());
-    let longest = (hi - lo).max_element();
-    let scale = if options.size_um > 0 && longest > 0.0 { f64::from(options.size_um) / 1000.0 / longest } else { 1.0 };
-    // Rest the solid on z = 0, centred in x and y: how a slicer places it anyway.
-    let offset = glam::DVec3::new(-(lo.x + hi.x) / 2.0, -(lo.y + hi.y) / 2.0, -lo.z);
-    let scaled: Vec<[f32; 3]> = positions.iter().map(|p| ((*p + offset) * scale).as_vec3().to_array()).collect();
-    // Manifold leaves edges a few f32 ulps long, which slicers and checkers
-    // (trimesh merges within 1e-8) fuse into non-manifold edges: collapse
-    // edges shorter than a millionth of the size.
-    let (scaled, indices, kept) = collapse_short_edges(scaled, &indices, (longest * scale) * 1e-6);
+    // Snapped to a grid first (src/print/union.rs, `snap_grid`): parts that
+    // share faces in exact arithmetic then share them exactly and fuse.
+    // Snapping also moves curved parts by up to half a step, which can turn
+    // a near miss into a contact along an edge (the truncated icosahedron's
+    // tubes and balls: four edges of four faces). So if the snapped result
+    // has edges not shared by exactly two faces, the parts are united again
+    // unsnapped and the result with fewer such edges is kept (the snapped
+    // one on a tie): the choice depends only on the two results.
+    let mut placed = place(union::unite(&parts.closed, union::snap_grid(&parts.closed), budget)?, options.size_um);
+    let bad = report::bad_edges(&placed.scaled, &placed.indices);
+    if bad > 0 {
+        let plain = place(union::unite(&parts.closed, 0.0, budget)?, options.size_um);
+        if report::bad_edges(&plain.scaled, &plain.indices) < bad {
+            placed = plain;
+        }
+    }
+    let Placed { united, scaled, indices, kept, scale } = placed;
+    let colours = colour::triangle_colours(&parts.closed, &parts.colours, &united.0, &united.1, budget)?;
     let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
     let mesh = flat_mesh(&scaled, &indices, &colours);
     let mut report = measure(&scaled, &indices);
@@ -155,6 +155,44 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     Ok((vec![NamedMesh { name: "print".into(), mesh }], report))
 }
 
+/// A union placed on the build plate: in millimetres, +Z up, its short
+/// edges collapsed and its flat pieces dropped.
+struct Placed {
+    /// The union as Manifold gave it (model units, Y up): what colours are
+    /// looked up against.
+    united: (Vec<glam::DVec3>, Vec<u32>),
+    /// Placed positions (mm).
+    scaled: Vec<[f32; 3]>,
+    /// Placed triangles.
+    indices: Vec<u32>,
+    /// Each placed triangle's index in `united`.
+    kept: Vec<usize>,
+    /// Millimetres per model unit.
+    scale: f64,
+}
+
+/// Places a union (`size_um` 0: one model unit is a millimetre).
+fn place(united: (Vec<glam::DVec3>, Vec<u32>), size_um: u32) -> Placed {
+    // Models are Y-up (glTF, the preview: a tower grows along +Y); printers
+    // build along +Z (3MF's build direction, slicers' convention). Turning
+    // +Y to +Z (a rotation, so winding and volume are kept) stands a tower
+    // or a vase on its foot and lays a gear or a pendant drawn in the XZ
+    // plane flat on the plate.
+    let positions: Vec<glam::DVec3> = united.0.iter().map(|p| glam::DVec3::new(p.x, -p.z, p.y)).collect();
+    let (lo, hi) = bounds(positions.iter().copied());
+    let longest = (hi - lo).max_element();
+    let scale = if size_um > 0 && longest > 0.0 { f64::from(size_um) / 1000.0 / longest } else { 1.0 };
+    // Rest the solid on z = 0, centred in x and y: how a slicer places it anyway.
+    let offset = glam::DVec3::new(-(lo.x + hi.x) / 2.0, -(lo.y + hi.y) / 2.0, -lo.z);
+    let scaled: Vec<[f32; 3]> = positions.iter().map(|p| ((*p + offset) * scale).as_vec3().to_array()).collect();
+    // Manifold leaves edges a few f32 ulps long, which slicers and checkers
+    // (trimesh merges within 1e-8) fuse into non-manifold edges: collapse
+    // edges shorter than a millionth of the size.
+    let (scaled, indices, kept) = collapse_short_edges(scaled, &united.1, (longest * scale) * 1e-6);
+    let (indices, kept) = drop_flat_shells(&scaled, indices, kept);
+    Placed { united, scaled, indices, kept, scale }
+}
+
 /// Merges the two ends of every edge shorter than `eps` (and vertices at
 /// identical positions), then drops the triangles that thereby lose an edge;
 /// also gives the index of each kept triangle in `indices`.
@@ -162,19 +200,12 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
 /// unconnected near points could pinch it.
 fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> (Vec<[f32; 3]>, Vec<u32>, Vec<usize>) {
     let mut root: Vec<u32> = (0..positions.len() as u32).collect();
-    fn find(root: &mut [u32], mut v: u32) -> u32 {
-        while root[v as usize] != v {
-            root[v as usize] = root[root[v as usize] as usize];
-            v = root[v as usize];
-        }
-        v
-    }
     let at = |i: u32| glam::Vec3::from_array(positions.get(i as usize).copied().unwrap_or([0.0; 3])).as_dvec3();
     for t in indices.chunks_exact(3) {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
             if at(a).distance(at(b)) < eps {
-                let (ra, rb) = (find(&mut root, a), find(&mut root, b));
+                let (ra, rb) = (find_root(&mut root, a), find_root(&mut root, b));
                 if ra != rb {
                     // Keep the lower index: deterministic whatever the triangle order.
                     root[ra.max(rb) as usize] = ra.min(rb);
@@ -182,7 +213,7 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
             }
         }
     }
-    let merged: Vec<[f32; 3]> = (0..positions.len() as u32).map(|v| positions[find(&mut root, v) as usize]).collect();
+    let merged: Vec<[f32; 3]> = (0..positions.len() as u32).map(|v| positions[find_root(&mut root, v) as usize]).collect();
     let (welded, remap) = crate::geom::weld::weld_by(merged, crate::geom::weld::f32_key);
     let mut out = Vec::with_capacity(indices.len());
     let mut kept = Vec::with_capacity(indices.len() / 3);
@@ -191,6 +222,64 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
         kept.push(k);
     }
     (welded, out, kept)
+}
+
+/// Most volume a connected piece of the union may have, relative to the cube
+/// of its bounding box's diagonal, and still count as flat (no material).
+pub const FLAT_SHELL: f64 = 1e-6;
+
+/// Drops the connected pieces of the mesh that enclose no volume: pairs of
+/// triangles back to back, or flat fans, that Manifold 3.5.4 leaves beside
+/// the solid where faces of parts coincide (the ring's 6-triangle sheet
+/// 0.8 mm across, the lamp shade's 4-triangle one; |volume| about 10⁻⁹ of
+/// their diagonal cubed, a real piece 10⁻³ or more). They print nothing and
+/// would count as separate shells. Keeps everything if every piece is flat.
+/// Also filters `kept` (each triangle's index in the union) alike.
+fn drop_flat_shells(positions: &[[f32; 3]], indices: Vec<u32>, kept: Vec<usize>) -> (Vec<u32>, Vec<usize>) {
+    let mut root: Vec<u32> = (0..positions.len() as u32).collect();
+    for t in indices.chunks_exact(3) {
+        let a = find_root(&mut root, t[0]);
+        for &c in &t[1..] {
+            let b = find_root(&mut root, c);
+            if a != b {
+                root[b as usize] = a;
+            }
+        }
+    }
+    let at = |i: u32| glam::Vec3::from_array(positions.get(i as usize).copied().unwrap_or([0.0; 3])).as_dvec3();
+    // Per piece (by root): signed volume and bounding box.
+    let mut pieces: std::collections::BTreeMap<u32, (f64, glam::DVec3, glam::DVec3)> = std::collections::BTreeMap::new();
+    for t in indices.chunks_exact(3) {
+        let (a, b, c) = (at(t[0]), at(t[1]), at(t[2]));
+        let r = find_root(&mut root, t[0]);
+        let e = pieces.entry(r).or_insert((0.0, glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)));
+        e.0 += a.dot(b.cross(c)) / 6.0;
+        e.1 = e.1.min(a).min(b).min(c);
+        e.2 = e.2.max(a).max(b).max(c);
+    }
+    let flat: std::collections::BTreeSet<u32> = pieces.iter().filter(|(_, (v, lo, hi))| v.abs() <= FLAT_SHELL * (*hi - *lo).length().powi(3)).map(|(r, _)| *r).collect();
+    if flat.is_empty() || flat.len() == pieces.len() {
+        return (indices, kept);
+    }
+    let mut out = Vec::with_capacity(indices.len());
+    let mut out_kept = Vec::with_capacity(kept.len());
+    for (t, k) in indices.chunks_exact(3).zip(kept) {
+        if !flat.contains(&find_root(&mut root, t[0])) {
+            out.extend_from_slice(t);
+            out_kept.push(k);
+        }
+    }
+    (out, out_kept)
+}
+
+/// The root of `v` in the union-find forest `root` (each entry its parent,
+/// a root its own), halving the path on the way.
+pub(super) fn find_root(root: &mut [u32], mut v: u32) -> u32 {
+    while root[v as usize] != v {
+        root[v as usize] = root[root[v as usize] as usize];
+        v = root[v as usize];
+    }
+    v
 }
 
 /// The bounding box (min and max corners) of `points`.

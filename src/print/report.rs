@@ -140,7 +140,7 @@ pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
 }
 
 /// Undirected edges (vertices welded by position) not used exactly once in each direction.
-fn bad_edges(positions: &[[f32; 3]], indices: &[u32]) -> u64 {
+pub(super) fn bad_edges(positions: &[[f32; 3]], indices: &[u32]) -> u64 {
     let key = |i: u32| positions.get(i as usize).map_or([0; 3], |p| p.map(f32::to_bits));
     let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32)> = std::collections::HashMap::new();
     for t in indices.chunks_exact(3) {

@@ -57,17 +57,10 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
     }
     // Union-find over vertices joined by triangles.
     parent.extend(0..positions.len() as u32);
-    fn find(parent: &mut [u32], mut v: u32) -> u32 {
-        while parent[v as usize] != v {
-            parent[v as usize] = parent[parent[v as usize] as usize];
-            v = parent[v as usize];
-        }
-        v
-    }
     for t in &tris {
-        let a = find(&mut parent, t[0]);
+        let a = super::find_root(&mut parent, t[0]);
         for &c in &t[1..] {
-            let b = find(&mut parent, c);
+            let b = super::find_root(&mut parent, c);
             if a != b {
                 parent[b as usize] = a;
             }
@@ -77,7 +70,7 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
     let mut group_of: HashMap<u32, usize> = HashMap::new();
     let mut groups: Vec<Vec<usize>> = Vec::new();
     for (k, t) in tris.iter().enumerate() {
-        let r = find(&mut parent, t[0]);
+        let r = super::find_root(&mut parent, t[0]);
         let g = *group_of.entry(r).or_insert_with(|| {
             groups.push(Vec::new());
             groups.len() - 1
@@ -171,45 +164,84 @@ fn prism(t: &[DVec3; 3], wall: f64) -> Option<HalfEdgeMesh> {
     HalfEdgeMesh::new(positions, tris).ok().filter(|m| m.is_closed() && m.signed_volume() > 0.0)
 }
 
-/// The union of closed parts, pairwise in a balanced tree (so no
-/// intermediate grows lopsided), as shared positions and CCW triangles.
-pub(super) fn unite(parts: &[HalfEdgeMesh], budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
+/// Bits of precision a part's coordinates keep below the largest coordinate
+/// of the model: coordinates are snapped to a grid of `2^(e - SNAP_BITS)`,
+/// where `2^e` bounds every coordinate (about a millionth of the model).
+pub const SNAP_BITS: i32 = 20;
+
+/// The snapping grid of `parts`: a power of two such that every coordinate
+/// is less than `2^SNAP_BITS` steps from the origin (so a snapped coordinate
+/// is exact in `f32`); 0 for no snapping (an empty or degenerate model).
+///
+/// Why: parts that share a face in exact arithmetic (a Menger sponge's
+/// cubes, placed by different chains of transforms) come out of `f32`
+/// meshing a few ulps apart, overlapping or leaving gaps of 10⁻⁸. Manifold
+/// keeps those slivers exactly, and the level-3 sponge came out as 1,506
+/// pieces around them. On the grid such faces coincide exactly and fuse.
+pub(super) fn snap_grid(parts: &[HalfEdgeMesh]) -> f64 {
+    let largest = parts.iter().flat_map(|p| p.positions.iter()).map(|q| q.abs().max_element()).fold(0.0, f64::max);
+    if !(largest > 0.0 && largest.is_finite()) {
+        return 0.0;
+    }
+    // largest = f · 2^e with f in [0.5, 1): every coordinate is below 2^e.
+    let (_, e) = libm::frexp(largest);
+    libm::ldexp(1.0, e - SNAP_BITS)
+}
+
+/// `q` on the grid of step `grid` (a power of two, so each step is exact).
+fn snap(q: DVec3, grid: f64) -> DVec3 {
+    if grid > 0.0 {
+        (q / grid).round() * grid
+    } else {
+        q
+    }
+}
+
+/// The union of closed parts, by Manifold's batch union, as shared
+/// positions and CCW triangles, their vertices snapped to `grid` first (0:
+/// not snapped; [`snap_grid`] says why and `make_printable` when).
+pub(super) fn unite(parts: &[HalfEdgeMesh], grid: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
     let total: u64 = parts.iter().map(|p| p.face_count() as u64).sum();
     // Manifold holds about 200 bytes per triangle while it works (half-edges, collider, properties).
     let bytes = total.saturating_mul(200);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(total.saturating_mul(8))?;
-    let mut level: Vec<manifold_rs::Manifold> = parts
+    let (positions, indices) = batch_union(parts, grid, budget)?;
+    budget.release_memory(bytes);
+    Ok((positions.iter().map(|p| glam::Vec3::from_array(*p).as_dvec3()).collect(), indices))
+}
+
+/// One batch union of `parts`, their vertices snapped to `grid` (0: not
+/// snapped), cancelled at the budget's deadline.
+fn batch_union(parts: &[HalfEdgeMesh], grid: f64, budget: &Budget) -> Result<(Vec<[f32; 3]>, Vec<u32>), PrintError> {
+    let manifolds: Vec<manifold_rs::Manifold> = parts
         .iter()
         .map(|p| {
-            let verts: Vec<f32> = p.positions.iter().flat_map(|q| q.as_vec3().to_array()).collect();
+            let verts: Vec<f32> = p.positions.iter().flat_map(|q| snap(*q, grid).as_vec3().to_array()).collect();
             let idx: Vec<u32> = p.triangles().iter().flatten().copied().collect();
             manifold_rs::Manifold::from_mesh(manifold_rs::Mesh::new(&verts, &idx))
         })
         .collect();
-    while level.len() > 1 {
-        let mut next = Vec::with_capacity(level.len().div_ceil(2));
-        let mut it = level.chunks(2);
-        for pair in &mut it {
-            // Before every union, not only every level: the first level of
-            // thousands of parts takes seconds. (One union itself, inside
-            // Manifold, cannot be interrupted.)
-            budget.check_deadline()?;
-            next.push(match pair {
-                [a, b] => a.union(b),
-                [a] => a.union(&manifold_rs::Manifold::empty()),
-                _ => manifold_rs::Manifold::empty(),
-            });
-        }
-        level = next;
+    budget.check_deadline()?;
+    // One batch union, not a tree of pairwise ones: Manifold composes parts
+    // whose boxes are disjoint without a boolean and unites the rest
+    // smallest first. Pairwise, parts touching only along an edge (diagonal
+    // cubes of the level-3 sponge) were united before the part that fills
+    // the corner between them, and the seam they left survived as edges of
+    // four faces. The union cannot check the budget itself, so it is
+    // cancelled at the deadline (at least a millisecond from now).
+    let timeout = budget.time_left().map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));
+    let result = manifold_rs::Manifold::batch_union(&manifolds, timeout);
+    drop(manifolds);
+    if result.status() == manifold_rs::Manifold::CANCELLED {
+        budget.check_deadline()?;
+        return Err(PrintError::Union("cancelled at the deadline".into()));
     }
-    budget.release_memory(bytes);
-    let result = level.pop().ok_or_else(|| PrintError::Union("no parts".into()))?;
     if result.is_empty() {
         return Err(PrintError::Union("the union is empty (a part was rejected by Manifold)".into()));
     }
     let mesh = result.to_mesh();
     let props = mesh.num_props().max(3) as usize;
-    let positions: Vec<DVec3> = mesh.vertices().chunks_exact(props).map(|v| DVec3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))).collect();
+    let positions: Vec<[f32; 3]> = mesh.vertices().chunks_exact(props).map(|v| [v[0], v[1], v[2]]).collect();
     Ok((positions, mesh.indices()))
 }

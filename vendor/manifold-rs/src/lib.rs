@@ -25,6 +25,22 @@ mod ffi {
 
         fn is_empty(self: &Manifold) -> bool;
 
+        /// The manifold's status: 0 for none, else the number of Manifold's `Error` (rulemesh addition).
+        fn status(self: &Manifold) -> u32;
+
+        /// A list of manifolds for a batch boolean (rulemesh addition).
+        type ManifoldVec;
+
+        /// Create an empty list of manifolds.
+        fn manifold_vec() -> UniquePtr<ManifoldVec>;
+
+        /// Append a (cheap, shared) copy of a manifold.
+        fn push(self: Pin<&mut ManifoldVec>, m: &Manifold);
+
+        /// The union of all of `parts` (Manifold's BatchBoolean), evaluated;
+        /// cancelled after `timeout_ms` milliseconds unless that is 0.
+        fn batch_union(parts: &ManifoldVec, timeout_ms: u64) -> UniquePtr<Manifold>;
+
         /// Slice the manifold into a set of polygons.
         fn slice(self: &Manifold, height: f64) -> UniquePtr<Polygons>;
 
@@ -182,6 +198,30 @@ impl Manifold {
     /// Does [`Manifold`] contain triangles?
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
+    }
+
+    /// Manifold's status of this manifold: 0 for no error, else the
+    /// number of its `Manifold::Error` ([`Manifold::CANCELLED`] for a
+    /// cancelled evaluation) (rulemesh addition).
+    pub fn status(&self) -> u32 {
+        self.0.status()
+    }
+
+    /// The status of an evaluation cancelled at its deadline.
+    pub const CANCELLED: u32 = 14;
+
+    /// The union of all of `parts` by Manifold's `BatchBoolean` (which
+    /// composes parts whose bounding boxes are disjoint without a boolean
+    /// and unites the rest smallest first), evaluated now. With a timeout,
+    /// the evaluation is cancelled after that many milliseconds and the
+    /// result's [`Manifold::status`] is [`Manifold::CANCELLED`]
+    /// (rulemesh addition).
+    pub fn batch_union(parts: &[Manifold], timeout_ms: Option<u64>) -> Self {
+        let mut list = ffi::manifold_vec();
+        for p in parts {
+            list.pin_mut().push(p.inner());
+        }
+        Self(ffi::batch_union(&list, timeout_ms.map_or(0, |t| t.max(1))))
     }
 
     /// Slice the manifold into a set of polygons.

@@ -4,7 +4,14 @@
 #include "manifold_rs.h"
 
 #include <manifold/manifold.h>
+#include <chrono>
+#include <condition_variable>
 #include <cstring> // memcpy
+#include <mutex>
+#include <thread>
+
+static_assert(static_cast<int>(::manifold::Manifold::Error::Cancelled) == 14,
+              "src/lib.rs: Manifold::CANCELLED must match Manifold's Error::Cancelled");
 
 namespace manifold_rs
 {
@@ -30,6 +37,11 @@ namespace manifold_rs
     bool Manifold::is_empty() const
     {
         return manifold->IsEmpty();
+    }
+
+    std::uint32_t Manifold::status() const
+    {
+        return static_cast<std::uint32_t>(manifold->Status());
     }
 
     std::unique_ptr<Polygons> Manifold::slice(double height) const
@@ -135,6 +147,46 @@ namespace manifold_rs
     std::unique_ptr<Manifold> difference(const Manifold &a, const Manifold &b)
     {
         return std::make_unique<Manifold>(a.manifold->Boolean(*b.manifold, ::manifold::OpType::Subtract));
+    }
+
+    void ManifoldVec::push(const Manifold &m)
+    {
+        items.push_back(*m.manifold);
+    }
+
+    std::unique_ptr<ManifoldVec> manifold_vec()
+    {
+        return std::make_unique<ManifoldVec>();
+    }
+
+    std::unique_ptr<Manifold> batch_union(const ManifoldVec &parts, std::uint64_t timeout_ms)
+    {
+        auto united = ::manifold::Manifold::BatchBoolean(parts.items, ::manifold::OpType::Add);
+        if (timeout_ms == 0)
+        {
+            united.Status(); // evaluates the deferred union
+            return std::make_unique<Manifold>(std::move(united));
+        }
+        // A watchdog thread cancels the evaluation at the deadline; Manifold
+        // checks the context between (and inside) its boolean phases.
+        ::manifold::ExecutionContext ctx;
+        std::mutex mutex;
+        std::condition_variable finished;
+        bool done = false;
+        std::thread watchdog([&]
+                             {
+            std::unique_lock<std::mutex> lock(mutex);
+            if (!finished.wait_for(lock, std::chrono::milliseconds(timeout_ms), [&] { return done; }))
+                ctx.Cancel(); });
+        auto watched = united.WithContext(ctx);
+        watched.Status(); // evaluates the deferred union under the context
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            done = true;
+        }
+        finished.notify_one();
+        watchdog.join();
+        return std::make_unique<Manifold>(std::move(watched));
     }
 
     Mesh::Mesh() : mesh(std::make_unique<::manifold::Mesh>()) {}

@@ -45,6 +45,10 @@ namespace manifold_rs
         /// @brief Does Manifold have triangles?
         bool is_empty() const;
 
+        /// @brief The manifold's status: 0 for none, else the number of
+        /// its ::manifold::Manifold::Error (14 is Cancelled) (rulemesh addition).
+        std::uint32_t status() const;
+
         /// @brief Slice the manifold at a given height
         std::unique_ptr<Polygons> slice(double height) const;
 
@@ -136,6 +140,27 @@ namespace manifold_rs
     /// @param b Second manifold
     /// @return A new manifold as a result of the difference operation
     std::unique_ptr<Manifold> difference(const Manifold &a, const Manifold &b);
+
+    /// @brief A list of manifolds for a batch boolean (rulemesh addition)
+    /// @details This class will be exposed to Rust
+    class ManifoldVec
+    {
+    public:
+        /// @brief Append a copy of `m` (a shared handle: cheap)
+        void push(const Manifold &m);
+
+        std::vector<::manifold::Manifold> items;
+    };
+
+    /// @brief Create an empty list of manifolds
+    std::unique_ptr<ManifoldVec> manifold_vec();
+
+    /// @brief The union of all of `parts` by Manifold::BatchBoolean (rulemesh addition)
+    /// @param parts The manifolds to unite
+    /// @param timeout_ms Cancel the union after this many milliseconds (its
+    ///        status is then Cancelled); 0 for no limit
+    /// @return The union, evaluated
+    std::unique_ptr<Manifold> batch_union(const ManifoldVec &parts, std::uint64_t timeout_ms);
 
     /// @brief Extrude a multi-polygon to create a 3D shape
     std::unique_ptr<Manifold> extrude(

@@ -13,11 +13,12 @@
 // limitations under the License.
 
 #pragma once
-#include "./impl.h"
+#include "execution_impl.h"
+#include "impl.h"
 
 #ifdef MANIFOLD_DEBUG
 #define PRINT(msg) \
-  if (ManifoldParams().verbose) std::cout << msg << std::endl;
+  if (ManifoldParams().verbose >= 2) std::cout << msg << std::endl;
 #else
 #define PRINT(msg)
 #endif
@@ -43,18 +44,29 @@
  */
 
 namespace manifold {
-
 /** @ingroup Private */
+
+// In forward mode, stores the intersections of edges of P with faces of Q.
+// In reverse mode, stores the intersections of faces of P with edges of Q.
+// In reverse, p1q2 -> p2q1, x12 -> x21, v12 -> v21.
+struct Intersections {
+  Vec<std::array<int, 2>> p1q2;
+  Vec<int> x12;
+  Vec<vec3> v12;
+};
+
 class Boolean3 {
  public:
-  Boolean3(const Manifold::Impl& inP, const Manifold::Impl& inQ, OpType op);
+  Boolean3(const Manifold::Impl& inP, const Manifold::Impl& inQ, OpType op,
+           ExecutionContext::Impl* ctx = nullptr);
   Manifold::Impl Result(OpType op) const;
 
  private:
   const Manifold::Impl &inP_, &inQ_;
-  const double expandP_;
-  SparseIndices p1q2_, p2q1_;
-  Vec<int> x12_, x21_, w03_, w30_;
-  Vec<vec3> v12_, v21_;
+  const bool expandP_;
+  Intersections xv12_, xv21_;
+  Vec<int> w03_, w30_;
+  bool valid = true;
+  ExecutionContext::Impl* ctx_ = nullptr;
 };
 }  // namespace manifold

@@ -12,83 +12,41 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 
-#include "./impl.h"
+#include "impl.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#ifndef MANIFOLD_NO_IOSTREAM
+#include <iomanip>
+#endif
 #include <map>
 #include <optional>
-
-#include "./hashtable.h"
-#include "./mesh_fixes.h"
-#include "./parallel.h"
-#include "./svd.h"
-
-#ifdef MANIFOLD_EXPORT
-#include <string.h>
-
-#include <iostream>
+#include <regex>
+#ifndef MANIFOLD_NO_IOSTREAM
+#include <sstream>
 #endif
+
+#include "csg_tree.h"
+#include "disjoint_sets.h"
+#include "hashtable.h"
+#include "manifold/manifold.h"
+#include "manifold/optional_assert.h"
+#include "mesh_fixes.h"
+#include "parallel.h"
+#include "shared.h"
+#include "svd.h"
 
 namespace {
 using namespace manifold;
-
-constexpr uint64_t kRemove = std::numeric_limits<uint64_t>::max();
-
-void AtomicAddVec3(vec3& target, const vec3& add) {
-  for (int i : {0, 1, 2}) {
-    std::atomic<double>& tar =
-        reinterpret_cast<std::atomic<double>&>(target[i]);
-    double old_val = tar.load(std::memory_order_relaxed);
-    while (!tar.compare_exchange_weak(old_val, old_val + add[i],
-                                      std::memory_order_relaxed)) {
-    }
-  }
-}
 
 struct Transform4x3 {
   const mat3x4 transform;
 
   vec3 operator()(vec3 position) { return transform * vec4(position, 1.0); }
-};
-
-template <bool calculateTriNormal>
-struct AssignNormals {
-  VecView<vec3> faceNormal;
-  VecView<vec3> vertNormal;
-  VecView<const vec3> vertPos;
-  VecView<const Halfedge> halfedges;
-
-  void operator()(const int face) {
-    vec3& triNormal = faceNormal[face];
-
-    ivec3 triVerts;
-    for (int i : {0, 1, 2}) triVerts[i] = halfedges[3 * face + i].startVert;
-
-    vec3 edge[3];
-    for (int i : {0, 1, 2}) {
-      const int j = (i + 1) % 3;
-      edge[i] = la::normalize(vertPos[triVerts[j]] - vertPos[triVerts[i]]);
-    }
-
-    if (calculateTriNormal) {
-      triNormal = la::normalize(la::cross(edge[0], edge[1]));
-      if (std::isnan(triNormal.x)) triNormal = vec3(0, 0, 1);
-    }
-
-    // corner angles
-    vec3 phi;
-    double dot = -la::dot(edge[2], edge[0]);
-    phi[0] = dot >= 1 ? 0 : (dot <= -1 ? kPi : std::acos(dot));
-    dot = -la::dot(edge[0], edge[1]);
-    phi[1] = dot >= 1 ? 0 : (dot <= -1 ? kPi : std::acos(dot));
-    phi[2] = kPi - phi[0] - phi[1];
-
-    // assign weighted sum
-    for (int i : {0, 1, 2}) {
-      AtomicAddVec3(vertNormal[triVerts[i]], phi[i] * triNormal);
-    }
-  }
 };
 
 struct UpdateMeshID {
@@ -97,122 +55,27 @@ struct UpdateMeshID {
   void operator()(TriRef& ref) { ref.meshID = meshIDold2new[ref.meshID]; }
 };
 
-struct CoplanarEdge {
-  VecView<std::pair<int, int>> face2face;
-  VecView<double> triArea;
-  VecView<const Halfedge> halfedge;
-  VecView<const vec3> vertPos;
-  VecView<const TriRef> triRef;
-  VecView<const ivec3> triProp;
-  const int numProp;
-  const double epsilon;
-  const double tolerance;
-
-  void operator()(const int edgeIdx) {
-    const Halfedge edge = halfedge[edgeIdx];
-    const Halfedge pair = halfedge[edge.pairedHalfedge];
-    const int edgeFace = edgeIdx / 3;
-    const int pairFace = edge.pairedHalfedge / 3;
-
-    if (triRef[edgeFace].meshID != triRef[pairFace].meshID) return;
-
-    const vec3 base = vertPos[edge.startVert];
-    const int baseNum = edgeIdx - 3 * edgeFace;
-    const int jointNum = edge.pairedHalfedge - 3 * pairFace;
-
-    if (numProp > 0) {
-      if (triProp[edgeFace][baseNum] != triProp[pairFace][Next3(jointNum)] ||
-          triProp[edgeFace][Next3(baseNum)] != triProp[pairFace][jointNum])
-        return;
-    }
-
-    if (!edge.IsForward()) return;
-
-    const int edgeNum = baseNum == 0 ? 2 : baseNum - 1;
-    const int pairNum = jointNum == 0 ? 2 : jointNum - 1;
-    const vec3 jointVec = vertPos[pair.startVert] - base;
-    const vec3 edgeVec =
-        vertPos[halfedge[3 * edgeFace + edgeNum].startVert] - base;
-    const vec3 pairVec =
-        vertPos[halfedge[3 * pairFace + pairNum].startVert] - base;
-
-    const double length = std::max(la::length(jointVec), la::length(edgeVec));
-    const double lengthPair =
-        std::max(la::length(jointVec), la::length(pairVec));
-    vec3 normal = la::cross(jointVec, edgeVec);
-    const double area = la::length(normal);
-    const double areaPair = la::length(la::cross(pairVec, jointVec));
-
-    // rulemesh patch: triArea is filled for every triangle by CreateFaces
-    // before this runs (upstream wrote it only here, after the early returns
-    // above, leaving some entries uninitialised).
-    // Don't link degenerate triangles
-    if (area < length * epsilon || areaPair < lengthPair * epsilon) return;
-
-    const double volume = std::abs(la::dot(normal, pairVec));
-    // Only operate on coplanar triangles
-    if (volume > std::max(area, areaPair) * tolerance) return;
-
-    face2face[edgeIdx] = std::make_pair(edgeFace, pairFace);
-  }
-};
-
-struct CheckCoplanarity {
-  VecView<int> comp2tri;
-  VecView<const Halfedge> halfedge;
-  VecView<const vec3> vertPos;
-  std::vector<int>* components;
-  const double tolerance;
-
-  void operator()(int tri) {
-    const int component = (*components)[tri];
-    const int referenceTri =
-        reinterpret_cast<std::atomic<int>*>(&comp2tri[component])
-            ->load(std::memory_order_relaxed);
-    if (referenceTri < 0 || referenceTri == tri) return;
-
-    const vec3 origin = vertPos[halfedge[3 * referenceTri].startVert];
-    const vec3 normal = la::normalize(
-        la::cross(vertPos[halfedge[3 * referenceTri + 1].startVert] - origin,
-                  vertPos[halfedge[3 * referenceTri + 2].startVert] - origin));
-
-    for (const int i : {0, 1, 2}) {
-      const vec3 vert = vertPos[halfedge[3 * tri + i].startVert];
-      // If any component vertex is not coplanar with the component's reference
-      // triangle, unmark the entire component so that none of its triangles are
-      // marked coplanar.
-      if (std::abs(la::dot(normal, vert - origin)) > tolerance) {
-        reinterpret_cast<std::atomic<int>*>(&comp2tri[component])
-            ->store(-1, std::memory_order_relaxed);
-        break;
-      }
-    }
-  }
-};
-
 int GetLabels(std::vector<int>& components,
               const Vec<std::pair<int, int>>& edges, int numNodes) {
-  UnionFind<> uf(numNodes);
+  DisjointSets uf(numNodes);
   for (auto edge : edges) {
     if (edge.first == -1 || edge.second == -1) continue;
-    uf.unionXY(edge.first, edge.second);
+    uf.unite(edge.first, edge.second);
   }
 
   return uf.connectedComponents(components);
 }
 
-void DedupePropVerts(manifold::Vec<ivec3>& triProp,
-                     const Vec<std::pair<int, int>>& vert2vert,
-                     size_t numPropVert) {
-  ZoneScoped;
-  std::vector<int> vertLabels;
-  const int numLabels = GetLabels(vertLabels, vert2vert, numPropVert);
-
-  std::vector<int> label2vert(numLabels);
-  for (size_t v = 0; v < numPropVert; ++v) label2vert[vertLabels[v]] = v;
-  for (auto& prop : triProp)
-    for (int i : {0, 1, 2}) prop[i] = label2vert[vertLabels[prop[i]]];
+#ifndef MANIFOLD_NO_IOSTREAM
+template <typename T>
+double FromChars(T buffer) {
+  double tmp;
+  std::istringstream iss(buffer);
+  iss >> std::setprecision(19);
+  iss >> tmp;
+  return tmp;
 }
+#endif
 }  // namespace
 
 namespace manifold {
@@ -267,244 +130,452 @@ Manifold::Impl::Impl(Shape shape, const mat3x4 m) {
                   {3, 0, 4}, {2, 5, 1}};
       break;
   }
-  vertPos_ = vertPos;
+  vertPos_ = Vec(vertPos);
   for (auto& v : vertPos_) v = m * vec4(v, 1.0);
   CreateHalfedges(triVerts);
-  Finish();
   InitializeOriginal();
-  CreateFaces();
+  CalculateBBox();
+  SetEpsilon();
+  SortGeometry();
+  SetNormalsAndCoplanar();
 }
 
 void Manifold::Impl::RemoveUnreferencedVerts() {
   ZoneScoped;
-  Vec<int> vertOld2New(NumVert(), 0);
-  auto policy = autoPolicy(NumVert(), 1e5);
-  for_each(policy, halfedge_.cbegin(), halfedge_.cend(),
-           [&vertOld2New](Halfedge h) {
-             reinterpret_cast<std::atomic<int>*>(&vertOld2New[h.startVert])
-                 ->store(1, std::memory_order_relaxed);
-           });
-
-  const Vec<vec3> oldVertPos = vertPos_;
-
-  Vec<size_t> tmpBuffer(oldVertPos.size());
-  auto vertIdIter = TransformIterator(countAt(0_uz), [&vertOld2New](size_t i) {
-    if (vertOld2New[i] > 0) return i;
-    return std::numeric_limits<size_t>::max();
+  const int numVert = NumVert();
+  Vec<int> keep(numVert, 0);
+  auto policy = autoPolicy(numVert, 1e5);
+  for_each_n(policy, countAt(0), halfedge_.size(), [&keep, this](int edge) {
+    const int startVert = halfedge_.Start(edge);
+    if (startVert >= 0) {
+      reinterpret_cast<std::atomic<int>*>(&keep[startVert])
+          ->store(1, std::memory_order_relaxed);
+    }
   });
 
-  auto next =
-      copy_if(vertIdIter, vertIdIter + tmpBuffer.size(), tmpBuffer.begin(),
-              [](size_t v) { return v != std::numeric_limits<size_t>::max(); });
-  if (next == tmpBuffer.end()) return;
-
-  gather(tmpBuffer.begin(), next, oldVertPos.begin(), vertPos_.begin());
-
-  vertPos_.resize(std::distance(tmpBuffer.begin(), next));
-
-  exclusive_scan(vertOld2New.begin(), vertOld2New.end(), vertOld2New.begin());
-
-  for_each(policy, halfedge_.begin(), halfedge_.end(),
-           [&vertOld2New](Halfedge& h) {
-             h.startVert = vertOld2New[h.startVert];
-             h.endVert = vertOld2New[h.endVert];
-           });
+  for_each_n(policy, countAt(0), numVert, [&keep, this](int v) {
+    if (keep[v] == 0) {
+      vertPos_[v] = vec3(NAN);
+    }
+  });
 }
 
-void Manifold::Impl::InitializeOriginal(bool keepFaceID) {
+void Manifold::Impl::EagerTransformPropNormals(
+    const Halfedges& halfedge, const MeshRelationD& meshRelation,
+    const mat3& normalTransform, Vec<double>& properties, int numPropVert,
+    int stride, int offset) {
+  // Short-circuit when no meshID carries normals. OR semantics (any has
+  // it), unlike AllHaveNormals() - mixed inputs still need the per-meshID
+  // iteration below to rotate the with-normals subset.
+  bool anyHasNormals = false;
+  for (const auto& m : meshRelation.meshIDtransform) {
+    if (m.second.hasNormals) {
+      anyHasNormals = true;
+      break;
+    }
+  }
+  if (!anyHasNormals) return;
+  Vec<bool> propVisited(numPropVert, false);
+  for (size_t e = 0; e < halfedge.size(); ++e) {
+    if (!TriHasNormals(meshRelation, e / 3)) continue;
+    const int prop = halfedge.Prop(e);
+    if (prop < 0 || propVisited[prop]) continue;
+    propVisited[prop] = true;
+    vec3 n;
+    for (const int i : {0, 1, 2})
+      n[i] = properties[(offset + prop) * stride + i];
+    // Re-normalize as we transform: non-orthogonal transforms (scale) and
+    // barycentric interpolation upstream both leave non-unit values that
+    // would otherwise compound and break downstream lighting / smoothing.
+    n = SafeNormalize(normalTransform * n);
+    for (const int i : {0, 1, 2})
+      properties[(offset + prop) * stride + i] = n[i];
+  }
+}
+
+void Manifold::Impl::InitializeOriginal() {
   const int meshID = ReserveIDs(1);
   meshRelation_.originalID = meshID;
   auto& triRef = meshRelation_.triRef;
-  triRef.resize(NumTri());
+  triRef.resize_nofill(NumTri());
   for_each_n(autoPolicy(NumTri(), 1e5), countAt(0), NumTri(),
-             [meshID, keepFaceID, &triRef](const int tri) {
-               triRef[tri] = {meshID, meshID, tri,
-                              keepFaceID ? triRef[tri].faceID : tri};
+             [meshID, &triRef](const int tri) {
+               triRef[tri] = {meshID, meshID, -1, triRef[tri].coplanarID};
              });
+  // Preserve the AND-across-old-Relations state so AsOriginal keeps the
+  // recording when it builds a fresh Relation. Primitives start with an
+  // empty map, which AllHaveNormals() returns false for.
+  const bool hadNormals = AllHaveNormals();
   meshRelation_.meshIDtransform.clear();
-  meshRelation_.meshIDtransform[meshID] = {meshID};
+  meshRelation_.meshIDtransform[meshID] = {meshID, la::identity, false,
+                                           hadNormals};
 }
 
-void Manifold::Impl::CreateFaces() {
+void Manifold::Impl::SetNormalsAndCoplanar() {
   ZoneScoped;
-  Vec<std::pair<int, int>> face2face(halfedge_.size(), {-1, -1});
-  Vec<std::pair<int, int>> vert2vert(halfedge_.size(), {-1, -1});
-  // rulemesh patch: every triangle's area, computed up front. Upstream left
-  // the entries of triangles whose first halfedge returned early from
-  // CoplanarEdge uninitialised, and the reference triangle of each coplanar
-  // component was then chosen by comparing heap garbage: the boolean results
-  // differed from run to run.
-  Vec<double> triArea(NumTri(), 0.0);
-  for_each_n(autoPolicy(NumTri(), 1e4), countAt(0), NumTri(),
-             [&triArea, this](const int tri) {
-               const vec3 v0 = vertPos_[halfedge_[3 * tri].startVert];
-               const vec3 v1 = vertPos_[halfedge_[3 * tri + 1].startVert];
-               const vec3 v2 = vertPos_[halfedge_[3 * tri + 2].startVert];
-               triArea[tri] = la::length(la::cross(v1 - v0, v2 - v0));
+  const int numTri = NumTri();
+  faceNormal_.resize(numTri);
+  struct TriPriority {
+    double area2;
+    int tri;
+  };
+  Vec<TriPriority> triPriority(numTri);
+  for_each_n(autoPolicy(numTri), countAt(0), numTri,
+             [&triPriority, this](int tri) {
+               meshRelation_.triRef[tri].coplanarID = -1;
+               if (halfedge_.Start(3 * tri) < 0) {
+                 triPriority[tri] = {0, tri};
+                 return;
+               }
+               const vec3 v = vertPos_[halfedge_.Start(3 * tri)];
+               const vec3 n = cross(vertPos_[halfedge_.End(3 * tri)] - v,
+                                    vertPos_[halfedge_.End(3 * tri + 1)] - v);
+               faceNormal_[tri] = normalize(n);
+               if (std::isnan(faceNormal_[tri].x))
+                 faceNormal_[tri] = vec3(0, 0, 1);
+               triPriority[tri] = {length2(n), tri};
              });
 
-  const size_t numProp = NumProp();
-  if (numProp > 0) {
-    for_each_n(
-        autoPolicy(halfedge_.size(), 1e4), countAt(0), halfedge_.size(),
-        [&vert2vert, numProp, this](const int edgeIdx) {
-          const Halfedge edge = halfedge_[edgeIdx];
-          const Halfedge pair = halfedge_[edge.pairedHalfedge];
-          const int edgeFace = edgeIdx / 3;
-          const int pairFace = edge.pairedHalfedge / 3;
+  stable_sort(triPriority.begin(), triPriority.end(),
+              [](auto a, auto b) { return a.area2 > b.area2; });
 
-          if (meshRelation_.triRef[edgeFace].meshID !=
-              meshRelation_.triRef[pairFace].meshID)
-            return;
+  Vec<int> interiorHalfedges;
+  for (const auto tp : triPriority) {
+    if (meshRelation_.triRef[tp.tri].coplanarID >= 0) continue;
 
-          const int baseNum = edgeIdx - 3 * edgeFace;
-          const int jointNum = edge.pairedHalfedge - 3 * pairFace;
+    meshRelation_.triRef[tp.tri].coplanarID = tp.tri;
+    if (halfedge_.Start(3 * tp.tri) < 0) continue;
+    const vec3 base = vertPos_[halfedge_.Start(3 * tp.tri)];
+    const vec3 normal = faceNormal_[tp.tri];
+    interiorHalfedges.resize(3);
+    interiorHalfedges[0] = 3 * tp.tri;
+    interiorHalfedges[1] = 3 * tp.tri + 1;
+    interiorHalfedges[2] = 3 * tp.tri + 2;
+    while (!interiorHalfedges.empty()) {
+      const int h = NextHalfedge(halfedge_.Pair(interiorHalfedges.back()));
+      interiorHalfedges.pop_back();
+      if (meshRelation_.triRef[h / 3].coplanarID >= 0) continue;
 
-          const int prop0 = meshRelation_.triProperties[edgeFace][baseNum];
-          const int prop1 =
-              meshRelation_
-                  .triProperties[pairFace][jointNum == 2 ? 0 : jointNum + 1];
-          if (prop0 == prop1) return;
+      const vec3 v = vertPos_[halfedge_.End(h)];
+      if (std::abs(dot(v - base, normal)) < tolerance_) {
+        const size_t tri = h / 3;
+        meshRelation_.triRef[tri].coplanarID = tp.tri;
+        faceNormal_[tri] = normal;
 
-          bool propEqual = true;
-          for (size_t p = 0; p < numProp; ++p) {
-            if (meshRelation_.properties[numProp * prop0 + p] !=
-                meshRelation_.properties[numProp * prop1 + p]) {
-              propEqual = false;
-              break;
-            }
-          }
-          if (propEqual) {
-            vert2vert[edgeIdx] = std::make_pair(prop0, prop1);
-          }
-        });
-    DedupePropVerts(meshRelation_.triProperties, vert2vert, NumPropVert());
-  }
-
-  for_each_n(autoPolicy(halfedge_.size(), 1e4), countAt(0), halfedge_.size(),
-             CoplanarEdge({face2face, triArea, halfedge_, vertPos_,
-                           meshRelation_.triRef, meshRelation_.triProperties,
-                           meshRelation_.numProp, epsilon_, tolerance_}));
-
-  std::vector<int> components;
-  const int numComponent = GetLabels(components, face2face, NumTri());
-
-  Vec<int> comp2tri(numComponent, -1);
-  for (size_t tri = 0; tri < NumTri(); ++tri) {
-    const int comp = components[tri];
-    const int current = comp2tri[comp];
-    if (current < 0 || triArea[tri] > triArea[current]) {
-      // rulemesh patch: upstream also wrote triArea[comp] = triArea[tri]
-      // here, overwriting the area of the unrelated triangle numbered comp.
-      comp2tri[comp] = tri;
+        if (interiorHalfedges.empty() ||
+            h != halfedge_.Pair(interiorHalfedges.back())) {
+          interiorHalfedges.push_back(h);
+        } else {
+          interiorHalfedges.pop_back();
+        }
+        const int hNext = NextHalfedge(h);
+        interiorHalfedges.push_back(hNext);
+      }
     }
   }
-
-  for_each_n(autoPolicy(halfedge_.size(), 1e4), countAt(0), NumTri(),
-             CheckCoplanarity(
-                 {comp2tri, halfedge_, vertPos_, &components, tolerance_}));
-
-  Vec<TriRef>& triRef = meshRelation_.triRef;
-  for (size_t tri = 0; tri < NumTri(); ++tri) {
-    const int referenceTri = comp2tri[components[tri]];
-    if (referenceTri >= 0) {
-      triRef[tri].faceID = referenceTri;
-    }
-  }
+  CalculateVertNormals();
 }
 
 /**
- * Create the halfedge_ data structure from an input triVerts array like Mesh.
+ * Dereference duplicate property vertices if they are exactly floating-point
+ * equal. These unreferenced properties are then removed by CompactProps.
  */
-void Manifold::Impl::CreateHalfedges(const Vec<ivec3>& triVerts) {
+void Manifold::Impl::DedupePropVerts() {
   ZoneScoped;
-  const size_t numTri = triVerts.size();
-  const int numHalfedge = 3 * numTri;
-  // drop the old value first to avoid copy
-  halfedge_.resize(0);
-  halfedge_.resize(numHalfedge);
-  Vec<uint64_t> edge(numHalfedge);
-  Vec<int> ids(numHalfedge);
-  auto policy = autoPolicy(numTri, 1e5);
-  sequence(ids.begin(), ids.end());
-  for_each_n(policy, countAt(0), numTri,
-             [this, &edge, &triVerts](const int tri) {
-               const ivec3& verts = triVerts[tri];
-               for (const int i : {0, 1, 2}) {
-                 const int j = (i + 1) % 3;
-                 const int e = 3 * tri + i;
-                 halfedge_[e] = {verts[i], verts[j], -1};
-                 // Sort the forward halfedges in front of the backward ones
-                 // by setting the highest-order bit.
-                 edge[e] = uint64_t(verts[i] < verts[j] ? 1 : 0) << 63 |
-                           ((uint64_t)std::min(verts[i], verts[j])) << 32 |
-                           std::max(verts[i], verts[j]);
+  const size_t numProp = NumProp();
+  if (numProp == 0) return;
+
+  halfedge_.MakeUnique();
+  Vec<std::pair<int, int>> vert2vert(halfedge_.size(), {-1, -1});
+  for_each_n(autoPolicy(halfedge_.size(), 1e4), countAt(0), halfedge_.size(),
+             [&vert2vert, numProp, this](const int edgeIdx) {
+               const int pair = halfedge_.Pair(edgeIdx);
+               if (pair < 0) return;
+               const int edgeFace = edgeIdx / 3;
+               const int pairFace = pair / 3;
+
+               if (meshRelation_.triRef[edgeFace].meshID !=
+                   meshRelation_.triRef[pairFace].meshID)
+                 return;
+
+               const int prop0 = halfedge_.Prop(edgeIdx);
+               const int prop1 = halfedge_.Prop(NextHalfedge(pair));
+               bool propEqual = true;
+               for (size_t p = 0; p < numProp; ++p) {
+                 if (properties_[numProp * prop0 + p] !=
+                     properties_[numProp * prop1 + p]) {
+                   propEqual = false;
+                   break;
+                 }
+               }
+               if (propEqual) {
+                 vert2vert[edgeIdx] = std::make_pair(prop0, prop1);
                }
              });
-  // Stable sort is required here so that halfedges from the same face are
-  // paired together (the triangles were created in face order). In some
-  // degenerate situations the triangulator can add the same internal edge in
-  // two different faces, causing this edge to not be 2-manifold. These are
-  // fixed by duplicating verts in SimplifyTopology.
-  stable_sort(ids.begin(), ids.end(), [&edge](const int& a, const int& b) {
-    return edge[a] < edge[b];
-  });
 
-  // Mark opposed triangles for removal
+  std::vector<int> vertLabels;
+  const size_t numPropVert = NumPropVert();
+  const int numLabels = GetLabels(vertLabels, vert2vert, numPropVert);
+
+  std::vector<int> label2vert(numLabels);
+  for (size_t v = 0; v < numPropVert; ++v) label2vert[vertLabels[v]] = v;
+  for (size_t edge = 0; edge < halfedge_.size(); ++edge) {
+    halfedge_.SetProp(edge, label2vert[vertLabels[halfedge_.Prop(edge)]]);
+  }
+}
+
+struct CreateHalfedge {
+  int startVert;
+  int endVert;
+  int propVert;
+};
+
+struct HalfedgePairData {
+  int largeVert;
+  int tri;
+  int edgeIndex;
+
+  bool operator<(const HalfedgePairData& other) const {
+    return largeVert < other.largeVert ||
+           (largeVert == other.largeVert && tri < other.tri);
+  }
+};
+
+template <bool useProp, typename F>
+struct PrepHalfedges {
+  VecView<CreateHalfedge> halfedges;
+  const VecView<ivec3> triProp;
+  const VecView<ivec3> triVert;
+  F& f;
+
+  void operator()(const int tri) {
+    const ivec3& props = triProp[tri];
+    for (const int i : {0, 1, 2}) {
+      const int j = Next3(i);
+      const int k = Next3(j);
+      const int e = 3 * tri + i;
+      const int v0 = useProp ? props[i] : triVert[tri][i];
+      const int v1 = useProp ? props[j] : triVert[tri][j];
+      DEBUG_ASSERT(v0 != v1, logicErr, "topological degeneracy");
+      halfedges[e] = {v0, v1, props[i]};
+      f(e, v0, v1);
+    }
+  }
+};
+
+/**
+ * Create the halfedge_ data structure from a list of triangles. If the optional
+ * prop2vert array is missing, it's assumed these triangles are are pointing to
+ * both vert and propVert indices. If prop2vert is present, the triangles are
+ * assumed to be pointing to propVert indices only. The prop2vert array is used
+ * to map the propVert indices to vert indices.
+ */
+void Manifold::Impl::CreateHalfedges(const Vec<ivec3>& triProp,
+                                     const Vec<ivec3>& triVert) {
+  ZoneScoped;
+  const size_t numTri = triProp.size();
+  const int numHalfedge = 3 * numTri;
+  Vec<CreateHalfedge> halfedge(numHalfedge);
+  auto policy = autoPolicy(numTri, 1e5);
+
+  int vertCount = static_cast<int>(vertPos_.size());
+  Vec<int> ids(numHalfedge);
+  {
+    ZoneScopedN("PrepHalfedges");
+    if (vertCount < (1 << 18)) {
+      // For small vertex count, it is faster to just do sorting
+      Vec<uint64_t> edge(numHalfedge);
+      auto setEdge = [&edge](int e, int v0, int v1) {
+        edge[e] = static_cast<uint64_t>(v0 < v1 ? 1 : 0) << 63 |
+                  (static_cast<uint64_t>(std::min(v0, v1))) << 32 |
+                  static_cast<uint64_t>(std::max(v0, v1));
+      };
+      if (triVert.empty()) {
+        for_each_n(policy, countAt(0), numTri,
+                   PrepHalfedges<true, decltype(setEdge)>{halfedge, triProp,
+                                                          triVert, setEdge});
+      } else {
+        for_each_n(policy, countAt(0), numTri,
+                   PrepHalfedges<false, decltype(setEdge)>{halfedge, triProp,
+                                                           triVert, setEdge});
+      }
+      sequence(ids.begin(), ids.end());
+      stable_sort(ids.begin(), ids.end(), [&edge](const int& a, const int& b) {
+        return edge[a] < edge[b];
+      });
+    } else {
+      // For larger vertex count, we separate the ids into slices for halfedges
+      // with the same smaller vertex.
+      // We first copy them there (as HalfedgePairData), and then do sorting
+      // locally for each slice.
+      // This helps with memory locality, and is faster for larger meshes.
+      Vec<HalfedgePairData> entries(numHalfedge);
+      Vec<int> offsets(vertCount * 2, 0);
+      auto setOffset = [&offsets, vertCount](int _e, int v0, int v1) {
+        const int offset = v0 > v1 ? 0 : vertCount;
+        AtomicAdd(offsets[std::min(v0, v1) + offset], 1);
+      };
+      if (triVert.empty()) {
+        for_each_n(policy, countAt(0), numTri,
+                   PrepHalfedges<true, decltype(setOffset)>{
+                       halfedge, triProp, triVert, setOffset});
+      } else {
+        for_each_n(policy, countAt(0), numTri,
+                   PrepHalfedges<false, decltype(setOffset)>{
+                       halfedge, triProp, triVert, setOffset});
+      }
+      exclusive_scan(offsets.begin(), offsets.end(), offsets.begin());
+      for_each_n(policy, countAt(0), numTri,
+                 [&halfedge, &offsets, &entries, vertCount](const int tri) {
+                   for (const int i : {0, 1, 2}) {
+                     const int e = 3 * tri + i;
+                     const int v0 = halfedge[e].startVert;
+                     const int v1 = halfedge[e].endVert;
+                     const int offset = v0 > v1 ? 0 : vertCount;
+                     const int start = std::min(v0, v1);
+                     const int index = AtomicAdd(offsets[start + offset], 1);
+                     entries[index] = {std::max(v0, v1), tri, e};
+                   }
+                 });
+      for_each_n(policy, countAt(0), offsets.size(), [&](const int v) {
+        int start = v == 0 ? 0 : offsets[v - 1];
+        int end = offsets[v];
+        for (int i = start; i < end; ++i) ids[i] = i;
+        std::sort(ids.begin() + start, ids.begin() + end,
+                  [&entries](int a, int b) { return entries[a] < entries[b]; });
+        for (int i = start; i < end; ++i) ids[i] = entries[ids[i]].edgeIndex;
+      });
+    }
+  }
+
+  // Mark opposed triangles for removal - this may strand unreferenced verts
+  // which are removed later by RemoveUnreferencedVerts() and Finish().
   const int numEdge = numHalfedge / 2;
-  for (int i = 0; i < numEdge; ++i) {
+  Vec<unsigned char> removed(numHalfedge, false);
+
+  const auto body = [&](int i, int consecutiveStart, int segmentEnd) {
     const int pair0 = ids[i];
-    Halfedge h0 = halfedge_[pair0];
-    int k = i + numEdge;
+    const CreateHalfedge h0 = halfedge[pair0];
+    int k = consecutiveStart + numEdge;
     while (1) {
       const int pair1 = ids[k];
-      Halfedge h1 = halfedge_[pair1];
+      const CreateHalfedge h1 = halfedge[pair1];
       if (h0.startVert != h1.endVert || h0.endVert != h1.startVert) break;
-      if (halfedge_[NextHalfedge(pair0)].endVert ==
-          halfedge_[NextHalfedge(pair1)].endVert) {
-        // Reorder so that remaining edges pair up
-        if (k != i + numEdge) std::swap(ids[i + numEdge], ids[k]);
+      if (!removed[pair1] && halfedge[NextHalfedge(pair0)].endVert ==
+                                 halfedge[NextHalfedge(pair1)].endVert) {
+        removed[pair0] = true;
+        removed[pair1] = true;
+        if (i + numEdge != k) {
+          // Reorder so that remaining edges pair up, while preserving relative
+          // order between the edges (triangle id order)
+          // cannot directly use move and move_backward because we need to keep
+          // removed halfedges in-place
+          int dir = i + numEdge < k ? 1 : -1;
+          int a = k;
+          int b = k + dir;
+          auto isRemoved = [&removed, &ids](int x) { return removed[ids[x]]; };
+          auto inRange = [&a, dir, i, numEdge]() {
+            return (dir > 0 ? a >= i + numEdge : a <= i + numEdge);
+          };
+          while (1) {
+            do {
+              a -= dir;
+            } while (inRange() && isRemoved(a));
+            if (!inRange()) break;
+            do {
+              b -= dir;
+            } while (isRemoved(b) && b != k);
+            ids[b] = ids[a];
+          }
+          ids[i + numEdge] = pair1;
+        }
         break;
       }
       ++k;
-      if (k >= numHalfedge) break;
+      if (k >= segmentEnd + numEdge) break;
+    }
+    if (i + 1 == segmentEnd) return consecutiveStart;
+    const CreateHalfedge h1 = halfedge[ids[i + 1]];
+    if (h1.startVert == h0.startVert && h1.endVert == h0.endVert)
+      return consecutiveStart;
+    return i + 1;
+  };
+
+#if MANIFOLD_PAR == 1
+  Vec<std::pair<int, int>> ranges;
+  const int increment = std::min(
+      std::max(numEdge / tbb::this_task_arena::max_concurrency() / 2, 1024),
+      numEdge);
+  const auto duplicated = [&](int a, int b) {
+    const CreateHalfedge h0 = halfedge[ids[a]];
+    const CreateHalfedge h1 = halfedge[ids[b]];
+    return h0.startVert == h1.startVert && h0.endVert == h1.endVert;
+  };
+  int end = 0;
+  while (end < numEdge) {
+    const int start = end;
+    end = std::min(end + increment, numEdge);
+    // make sure duplicated halfedges are in the same partition
+    while (end < numEdge && duplicated(end - 1, end)) end++;
+    ranges.push_back(std::make_pair(start, end));
+  }
+  for_each(ExecutionPolicy::Par, ranges.begin(), ranges.end(),
+           [&](const std::pair<int, int>& range) {
+             const auto [start, end] = range;
+             int consecutiveStart = start;
+             for (int i = start; i < end; ++i)
+               consecutiveStart = body(i, consecutiveStart, end);
+           });
+#else
+  int consecutiveStart = 0;
+  for (int i = 0; i < numEdge; ++i)
+    consecutiveStart = body(i, consecutiveStart, numEdge);
+#endif
+
+  halfedge_.clear(true);
+  halfedge_.resize_nofill(numHalfedge);
+  for_each_n(policy, countAt(0), numEdge,
+             [this, &halfedge, &ids, &removed, numEdge](int i) {
+               const int pair0 = ids[i];
+               const int pair1 = ids[i + numEdge];
+               if (!removed[pair0]) {
+                 halfedge_.SetStart(pair0, halfedge[pair0].startVert);
+                 halfedge_.SetProp(pair0, halfedge[pair0].propVert);
+                 halfedge_.SetPair(pair0, pair1);
+                 halfedge_.SetStart(pair1, halfedge[pair1].startVert);
+                 halfedge_.SetProp(pair1, halfedge[pair1].propVert);
+                 halfedge_.SetPair(pair1, pair0);
+               } else {
+                 halfedge_.SetStart(pair0, -1);
+                 halfedge_.SetProp(pair0, 0);
+                 halfedge_.SetPair(pair0, -1);
+                 halfedge_.SetStart(pair1, -1);
+                 halfedge_.SetProp(pair1, 0);
+                 halfedge_.SetPair(pair1, -1);
+               }
+             });
+#ifdef MANIFOLD_DEBUG
+  for (int edge = 0; edge < numHalfedge; ++edge) {
+    const int next = NextHalfedge(edge);
+    if (!removed[edge] && !removed[next]) {
+      DEBUG_ASSERT(halfedge[edge].endVert == halfedge[next].startVert,
+                   topologyErr,
+                   "CreateHalfedges requires triangle-ordered edges!");
     }
   }
-
-  // Once sorted, the first half of the range is the forward halfedges, which
-  // correspond to their backward pair at the same offset in the second half
-  // of the range.
-  for_each_n(policy, countAt(0), numEdge, [this, &ids, numEdge](int i) {
-    const int pair0 = ids[i];
-    const int pair1 = ids[i + numEdge];
-    halfedge_[pair0].pairedHalfedge = pair1;
-    halfedge_[pair1].pairedHalfedge = pair0;
-  });
-
-  // When opposed triangles are removed, they may strand unreferenced verts.
-  RemoveUnreferencedVerts();
+#endif
 }
 
-/**
- * Does a full recalculation of the face bounding boxes, including updating
- * the collider, but does not resort the faces.
- */
-void Manifold::Impl::Update() {
-  CalculateBBox();
-  Vec<Box> faceBox;
-  Vec<uint32_t> faceMorton;
-  GetFaceBoxMorton(faceBox, faceMorton);
-  collider_.UpdateBoxes(faceBox);
-}
-
-void Manifold::Impl::MarkFailure(Error status) {
+void Manifold::Impl::MakeEmpty(Error status) {
   bBox_ = Box();
-  vertPos_.resize(0);
-  halfedge_.resize(0);
-  vertNormal_.resize(0);
-  faceNormal_.resize(0);
-  halfedgeTangent_.resize(0);
+  vertPos_.clear();
+  halfedge_.MakeUnique();
+  halfedge_.clear();
+  vertNormal_.clear();
+  faceNormal_.clear();
+  halfedgeTangent_.clear();
   meshRelation_ = MeshRelationD();
+  collider_ = {};
   status_ = status;
 }
 
@@ -518,15 +589,12 @@ void Manifold::Impl::WarpBatch(std::function<void(VecView<vec3>)> warpFunc) {
   warpFunc(vertPos_.view());
   CalculateBBox();
   if (!IsFinite()) {
-    MarkFailure(Error::NonFiniteVertex);
+    MakeEmpty(Error::NonFiniteVertex);
     return;
   }
-  Update();
-  faceNormal_.resize(0);  // force recalculation of triNormal
-  CalculateNormals();
   SetEpsilon();
-  Finish();
-  CreateFaces();
+  SortGeometry();
+  SetNormalsAndCoplanar();
   meshRelation_.originalID = -1;
 }
 
@@ -540,13 +608,14 @@ Manifold::Impl Manifold::Impl::Transform(const mat3x4& transform_) const {
     return result;
   }
   if (!all(la::isfinite(transform_))) {
-    result.MarkFailure(Error::NonFiniteVertex);
+    result.MakeEmpty(Error::NonFiniteVertex);
     return result;
   }
-  result.collider_ = collider_;
   result.meshRelation_ = meshRelation_;
   result.epsilon_ = epsilon_;
   result.tolerance_ = tolerance_;
+  result.numProp_ = numProp_;
+  result.properties_ = properties_;
   result.bBox_ = bBox_;
   result.halfedge_ = halfedge_;
   result.halfedgeTangent_.resize(halfedgeTangent_.size());
@@ -568,6 +637,11 @@ Manifold::Impl Manifold::Impl::Transform(const mat3x4& transform_) const {
   transform(vertNormal_.begin(), vertNormal_.end(), result.vertNormal_.begin(),
             TransformNormals({normalTransform}));
 
+  if (numProp_ >= 3) {
+    EagerTransformPropNormals(halfedge_, meshRelation_, normalTransform,
+                              result.properties_, NumPropVert(), numProp_);
+  }
+
   const bool invert = la::determinant(mat3(transform_)) < 0;
 
   if (halfedgeTangent_.size() > 0) {
@@ -577,19 +651,29 @@ Manifold::Impl Manifold::Impl::Transform(const mat3x4& transform_) const {
   }
 
   if (invert) {
+    result.halfedge_.MakeUnique();
     for_each_n(policy, countAt(0), result.NumTri(),
                FlipTris({result.halfedge_}));
   }
-
-  // This optimization does a cheap collider update if the transform is
-  // axis-aligned.
-  if (!result.collider_.Transform(transform_)) result.Update();
 
   result.CalculateBBox();
   // Scale epsilon by the norm of the 3x3 portion of the transform.
   result.epsilon_ *= SpectralNorm(mat3(transform_));
   // Maximum of inherited epsilon loss and translational epsilon loss.
   result.SetEpsilon(result.epsilon_);
+
+  if (!result.IsEmpty()) {
+    if (Collider::IsAxisAligned(transform_)) {
+      result.collider_ = collider_;
+      result.collider_.Transform(transform_);
+    } else if (!result.IsEmpty()) {
+      result.collider_ = collider_;
+      Vec<Box> faceBox;
+      Vec<uint32_t> faceMorton;
+      result.GetFaceBoxMorton(faceBox, faceMorton);
+      result.collider_.UpdateBoxes(faceBox);
+    }
+  }
   return result;
 }
 
@@ -607,37 +691,57 @@ void Manifold::Impl::SetEpsilon(double minEpsilon, bool useSingle) {
 }
 
 /**
- * If face normals are already present, this function uses them to compute
- * vertex normals (angle-weighted pseudo-normals); otherwise it also computes
- * the face normals. Face normals are only calculated when needed because
- * nearly degenerate faces will accrue rounding error, while the Boolean can
- * retain their original normal, which is more accurate and can help with
- * merging coplanar faces.
- *
- * If the face normals have been invalidated by an operation like Warp(),
- * ensure you do faceNormal_.resize(0) before calling this function to force
- * recalculation.
+ * This function uses the face normals to compute
+ * vertex normals (angle-weighted pseudo-normals). Face normals should only be
+ * calculated when needed because nearly degenerate faces will accrue rounding
+ * error, while the Boolean can retain their original normal, which is more
+ * accurate and can help with merging coplanar faces.
  */
-void Manifold::Impl::CalculateNormals() {
+void Manifold::Impl::CalculateVertNormals() {
   ZoneScoped;
   vertNormal_.resize(NumVert());
-  auto policy = autoPolicy(NumTri(), 1e4);
-  fill(vertNormal_.begin(), vertNormal_.end(), vec3(0.0));
-  bool calculateTriNormal = false;
-  if (faceNormal_.size() != NumTri()) {
-    faceNormal_.resize(NumTri());
-    calculateTriNormal = true;
-  }
-  if (calculateTriNormal)
-    for_each_n(
-        policy, countAt(0), NumTri(),
-        AssignNormals<true>({faceNormal_, vertNormal_, vertPos_, halfedge_}));
-  else
-    for_each_n(
-        policy, countAt(0), NumTri(),
-        AssignNormals<false>({faceNormal_, vertNormal_, vertPos_, halfedge_}));
-  for_each(policy, vertNormal_.begin(), vertNormal_.end(),
-           [](vec3& v) { v = SafeNormalize(v); });
+  auto policy = autoPolicy(NumTri());
+
+  std::vector<std::atomic<int>> vertHalfedgeMap(NumVert());
+  for_each_n(policy, countAt(0), NumVert(), [&](const size_t vert) {
+    vertHalfedgeMap[vert] = std::numeric_limits<int>::max();
+  });
+
+  auto atomicMin = [&vertHalfedgeMap](int value, int vert) {
+    if (vert < 0) return;
+    int old = std::numeric_limits<int>::max();
+    while (!vertHalfedgeMap[vert].compare_exchange_strong(old, value))
+      if (old < value) break;
+  };
+
+  for_each_n(policy, countAt(0), halfedge_.size(),
+             [&](const int i) { atomicMin(i, halfedge_.Start(i)); });
+
+  for_each_n(policy, countAt(0), NumVert(), [&](const size_t vert) {
+    int firstEdge = vertHalfedgeMap[vert].load();
+    // not referenced
+    if (firstEdge == std::numeric_limits<int>::max()) {
+      vertNormal_[vert] = vec3(0.0);
+      return;
+    }
+    vec3 normal = vec3(0.0);
+    ForVert(firstEdge, [&](int edge) {
+      ivec3 triVerts = {halfedge_.Start(edge), halfedge_.End(edge),
+                        halfedge_.End(NextHalfedge(edge))};
+      vec3 currEdge =
+          la::normalize(vertPos_[triVerts[1]] - vertPos_[triVerts[0]]);
+      vec3 prevEdge =
+          la::normalize(vertPos_[triVerts[0]] - vertPos_[triVerts[2]]);
+
+      // if it is not finite, this means that the triangle is degenerate, and we
+      // should just exclude it from the normal calculation...
+      if (!la::isfinite(currEdge[0]) || !la::isfinite(prevEdge[0])) return;
+      double dot = -la::dot(prevEdge, currEdge);
+      double phi = dot >= 1 ? 0 : (dot <= -1 ? kPi : math::acos(dot));
+      normal += phi * faceNormal_[edge / 3];
+    });
+    vertNormal_[vert] = SafeNormalize(normal);
+  });
 }
 
 /**
@@ -645,6 +749,7 @@ void Manifold::Impl::CalculateNormals() {
  * instances of these meshes.
  */
 void Manifold::Impl::IncrementMeshIDs() {
+  ZoneScoped;
   HashTable<uint32_t> meshIDold2new(meshRelation_.meshIDtransform.size() * 2);
   // Update keys of the transform map
   std::map<int, Relation> oldTransforms;
@@ -661,136 +766,166 @@ void Manifold::Impl::IncrementMeshIDs() {
              UpdateMeshID({meshIDold2new.D()}));
 }
 
-/**
- * Returns a sparse array of the bounding box overlaps between the edges of
- * the input manifold, Q and the faces of this manifold. Returned indices only
- * point to forward halfedges.
- */
-SparseIndices Manifold::Impl::EdgeCollisions(const Impl& Q,
-                                             bool inverted) const {
-  ZoneScoped;
-  Vec<TmpEdge> edges = CreateTmpEdges(Q.halfedge_);
-  const size_t numEdge = edges.size();
-  Vec<Box> QedgeBB(numEdge);
-  const auto& vertPos = Q.vertPos_;
-  auto policy = autoPolicy(numEdge, 1e5);
-  for_each_n(
-      policy, countAt(0), numEdge, [&QedgeBB, &edges, &vertPos](const int e) {
-        QedgeBB[e] = Box(vertPos[edges[e].first], vertPos[edges[e].second]);
-      });
+#ifndef MANIFOLD_NO_IOSTREAM
+static std::ostream& WriteOBJWithEpsilon(std::ostream& stream,
+                                         const MeshGL64& mesh,
+                                         std::optional<double> epsilon) {
+  auto useHexFloat = []() {
+    const char* v = std::getenv("MANIFOLD_OBJ_HEX_FLOAT");
+    if (v == nullptr) return false;
+    return std::strcmp(v, "1") == 0 || std::strcmp(v, "true") == 0 ||
+           std::strcmp(v, "TRUE") == 0 || std::strcmp(v, "on") == 0 ||
+           std::strcmp(v, "ON") == 0;
+  };
+  const bool hexFloat = useHexFloat();
+  auto writeValue = [&](double value) {
+    if (hexFloat) {
+      // Use explicit C-format hex to keep text stable across standard library
+      // implementations.
+      char buf[128];
+      std::snprintf(buf, sizeof(buf), "%.13a", value);
+      stream << buf;
+    } else {
+      stream << value;
+    }
+  };
 
-  SparseIndices q1p2(0);
-  if (inverted)
-    q1p2 = collider_.Collisions<false, true>(QedgeBB.cview());
-  else
-    q1p2 = collider_.Collisions<false, false>(QedgeBB.cview());
-
-  if (inverted)
-    for_each(policy, countAt(0_uz), countAt(q1p2.size()),
-             ReindexEdge<true>({edges, q1p2}));
-  else
-    for_each(policy, countAt(0_uz), countAt(q1p2.size()),
-             ReindexEdge<false>({edges, q1p2}));
-  return q1p2;
-}
-
-/**
- * Returns a sparse array of the input vertices that project inside the XY
- * bounding boxes of the faces of this manifold.
- */
-SparseIndices Manifold::Impl::VertexCollisionsZ(VecView<const vec3> vertsIn,
-                                                bool inverted) const {
-  ZoneScoped;
-  if (inverted)
-    return collider_.Collisions<false, true>(vertsIn);
-  else
-    return collider_.Collisions<false, false>(vertsIn);
-}
-
-#ifdef MANIFOLD_DEBUG
-std::ostream& operator<<(std::ostream& stream, const Manifold::Impl& impl) {
-  stream << std::setprecision(17);  // for double precision
+  stream << std::setprecision(19);  // for double precision
+  if (!hexFloat) {
+    stream << std::fixed;  // for uniformity in output numbers
+  }
   stream << "# ======= begin mesh ======" << std::endl;
-  stream << "# tolerance = " << impl.tolerance_ << std::endl;
-  stream << "# epsilon = " << impl.epsilon_ << std::endl;
-  // TODO: Mesh relation, vertex normal and face normal
-  for (const vec3& v : impl.vertPos_)
-    stream << "v " << v.x << " " << v.y << " " << v.z << std::endl;
-  std::vector<ivec3> triangles;
-  triangles.reserve(impl.halfedge_.size() / 3);
-  for (size_t i = 0; i < impl.halfedge_.size(); i += 3)
-    triangles.emplace_back(impl.halfedge_[i].startVert + 1,
-                           impl.halfedge_[i + 1].startVert + 1,
-                           impl.halfedge_[i + 2].startVert + 1);
+  stream << "# float_format = " << (hexFloat ? "hexfloat" : "fixed")
+         << std::endl;
+  stream << "# tolerance = ";
+  writeValue(mesh.tolerance);
+  stream << std::endl;
+  if (epsilon.has_value()) {
+    stream << "# epsilon = ";
+    writeValue(epsilon.value());
+    stream << std::endl;
+  }
+  for (size_t i = 0; i < mesh.NumVert(); i++) {
+    stream << "v";
+    size_t offset = i * mesh.numProp;
+    for (size_t j : {0, 1, 2}) {
+      stream << " ";
+      writeValue(mesh.vertProperties[offset + j]);
+    }
+    stream << std::endl;
+  }
+  std::vector<std::array<uint64_t, 3>> triangles;
+  triangles.reserve(mesh.NumTri());
+  for (size_t i = 0; i < mesh.NumTri(); i++)
+    triangles.push_back({mesh.triVerts[3 * i] + 1, mesh.triVerts[3 * i + 1] + 1,
+                         mesh.triVerts[3 * i + 2] + 1});
   sort(triangles.begin(), triangles.end());
   for (const auto& tri : triangles)
-    stream << "f " << tri.x << " " << tri.y << " " << tri.z << std::endl;
+    stream << "f " << tri[0] << " " << tri[1] << " " << tri[2] << std::endl;
   stream << "# ======== end mesh =======" << std::endl;
   return stream;
 }
-#endif
 
-#ifdef MANIFOLD_EXPORT
-Manifold Manifold::ImportMeshGL64(std::istream& stream) {
+static std::pair<MeshGL64, std::optional<double>> ReadOBJWithEpsilon(
+    std::istream& stream) {
+  static const std::string FLOAT_PATTERN =
+      "(-?\\d+(?:\\.\\d*)?(?:[eE][+\\-]?\\d+)?)";
+  static const std::string FACE_ELEMENT = "(\\d+)(?:\\S+)?";
+  static const std::string TRAILING_SPACES = "(?:\\s*)";
+  static const std::string SEPARATOR = "\\s+";
+  static const std::regex TOLERANCE_COMMENT_PATTERN(
+      "^# tolerance = " + FLOAT_PATTERN + TRAILING_SPACES);
+  static const std::regex EPSILON_COMMENT_PATTERN(
+      "^# epsilon = " + FLOAT_PATTERN + TRAILING_SPACES);
+  static const std::regex VERTEX_PATTERN("^v" + SEPARATOR + FLOAT_PATTERN +
+                                         SEPARATOR + FLOAT_PATTERN + SEPARATOR +
+                                         FLOAT_PATTERN + TRAILING_SPACES);
+  static const std::regex FACE_PATTERN("^f" + SEPARATOR + FACE_ELEMENT +
+                                       SEPARATOR + FACE_ELEMENT + SEPARATOR +
+                                       FACE_ELEMENT + TRAILING_SPACES);
+
   MeshGL64 mesh;
   std::optional<double> epsilon;
-  stream.precision(17);
-  while (true) {
-    char c = stream.get();
-    if (stream.eof()) break;
-    switch (c) {
-      case '#': {
-        char c = stream.get();
-        if (c == ' ') {
-          constexpr int SIZE = 10;
-          std::array<char, SIZE> tmp;
-          stream.get(tmp.data(), SIZE, '\n');
-          if (strncmp(tmp.data(), "tolerance", SIZE) == 0) {
-            // skip 3 letters
-            for (int i : {0, 1, 2}) stream.get();
-            stream >> mesh.tolerance;
-          } else if (strncmp(tmp.data(), "epsilon =", SIZE) == 0) {
-            double tmp;
-            stream >> tmp;
-            epsilon = {tmp};
-          } else {
-            // add it back because it is not what we want
-            int end = 0;
-            while (tmp[end] != 0 && end < SIZE) end++;
-            while (--end > -1) stream.putback(tmp[end]);
-          }
-          c = stream.get();
-        }
-        // just skip the remaining comment
-        while (c != '\n' && !stream.eof()) {
-          c = stream.get();
-        }
-        break;
-      }
-      case 'v':
-        for (int i : {0, 1, 2}) {
-          double x;
-          stream >> x;
-          mesh.vertProperties.push_back(x);
-        }
-        break;
-      case 'f':
-        for (int i : {0, 1, 2}) {
-          uint64_t x;
-          stream >> x;
-          mesh.triVerts.push_back(x - 1);
-        }
-        break;
-      case '\n':
-        break;
-      default:
-        DEBUG_ASSERT(false, userErr, "unexpected character in MeshGL64 import");
+  if (!stream.good()) return std::make_pair(mesh, epsilon);
+
+  constexpr size_t BUFFER_SIZE = 1000;
+  std::array<char, BUFFER_SIZE> buffer;
+  std::cmatch m;
+
+  while (!stream.eof()) {
+    // extract line, and skip the line if it is longer than BUFFER_SIZE
+    // because the lines we care about should not be that long
+    // not using std::basic_istream<...>::getline because getline throws when
+    // the size exceeds the limit, but we don't want exception related code
+    size_t i = 0;
+    char c;
+    while (!stream.eof() && (c = stream.get()) != '\n' && c != '\r')
+      if (i < BUFFER_SIZE) buffer[i++] = c;
+    if (i == BUFFER_SIZE) continue;
+    buffer[i] = '\0';
+    // check pattern...
+    if (std::regex_match(buffer.data(), m, TOLERANCE_COMMENT_PATTERN)) {
+      mesh.tolerance = FromChars(m[1]);
+    } else if (std::regex_match(buffer.data(), m, EPSILON_COMMENT_PATTERN)) {
+      epsilon = {FromChars(m[1])};
+    } else if (std::regex_match(buffer.data(), m, VERTEX_PATTERN)) {
+      for (int j : {0, 1, 2})
+        mesh.vertProperties.push_back(FromChars(m[j + 1]));
+    } else if (std::regex_match(buffer.data(), m, FACE_PATTERN)) {
+      for (int j : {0, 1, 2})
+        mesh.triVerts.push_back(std::stoi(m[j + 1].str()) - 1);
     }
   }
-  auto m = std::make_shared<Manifold::Impl>(mesh);
-  if (epsilon) m->SetEpsilon(*epsilon);
-  return Manifold(m);
+
+  return std::make_pair(mesh, epsilon);
+}
+
+/**
+ * Import a mesh from a Wavefront OBJ file.
+ */
+MeshGL64 ReadOBJ(std::istream& stream) {
+  return ReadOBJWithEpsilon(stream).first;
+}
+
+/**
+ * Import a mesh from a Wavefront OBJ file.
+ * This supports reading tolerance and epsilon values from WriteOBJ.
+ */
+Manifold Manifold::ReadOBJ(std::istream& stream) {
+  if (!stream.good()) return Invalid();
+  auto [mesh, epsilon] = ReadOBJWithEpsilon(stream);
+  auto impl = std::make_shared<Impl>(mesh);
+  if (epsilon) impl->SetEpsilon(epsilon.value());
+  return Manifold(impl);
+}
+
+/**
+ * Export the mesh to a Wavefront OBJ file in a way that preserves the full
+ * 64-bit precision of the vertex positions.
+ */
+bool WriteOBJ(std::ostream& stream, const MeshGL64& mesh) {
+  if (!stream.good()) return false;
+  WriteOBJWithEpsilon(stream, mesh, {});
+  return true;
+}
+
+/**
+ * Debugging output using high precision OBJ files with specialized comments
+ */
+std::ostream& operator<<(std::ostream& stream, const Manifold::Impl& impl) {
+  MeshGL64 mesh = GetMeshGLImpl<double, uint64_t>(impl, -1);
+  return WriteOBJWithEpsilon(stream, mesh, {impl.epsilon_});
+}
+
+/**
+ * Export the mesh to a Wavefront OBJ file in a way that preserves the full
+ * 64-bit precision of the vertex positions, as well as storing metadata such as
+ * the tolerance and epsilon.
+ */
+bool Manifold::WriteOBJ(std::ostream& stream) const {
+  if (!stream.good()) return false;
+  stream << *this->GetCsgLeafNode().GetImpl();
+  return true;
 }
 #endif
-
 }  // namespace manifold

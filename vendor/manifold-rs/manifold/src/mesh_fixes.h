@@ -12,7 +12,7 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 #pragma once
-#include "./shared.h"
+#include "shared.h"
 
 namespace {
 using namespace manifold;
@@ -39,26 +39,30 @@ struct TransformTangents {
   const mat3 transform;
   const bool invert;
   VecView<const vec4> oldTangents;
-  VecView<const Halfedge> halfedge;
+  const Halfedges& halfedge;
 
   void operator()(const int edgeOut) {
-    const int edgeIn =
-        invert ? halfedge[FlipHalfedge(edgeOut)].pairedHalfedge : edgeOut;
+    const int edgeIn = invert ? halfedge.Pair(FlipHalfedge(edgeOut)) : edgeOut;
     tangent[edgeOut + edgeOffset] =
         vec4(transform * vec3(oldTangents[edgeIn]), oldTangents[edgeIn].w);
   }
 };
 
 struct FlipTris {
-  VecView<Halfedge> halfedge;
+  Halfedges& halfedge;
 
   void operator()(const int tri) {
-    std::swap(halfedge[3 * tri], halfedge[3 * tri + 2]);
-
+    std::array<Halfedge, 3> face = {halfedge.Get(3 * tri + 2),
+                                    halfedge.Get(3 * tri + 1),
+                                    halfedge.Get(3 * tri)};
     for (const int i : {0, 1, 2}) {
-      std::swap(halfedge[3 * tri + i].startVert, halfedge[3 * tri + i].endVert);
-      halfedge[3 * tri + i].pairedHalfedge =
-          FlipHalfedge(halfedge[3 * tri + i].pairedHalfedge);
+      std::swap(face[i].startVert, face[i].endVert);
+      face[i].pairedHalfedge = FlipHalfedge(face[i].pairedHalfedge);
+    }
+    for (const int i : {0, 1, 2}) {
+      halfedge.SetStart(3 * tri + i, face[i].startVert);
+      halfedge.SetPair(3 * tri + i, face[i].pairedHalfedge);
+      halfedge.SetProp(3 * tri + i, face[i].propVert);
     }
   }
 };

@@ -17,7 +17,8 @@
 
 #pragma once
 
-#include "./iters.h"
+#include "execution_impl.h"
+#include "iters.h"
 #if (MANIFOLD_PAR == 1)
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -70,28 +71,46 @@ using manifold::kSeqThreshold;
 // https://duvanenko.tech.blog/2018/01/14/parallel-merge/
 // https://github.com/DragonSpit/ParallelAlgorithms
 // note that the ranges are now [p, r) to fit our convention.
+// also the implementation in the reference is not stable,
+// and we now changed it to stable.
 template <typename SrcIter, typename DestIter, typename Comp>
 void mergeRec(SrcIter src, DestIter dest, size_t p1, size_t r1, size_t p2,
               size_t r2, size_t p3, Comp comp) {
   size_t length1 = r1 - p1;
   size_t length2 = r2 - p2;
-  if (length1 < length2) {
-    std::swap(p1, p2);
-    std::swap(r1, r2);
-    std::swap(length1, length2);
+  if (length1 == 0) {
+    manifold::copy(src + p2, src + r2, dest + p3);
+    return;
   }
-  if (length1 == 0) return;
+  if (length2 == 0) {
+    manifold::copy(src + p1, src + r1, dest + p3);
+    return;
+  }
   if (length1 + length2 <= kSeqThreshold) {
     std::merge(src + p1, src + r1, src + p2, src + r2, dest + p3, comp);
   } else {
-    size_t q1 = p1 + length1 / 2;
-    size_t q2 =
-        std::distance(src, std::lower_bound(src + p2, src + r2, src[q1], comp));
+    size_t q1, q2;
+    // For stability: equal-keyed elements from the left half must precede
+    // those from the right in the output. Pivot from the larger half and
+    // use the bound that puts equal-to-pivot from the OPPOSITE half on the
+    // pivot's stable side.
+    if (length1 > length2) {
+      // Left pivot: right-side equals belong after pivot. lower_bound on
+      // right places them at q2+ (second sub-merge with pivot).
+      q1 = p1 + length1 / 2;
+      auto end = std::lower_bound(src + p2, src + r2, src[q1], comp);
+      q2 = std::distance(src, end);
+    } else {
+      // Right pivot: left-side equals belong before pivot. upper_bound on
+      // left places them strictly before q1 (first sub-merge).
+      q2 = p2 + length2 / 2;
+      auto end = std::upper_bound(src + p1, src + r1, src[q2], comp);
+      q1 = std::distance(src, end);
+    }
     size_t q3 = p3 + (q1 - p1) + (q2 - p2);
-    dest[q3] = src[q1];
     tbb::parallel_invoke(
         [=] { mergeRec(src, dest, p1, q1, p2, q2, p3, comp); },
-        [=] { mergeRec(src, dest, q1 + 1, r1, q2, r2, q3 + 1, comp); });
+        [=] { mergeRec(src, dest, q1, r1, q2, r2, q3, comp); });
   }
 }
 
@@ -114,20 +133,20 @@ template <typename T, typename InputIter, typename OutputIter, typename BinOp>
 struct ScanBody {
   T sum;
   T identity;
-  BinOp &f;
+  BinOp& f;
   InputIter input;
   OutputIter output;
 
-  ScanBody(T sum, T identity, BinOp &f, InputIter input, OutputIter output)
+  ScanBody(T sum, T identity, BinOp& f, InputIter input, OutputIter output)
       : sum(sum), identity(identity), f(f), input(input), output(output) {}
-  ScanBody(ScanBody &b, tbb::split)
+  ScanBody(ScanBody& b, tbb::split)
       : sum(b.identity),
         identity(b.identity),
         f(b.f),
         input(b.input),
         output(b.output) {}
   template <typename Tag>
-  void operator()(const tbb::blocked_range<size_t> &r, Tag) {
+  void operator()(const tbb::blocked_range<size_t>& r, Tag) {
     T temp = sum;
     for (size_t i = r.begin(); i < r.end(); ++i) {
       T inputTmp = input[i];
@@ -137,23 +156,23 @@ struct ScanBody {
     sum = temp;
   }
   T get_sum() const { return sum; }
-  void reverse_join(ScanBody &a) { sum = f(a.sum, sum); }
-  void assign(ScanBody &b) { sum = b.sum; }
+  void reverse_join(ScanBody& a) { sum = f(a.sum, sum); }
+  void assign(ScanBody& b) { sum = b.sum; }
 };
 
 template <typename InputIter, typename OutputIter, typename P>
 struct CopyIfScanBody {
   size_t sum;
-  P &pred;
+  P& pred;
   InputIter input;
   OutputIter output;
 
-  CopyIfScanBody(P &pred, InputIter input, OutputIter output)
+  CopyIfScanBody(P& pred, InputIter input, OutputIter output)
       : sum(0), pred(pred), input(input), output(output) {}
-  CopyIfScanBody(CopyIfScanBody &b, tbb::split)
+  CopyIfScanBody(CopyIfScanBody& b, tbb::split)
       : sum(0), pred(b.pred), input(b.input), output(b.output) {}
   template <typename Tag>
-  void operator()(const tbb::blocked_range<size_t> &r, Tag) {
+  void operator()(const tbb::blocked_range<size_t>& r, Tag) {
     size_t temp = sum;
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (pred(i)) {
@@ -164,8 +183,8 @@ struct CopyIfScanBody {
     sum = temp;
   }
   size_t get_sum() const { return sum; }
-  void reverse_join(CopyIfScanBody &a) { sum = a.sum + sum; }
-  void assign(CopyIfScanBody &b) { sum = b.sum; }
+  void reverse_join(CopyIfScanBody& a) { sum = a.sum + sum; }
+  void assign(CopyIfScanBody& b) { sum = b.sum; }
 };
 
 template <typename N, const int K>
@@ -173,11 +192,11 @@ struct Hist {
   using SizeType = N;
   static constexpr int k = K;
   N hist[k][256] = {{0}};
-  void merge(const Hist<N, K> &other) {
+  void merge(const Hist<N, K>& other) {
     for (int i = 0; i < k; ++i)
       for (int j = 0; j < 256; ++j) hist[i][j] += other.hist[i][j];
   }
-  void prefixSum(N total, bool *canSkip) {
+  void prefixSum(N total, bool* canSkip) {
     for (int i = 0; i < k; ++i) {
       size_t count = 0;
       for (int j = 0; j < 256; ++j) {
@@ -191,8 +210,8 @@ struct Hist {
 };
 
 template <typename T, typename H>
-void histogram(T *ptr, typename H::SizeType n, H &hist) {
-  auto worker = [](T *ptr, typename H::SizeType n, H &hist) {
+void histogram(T* ptr, typename H::SizeType n, H& hist) {
+  auto worker = [](T* ptr, typename H::SizeType n, H& hist) {
     for (typename H::SizeType i = 0; i < n; ++i)
       for (int k = 0; k < hist.k; ++k)
         ++hist.hist[k][(ptr[i] >> (8 * k)) & 0xFF];
@@ -203,21 +222,21 @@ void histogram(T *ptr, typename H::SizeType n, H &hist) {
     tbb::combinable<H> store;
     tbb::parallel_for(
         tbb::blocked_range<typename H::SizeType>(0, n, kSeqThreshold),
-        [&worker, &store, ptr](const auto &r) {
+        [&worker, &store, ptr](const auto& r) {
           worker(ptr + r.begin(), r.end() - r.begin(), store.local());
         });
-    store.combine_each([&hist](const H &h) { hist.merge(h); });
+    store.combine_each([&hist](const H& h) { hist.merge(h); });
   }
 }
 
 template <typename T, typename H>
-void shuffle(T *src, T *target, typename H::SizeType n, H &hist, int k) {
+void shuffle(T* src, T* target, typename H::SizeType n, H& hist, int k) {
   for (typename H::SizeType i = 0; i < n; ++i)
     target[hist.hist[k][(src[i] >> (8 * k)) & 0xFF]++] = src[i];
 }
 
 template <typename T, typename SizeType>
-bool LSB_radix_sort(T *input, T *tmp, SizeType n) {
+bool LSB_radix_sort(T* input, T* tmp, SizeType n) {
   Hist<SizeType, sizeof(T) / sizeof(char)> hist;
   if (std::is_sorted(input, input + n)) return false;
   histogram(input, n, hist);
@@ -240,9 +259,9 @@ struct SortedRange {
   SizeType offset = 0, length = 0;
   bool inTmp = false;
 
-  SortedRange(T *input, T *tmp, SizeType offset = 0, SizeType length = 0)
+  SortedRange(T* input, T* tmp, SizeType offset = 0, SizeType length = 0)
       : input(input), tmp(tmp), offset(offset), length(length) {}
-  SortedRange(SortedRange<T, SizeType> &r, tbb::split)
+  SortedRange(SortedRange<T, SizeType>& r, tbb::split)
       : input(r.input), tmp(r.tmp) {}
   // FIXME: no idea why thread sanitizer reports data race here
 #if defined(__has_feature)
@@ -251,7 +270,7 @@ struct SortedRange {
 #endif
 #endif
   void
-  operator()(const tbb::blocked_range<SizeType> &range) {
+  operator()(const tbb::blocked_range<SizeType>& range) {
     SortedRange<T, SizeType> rhs(input, tmp, range.begin(),
                                  range.end() - range.begin());
     rhs.inTmp =
@@ -267,7 +286,7 @@ struct SortedRange {
     copy(src + offset, src + offset + length, target + offset);
     return !inTmp;
   }
-  void join(const SortedRange<T, SizeType> &rhs) {
+  void join(const SortedRange<T, SizeType>& rhs) {
     if (inTmp != rhs.inTmp) {
       if (length < rhs.length)
         inTmp = swapBuffer();
@@ -286,8 +305,8 @@ struct SortedRange {
 };
 
 template <typename T, typename SizeTy>
-void radix_sort(T *input, SizeTy n) {
-  T *aux = new T[n];
+void radix_sort(T* input, SizeTy n) {
+  T* aux = new T[n];
   SizeTy blockSize = std::max(n / tbb::this_task_arena::max_concurrency() / 4,
                               static_cast<SizeTy>(kSeqThreshold / sizeof(T)));
   SortedRange<T, SizeTy> result(input, aux);
@@ -306,7 +325,7 @@ void mergeSort(ExecutionPolicy policy, Iterator first, Iterator last,
     // apparently this prioritizes threads inside here?
     tbb::this_task_arena::isolate([&] {
       size_t length = std::distance(first, last);
-      T *tmp = new T[length];
+      T* tmp = new T[length];
       copy(policy, first, last, tmp);
       details::mergeSortRec(tmp, first, 0, length, comp);
       delete[] tmp;
@@ -369,34 +388,77 @@ struct SortFunctor<
 
 #endif
 
-// Applies the function `f` to each element in the range `[first, last)`
+// Applies the function `f` to each element in the range `[first, last)`,
+// optionally checking `ctx` for cancellation periodically. `ctx` may be
+// nullptr — the cancel branch is null-short-circuited and folds out at
+// the call site, so non-cancellable callers pay nothing.
+//
+// Cancel granularity: once per parallel chunk, and once per kSeqCancelChunk
+// elements on the sequential branch. Only safe when "skip the rest of the
+// range" produces a result the caller will discard via a post-loop
+// `IsCancelled` check.
 template <typename Iter, typename F>
-void for_each(ExecutionPolicy policy, Iter first, Iter last, F f) {
+void for_each(ExecutionPolicy policy, Iter first, Iter last,
+              ExecutionContext::Impl* ctx, F f) {
   static_assert(std::is_convertible_v<
                     typename std::iterator_traits<Iter>::iterator_category,
                     std::random_access_iterator_tag>,
                 "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    tbb::parallel_for(tbb::blocked_range<Iter>(first, last),
-                      [&f](const tbb::blocked_range<Iter> &range) {
-                        for (Iter i = range.begin(); i != range.end(); i++)
-                          f(*i);
-                      });
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_for(tbb::blocked_range<Iter>(first, last),
+                        [&f, ctx](const tbb::blocked_range<Iter>& range) {
+                          if (IsCancelled(ctx)) return;
+                          for (Iter i = range.begin(); i != range.end(); i++)
+                            f(*i);
+                        });
+    });
     return;
   }
 #endif
-  std::for_each(first, last, f);
+  // Sequential branch: check once at start, then every kSeqCancelChunk
+  // elements. Bounded latency for MANIFOLD_PAR=OFF builds and for the
+  // small-input branch under PAR=ON.
+  constexpr size_t kSeqCancelChunk = 1024;
+  if (IsCancelled(ctx)) return;
+  if (ctx == nullptr) {
+    std::for_each(first, last, f);
+    return;
+  }
+  size_t since_check = 0;
+  for (Iter i = first; i != last; ++i) {
+    if (++since_check == kSeqCancelChunk) {
+      if (IsCancelled(ctx)) return;
+      since_check = 0;
+    }
+    f(*i);
+  }
 }
 
-// Applies the function `f` to each element in the range `[first, last)`
+// Non-cancellable shim. Threads `nullptr` through the ctx-aware impl.
 template <typename Iter, typename F>
-void for_each_n(ExecutionPolicy policy, Iter first, size_t n, F f) {
+void for_each(ExecutionPolicy policy, Iter first, Iter last, F f) {
+  for_each(policy, first, last, nullptr, f);
+}
+
+// for_each over [first, first + n).
+template <typename Iter, typename F>
+void for_each_n(ExecutionPolicy policy, Iter first, size_t n,
+                ExecutionContext::Impl* ctx, F f) {
   static_assert(std::is_convertible_v<
                     typename std::iterator_traits<Iter>::iterator_category,
                     std::random_access_iterator_tag>,
                 "You can only parallelize RandomAccessIterator.");
-  for_each(policy, first, first + n, f);
+  using Difference = typename std::iterator_traits<Iter>::difference_type;
+  for_each(policy, first, first + static_cast<Difference>(n), ctx, f);
+}
+
+// Non-cancellable shim.
+template <typename Iter, typename F>
+void for_each_n(ExecutionPolicy policy, Iter first, size_t n, F f) {
+  for_each_n(policy, first, n, nullptr, f);
 }
 
 // Reduce the range `[first, last)` using a binary operation `f` with an initial
@@ -412,16 +474,19 @@ T reduce(ExecutionPolicy policy, InputIter first, InputIter last, T init,
                     typename std::iterator_traits<InputIter>::iterator_category,
                     std::random_access_iterator_tag>,
                 "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
     // should we use deterministic reduce here?
-    return tbb::parallel_reduce(
-        tbb::blocked_range<InputIter>(first, last, details::kSeqThreshold),
-        init,
-        [&f](const tbb::blocked_range<InputIter> &range, T value) {
-          return std::reduce(range.begin(), range.end(), value, f);
-        },
-        f);
+    return tbb::this_task_arena::isolate([&]() {
+      return tbb::parallel_reduce(
+          tbb::blocked_range<InputIter>(first, last, details::kSeqThreshold),
+          init,
+          [&f](const tbb::blocked_range<InputIter>& range, T value) {
+            return std::reduce(range.begin(), range.end(), value, f);
+          },
+          f);
+    });
   }
 #endif
   return std::reduce(first, last, init, f);
@@ -488,21 +553,24 @@ void inclusive_scan(ExecutionPolicy policy, InputIter first, InputIter last,
           typename std::iterator_traits<OutputIter>::iterator_category,
           std::random_access_iterator_tag>,
       "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    tbb::parallel_scan(
-        tbb::blocked_range<size_t>(0, std::distance(first, last)),
-        static_cast<T>(0),
-        [&](const tbb::blocked_range<size_t> &range, T sum,
-            bool is_final_scan) {
-          T temp = sum;
-          for (size_t i = range.begin(); i < range.end(); ++i) {
-            temp = temp + first[i];
-            if (is_final_scan) d_first[i] = temp;
-          }
-          return temp;
-        },
-        std::plus<T>());
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_scan(
+          tbb::blocked_range<size_t>(0, std::distance(first, last)),
+          static_cast<T>(0),
+          [&](const tbb::blocked_range<size_t>& range, T sum,
+              bool is_final_scan) {
+            T temp = sum;
+            for (size_t i = range.begin(); i < range.end(); ++i) {
+              temp = temp + first[i];
+              if (is_final_scan) d_first[i] = temp;
+            }
+            return temp;
+          },
+          std::plus<T>());
+    });
     return;
   }
 #endif
@@ -550,12 +618,16 @@ void exclusive_scan(ExecutionPolicy policy, InputIter first, InputIter last,
           typename std::iterator_traits<OutputIter>::iterator_category,
           std::random_access_iterator_tag>,
       "You can only parallelize RandomAccessIterator.");
+  (void)policy;
+  (void)identity;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
     details::ScanBody<T, InputIter, OutputIter, BinOp> body(init, identity, f,
                                                             first, d_first);
-    tbb::parallel_scan(
-        tbb::blocked_range<size_t>(0, std::distance(first, last)), body);
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_scan(
+          tbb::blocked_range<size_t>(0, std::distance(first, last)), body);
+    });
     return;
   }
 #endif
@@ -603,15 +675,18 @@ void transform(ExecutionPolicy policy, InputIter first, InputIter last,
           typename std::iterator_traits<OutputIter>::iterator_category,
           std::random_access_iterator_tag>,
       "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(
-                          0, static_cast<size_t>(std::distance(first, last))),
-                      [&](const tbb::blocked_range<size_t> &range) {
-                        std::transform(first + range.begin(),
-                                       first + range.end(),
-                                       d_first + range.begin(), f);
-                      });
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_for(tbb::blocked_range<size_t>(
+                            0, static_cast<size_t>(std::distance(first, last))),
+                        [&](const tbb::blocked_range<size_t>& range) {
+                          std::transform(first + range.begin(),
+                                         first + range.end(),
+                                         d_first + range.begin(), f);
+                        });
+    });
     return;
   }
 #endif
@@ -647,15 +722,18 @@ void copy(ExecutionPolicy policy, InputIter first, InputIter last,
           typename std::iterator_traits<OutputIter>::iterator_category,
           std::random_access_iterator_tag>,
       "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(
-                          0, static_cast<size_t>(std::distance(first, last)),
-                          details::kSeqThreshold),
-                      [&](const tbb::blocked_range<size_t> &range) {
-                        std::copy(first + range.begin(), first + range.end(),
-                                  d_first + range.begin());
-                      });
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_for(tbb::blocked_range<size_t>(
+                            0, static_cast<size_t>(std::distance(first, last)),
+                            details::kSeqThreshold),
+                        [&](const tbb::blocked_range<size_t>& range) {
+                          std::copy(first + range.begin(), first + range.end(),
+                                    d_first + range.begin());
+                        });
+    });
     return;
   }
 #endif
@@ -704,12 +782,15 @@ void fill(ExecutionPolicy policy, OutputIter first, OutputIter last, T value) {
           typename std::iterator_traits<OutputIter>::iterator_category,
           std::random_access_iterator_tag>,
       "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    tbb::parallel_for(tbb::blocked_range<OutputIter>(first, last),
-                      [&](const tbb::blocked_range<OutputIter> &range) {
-                        std::fill(range.begin(), range.end(), value);
-                      });
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_for(tbb::blocked_range<OutputIter>(first, last),
+                        [&](const tbb::blocked_range<OutputIter>& range) {
+                          std::fill(range.begin(), range.end(), value);
+                        });
+    });
     return;
   }
 #endif
@@ -727,10 +808,12 @@ void fill(OutputIter first, OutputIter last, T value) {
 template <typename InputIter, typename P>
 size_t count_if(ExecutionPolicy policy, InputIter first, InputIter last,
                 P pred) {
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
     return reduce(policy, TransformIterator(first, pred),
-                  TransformIterator(last, pred), 0, std::plus<size_t>());
+                  TransformIterator(last, pred), size_t{0},
+                  std::plus<size_t>());
   }
 #endif
   return std::count_if(first, last, pred);
@@ -751,18 +834,21 @@ bool all_of(ExecutionPolicy policy, InputIter first, InputIter last, P pred) {
                     typename std::iterator_traits<InputIter>::iterator_category,
                     std::random_access_iterator_tag>,
                 "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
     // should we use deterministic reduce here?
-    return tbb::parallel_reduce(
-        tbb::blocked_range<InputIter>(first, last), true,
-        [&](const tbb::blocked_range<InputIter> &range, bool value) {
-          if (!value) return false;
-          for (InputIter i = range.begin(); i != range.end(); i++)
-            if (!pred(*i)) return false;
-          return true;
-        },
-        [](bool a, bool b) { return a && b; });
+    return tbb::this_task_arena::isolate([&]() {
+      return tbb::parallel_reduce(
+          tbb::blocked_range<InputIter>(first, last), true,
+          [&](const tbb::blocked_range<InputIter>& range, bool value) {
+            if (!value) return false;
+            for (InputIter i = range.begin(); i != range.end(); i++)
+              if (!pred(*i)) return false;
+            return true;
+          },
+          [](bool a, bool b) { return a && b; });
+    });
   }
 #endif
   return std::all_of(first, last, pred);
@@ -798,13 +884,16 @@ OutputIter copy_if(ExecutionPolicy policy, InputIter first, InputIter last,
           typename std::iterator_traits<OutputIter>::iterator_category,
           std::random_access_iterator_tag>,
       "You can only parallelize RandomAccessIterator.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
     auto pred2 = [&](size_t i) { return pred(first[i]); };
     details::CopyIfScanBody body(pred2, first, d_first);
-    tbb::parallel_scan(
-        tbb::blocked_range<size_t>(0, std::distance(first, last)), body);
-    return d_first + body.get_sum();
+    tbb::this_task_arena::isolate([&]() {
+      tbb::parallel_scan(
+          tbb::blocked_range<size_t>(0, std::distance(first, last)), body);
+      return d_first + body.get_sum();
+    });
   }
 #endif
   return std::copy_if(first, last, d_first, pred);
@@ -845,9 +934,10 @@ Iter remove_if(ExecutionPolicy policy, Iter first, Iter last, P pred) {
   static_assert(std::is_trivially_destructible_v<T>,
                 "Our simple implementation does not support types that are "
                 "not trivially destructable.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    T *tmp = new T[std::distance(first, last)];
+    T* tmp = new T[std::distance(first, last)];
     auto back =
         copy_if(policy, first, last, tmp, [&](T v) { return !pred(v); });
     copy(policy, tmp, back, first);
@@ -892,9 +982,10 @@ Iter remove(ExecutionPolicy policy, Iter first, Iter last, T value) {
   static_assert(std::is_trivially_destructible_v<T>,
                 "Our simple implementation does not support types that are "
                 "not trivially destructable.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par) {
-    T *tmp = new T[std::distance(first, last)];
+    T* tmp = new T[std::distance(first, last)];
     auto back =
         copy_if(policy, first, last, tmp, [&](T v) { return v != value; });
     copy(policy, tmp, back, first);
@@ -939,13 +1030,14 @@ Iter unique(ExecutionPolicy policy, Iter first, Iter last) {
   static_assert(std::is_trivially_destructible_v<T>,
                 "Our simple implementation does not support types that are "
                 "not trivially destructable.");
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   if (policy == ExecutionPolicy::Par && first != last) {
     Iter newSrcStart = first;
     // cap the maximum buffer size, proved to be beneficial for unique with huge
     // array size
     constexpr size_t MAX_BUFFER_SIZE = 1 << 16;
-    T *tmp = new T[std::min(MAX_BUFFER_SIZE,
+    T* tmp = new T[std::min(MAX_BUFFER_SIZE,
                             static_cast<size_t>(std::distance(first, last)))];
     auto pred = [&](size_t i) { return tmp[i] != tmp[i + 1]; };
     do {
@@ -957,7 +1049,9 @@ Iter unique(ExecutionPolicy policy, Iter first, Iter last) {
       // this is not a typo, the index i is offset by 1, so to compare an
       // element with its predecessor we need to compare i and i + 1.
       details::CopyIfScanBody body(pred, tmp + 1, first + 1);
-      tbb::parallel_scan(tbb::blocked_range<size_t>(0, length - 1), body);
+      tbb::this_task_arena::isolate([&]() {
+        tbb::parallel_scan(tbb::blocked_range<size_t>(0, length - 1), body);
+      });
       first += body.get_sum() + 1;
       newSrcStart += length;
     } while (newSrcStart != last);
@@ -992,6 +1086,7 @@ Iter unique(Iter first, Iter last) {
 template <typename Iterator,
           typename T = typename std::iterator_traits<Iterator>::value_type>
 void stable_sort(ExecutionPolicy policy, Iterator first, Iterator last) {
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   details::SortFunctor<Iterator, T>()(policy, first, last);
 #else
@@ -1023,6 +1118,7 @@ template <typename Iterator,
           typename Comp = decltype(std::less<T>())>
 void stable_sort(ExecutionPolicy policy, Iterator first, Iterator last,
                  Comp comp) {
+  (void)policy;
 #if (MANIFOLD_PAR == 1)
   details::mergeSort(policy, first, last, comp);
 #else
@@ -1055,7 +1151,7 @@ template <typename InputIterator1, typename InputIterator2,
           typename OutputIterator>
 void scatter(ExecutionPolicy policy, InputIterator1 first, InputIterator1 last,
              InputIterator2 mapFirst, OutputIterator outputFirst) {
-  for_each(policy, countAt(0),
+  for_each(policy, countAt(0_uz),
            countAt(static_cast<size_t>(std::distance(first, last))),
            [first, mapFirst, outputFirst](size_t i) {
              outputFirst[mapFirst[i]] = first[i];
@@ -1087,7 +1183,7 @@ template <typename InputIterator, typename RandomAccessIterator,
 void gather(ExecutionPolicy policy, InputIterator mapFirst,
             InputIterator mapLast, RandomAccessIterator inputFirst,
             OutputIterator outputFirst) {
-  for_each(policy, countAt(0),
+  for_each(policy, countAt(0_uz),
            countAt(static_cast<size_t>(std::distance(mapFirst, mapLast))),
            [mapFirst, inputFirst, outputFirst](size_t i) {
              outputFirst[i] = inputFirst[mapFirst[i]];
@@ -1111,7 +1207,7 @@ void gather(InputIterator mapFirst, InputIterator mapLast,
 // Write `[0, last - first)` to the range `[first, last)`.
 template <typename Iterator>
 void sequence(ExecutionPolicy policy, Iterator first, Iterator last) {
-  for_each(policy, countAt(0),
+  for_each(policy, countAt(0_uz),
            countAt(static_cast<size_t>(std::distance(first, last))),
            [first](size_t i) { first[i] = i; });
 }

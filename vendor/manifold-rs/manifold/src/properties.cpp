@@ -14,9 +14,13 @@
 
 #include <limits>
 
-#include "./impl.h"
-#include "./parallel.h"
-#include "./tri_dist.h"
+#if MANIFOLD_PAR == 1
+#include <tbb/combinable.h>
+#endif
+
+#include "impl.h"
+#include "parallel.h"
+#include "tri_dist.h"
 
 namespace {
 using namespace manifold;
@@ -26,7 +30,7 @@ struct CurvatureAngles {
   VecView<double> gaussianCurvature;
   VecView<double> area;
   VecView<double> degree;
-  VecView<const Halfedge> halfedge;
+  const Halfedges& halfedge;
   VecView<const vec3> vertPos;
   VecView<const vec3> triNormal;
 
@@ -34,137 +38,57 @@ struct CurvatureAngles {
     vec3 edge[3];
     vec3 edgeLength(0.0);
     for (int i : {0, 1, 2}) {
-      const int startVert = halfedge[3 * tri + i].startVert;
-      const int endVert = halfedge[3 * tri + i].endVert;
+      const int edgeIdx = 3 * tri + i;
+      const int startVert = halfedge.Start(edgeIdx);
+      const int endVert = halfedge.End(edgeIdx);
       edge[i] = vertPos[endVert] - vertPos[startVert];
       edgeLength[i] = la::length(edge[i]);
       edge[i] /= edgeLength[i];
-      const int neighborTri = halfedge[3 * tri + i].pairedHalfedge / 3;
+      const int neighborTri = halfedge.Pair(edgeIdx) / 3;
       const double dihedral =
           0.25 * edgeLength[i] *
-          std::asin(la::dot(la::cross(triNormal[tri], triNormal[neighborTri]),
-                            edge[i]));
+          math::asin(la::dot(la::cross(triNormal[tri], triNormal[neighborTri]),
+                             edge[i]));
       AtomicAdd(meanCurvature[startVert], dihedral);
       AtomicAdd(meanCurvature[endVert], dihedral);
       AtomicAdd(degree[startVert], 1.0);
     }
 
     vec3 phi;
-    phi[0] = std::acos(-la::dot(edge[2], edge[0]));
-    phi[1] = std::acos(-la::dot(edge[0], edge[1]));
+    phi[0] = math::acos(-la::dot(edge[2], edge[0]));
+    phi[1] = math::acos(-la::dot(edge[0], edge[1]));
     phi[2] = kPi - phi[0] - phi[1];
     const double area3 = edgeLength[0] * edgeLength[1] *
                          la::length(la::cross(edge[0], edge[1])) / 6;
 
     for (int i : {0, 1, 2}) {
-      const int vert = halfedge[3 * tri + i].startVert;
+      const int vert = halfedge.Start(3 * tri + i);
       AtomicAdd(gaussianCurvature[vert], -phi[i]);
       AtomicAdd(area[vert], area3);
     }
   }
 };
 
-struct UpdateProperties {
-  VecView<ivec3> triProp;
-  VecView<double> properties;
-  VecView<uint8_t> counters;
-
-  VecView<const double> oldProperties;
-  VecView<const Halfedge> halfedge;
-  VecView<const double> meanCurvature;
-  VecView<const double> gaussianCurvature;
-  const int oldNumProp;
-  const int numProp;
-  const int gaussianIdx;
-  const int meanIdx;
-
-  void operator()(const size_t tri) {
-    for (const int i : {0, 1, 2}) {
-      const int vert = halfedge[3 * tri + i].startVert;
-      if (oldNumProp == 0) {
-        triProp[tri][i] = vert;
-      }
-      const int propVert = triProp[tri][i];
-
-      auto old = std::atomic_exchange(
-          reinterpret_cast<std::atomic<uint8_t>*>(&counters[propVert]),
-          static_cast<uint8_t>(1));
-      if (old == 1) continue;
-
-      for (int p = 0; p < oldNumProp; ++p) {
-        properties[numProp * propVert + p] =
-            oldProperties[oldNumProp * propVert + p];
-      }
-
-      if (gaussianIdx >= 0) {
-        properties[numProp * propVert + gaussianIdx] = gaussianCurvature[vert];
-      }
-      if (meanIdx >= 0) {
-        properties[numProp * propVert + meanIdx] = meanCurvature[vert];
-      }
-    }
-  }
-};
-
 struct CheckHalfedges {
-  VecView<const Halfedge> halfedges;
+  const Halfedges& halfedges;
 
   bool operator()(size_t edge) const {
-    const Halfedge halfedge = halfedges[edge];
-    if (halfedge.startVert == -1 || halfedge.endVert == -1) return true;
-    if (halfedge.pairedHalfedge == -1) return false;
-
-    const Halfedge paired = halfedges[halfedge.pairedHalfedge];
-    bool good = true;
-    good &= paired.pairedHalfedge == static_cast<int>(edge);
-    good &= halfedge.startVert != halfedge.endVert;
-    good &= halfedge.startVert == paired.endVert;
-    good &= halfedge.endVert == paired.startVert;
-    return good;
-  }
-};
-
-struct CheckCCW {
-  VecView<const Halfedge> halfedges;
-  VecView<const vec3> vertPos;
-  VecView<const vec3> triNormal;
-  const double tol;
-
-  bool operator()(size_t face) const {
-    if (halfedges[3 * face].pairedHalfedge < 0) return true;
-
-    const mat2x3 projection = GetAxisAlignedProjection(triNormal[face]);
-    vec2 v[3];
-    for (int i : {0, 1, 2})
-      v[i] = projection * vertPos[halfedges[3 * face + i].startVert];
-
-    int ccw = CCW(v[0], v[1], v[2], std::abs(tol));
-    bool check = tol > 0 ? ccw >= 0 : ccw == 0;
-
-#ifdef MANIFOLD_DEBUG
-    if (tol > 0 && !check) {
-      vec2 v1 = v[1] - v[0];
-      vec2 v2 = v[2] - v[0];
-      double area = v1.x * v2.y - v1.y * v2.x;
-      double base2 = std::max(la::dot(v1, v1), la::dot(v2, v2));
-      double base = std::sqrt(base2);
-      vec3 V0 = vertPos[halfedges[3 * face].startVert];
-      vec3 V1 = vertPos[halfedges[3 * face + 1].startVert];
-      vec3 V2 = vertPos[halfedges[3 * face + 2].startVert];
-      vec3 norm = la::cross(V1 - V0, V2 - V0);
-      printf(
-          "Tri %ld does not match normal, approx height = %g, base = %g\n"
-          "tol = %g, area2 = %g, base2*tol2 = %g\n"
-          "normal = %g, %g, %g\n"
-          "norm = %g, %g, %g\nverts: %d, %d, %d\n",
-          static_cast<long>(face), area / base, base, tol, area * area,
-          base2 * tol * tol, triNormal[face].x, triNormal[face].y,
-          triNormal[face].z, norm.x, norm.y, norm.z,
-          halfedges[3 * face].startVert, halfedges[3 * face + 1].startVert,
-          halfedges[3 * face + 2].startVert);
+    const int start = halfedges.Start(edge);
+    const int end = halfedges.End(edge);
+    const int pair = halfedges.Pair(edge);
+    if (start == -1 && end == -1 && pair == -1) return true;
+    if (halfedges.Start(NextHalfedge(edge)) == -1 ||
+        halfedges.Start(NextHalfedge(NextHalfedge(edge))) == -1) {
+      return false;
     }
-#endif
-    return check;
+    if (pair == -1) return false;
+
+    bool good = true;
+    good &= halfedges.Pair(pair) == static_cast<int>(edge);
+    good &= start != end;
+    good &= start == halfedges.End(pair);
+    good &= end == halfedges.Start(pair);
+    return good;
   }
 };
 }  // namespace
@@ -177,8 +101,9 @@ namespace manifold {
  */
 bool Manifold::Impl::IsManifold() const {
   if (halfedge_.size() == 0) return true;
+  if (halfedge_.size() % 3 != 0) return false;
   return all_of(countAt(0_uz), countAt(halfedge_.size()),
-                CheckHalfedges({halfedge_}));
+                CheckHalfedges{halfedge_});
 }
 
 /**
@@ -189,7 +114,7 @@ bool Manifold::Impl::Is2Manifold() const {
   if (halfedge_.size() == 0) return true;
   if (!IsManifold()) return false;
 
-  Vec<Halfedge> halfedge(halfedge_);
+  Vec<Halfedge> halfedge = halfedge_.ToData();
   stable_sort(halfedge.begin(), halfedge.end());
 
   return all_of(
@@ -211,55 +136,58 @@ std::mutex dump_lock;
  * Note that this is not checking for epsilon-validity.
  */
 bool Manifold::Impl::IsSelfIntersecting() const {
-  const double epsilonSq = epsilon_ * epsilon_;
+  const double ep = 2 * epsilon_;
+  const double epsilonSq = ep * ep;
   Vec<Box> faceBox;
   Vec<uint32_t> faceMorton;
   GetFaceBoxMorton(faceBox, faceMorton);
-  SparseIndices collisions = collider_.Collisions<true>(faceBox.cview());
 
-  const bool verbose = ManifoldParams().verbose;
-  return !all_of(countAt(0), countAt(collisions.size()), [&](size_t i) {
-    size_t x = collisions.Get(i, false);
-    size_t y = collisions.Get(i, true);
-    std::array<vec3, 3> tri_x, tri_y;
+  std::atomic<bool> intersecting(false);
+
+  auto f = [&](int tri0, int tri1) {
+    std::array<vec3, 3> triVerts0, triVerts1;
     for (int i : {0, 1, 2}) {
-      tri_x[i] = vertPos_[halfedge_[3 * x + i].startVert];
-      tri_y[i] = vertPos_[halfedge_[3 * y + i].startVert];
+      triVerts0[i] = vertPos_[halfedge_.Start(3 * tri0 + i)];
+      triVerts1[i] = vertPos_[halfedge_.Start(3 * tri1 + i)];
     }
-    // if triangles x and y share a vertex, return true to skip the
+    // if triangles tri0 and tri1 share a vertex, return true to skip the
     // check. we relax the sharing criteria a bit to allow for at most
     // distance epsilon squared
     for (int i : {0, 1, 2})
       for (int j : {0, 1, 2})
-        if (distance2(tri_x[i], tri_y[j]) <= epsilonSq) return true;
+        if (distance2(triVerts0[i], triVerts1[j]) <= epsilonSq) return;
 
-    if (DistanceTriangleTriangleSquared(tri_x, tri_y) == 0.0) {
+    if (DistanceTriangleTriangleSquared(triVerts0, triVerts1) == 0.0) {
       // try to move the triangles around the normal of the other face
-      std::array<vec3, 3> tmp_x, tmp_y;
-      for (int i : {0, 1, 2}) tmp_x[i] = tri_x[i] + epsilon_ * faceNormal_[y];
-      if (DistanceTriangleTriangleSquared(tmp_x, tri_y) > 0.0) return true;
-      for (int i : {0, 1, 2}) tmp_x[i] = tri_x[i] - epsilon_ * faceNormal_[y];
-      if (DistanceTriangleTriangleSquared(tmp_x, tri_y) > 0.0) return true;
-      for (int i : {0, 1, 2}) tmp_y[i] = tri_y[i] + epsilon_ * faceNormal_[x];
-      if (DistanceTriangleTriangleSquared(tri_x, tmp_y) > 0.0) return true;
-      for (int i : {0, 1, 2}) tmp_y[i] = tri_y[i] - epsilon_ * faceNormal_[x];
-      if (DistanceTriangleTriangleSquared(tri_x, tmp_y) > 0.0) return true;
+      std::array<vec3, 3> tmp0, tmp1;
+      for (int i : {0, 1, 2}) tmp0[i] = triVerts0[i] + ep * faceNormal_[tri1];
+      if (DistanceTriangleTriangleSquared(tmp0, triVerts1) > 0.0) return;
+      for (int i : {0, 1, 2}) tmp0[i] = triVerts0[i] - ep * faceNormal_[tri1];
+      if (DistanceTriangleTriangleSquared(tmp0, triVerts1) > 0.0) return;
+      for (int i : {0, 1, 2}) tmp1[i] = triVerts1[i] + ep * faceNormal_[tri0];
+      if (DistanceTriangleTriangleSquared(triVerts0, tmp1) > 0.0) return;
+      for (int i : {0, 1, 2}) tmp1[i] = triVerts1[i] - ep * faceNormal_[tri0];
+      if (DistanceTriangleTriangleSquared(triVerts0, tmp1) > 0.0) return;
 
 #ifdef MANIFOLD_DEBUG
-      if (verbose) {
+      if (ManifoldParams().verbose > 0) {
         dump_lock.lock();
         std::cout << "intersecting:" << std::endl;
-        for (int i : {0, 1, 2}) std::cout << tri_x[i] << " ";
+        for (int i : {0, 1, 2}) std::cout << triVerts0[i] << " ";
         std::cout << std::endl;
-        for (int i : {0, 1, 2}) std::cout << tri_y[i] << " ";
+        for (int i : {0, 1, 2}) std::cout << triVerts1[i] << " ";
         std::cout << std::endl;
         dump_lock.unlock();
       }
 #endif
-      return false;
+      intersecting.store(true);
     }
-    return true;
-  });
+  };
+
+  auto recorder = MakeSimpleRecorder(f);
+  collider_.Collisions<true>(recorder, faceBox.cview());
+
+  return intersecting.load();
 }
 
 /**
@@ -267,18 +195,71 @@ bool Manifold::Impl::IsSelfIntersecting() const {
  */
 bool Manifold::Impl::MatchesTriNormals() const {
   if (halfedge_.size() == 0 || faceNormal_.size() != NumTri()) return true;
-  return all_of(countAt(0_uz), countAt(NumTri()),
-                CheckCCW({halfedge_, vertPos_, faceNormal_, 2 * epsilon_}));
+  return all_of(countAt(0_uz), countAt(NumTri()), [this](size_t face) {
+    if (halfedge_.Pair(3 * face) < 0) return true;
+
+    const mat2x3 projection = GetAxisAlignedProjection(faceNormal_[face]);
+    vec2 v[3];
+    double max = -std::numeric_limits<double>::infinity();
+    double min = std::numeric_limits<double>::infinity();
+    for (int i : {0, 1, 2}) {
+      const vec3 p = vertPos_[halfedge_.Start(3 * face + i)];
+      v[i] = projection * p;
+      const double d = la::dot(p, faceNormal_[face]);
+      if (!std::isfinite(d)) return true;
+      max = std::max(max, d);
+      min = std::min(min, d);
+    }
+    if (max - min > 2 * tolerance_) return false;
+
+    const int ccw = CCW(v[0], v[1], v[2], epsilon_ * 2);
+    return ccw >= 0;
+  });
 }
 
 /**
- * Returns the number of triangles that are colinear within epsilon_.
+ * Returns the number of triangles that are colinear within tolerance_.
  */
 int Manifold::Impl::NumDegenerateTris() const {
   if (halfedge_.size() == 0 || faceNormal_.size() != NumTri()) return true;
-  return count_if(
-      countAt(0_uz), countAt(NumTri()),
-      CheckCCW({halfedge_, vertPos_, faceNormal_, -1 * epsilon_ / 2}));
+  return count_if(countAt(0_uz), countAt(NumTri()), [this](size_t face) {
+    if (halfedge_.Pair(3 * face) < 0) return true;
+
+    const mat2x3 projection = GetAxisAlignedProjection(faceNormal_[face]);
+    vec2 v[3];
+    for (int i : {0, 1, 2})
+      v[i] = projection * vertPos_[halfedge_.Start(3 * face + i)];
+
+    const int ccw = CCW(v[0], v[1], v[2], tolerance_ / 2);
+    return ccw == 0;
+  });
+}
+
+/**
+ * Returns true if the Manifold is genus 0 and contains no concave edges.
+ */
+bool Manifold::Impl::IsConvex() const {
+  // Convex shape must have genus of 0
+  int chi = NumVert() - NumEdge() + NumTri();
+  int genus = 1 - chi / 2;
+  if (genus != 0) return false;
+
+  // Iterate across all edges; return false if any edges are concave
+  const size_t nbEdges = halfedge_.size();
+  return all_of(countAt(0_uz), countAt(nbEdges), [this](size_t idx) {
+    if (!halfedge_.IsForward(idx)) return true;
+
+    const vec3 normal0 = faceNormal_[idx / 3];
+    const vec3 normal1 = faceNormal_[halfedge_.Pair(idx) / 3];
+
+    if (linalg::all(linalg::equal(normal0, normal1))) return true;
+
+    const vec3 edgeVec =
+        vertPos_[halfedge_.End(idx)] - vertPos_[halfedge_.Start(idx)];
+    const bool convex =
+        linalg::dot(edgeVec, linalg::cross(normal0, normal1)) > 0;
+    return convex;
+  });
 }
 
 double Manifold::Impl::GetProperty(Property prop) const {
@@ -286,17 +267,16 @@ double Manifold::Impl::GetProperty(Property prop) const {
   if (IsEmpty()) return 0;
 
   auto Volume = [this](size_t tri) {
-    const vec3 v = vertPos_[halfedge_[3 * tri].startVert];
-    vec3 crossP = la::cross(vertPos_[halfedge_[3 * tri + 1].startVert] - v,
-                            vertPos_[halfedge_[3 * tri + 2].startVert] - v);
+    const vec3 v = vertPos_[halfedge_.Start(3 * tri)];
+    vec3 crossP = la::cross(vertPos_[halfedge_.Start(3 * tri + 1)] - v,
+                            vertPos_[halfedge_.Start(3 * tri + 2)] - v);
     return la::dot(crossP, v) / 6.0;
   };
 
   auto Area = [this](size_t tri) {
-    const vec3 v = vertPos_[halfedge_[3 * tri].startVert];
-    return la::length(
-               la::cross(vertPos_[halfedge_[3 * tri + 1].startVert] - v,
-                         vertPos_[halfedge_[3 * tri + 2].startVert] - v)) /
+    const vec3 v = vertPos_[halfedge_.Start(3 * tri)];
+    return la::length(la::cross(vertPos_[halfedge_.Start(3 * tri + 1)] - v,
+                                vertPos_[halfedge_.Start(3 * tri + 2)] - v)) /
            2.0;
   };
 
@@ -323,8 +303,8 @@ void Manifold::Impl::CalculateCurvature(int gaussianIdx, int meanIdx) {
   Vec<double> degree(NumVert(), 0);
   auto policy = autoPolicy(NumTri(), 1e4);
   for_each(policy, countAt(0_uz), countAt(NumTri()),
-           CurvatureAngles({vertMeanCurvature, vertGaussianCurvature, vertArea,
-                            degree, halfedge_, vertPos_, faceNormal_}));
+           CurvatureAngles{vertMeanCurvature, vertGaussianCurvature, vertArea,
+                           degree, halfedge_, vertPos_, faceNormal_});
   for_each_n(policy, countAt(0), NumVert(),
              [&vertMeanCurvature, &vertGaussianCurvature, &vertArea,
               &degree](const int vert) {
@@ -335,20 +315,36 @@ void Manifold::Impl::CalculateCurvature(int gaussianIdx, int meanIdx) {
 
   const int oldNumProp = NumProp();
   const int numProp = std::max(oldNumProp, std::max(gaussianIdx, meanIdx) + 1);
-  const Vec<double> oldProperties = meshRelation_.properties;
-  meshRelation_.properties = Vec<double>(numProp * NumPropVert(), 0);
-  meshRelation_.numProp = numProp;
-  if (meshRelation_.triProperties.size() == 0) {
-    meshRelation_.triProperties.resize(NumTri());
-  }
+  const Vec<double> oldProperties = properties_;
+  properties_ = Vec<double>(numProp * NumPropVert(), 0);
+  numProp_ = numProp;
 
-  const Vec<uint8_t> counters(NumPropVert(), 0);
-  for_each_n(
-      policy, countAt(0_uz), NumTri(),
-      UpdateProperties({meshRelation_.triProperties, meshRelation_.properties,
-                        counters, oldProperties, halfedge_, vertMeanCurvature,
-                        vertGaussianCurvature, oldNumProp, numProp, gaussianIdx,
-                        meanIdx}));
+  Vec<uint8_t> counters(NumPropVert(), 0);
+  for_each_n(policy, countAt(0_uz), NumTri(), [&](const size_t tri) {
+    for (const int i : {0, 1, 2}) {
+      const int edge = 3 * tri + i;
+      const int vert = halfedge_.Start(edge);
+      const int propVert = halfedge_.Prop(edge);
+
+      auto old = std::atomic_exchange(
+          reinterpret_cast<std::atomic<uint8_t>*>(&counters[propVert]),
+          static_cast<uint8_t>(1));
+      if (old == 1) continue;
+
+      for (int p = 0; p < oldNumProp; ++p) {
+        properties_[numProp * propVert + p] =
+            oldProperties[oldNumProp * propVert + p];
+      }
+
+      if (gaussianIdx >= 0) {
+        properties_[numProp * propVert + gaussianIdx] =
+            vertGaussianCurvature[vert];
+      }
+      if (meanIdx >= 0) {
+        properties_[numProp * propVert + meanIdx] = vertMeanCurvature[vert];
+      }
+    }
+  });
 }
 
 /**
@@ -370,6 +366,11 @@ void Manifold::Impl::CalculateBBox() {
                        if (std::isnan(b.x)) return a;
                        return la::max(a, b);
                      });
+
+  if (!bBox_.IsFinite()) {
+    // Decimated out of existence - early out.
+    MakeEmpty(Error::NoError);
+  }
 }
 
 /**
@@ -404,6 +405,36 @@ bool Manifold::Impl::IsIndexInBounds(VecView<const ivec3> triVerts) const {
   return minmax[0] >= 0 && minmax[1] < static_cast<int>(NumVert());
 }
 
+struct MinDistanceRecorder {
+  using Local = double;
+  const Manifold::Impl &self, &other;
+#if MANIFOLD_PAR == 1
+  tbb::combinable<double> store = tbb::combinable<double>(
+      []() { return std::numeric_limits<double>::infinity(); });
+  Local& local() { return store.local(); }
+  double get() {
+    double result = std::numeric_limits<double>::infinity();
+    store.combine_each([&](double& val) { result = std::min(result, val); });
+    return result;
+  }
+#else
+  double result = std::numeric_limits<double>::infinity();
+  Local& local() { return result; }
+  double get() { return result; }
+#endif
+
+  void record(int triOther, int tri, double& minDistance) {
+    std::array<vec3, 3> p;
+    std::array<vec3, 3> q;
+
+    for (const int j : {0, 1, 2}) {
+      p[j] = self.vertPos_[self.halfedge_.Start(3 * tri + j)];
+      q[j] = other.vertPos_[other.halfedge_.Start(3 * triOther + j)];
+    }
+    minDistance = std::min(minDistance, DistanceTriangleTriangleSquared(p, q));
+  }
+};
+
 /*
  * Returns the minimum gap between two manifolds. Returns a double between
  * 0 and searchLength.
@@ -422,26 +453,10 @@ double Manifold::Impl::MinGap(const Manifold::Impl& other,
                          box.max + vec3(searchLength));
             });
 
-  SparseIndices collisions = collider_.Collisions(faceBoxOther.cview());
-
-  double minDistanceSquared = transform_reduce(
-      countAt(0_uz), countAt(collisions.size()), searchLength * searchLength,
-      [](double a, double b) { return std::min(a, b); },
-      [&collisions, this, &other](int i) {
-        const int tri = collisions.Get(i, 1);
-        const int triOther = collisions.Get(i, 0);
-
-        std::array<vec3, 3> p;
-        std::array<vec3, 3> q;
-
-        for (const int j : {0, 1, 2}) {
-          p[j] = vertPos_[halfedge_[3 * tri + j].startVert];
-          q[j] = other.vertPos_[other.halfedge_[3 * triOther + j].startVert];
-        }
-
-        return DistanceTriangleTriangleSquared(p, q);
-      });
-
+  MinDistanceRecorder recorder{*this, other};
+  collider_.Collisions<false>(recorder, faceBoxOther.cview(), false);
+  double minDistanceSquared =
+      std::min(recorder.get(), searchLength * searchLength);
   return sqrt(minDistanceSquared);
 };
 

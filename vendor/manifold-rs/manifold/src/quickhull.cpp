@@ -18,9 +18,12 @@
 #include "quickhull.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
+#include <unordered_map>
 
-#include "./impl.h"
+#include "execution_impl.h"
+#include "impl.h"
 
 namespace manifold {
 
@@ -221,9 +224,9 @@ HalfEdgeMesh::HalfEdgeMesh(const MeshBuilder& builderObject,
 /*
  * Implementation of the algorithm
  */
-std::pair<Vec<Halfedge>, Vec<vec3>> QuickHull::buildMesh(double epsilon) {
+std::pair<SharedVec<Halfedge>, Vec<vec3>> QuickHull::buildMesh(double epsilon) {
   if (originalVertexData.size() == 0) {
-    return {Vec<Halfedge>(), Vec<vec3>()};
+    return {SharedVec<Halfedge>(), Vec<vec3>()};
   }
 
   // Very first: find extreme values and use them to compute the scale of the
@@ -239,18 +242,16 @@ std::pair<Vec<Halfedge>, Vec<vec3>> QuickHull::buildMesh(double epsilon) {
   // dimensional subspace of R^3.
   planar = false;
   createConvexHalfedgeMesh();
+
   if (planar) {
+    // the extra point index was set to make the mesh has volume, we now set its
+    // coordinate back to make the coordinates correct
     const int extraPointIndex = planarPointCloudTemp.size() - 1;
-    for (auto& he : mesh.halfedges) {
-      if (he.endVert == extraPointIndex) {
-        he.endVert = 0;
-      }
-    }
-    planarPointCloudTemp.clear();
+    planarPointCloudTemp.back() = planarPointCloudTemp.front();
   }
 
   // reorder halfedges
-  Vec<Halfedge> halfedges(mesh.halfedges.size());
+  SharedVec<Halfedge> halfedges(mesh.halfedges.size());
   Vec<int> halfedgeToFace(mesh.halfedges.size());
   Vec<int> counts(mesh.halfedges.size(), 0);
   Vec<int> mapping(mesh.halfedges.size());
@@ -289,7 +290,7 @@ std::pair<Vec<Halfedge>, Vec<vec3>> QuickHull::buildMesh(double epsilon) {
   for_each(
       autoPolicy(halfedges.size()), halfedges.begin(), halfedges.end(),
       [&](Halfedge& he) { he.pairedHalfedge = mapping[he.pairedHalfedge]; });
-  counts.resize(originalVertexData.size() + 1);
+  counts.resize_nofill(originalVertexData.size() + 1);
   fill(counts.begin(), counts.end(), 0);
 
   // remove unused vertices
@@ -649,9 +650,13 @@ void QuickHull::setupInitialTetrahedron() {
 
   // If we have at most 4 points, just return a degenerate tetrahedron:
   if (vertexCount <= 4) {
-    size_t v[4] = {0, std::min((size_t)1, vertexCount - 1),
-                   std::min((size_t)2, vertexCount - 1),
-                   std::min((size_t)3, vertexCount - 1)};
+    if (vertexCount < 4) {
+      planarPointCloudTemp = Vec<vec3>(originalVertexData);
+      while (planarPointCloudTemp.size() < 4)
+        planarPointCloudTemp.push_back(planarPointCloudTemp.back());
+      originalVertexData = planarPointCloudTemp;
+    }
+    size_t v[4] = {0, 1, 2, 3};
     const vec3 N =
         getTriangleNormal(originalVertexData[v[0]], originalVertexData[v[1]],
                           originalVertexData[v[2]]);
@@ -679,9 +684,7 @@ void QuickHull::setupInitialTetrahedron() {
   }
   if (maxD == epsilonSquared) {
     // A degenerate case: the point cloud seems to consists of a single point
-    return mesh.setup(0, std::min((size_t)1, vertexCount - 1),
-                      std::min((size_t)2, vertexCount - 1),
-                      std::min((size_t)3, vertexCount - 1));
+    return mesh.setup(0, 1, 2, 3);
   }
   DEBUG_ASSERT(selectedPoints.first != selectedPoints.second, logicErr,
                "degenerate selectedPoints");
@@ -704,32 +707,16 @@ void QuickHull::setupInitialTetrahedron() {
   }
   if (maxD == epsilonSquared) {
     // It appears that the point cloud belongs to a 1 dimensional subspace of
-    // R^3: convex hull has no volume => return a thin triangle Pick any point
-    // other than selectedPoints.first and selectedPoints.second as the third
-    // point of the triangle
-    auto it =
-        std::find_if(originalVertexData.begin(), originalVertexData.end(),
-                     [&](const vec3& ve) {
-                       return ve != originalVertexData[selectedPoints.first] &&
-                              ve != originalVertexData[selectedPoints.second];
-                     });
-    const size_t thirdPoint =
-        (it == originalVertexData.end())
-            ? selectedPoints.first
-            : std::distance(originalVertexData.begin(), it);
-    it =
-        std::find_if(originalVertexData.begin(), originalVertexData.end(),
-                     [&](const vec3& ve) {
-                       return ve != originalVertexData[selectedPoints.first] &&
-                              ve != originalVertexData[selectedPoints.second] &&
-                              ve != originalVertexData[thirdPoint];
-                     });
-    const size_t fourthPoint =
-        (it == originalVertexData.end())
-            ? selectedPoints.first
-            : std::distance(originalVertexData.begin(), it);
-    return mesh.setup(selectedPoints.first, selectedPoints.second, thirdPoint,
-                      fourthPoint);
+    // R^3: convex hull has no volume => return a degenerate tetrahedron
+    // Pick two points other than selectedPoints.first and selectedPoints.second
+    size_t firstPoint = selectedPoints.first;
+    size_t secondPoint = selectedPoints.second;
+    size_t thirdPoint = 0;
+    while (thirdPoint == firstPoint || thirdPoint == secondPoint) thirdPoint++;
+    size_t fourthPoint = thirdPoint + 1;
+    while (fourthPoint == firstPoint || fourthPoint == secondPoint)
+      fourthPoint++;
+    return mesh.setup(firstPoint, secondPoint, thirdPoint, fourthPoint);
   }
 
   // These three points form the base triangle for our tetrahedron.
@@ -804,7 +791,7 @@ void QuickHull::setupInitialTetrahedron() {
 
 std::unique_ptr<Vec<size_t>> QuickHull::getIndexVectorFromPool() {
   auto r = indexVectorPool.get();
-  r->resize(0);
+  r->clear();
   return r;
 }
 
@@ -839,22 +826,40 @@ bool QuickHull::addPointToFace(typename MeshBuilder::Face& f,
 }
 
 // Wrapper to call the QuickHull algorithm with the given vertex data to build
-// the Impl
-void Manifold::Impl::Hull(VecView<vec3> vertPos) {
+// the Impl. Cancellation is observed between QuickHull's hot kernel and the
+// SortGeometry post-pass, plus during SortGeometry itself (which is
+// ctx-aware). QuickHull's own loop is cancel-blind for now -- the
+// granularity is "after buildMesh returns", matching how Refine handles
+// Subdivide.
+void Manifold::Impl::Hull(VecView<const vec3> vertPos,
+                          ExecutionContext::Impl* ctx) {
   size_t numVert = vertPos.size();
-  if (numVert < 4) {
-    status_ = Error::InvalidConstruction;
+  // empty hull
+  if (vertPos.empty()) return;
+  if (IsCancelled(ctx)) {
+    MakeEmpty(Error::Cancelled);
     return;
   }
-
   QuickHull qh(vertPos);
-  std::tie(halfedge_, vertPos_) = qh.buildMesh();
+  Vec<Halfedge> Halfedge;
+  std::tie(Halfedge, vertPos_) = qh.buildMesh();
+  halfedge_ = Halfedges(std::move(Halfedge));
+  if (IsCancelled(ctx)) {
+    MakeEmpty(Error::Cancelled);
+    return;
+  }
   CalculateBBox();
   SetEpsilon();
-  CalculateNormals();
   InitializeOriginal();
-  Finish();
-  CreateFaces();
+  SortGeometry(ctx);
+  // SortGeometry returns silently on cancel, leaving the Impl in a
+  // partial state; catch that here so SetNormalsAndCoplanar doesn't
+  // run on broken geometry and the caller sees a Cancelled result.
+  if (IsCancelled(ctx)) {
+    MakeEmpty(Error::Cancelled);
+    return;
+  }
+  SetNormalsAndCoplanar();
 }
 
 }  // namespace manifold

@@ -15,8 +15,10 @@
 #include <atomic>
 #include <set>
 
-#include "./impl.h"
-#include "./parallel.h"
+#include "disjoint_sets.h"
+#include "impl.h"
+#include "parallel.h"
+#include "shared.h"
 
 namespace {
 using namespace manifold;
@@ -31,41 +33,10 @@ uint32_t MortonCode(vec3 position, Box bBox) {
   return Collider::MortonCode(position, bBox);
 }
 
-struct Reindex {
-  VecView<const int> indexInv;
-
-  void operator()(Halfedge& edge) {
-    if (edge.startVert < 0) return;
-    edge.startVert = indexInv[edge.startVert];
-    edge.endVert = indexInv[edge.endVert];
-  }
-};
-
-struct MarkProp {
-  VecView<int> keep;
-
-  void operator()(ivec3 triProp) {
-    for (const int i : {0, 1, 2}) {
-      reinterpret_cast<std::atomic<int>*>(&keep[triProp[i]])
-          ->store(1, std::memory_order_relaxed);
-    }
-  }
-};
-
-struct ReindexProps {
-  VecView<const int> old2new;
-
-  void operator()(ivec3& triProp) {
-    for (const int i : {0, 1, 2}) {
-      triProp[i] = old2new[triProp[i]];
-    }
-  }
-};
-
 struct ReindexFace {
-  VecView<Halfedge> halfedge;
+  Halfedges& halfedge;
   VecView<vec4> halfedgeTangent;
-  VecView<const Halfedge> oldHalfedge;
+  const Halfedges& oldHalfedge;
   VecView<const vec4> oldHalfedgeTangent;
   VecView<const int> faceNew2Old;
   VecView<const int> faceOld2New;
@@ -74,12 +45,12 @@ struct ReindexFace {
     const int oldFace = faceNew2Old[newFace];
     for (const int i : {0, 1, 2}) {
       const int oldEdge = 3 * oldFace + i;
-      Halfedge edge = oldHalfedge[oldEdge];
+      Halfedge edge = oldHalfedge.Get(oldEdge);
       const int pairedFace = edge.pairedHalfedge / 3;
       const int offset = edge.pairedHalfedge - 3 * pairedFace;
       edge.pairedHalfedge = 3 * faceOld2New[pairedFace] + offset;
       const int newEdge = 3 * newFace + i;
-      halfedge[newEdge] = edge;
+      halfedge.Set(newEdge, edge.startVert, edge.pairedHalfedge, edge.propVert);
       if (!oldHalfedgeTangent.empty()) {
         halfedgeTangent[newEdge] = oldHalfedgeTangent[oldEdge];
       }
@@ -180,17 +151,19 @@ bool MergeMeshGLP(MeshGLP<Precision, I>& mesh) {
   Permute(vertMorton, vertNew2Old);
   Permute(vertBox, vertNew2Old);
   Permute(openVerts, vertNew2Old);
-  Collider collider(vertBox, vertMorton);
-  SparseIndices toMerge = collider.Collisions<true>(vertBox.cview());
 
-  UnionFind<> uf(numVert);
+  Collider collider(vertBox, vertMorton);
+  DisjointSets uf(numVert);
+
+  auto f = [&uf, &openVerts](int a, int b) {
+    return uf.unite(openVerts[a], openVerts[b]);
+  };
+  auto recorder = MakeSimpleRecorder(f);
+  collider.Collisions<true>(recorder, vertBox.cview(), false);
+
   for (size_t i = 0; i < mesh.mergeFromVert.size(); ++i) {
-    uf.unionXY(static_cast<int>(mesh.mergeFromVert[i]),
-               static_cast<int>(mesh.mergeToVert[i]));
-  }
-  for (size_t i = 0; i < toMerge.size(); ++i) {
-    uf.unionXY(openVerts[toMerge.Get(i, false)],
-               openVerts[toMerge.Get(i, true)]);
+    uf.unite(static_cast<int>(mesh.mergeFromVert[i]),
+             static_cast<int>(mesh.mergeToVert[i]));
   }
 
   mesh.mergeToVert.clear();
@@ -205,6 +178,7 @@ bool MergeMeshGLP(MeshGLP<Precision, I>& mesh) {
 
   return true;
 }
+
 }  // namespace
 
 namespace manifold {
@@ -214,65 +188,71 @@ namespace manifold {
  * rest of the internal data structures. This function also removes the verts
  * and halfedges flagged for removal (NaN verts and -1 halfedges).
  */
-void Manifold::Impl::Finish() {
-  if (halfedge_.size() == 0) return;
-
-  CalculateBBox();
-  SetEpsilon(epsilon_);
-  if (!bBox_.IsFinite()) {
-    // Decimated out of existence - early out.
-    MarkFailure(Error::NoError);
+void Manifold::Impl::SortGeometry(ExecutionContext::Impl* ctx) {
+  if (halfedge_.size() == 0) {
+    collider_ = {};
     return;
   }
 
-  SortVerts();
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
+
+  halfedge_.MakeUnique();
+  SortVerts(ctx);
+  if (IsCancelled(ctx)) return;
   Vec<Box> faceBox;
   Vec<uint32_t> faceMorton;
-  GetFaceBoxMorton(faceBox, faceMorton);
-  SortFaces(faceBox, faceMorton);
-  if (halfedge_.size() == 0) return;
-  CompactProps();
+  GetFaceBoxMorton(faceBox, faceMorton, ctx);
+  if (IsCancelled(ctx)) return;
+  SortFaces(faceBox, faceMorton, ctx);
+  if (IsCancelled(ctx)) return;
+  if (halfedge_.size() == 0) {
+    collider_ = {};
+    return;
+  }
+  collider_ = Collider(faceBox, faceMorton);
+  bBox_ = collider_.GetBoundingBox();
+  CompactProps(ctx);
+  if (IsCancelled(ctx)) return;
 
   DEBUG_ASSERT(halfedge_.size() % 6 == 0, topologyErr,
                "Not an even number of faces after sorting faces!");
 
 #ifdef MANIFOLD_DEBUG
-  auto MaxOrMinus = [](int a, int b) {
-    return std::min(a, b) < 0 ? -1 : std::max(a, b);
-  };
-  int face = 0;
-  Halfedge extrema = {0, 0, 0};
-  for (size_t i = 0; i < halfedge_.size(); i++) {
-    Halfedge e = halfedge_[i];
-    if (!e.IsForward()) std::swap(e.startVert, e.endVert);
-    extrema.startVert = std::min(extrema.startVert, e.startVert);
-    extrema.endVert = std::min(extrema.endVert, e.endVert);
-    extrema.pairedHalfedge =
-        MaxOrMinus(extrema.pairedHalfedge, e.pairedHalfedge);
-    face = MaxOrMinus(face, i / 3);
+  if (ManifoldParams().intermediateChecks) {
+    auto MaxOrMinus = [](int a, int b) {
+      return std::min(a, b) < 0 ? -1 : std::max(a, b);
+    };
+    int face = 0;
+    Halfedge extrema = {0, 0, 0};
+    for (size_t i = 0; i < halfedge_.size(); i++) {
+      const int start =
+          halfedge_.IsForward(i) ? halfedge_.Start(i) : halfedge_.End(i);
+      const int end =
+          halfedge_.IsForward(i) ? halfedge_.End(i) : halfedge_.Start(i);
+      extrema.startVert = std::min(extrema.startVert, start);
+      extrema.endVert = std::min(extrema.endVert, end);
+      extrema.pairedHalfedge =
+          MaxOrMinus(extrema.pairedHalfedge, halfedge_.Pair(i));
+      face = MaxOrMinus(face, i / 3);
+    }
+    DEBUG_ASSERT(extrema.startVert >= 0, topologyErr,
+                 "Vertex index is negative!");
+    DEBUG_ASSERT(extrema.endVert < static_cast<int>(NumVert()), topologyErr,
+                 "Vertex index exceeds number of verts!");
+    DEBUG_ASSERT(extrema.pairedHalfedge >= 0, topologyErr,
+                 "Halfedge index is negative!");
+    DEBUG_ASSERT(extrema.pairedHalfedge < 2 * static_cast<int>(NumEdge()),
+                 topologyErr, "Halfedge index exceeds number of halfedges!");
+    DEBUG_ASSERT(face >= 0, topologyErr, "Face index is negative!");
+    DEBUG_ASSERT(face < static_cast<int>(NumTri()), topologyErr,
+                 "Face index exceeds number of faces!");
   }
-  DEBUG_ASSERT(extrema.startVert >= 0, topologyErr,
-               "Vertex index is negative!");
-  DEBUG_ASSERT(extrema.endVert < static_cast<int>(NumVert()), topologyErr,
-               "Vertex index exceeds number of verts!");
-  DEBUG_ASSERT(extrema.pairedHalfedge >= 0, topologyErr,
-               "Halfedge index is negative!");
-  DEBUG_ASSERT(extrema.pairedHalfedge < 2 * static_cast<int>(NumEdge()),
-               topologyErr, "Halfedge index exceeds number of halfedges!");
-  DEBUG_ASSERT(face >= 0, topologyErr, "Face index is negative!");
-  DEBUG_ASSERT(face < static_cast<int>(NumTri()), topologyErr,
-               "Face index exceeds number of faces!");
 #endif
 
   DEBUG_ASSERT(meshRelation_.triRef.size() == NumTri() ||
                    meshRelation_.triRef.size() == 0,
                logicErr, "Mesh Relation doesn't fit!");
-  DEBUG_ASSERT(faceNormal_.size() == NumTri() || faceNormal_.size() == 0,
-               logicErr,
-               "faceNormal size = " + std::to_string(faceNormal_.size()) +
-                   ", NumTri = " + std::to_string(NumTri()));
-  CalculateNormals();
-  collider_ = Collider(faceBox, faceMorton);
 
   DEBUG_ASSERT(Is2Manifold(), logicErr, "mesh is not 2-manifold!");
 }
@@ -280,14 +260,18 @@ void Manifold::Impl::Finish() {
 /**
  * Sorts the vertices according to their Morton code.
  */
-void Manifold::Impl::SortVerts() {
+void Manifold::Impl::SortVerts(ExecutionContext::Impl* ctx) {
   ZoneScoped;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
   const auto numVert = NumVert();
   Vec<uint32_t> vertMorton(numVert);
   auto policy = autoPolicy(numVert, 1e5);
-  for_each_n(policy, countAt(0), numVert, [this, &vertMorton](const int vert) {
-    vertMorton[vert] = MortonCode(vertPos_[vert], bBox_);
-  });
+  for_each_n(policy, countAt(0), numVert, ctx,
+             [this, &vertMorton](const int vert) {
+               vertMorton[vert] = MortonCode(vertPos_[vert], bBox_);
+             });
+  if (IsCancelled(ctx)) return;
 
   Vec<int> vertNew2Old(numVert);
   sequence(vertNew2Old.begin(), vertNew2Old.end());
@@ -297,15 +281,17 @@ void Manifold::Impl::SortVerts() {
                 return vertMorton[a] < vertMorton[b];
               });
 
-  ReindexVerts(vertNew2Old, numVert);
+  ReindexVerts(vertNew2Old, numVert, ctx);
+  if (IsCancelled(ctx)) return;
 
   // Verts were flagged for removal with NaNs and assigned kNoCode to sort
   // them to the end, which allows them to be removed.
-  const auto newNumVert = std::find_if(vertNew2Old.begin(), vertNew2Old.end(),
-                                       [&vertMorton](const int vert) {
-                                         return vertMorton[vert] == kNoCode;
-                                       }) -
-                          vertNew2Old.begin();
+  const auto newNumVert =
+      std::lower_bound(vertNew2Old.begin(), vertNew2Old.end(), kNoCode,
+                       [&vertMorton](const int vert, const uint32_t val) {
+                         return vertMorton[vert] < val;
+                       }) -
+      vertNew2Old.begin();
 
   vertNew2Old.resize(newNumVert);
   Permute(vertPos_, vertNew2Old);
@@ -321,38 +307,56 @@ void Manifold::Impl::SortVerts() {
  * also given.
  */
 void Manifold::Impl::ReindexVerts(const Vec<int>& vertNew2Old,
-                                  size_t oldNumVert) {
+                                  size_t oldNumVert,
+                                  ExecutionContext::Impl* ctx) {
   ZoneScoped;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
   Vec<int> vertOld2New(oldNumVert);
   scatter(countAt(0), countAt(static_cast<int>(NumVert())), vertNew2Old.begin(),
           vertOld2New.begin());
-  for_each(autoPolicy(oldNumVert, 1e5), halfedge_.begin(), halfedge_.end(),
-           Reindex({vertOld2New}));
+  const bool hasProp = NumProp() > 0;
+  for_each_n(autoPolicy(oldNumVert, 1e5), countAt(0), halfedge_.size(), ctx,
+             [this, &vertOld2New, hasProp](int idx) {
+               const int startVert = halfedge_.Start(idx);
+               if (startVert < 0) return;
+               const int newStart = vertOld2New[startVert];
+               halfedge_.SetStart(idx, newStart);
+               if (!hasProp) {
+                 halfedge_.SetProp(idx, newStart);
+               }
+             });
+  if (IsCancelled(ctx)) return;
 }
 
 /**
- * Removes unreferenced property verts and reindexes triProperties.
+ * Removes unreferenced property verts and reindexes propVerts.
  */
-void Manifold::Impl::CompactProps() {
+void Manifold::Impl::CompactProps(ExecutionContext::Impl* ctx) {
   ZoneScoped;
-  if (meshRelation_.numProp == 0) return;
+  if (numProp_ == 0) return;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
 
-  const auto numVerts = meshRelation_.properties.size() / meshRelation_.numProp;
+  const int numProp = NumProp();
+  const auto numVerts = properties_.size() / numProp;
   Vec<int> keep(numVerts, 0);
   auto policy = autoPolicy(numVerts, 1e5);
 
-  for_each(policy, meshRelation_.triProperties.cbegin(),
-           meshRelation_.triProperties.cend(), MarkProp({keep}));
+  for_each_n(policy, countAt(0), halfedge_.size(), ctx, [this, &keep](int idx) {
+    reinterpret_cast<std::atomic<int>*>(&keep[halfedge_.Prop(idx)])
+        ->store(1, std::memory_order_relaxed);
+  });
+  if (IsCancelled(ctx)) return;
   Vec<int> propOld2New(numVerts + 1, 0);
   inclusive_scan(keep.begin(), keep.end(), propOld2New.begin() + 1);
 
-  Vec<double> oldProp = meshRelation_.properties;
+  Vec<double> oldProp = properties_;
   const int numVertsNew = propOld2New[numVerts];
-  const int numProp = meshRelation_.numProp;
-  auto& properties = meshRelation_.properties;
-  properties.resize(numProp * numVertsNew);
+  auto& properties = properties_;
+  properties.resize_nofill(numProp * numVertsNew);
   for_each_n(
-      policy, countAt(0), numVerts,
+      policy, countAt(0), numVerts, ctx,
       [&properties, &oldProp, &propOld2New, &keep, &numProp](const int oldIdx) {
         if (keep[oldIdx] == 0) return;
         for (int p = 0; p < numProp; ++p) {
@@ -360,8 +364,12 @@ void Manifold::Impl::CompactProps() {
               oldProp[oldIdx * numProp + p];
         }
       });
-  for_each_n(policy, meshRelation_.triProperties.begin(), NumTri(),
-             ReindexProps({propOld2New}));
+  if (IsCancelled(ctx)) return;
+  for_each_n(policy, countAt(0), halfedge_.size(), ctx,
+             [this, &propOld2New](int idx) {
+               halfedge_.SetProp(idx, propOld2New[halfedge_.Prop(idx)]);
+             });
+  if (IsCancelled(ctx)) return;
 }
 
 /**
@@ -370,16 +378,20 @@ void Manifold::Impl::CompactProps() {
  * the bounding box.
  */
 void Manifold::Impl::GetFaceBoxMorton(Vec<Box>& faceBox,
-                                      Vec<uint32_t>& faceMorton) const {
+                                      Vec<uint32_t>& faceMorton,
+                                      ExecutionContext::Impl* ctx) const {
   ZoneScoped;
-  faceBox.resize(NumTri());
-  faceMorton.resize(NumTri());
-  for_each_n(autoPolicy(NumTri(), 1e5), countAt(0), NumTri(),
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
+  // faceBox should be initialized
+  faceBox.resize(NumTri(), Box());
+  faceMorton.resize_nofill(NumTri());
+  for_each_n(autoPolicy(NumTri(), 1e5), countAt(0), NumTri(), ctx,
              [this, &faceBox, &faceMorton](const int face) {
                // Removed tris are marked by all halfedges having pairedHalfedge
                // = -1, and this will sort them to the end (the Morton code only
                // uses the first 30 of 32 bits).
-               if (halfedge_[3 * face].pairedHalfedge < 0) {
+               if (halfedge_.Pair(3 * face) < 0) {
                  faceMorton[face] = kNoCode;
                  return;
                }
@@ -387,7 +399,7 @@ void Manifold::Impl::GetFaceBoxMorton(Vec<Box>& faceBox,
                vec3 center(0.0);
 
                for (const int i : {0, 1, 2}) {
-                 const vec3 pos = vertPos_[halfedge_[3 * face + i].startVert];
+                 const vec3 pos = vertPos_[halfedge_.Start(3 * face + i)];
                  center += pos;
                  faceBox[face].Union(pos);
                }
@@ -395,14 +407,18 @@ void Manifold::Impl::GetFaceBoxMorton(Vec<Box>& faceBox,
 
                faceMorton[face] = MortonCode(center, bBox_);
              });
+  if (IsCancelled(ctx)) return;
 }
 
 /**
  * Sorts the faces of this manifold according to their input Morton code. The
  * bounding box and Morton code arrays are also sorted accordingly.
  */
-void Manifold::Impl::SortFaces(Vec<Box>& faceBox, Vec<uint32_t>& faceMorton) {
+void Manifold::Impl::SortFaces(Vec<Box>& faceBox, Vec<uint32_t>& faceMorton,
+                               ExecutionContext::Impl* ctx) {
   ZoneScoped;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
   Vec<int> faceNew2Old(NumTri());
   sequence(faceNew2Old.begin(), faceNew2Old.end());
 
@@ -413,16 +429,18 @@ void Manifold::Impl::SortFaces(Vec<Box>& faceBox, Vec<uint32_t>& faceMorton) {
 
   // Tris were flagged for removal with pairedHalfedge = -1 and assigned kNoCode
   // to sort them to the end, which allows them to be removed.
-  const int newNumTri = std::find_if(faceNew2Old.begin(), faceNew2Old.end(),
-                                     [&faceMorton](const int face) {
-                                       return faceMorton[face] == kNoCode;
-                                     }) -
-                        faceNew2Old.begin();
+  const int newNumTri =
+      std::lower_bound(faceNew2Old.begin(), faceNew2Old.end(), kNoCode,
+                       [&faceMorton](const int face, const uint32_t val) {
+                         return faceMorton[face] < val;
+                       }) -
+      faceNew2Old.begin();
   faceNew2Old.resize(newNumTri);
 
   Permute(faceMorton, faceNew2Old);
   Permute(faceBox, faceNew2Old);
-  GatherFaces(faceNew2Old);
+  GatherFaces(faceNew2Old, ctx);
+  if (IsCancelled(ctx)) return;
 }
 
 /**
@@ -430,34 +448,41 @@ void Manifold::Impl::SortFaces(Vec<Box>& faceBox, Vec<uint32_t>& faceMorton) {
  * another manifold, given by oldHalfedge. Input faceNew2Old defines the old
  * faces to gather into this.
  */
-void Manifold::Impl::GatherFaces(const Vec<int>& faceNew2Old) {
+void Manifold::Impl::GatherFaces(const Vec<int>& faceNew2Old,
+                                 ExecutionContext::Impl* ctx) {
   ZoneScoped;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
   const auto numTri = faceNew2Old.size();
   if (meshRelation_.triRef.size() == NumTri())
     Permute(meshRelation_.triRef, faceNew2Old);
-  if (meshRelation_.triProperties.size() == NumTri())
-    Permute(meshRelation_.triProperties, faceNew2Old);
   if (faceNormal_.size() == NumTri()) Permute(faceNormal_, faceNew2Old);
 
-  Vec<Halfedge> oldHalfedge(std::move(halfedge_));
+  Halfedges oldHalfedge(std::move(halfedge_));
+  halfedge_ = Halfedges();
   Vec<vec4> oldHalfedgeTangent(std::move(halfedgeTangent_));
   Vec<int> faceOld2New(oldHalfedge.size() / 3);
   auto policy = autoPolicy(numTri, 1e5);
   scatter(countAt(0_uz), countAt(numTri), faceNew2Old.begin(),
           faceOld2New.begin());
 
-  halfedge_.resize(3 * numTri);
-  if (oldHalfedgeTangent.size() != 0) halfedgeTangent_.resize(3 * numTri);
-  for_each_n(policy, countAt(0), numTri,
-             ReindexFace({halfedge_, halfedgeTangent_, oldHalfedge,
-                          oldHalfedgeTangent, faceNew2Old, faceOld2New}));
+  halfedge_.resize_nofill(3 * numTri);
+  if (oldHalfedgeTangent.size() != 0)
+    halfedgeTangent_.resize_nofill(3 * numTri);
+  for_each_n(policy, countAt(0), numTri, ctx,
+             ReindexFace{halfedge_, halfedgeTangent_, oldHalfedge,
+                         oldHalfedgeTangent, faceNew2Old, faceOld2New});
+  if (IsCancelled(ctx)) return;
 }
 
-void Manifold::Impl::GatherFaces(const Impl& old, const Vec<int>& faceNew2Old) {
+void Manifold::Impl::GatherFaces(const Impl& old, const Vec<int>& faceNew2Old,
+                                 ExecutionContext::Impl* ctx) {
   ZoneScoped;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
   const auto numTri = faceNew2Old.size();
 
-  meshRelation_.triRef.resize(numTri);
+  meshRelation_.triRef.resize_nofill(numTri);
   gather(faceNew2Old.begin(), faceNew2Old.end(),
          old.meshRelation_.triRef.begin(), meshRelation_.triRef.begin());
 
@@ -465,17 +490,13 @@ void Manifold::Impl::GatherFaces(const Impl& old, const Vec<int>& faceNew2Old) {
     meshRelation_.meshIDtransform[pair.first] = pair.second;
   }
 
-  if (old.meshRelation_.triProperties.size() > 0) {
-    meshRelation_.triProperties.resize(numTri);
-    gather(faceNew2Old.begin(), faceNew2Old.end(),
-           old.meshRelation_.triProperties.begin(),
-           meshRelation_.triProperties.begin());
-    meshRelation_.numProp = old.meshRelation_.numProp;
-    meshRelation_.properties = old.meshRelation_.properties;
+  if (old.NumProp() > 0) {
+    numProp_ = old.numProp_;
+    properties_ = old.properties_;
   }
 
   if (old.faceNormal_.size() == old.NumTri()) {
-    faceNormal_.resize(numTri);
+    faceNormal_.resize_nofill(numTri);
     gather(faceNew2Old.begin(), faceNew2Old.end(), old.faceNormal_.begin(),
            faceNormal_.begin());
   }
@@ -484,11 +505,56 @@ void Manifold::Impl::GatherFaces(const Impl& old, const Vec<int>& faceNew2Old) {
   scatter(countAt(0_uz), countAt(numTri), faceNew2Old.begin(),
           faceOld2New.begin());
 
-  halfedge_.resize(3 * numTri);
-  if (old.halfedgeTangent_.size() != 0) halfedgeTangent_.resize(3 * numTri);
-  for_each_n(autoPolicy(numTri, 1e5), countAt(0), numTri,
-             ReindexFace({halfedge_, halfedgeTangent_, old.halfedge_,
-                          old.halfedgeTangent_, faceNew2Old, faceOld2New}));
+  halfedge_.resize_nofill(3 * numTri);
+  if (old.halfedgeTangent_.size() != 0)
+    halfedgeTangent_.resize_nofill(3 * numTri);
+  for_each_n(autoPolicy(numTri, 1e5), countAt(0), numTri, ctx,
+             ReindexFace{halfedge_, halfedgeTangent_, old.halfedge_,
+                         old.halfedgeTangent_, faceNew2Old, faceOld2New});
+  if (IsCancelled(ctx)) return;
+}
+
+void Manifold::Impl::ReorderHalfedges(ExecutionContext::Impl* ctx) {
+  ZoneScoped;
+  // Invariant: every ctx-passing parallel op is followed by IsCancelled to
+  // keep partial output from feeding unconditional downstream consumers.
+  // halfedges in the same face are added in non-deterministic order, so we have
+  // to reorder them for determinism
+
+  // step 1: reorder within the same face, such that the halfedge with the
+  // smallest starting vertex is placed first
+  for_each(autoPolicy(halfedge_.size() / 3), countAt(0_uz),
+           countAt(halfedge_.size() / 3), ctx, [this](size_t tri) {
+             std::array<Halfedge, 3> face = {halfedge_.Get(tri * 3),
+                                             halfedge_.Get(tri * 3 + 1),
+                                             halfedge_.Get(tri * 3 + 2)};
+             if (face[0].startVert < 0) return;
+             int index = 0;
+             for (int i : {1, 2})
+               if (face[i].startVert < face[index].startVert) index = i;
+             for (int i : {0, 1, 2}) {
+               const auto& f = face[(index + i) % 3];
+               halfedge_.Set(tri * 3 + i, f.startVert, f.pairedHalfedge,
+                             f.propVert);
+             }
+           });
+  if (IsCancelled(ctx)) return;
+  // step 2: fix paired halfedge
+  for_each(autoPolicy(halfedge_.size() / 3), countAt(0_uz),
+           countAt(halfedge_.size() / 3), ctx, [this](size_t tri) {
+             for (int i : {0, 1, 2}) {
+               const int currIdx = tri * 3 + i;
+               const int startVert = halfedge_.Start(currIdx);
+               if (startVert < 0) return;
+               int oppositeFace = halfedge_.Pair(currIdx) / 3;
+               int index = -1;
+               for (int j : {0, 1, 2})
+                 if (startVert == halfedge_.End(oppositeFace * 3 + j))
+                   index = j;
+               halfedge_.SetPair(currIdx, oppositeFace * 3 + index);
+             }
+           });
+  if (IsCancelled(ctx)) return;
 }
 
 /**
@@ -514,4 +580,5 @@ template <>
 bool MeshGL64::Merge() {
   return MergeMeshGLP(*this);
 }
+
 }  // namespace manifold

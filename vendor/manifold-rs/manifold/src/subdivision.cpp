@@ -12,8 +12,10 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 
-#include "./impl.h"
-#include "./parallel.h"
+#include <unordered_map>
+
+#include "impl.h"
+#include "parallel.h"
 
 template <>
 struct std::hash<manifold::ivec4> {
@@ -113,8 +115,8 @@ class Partition {
     }
     const int offset = interiorOffset - newVerts.size();
     size_t old = newVerts.size();
-    newVerts.resize(vertBary.size());
-    std::iota(newVerts.begin() + old, newVerts.end(), old + offset);
+    newVerts.resize_nofill(vertBary.size());
+    std::iota(newVerts.begin() + old, newVerts.end(), interiorOffset);
 
     const int numTri = triVert.size();
     Vec<ivec3> newTriVert(numTri);
@@ -407,7 +409,7 @@ ivec4 Manifold::Impl::GetHalfedges(int tri) const {
   }
   const int neighbor = GetNeighbor(tri);
   if (neighbor >= 0) {  // quad
-    const int pair = halfedge_[3 * tri + neighbor].pairedHalfedge;
+    const int pair = halfedge_.Pair(3 * tri + neighbor);
     if (pair / 3 < tri) {
       return ivec4(-1);  // only process lower tri index
     }
@@ -438,7 +440,7 @@ Manifold::Impl::BaryIndices Manifold::Impl::GetIndices(int halfedge) const {
   if (neighbor < 0) {  // tri
     return {tri, idx, Next3(idx)};
   } else {  // quad
-    const int pair = halfedge_[3 * tri + neighbor].pairedHalfedge;
+    const int pair = halfedge_.Pair(3 * tri + neighbor);
     if (pair / 3 < tri) {
       tri = pair / 3;
       idx = Next3(neighbor) == idx ? 0 : 1;
@@ -463,7 +465,7 @@ void Manifold::Impl::FillRetainedVerts(Vec<Barycentric>& vertBary) const {
       if (indices.start4 < 0) continue;  // skip quad interiors
       vec4 uvw(0.0);
       uvw[indices.start4] = 1;
-      vertBary[halfedge_[3 * tri + i].startVert] = {indices.tri, uvw};
+      vertBary[halfedge_.Start(3 * tri + i)] = {indices.tri, uvw};
     }
   }
 }
@@ -477,6 +479,7 @@ void Manifold::Impl::FillRetainedVerts(Vec<Barycentric>& vertBary) const {
  */
 Vec<Barycentric> Manifold::Impl::Subdivide(
     std::function<int(vec3, vec4, vec4)> edgeDivisions, bool keepInterior) {
+  halfedge_.MakeUnique();
   Vec<TmpEdge> edges = CreateTmpEdges(halfedge_);
   const int numVert = NumVert();
   const int numEdge = edges.size();
@@ -487,7 +490,7 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
              [&half2Edge, &edges, this](const int edge) {
                const int idx = edges[edge].halfedgeIdx;
                half2Edge[idx] = edge;
-               half2Edge[halfedge_[idx].pairedHalfedge] = edge;
+               half2Edge[halfedge_.Pair(idx)] = edge;
              });
 
   Vec<ivec4> faceHalfedges(numTri);
@@ -496,24 +499,23 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
   });
 
   Vec<int> edgeAdded(numEdge);
-  for_each_n(policy, countAt(0), numEdge,
-             [&edgeAdded, &edges, edgeDivisions, this](const int i) {
-               const TmpEdge edge = edges[i];
-               const int hIdx = edge.halfedgeIdx;
-               if (IsMarkedInsideQuad(hIdx)) {
-                 edgeAdded[i] = 0;
-                 return;
-               }
-               const vec3 vec = vertPos_[edge.first] - vertPos_[edge.second];
-               const vec4 tangent0 = halfedgeTangent_.empty()
-                                         ? vec4(0.0)
-                                         : halfedgeTangent_[hIdx];
-               const vec4 tangent1 =
-                   halfedgeTangent_.empty()
-                       ? vec4(0.0)
-                       : halfedgeTangent_[halfedge_[hIdx].pairedHalfedge];
-               edgeAdded[i] = edgeDivisions(vec, tangent0, tangent1);
-             });
+  for_each_n(
+      policy, countAt(0), numEdge,
+      [&edgeAdded, &edges, edgeDivisions, this](const int i) {
+        const TmpEdge edge = edges[i];
+        const int hIdx = edge.halfedgeIdx;
+        if (IsMarkedInsideQuad(hIdx)) {
+          edgeAdded[i] = 0;
+          return;
+        }
+        const vec3 vec = vertPos_[edge.first] - vertPos_[edge.second];
+        const vec4 tangent0 =
+            halfedgeTangent_.empty() ? vec4(0.0) : halfedgeTangent_[hIdx];
+        const vec4 tangent1 = halfedgeTangent_.empty()
+                                  ? vec4(0.0)
+                                  : halfedgeTangent_[halfedge_.Pair(hIdx)];
+        edgeAdded[i] = edgeDivisions(vec, tangent0, tangent1);
+      });
 
   if (keepInterior) {
     // Triangles where the greatest number of divisions exceeds the sum of the
@@ -535,7 +537,7 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
           auto Added = [&edgeAdded, &half2Edge, thisAdded, this](int hIdx) {
             int longest = 0;
             int total = 0;
-            for (int j : {0, 1, 2}) {
+            for (int _ : {0, 1, 2}) {
               const int added = edgeAdded[half2Edge[hIdx]];
               longest = la::max(longest, added);
               total += added;
@@ -549,12 +551,13 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
             }
             const int minExtra = longest * 0.2 + 1;
             const int extra = 2 * longest + minExtra - total;
+            if (longest == 0) return 0;
             return extra > 0 ? (extra * (longest - thisAdded)) / longest : 0;
           };
 
-          tmp[i] += la::max(Added(hIdx), Added(halfedge_[hIdx].pairedHalfedge));
+          tmp[i] += la::max(Added(hIdx), Added(halfedge_.Pair(hIdx)));
         });
-    edgeAdded.swap(tmp);
+    edgeAdded = std::move(tmp);
   }
 
   Vec<int> edgeOffset(numEdge);
@@ -586,7 +589,7 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
 
   std::vector<Partition> subTris(numTri);
   for_each_n(policy, countAt(0), numTri,
-             [this, &subTris, &half2Edge, &edgeAdded, &faceHalfedges](int tri) {
+             [&subTris, &half2Edge, &edgeAdded, &faceHalfedges](int tri) {
                const ivec4 halfedges = faceHalfedges[tri];
                ivec4 divisions(0);
                for (const int i : {0, 1, 2, 3}) {
@@ -617,10 +620,11 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
   Vec<ivec3> triVerts(triOffset.back() + subTris.back().triVert.size());
   vertBary.resize(interiorOffset.back() + subTris.back().NumInterior());
   Vec<TriRef> triRef(triVerts.size());
+  Vec<vec3> faceNormal(triVerts.size());
   for_each_n(
       policy, countAt(0), numTri,
       [this, &triVerts, &triRef, &vertBary, &subTris, &edgeOffset, &half2Edge,
-       &triOffset, &interiorOffset, &faceHalfedges](int tri) {
+       &triOffset, &interiorOffset, &faceHalfedges, &faceNormal](int tri) {
         const ivec4 halfedges = faceHalfedges[tri];
         if (halfedges[0] < 0) return;
         ivec4 tri3;
@@ -631,17 +635,18 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
             tri3[i] = -1;
             continue;
           }
-          const Halfedge& halfedge = halfedge_[halfedges[i]];
-          tri3[i] = halfedge.startVert;
+          tri3[i] = halfedge_.Start(halfedges[i]);
           edgeOffsets[i] = edgeOffset[half2Edge[halfedges[i]]];
-          edgeFwd[i] = halfedge.IsForward();
+          edgeFwd[i] = halfedge_.IsForward(halfedges[i]);
         }
 
         Vec<ivec3> newTris = subTris[tri].Reindex(tri3, edgeOffsets, edgeFwd,
                                                   interiorOffset[tri]);
         copy(newTris.begin(), newTris.end(), triVerts.begin() + triOffset[tri]);
-        auto start = triRef.begin() + triOffset[tri];
-        fill(start, start + newTris.size(), meshRelation_.triRef[tri]);
+        auto startRef = triRef.begin() + triOffset[tri];
+        fill(startRef, startRef + newTris.size(), meshRelation_.triRef[tri]);
+        auto startN = faceNormal.begin() + triOffset[tri];
+        fill(startN, startN + newTris.size(), faceNormal_[tri]);
 
         const ivec4 idx = subTris[tri].idx;
         const ivec4 vIdx = halfedges[3] >= 0 || idx[1] == Next3(idx[0])
@@ -661,7 +666,8 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
                                          bary[rIdx[2]], bary[rIdx[3]]}});
                   });
       });
-  meshRelation_.triRef = triRef;
+  meshRelation_.triRef = std::move(triRef);
+  faceNormal_ = std::move(faceNormal);
 
   Vec<vec3> newVertPos(vertBary.size());
   for_each_n(policy, countAt(0), vertBary.size(),
@@ -671,31 +677,30 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
                if (halfedges[3] < 0) {
                  mat3 triPos;
                  for (const int i : {0, 1, 2}) {
-                   triPos[i] = vertPos_[halfedge_[halfedges[i]].startVert];
+                   triPos[i] = vertPos_[halfedge_.Start(halfedges[i])];
                  }
                  newVertPos[vert] = triPos * vec3(bary.uvw);
                } else {
                  mat3x4 quadPos;
                  for (const int i : {0, 1, 2, 3}) {
-                   quadPos[i] = vertPos_[halfedge_[halfedges[i]].startVert];
+                   quadPos[i] = vertPos_[halfedge_.Start(halfedges[i])];
                  }
                  newVertPos[vert] = quadPos * bary.uvw;
                }
              });
   vertPos_ = newVertPos;
 
-  faceNormal_.resize(0);
-
-  if (meshRelation_.numProp > 0) {
+  if (numProp_ > 0) {
     const int numPropVert = NumPropVert();
     const int addedVerts = NumVert() - numVert;
     const int propOffset = numPropVert - numVert;
-    Vec<double> prop(meshRelation_.numProp *
-                     (numPropVert + addedVerts + totalEdgeAdded));
+    // duplicate the prop verts along all new edges even though this is
+    // unnecessary for edges that share the same prop verts. The duplicates will
+    // be removed by CompactProps.
+    Vec<double> prop(numProp_ * (numPropVert + addedVerts + totalEdgeAdded));
 
     // copy retained prop verts
-    copy(meshRelation_.properties.begin(), meshRelation_.properties.end(),
-         prop.begin());
+    copy(properties_.begin(), properties_.end(), prop.begin());
 
     // copy interior prop verts and forward edge prop verts
     for_each_n(
@@ -705,51 +710,45 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
           const int vert = numPropVert + i;
           const Barycentric bary = vertBary[numVert + i];
           const ivec4 halfedges = faceHalfedges[bary.tri];
-          auto& rel = meshRelation_;
+          const int numProp = NumProp();
 
-          for (int p = 0; p < rel.numProp; ++p) {
+          for (int p = 0; p < numProp; ++p) {
             if (halfedges[3] < 0) {
               vec3 triProp;
               for (const int i : {0, 1, 2}) {
-                triProp[i] = rel.properties[rel.triProperties[bary.tri][i] *
-                                                rel.numProp +
-                                            p];
+                triProp[i] =
+                    properties_[halfedge_.Prop(3 * bary.tri + i) * numProp + p];
               }
-              prop[vert * rel.numProp + p] = la::dot(triProp, vec3(bary.uvw));
+              prop[vert * numProp + p] = la::dot(triProp, vec3(bary.uvw));
             } else {
               vec4 quadProp;
               for (const int i : {0, 1, 2, 3}) {
-                const int tri = halfedges[i] / 3;
-                const int j = halfedges[i] % 3;
                 quadProp[i] =
-                    rel.properties[rel.triProperties[tri][j] * rel.numProp + p];
+                    properties_[halfedge_.Prop(halfedges[i]) * numProp + p];
               }
-              prop[vert * rel.numProp + p] = la::dot(quadProp, bary.uvw);
+              prop[vert * numProp + p] = la::dot(quadProp, bary.uvw);
             }
           }
         });
 
-    // copy backward edge prop verts
+    // copy backward edge prop verts, some of which will be unreferenced
+    // duplicates.
     for_each_n(policy, countAt(0), numEdge,
                [this, &prop, &edges, &edgeAdded, &edgeOffset, propOffset,
                 addedVerts](const int i) {
                  const int n = edgeAdded[i];
                  const int offset = edgeOffset[i] + propOffset + addedVerts;
-                 auto& rel = meshRelation_;
+                 const int numProp = NumProp();
 
                  const double frac = 1.0 / (n + 1);
-                 const int halfedgeIdx =
-                     halfedge_[edges[i].halfedgeIdx].pairedHalfedge;
-                 const int v0 = halfedgeIdx % 3;
-                 const int tri = halfedgeIdx / 3;
-                 const int prop0 = rel.triProperties[tri][v0];
-                 const int prop1 = rel.triProperties[tri][Next3(v0)];
+                 const int halfedgeIdx = halfedge_.Pair(edges[i].halfedgeIdx);
+                 const int prop0 = halfedge_.Prop(halfedgeIdx);
+                 const int prop1 = halfedge_.Prop(NextHalfedge(halfedgeIdx));
                  for (int i = 0; i < n; ++i) {
-                   for (int p = 0; p < rel.numProp; ++p) {
-                     prop[(offset + i) * rel.numProp + p] =
-                         la::lerp(rel.properties[prop0 * rel.numProp + p],
-                                  rel.properties[prop1 * rel.numProp + p],
-                                  (i + 1) * frac);
+                   for (int p = 0; p < numProp; ++p) {
+                     prop[(offset + i) * numProp + p] = la::lerp(
+                         properties_[prop0 * numProp + p],
+                         properties_[prop1 * numProp + p], (i + 1) * frac);
                    }
                  }
                });
@@ -762,7 +761,6 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
                  const ivec4 halfedges = faceHalfedges[tri];
                  if (halfedges[0] < 0) return;
 
-                 auto& rel = meshRelation_;
                  ivec4 tri3;
                  ivec4 edgeOffsets;
                  bvec4 edgeFwd(true);
@@ -771,18 +769,16 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
                      tri3[i] = -1;
                      continue;
                    }
-                   const int thisTri = halfedges[i] / 3;
-                   const int j = halfedges[i] % 3;
-                   const Halfedge& halfedge = halfedge_[halfedges[i]];
-                   tri3[i] = rel.triProperties[thisTri][j];
+                   tri3[i] = halfedge_.Prop(halfedges[i]);
                    edgeOffsets[i] = edgeOffset[half2Edge[halfedges[i]]];
-                   if (!halfedge.IsForward()) {
-                     const int pairTri = halfedge.pairedHalfedge / 3;
-                     const int k = halfedge.pairedHalfedge % 3;
-                     if (rel.triProperties[pairTri][k] !=
-                             rel.triProperties[thisTri][Next3(j)] ||
-                         rel.triProperties[pairTri][Next3(k)] !=
-                             rel.triProperties[thisTri][j]) {
+                   if (!halfedge_.IsForward(halfedges[i])) {
+                     const int pair = halfedge_.Pair(halfedges[i]);
+                     if (halfedge_.Prop(pair) !=
+                             halfedge_.Prop(NextHalfedge(halfedges[i])) ||
+                         halfedge_.Prop(NextHalfedge(pair)) !=
+                             halfedge_.Prop(halfedges[i])) {
+                       // if the edge doesn't match, point to the backward edge
+                       // propverts.
                        edgeOffsets[i] += addedVerts;
                      } else {
                        edgeFwd[i] = false;
@@ -797,11 +793,11 @@ Vec<Barycentric> Manifold::Impl::Subdivide(
                       triProp.begin() + triOffset[tri]);
                });
 
-    meshRelation_.properties = prop;
-    meshRelation_.triProperties = triProp;
+    properties_ = prop;
+    CreateHalfedges(triProp, triVerts);
+  } else {
+    CreateHalfedges(triVerts);
   }
-
-  CreateHalfedges(triVerts);
 
   return vertBary;
 }

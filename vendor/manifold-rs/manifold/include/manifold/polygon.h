@@ -52,11 +52,10 @@ using PolygonsIdx = std::vector<SimplePolygonIdx>;
  * @brief Polygon triangulation
  *  @{
  */
-std::vector<ivec3> TriangulateIdx(const PolygonsIdx &polys,
-                                  double epsilon = -1);
+std::vector<ivec3> TriangulateIdx(const PolygonsIdx& polys, double epsilon = -1,
+                                  bool allowConvex = true);
 
-std::vector<ivec3> Triangulate(const Polygons &polygons, double epsilon = -1);
-
-ExecutionParams &PolygonParams();
+std::vector<ivec3> Triangulate(const Polygons& polygons, double epsilon = -1,
+                               bool allowConvex = true);
 /** @} */
 }  // namespace manifold

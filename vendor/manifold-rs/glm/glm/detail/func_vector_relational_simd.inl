@@ -1,6 +1,0 @@
-namespace glm{
-namespace detail
-{
-
-}//namespace detail
-}//namespace glm

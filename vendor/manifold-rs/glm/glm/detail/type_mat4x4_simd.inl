@@ -1,6 +1,0 @@
-/// @ref core
-
-namespace glm
-{
-
-}//namespace glm

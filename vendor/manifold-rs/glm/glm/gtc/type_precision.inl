@@ -1,6 +1,0 @@
-/// @ref gtc_precision
-
-namespace glm
-{
-
-}

@@ -1,2 +1,0 @@
-/// @ref gtx_raw_data
-

@@ -1,6 +1,0 @@
-/// @ref gtx_std_based_type
-
-namespace glm
-{
-
-}

@@ -1,6 +1,0 @@
-/// @ref gtc_type_aligned
-
-namespace glm
-{
-
-}

@@ -1,6 +1,0 @@
-/// @ref gtx_wrap
-
-namespace glm
-{
-
-}//namespace glm

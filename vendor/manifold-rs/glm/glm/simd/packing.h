@@ -1,8 +1,0 @@
-/// @ref simd
-/// @file glm/simd/packing.h
-
-#pragma once
-
-#if GLM_ARCH & GLM_ARCH_SSE2_BIT
-
-#endif//GLM_ARCH & GLM_ARCH_SSE2_BIT

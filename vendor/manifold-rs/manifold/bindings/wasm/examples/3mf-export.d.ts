@@ -1,1 +1,0 @@
-declare module '@jscadui/3mf-export';
