@@ -96,12 +96,23 @@ fn a_billion_iterations_stop_at_a_limit() {
 #[test]
 fn exponential_branching_is_bounded() {
     expect("branching", b"startshape A\nmaxdepth 60\nrule A { A {} A {} }", &[], 3, "limit exceeded: steps");
+    // Flat, every sphere is made: memory binds first.
     expect(
         "branching-drawing",
         b"startshape A\nmaxdepth 40\nrule A { SPHERE {} A { s 0.9 } A { s 0.9 } }",
-        &["--detail", "64", "--max-primitives", "50000000", "--max-triangles", "1000000000"],
+        &["--detail", "64", "--max-primitives", "50000000", "--max-triangles", "1000000000", "--instancing", "flat"],
         3,
         "limit exceeded: memory",
+    );
+    // Instanced, the grammar is memoised into 41 objects (docs/mdg.md §9):
+    // the hierarchy knows its 2^41 - 1 leaves before writing one, and the
+    // glb would draw one instance per leaf, so the primitive limit refuses it at once.
+    expect(
+        "branching-drawing-memoised",
+        b"startshape A\nmaxdepth 40\nrule A { SPHERE {} A { s 0.9 } A { s 0.9 } }",
+        &["--detail", "64", "--max-primitives", "50000000", "--max-triangles", "1000000000"],
+        3,
+        "limit exceeded: primitives (configured 50000000, reached 2199023255551)",
     );
 }
 
