@@ -252,7 +252,27 @@ impl Plan {
         }
         // Per dense key: placements, what varies, and placements per list.
         let mut counts = vec![(0u64, Varying::NONE, [0u64; 3]); dense.len()];
-        for_each_placement(scene, &mut |list, p| {
+        // Similarity instances (nearly every placement of an MDG scene) are
+        // seen without building their placements: the key, the exact
+        // identity checks, and the colour rounded only when its bits differ
+        // from the mesh's first (equal bits round equally), which `see` gives too.
+        let mut first_bits = vec![[0u32; 4]; dense.len()];
+        for i in &scene.instances {
+            let Some(at) = Placement::key_of_instance(i).and_then(|k| dense.index(&k)) else { continue };
+            let (Some((n, v, lists)), Some(first)) = (counts.get_mut(at), first_bits.get_mut(at)) else { continue };
+            v.rotation |= i.rotation != Quat::IDENTITY;
+            v.scale |= i.scale != 1.0;
+            let bits = i.colour.map(f32::to_bits);
+            if *n == 0 {
+                v.first_colour = rgba8(i.colour);
+                *first = bits;
+            } else if bits != *first {
+                v.colour |= rgba8(i.colour) != v.first_colour;
+            }
+            *n += 1;
+            lists[0] += 1;
+        }
+        for_each_placement(scene, 1, &mut |list, p| {
             if let Some((n, v, lists)) = dense.index(&p.key).and_then(|i| counts.get_mut(i)) {
                 v.see(p, *n == 0);
                 *n += 1;
@@ -305,7 +325,7 @@ impl Plan {
     /// slot, in scene order (similarity instances, affine instances, shape
     /// placements), so a writer can put each straight into its output.
     pub fn walk(&self, scene: &Scene, f: &mut dyn FnMut(usize, &Placement)) {
-        for_each_placement(scene, &mut |_, p| {
+        for_each_placement(scene, 0, &mut |_, p| {
             if let Some(s) = self.slot(&p.key) {
                 f(s, p);
             }
@@ -361,10 +381,13 @@ pub fn residual_counts(residual: &Scene) -> (u64, u64, u64) {
 }
 
 /// Every placement of `scene` with a TRS form, in scene order, with the
-/// list it comes from (0 similarity, 1 affine, 2 shape placements).
-fn for_each_placement(scene: &Scene, f: &mut dyn FnMut(usize, &Placement)) {
-    for p in scene.instances.iter().filter_map(Placement::of_instance) {
-        f(0, &p);
+/// list it comes from (0 similarity, 1 affine, 2 shape placements), from
+/// list `from` on.
+fn for_each_placement(scene: &Scene, from: usize, f: &mut dyn FnMut(usize, &Placement)) {
+    if from == 0 {
+        for p in scene.instances.iter().filter_map(Placement::of_instance) {
+            f(0, &p);
+        }
     }
     for p in scene.affine.iter().filter_map(Placement::of_affine) {
         f(1, &p);
