@@ -227,19 +227,15 @@ impl<'p, 'b> Machine<'p, 'b> {
                 }
                 Some(Task::Convolve { .. }) => {}
             }
-            let Some(task) = self.stack.pop() else { return Ok(()) };
-            match task {
-                Task::Items { .. } | Task::Copies { .. } => {}
-                Task::Convolve { body, frames, i, ctx } => {
-                    self.budget.charge_step()?;
-                    let Some(f) = frames.get(i) else { continue };
-                    let here = Ctx { frame: ctx.frame.then(f), key: ctx.key.child(CONVOLVE_SLOT, i as u64), ..ctx };
-                    if i + 1 < frames.len() {
-                        self.stack.push(Task::Convolve { body, frames, i: i + 1, ctx });
-                    }
-                    self.stack.push(Task::Items { items: body, next: 0, ctx: here });
-                }
+            // A convolution is on top: it is popped, and pushed back under its body.
+            let Some(Task::Convolve { body, frames, i, ctx }) = self.stack.pop() else { continue };
+            self.budget.charge_step()?;
+            let Some(f) = frames.get(i) else { continue };
+            let here = Ctx { frame: ctx.frame.then(f), key: ctx.key.child(CONVOLVE_SLOT, i as u64), ..ctx };
+            if i + 1 < frames.len() {
+                self.stack.push(Task::Convolve { body, frames, i: i + 1, ctx });
             }
+            self.stack.push(Task::Items { items: body, next: 0, ctx: here });
         }
     }
 

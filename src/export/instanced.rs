@@ -134,14 +134,11 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta,
     // only; exact comparisons): colours from the leaf counts (a leaf's colour
     // is its entry's), rotation and scale by a walk that stops once every
     // mesh has both.
-    let none = Varying { rotation: false, scale: false, colour: false, first_colour: [255; 4] };
     let mut varying: Vec<Option<Varying>> = vec![None; if per_instance_colour { shapes.len() } else { 0 }];
     for (&(shape, colour), _) in counts.iter().filter(|_| per_instance_colour) {
         let Some(v) = index.get(shape as usize).and_then(|v| v.first()).and_then(|e| varying.get_mut(e.1)) else { continue };
-        match v {
-            None => *v = Some(Varying { first_colour: colour, ..none }),
-            Some(v) => v.colour |= v.first_colour != colour,
-        }
+        let first = v.is_none();
+        v.get_or_insert(Varying::NONE).note(Quat::IDENTITY, Vec3::ONE, colour, first);
     }
     let mut open = varying.len();
     if open > 0 {
@@ -149,8 +146,8 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta,
             let Some(Some(v)) = mesh_of(leaf).and_then(|m| varying.get_mut(m)) else { return true };
             if !(v.rotation && v.scale) {
                 let d = placement(leaf);
-                v.rotation |= Quat::from_array(d.rotation) != Quat::IDENTITY;
-                v.scale |= Vec3::from_array(d.scale) != Vec3::ONE;
+                // The colour was noted from the leaf counts: note the first again.
+                v.note(Quat::from_array(d.rotation), Vec3::from_array(d.scale), v.first_colour, false);
                 open -= usize::from(v.rotation && v.scale);
             }
             open > 0

@@ -207,19 +207,27 @@ pub struct Varying {
 
 impl Varying {
     /// Nothing varies yet: the state before the first placement is seen.
-    const NONE: Varying = Varying { rotation: false, scale: false, colour: false, first_colour: [0; 4] };
+    pub const NONE: Varying = Varying { rotation: false, scale: false, colour: false, first_colour: [0; 4] };
 
-    /// Notes one more placement; `first` says whether it is the mesh's first.
-    fn see(&mut self, p: &Placement, first: bool) {
+    /// Notes one more placement by its rotation, per-axis scale and RGBA8
+    /// colour; `first` says whether it is the mesh's first. Every writer
+    /// that leaves attributes out decides with this, so a flat scene and a
+    /// hierarchy of the same model leave out the same ones.
+    pub fn note(&mut self, rotation: Quat, scale: Vec3, colour: [u8; 4], first: bool) {
         // Exact comparisons: only a placement that is exactly the identity
         // may lose its attribute, so the instanced output stays exact.
-        self.rotation |= p.rotation != Quat::IDENTITY;
-        self.scale |= p.scale != Vec3::ONE;
+        self.rotation |= rotation != Quat::IDENTITY;
+        self.scale |= scale != Vec3::ONE;
         if first {
-            self.first_colour = p.colour;
+            self.first_colour = colour;
         } else {
-            self.colour |= p.colour != self.first_colour;
+            self.colour |= colour != self.first_colour;
         }
+    }
+
+    /// [`Varying::note`] of a placement.
+    fn see(&mut self, p: &Placement, first: bool) {
+        self.note(p.rotation, p.scale, p.colour, first);
     }
 }
 
@@ -253,22 +261,19 @@ impl Plan {
         // Per dense key: placements, what varies, and placements per list.
         let mut counts = vec![(0u64, Varying::NONE, [0u64; 3]); dense.len()];
         // Similarity instances (nearly every placement of an MDG scene) are
-        // seen without building their placements: the key, the exact
-        // identity checks, and the colour rounded only when its bits differ
-        // from the mesh's first (equal bits round equally), which `see` gives too.
+        // noted without building their placements, and their colour is
+        // rounded only when its bits differ from the mesh's first (equal
+        // bits round equally): what `see` of their placements would note.
         let mut first_bits = vec![[0u32; 4]; dense.len()];
         for i in &scene.instances {
             let Some(at) = Placement::key_of_instance(i).and_then(|k| dense.index(&k)) else { continue };
             let (Some((n, v, lists)), Some(first)) = (counts.get_mut(at), first_bits.get_mut(at)) else { continue };
-            v.rotation |= i.rotation != Quat::IDENTITY;
-            v.scale |= i.scale != 1.0;
             let bits = i.colour.map(f32::to_bits);
+            let colour = if *n == 0 || bits != *first { rgba8(i.colour) } else { v.first_colour };
             if *n == 0 {
-                v.first_colour = rgba8(i.colour);
                 *first = bits;
-            } else if bits != *first {
-                v.colour |= rgba8(i.colour) != v.first_colour;
             }
+            v.note(i.rotation, Vec3::splat(i.scale), colour, *n == 0);
             *n += 1;
             lists[0] += 1;
         }
