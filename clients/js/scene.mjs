@@ -4,16 +4,24 @@
 //
 // The decoder tessellates every primitive instance (primitives.mjs) and
 // places it with the arithmetic of rulemesh's mesher (src/mesh/mod.rs,
-// glam's f32 Mat3 and Quat, f64 DQuat for hierarchies), each float32
-// operation emulated with Math.fround, so the meshes it returns are the
-// flat glTF's meshes bit for bit: same positions, normals, colours and
-// indices, in the same order.
+// glam's f32 Mat3 and Quat, f64 DQuat for hierarchies), so the meshes it
+// returns are the flat glTF's meshes bit for bit: same positions, normals,
+// colours and indices, in the same order. The float32 placement runs in a
+// small WebAssembly kernel (kernel/place.c, embedded by kernel.mjs): see
+// "Placement" below for why.
+//
+// The functions a decode runs are parenthesised function expressions
+// (`const f = (function f() {...});`): V8 compiles those when the module
+// loads rather than on their first call (its heuristic for functions that
+// are about to run), which takes about half a millisecond off the first
+// decode in a process.
 //
 // Every length and offset is checked; damaged input throws a SceneError,
 // never reads out of bounds, and never allocates more than the payload's
 // size (or the caller's triangle limit) justifies.
 
 import { prototype, triangleCount, MIN_DETAIL, MAX_DETAIL } from './primitives.mjs';
+import { kernel, HEAP_BASE, reserve } from './kernel.mjs';
 
 /** Thrown for any payload that is not a valid scene file. */
 export class SceneError extends Error {
@@ -29,7 +37,6 @@ const FLAG_SCALED = 4; // version 2: hierarchy entries carry an f64 uniform scal
 const SHAPE_BIT = 0x80000000;
 const RUN_PRIMITIVES = 1, RUN_AFFINE = 2, RUN_PLACED = 3, RUN_MESH = 4, RUN_HIERARCHY = 5;
 const PARITY_BIT = 0x80;
-const f = Math.fround;
 
 /** Little-endian cursor; every read is bounds-checked. */
 class Reader {
@@ -51,6 +58,16 @@ class Reader {
   f64() { this.need(8); const x = this.v.getFloat64(this.at, true); this.at += 8; return x; }
   bytes(n) { this.need(n); const s = this.b.subarray(this.at, this.at + n); this.at += n; return s; }
   f32s(n) { const a = new Array(n); for (let i = 0; i < n; i++) a[i] = this.f32(); return a; }
+  /** n float32s that must all be finite, as a Float32Array (exact: they are float32). */
+  finiteF32s(n) {
+    const a = new Float32Array(n);
+    for (let i = 0; i < n; i++) {
+      const x = this.f32();
+      if (!Number.isFinite(x)) throw new SceneError('non-finite number in scene');
+      a[i] = x;
+    }
+    return a;
+  }
 }
 
 const decoder = new TextDecoder('utf-8', { fatal: true });
@@ -68,97 +85,111 @@ function finite(a) {
   return a;
 }
 
-// ---- glam's f32 arithmetic, emulated ----
+// ---- Placement (kernel/place.c, WebAssembly) ----
+//
+// Placing a prototype is float32 arithmetic on every vertex (Mat3 * Vec3,
+// the normal matrix, a renormalisation). A first decode runs in V8's
+// interpreter, where every floating-point operation allocates a boxed
+// number: about 2 µs a vertex, 4 ms for a 2 000-vertex icon. The same
+// loops compiled from C cost nanoseconds, and WebAssembly's f32 operations
+// are IEEE 754 binary32 without fused multiply-add, so the bits are the
+// same as the emulation with Math.fround this replaced (and the server's).
 
-/** glam Mat3::from_quat in f32: columns as one 9-array (x, y, z axes). */
-function matFromQuat(x, y, z, w) {
-  const x2 = f(x + x), y2 = f(y + y), z2 = f(z + z);
-  const xx = f(x * x2), xy = f(x * y2), xz = f(x * z2);
-  const yy = f(y * y2), yz = f(y * z2), zz = f(z * z2);
-  const wx = f(w * x2), wy = f(w * y2), wz = f(w * z2);
-  return [
-    f(1 - f(yy + zz)), f(xy + wz), f(xz - wy),
-    f(xy - wz), f(1 - f(xx + zz)), f(yz + wx),
-    f(xz + wy), f(yz - wx), f(1 - f(xx + yy)),
-  ];
-}
+/** Records' float data as the kernel reads it: similarity t, q, s (8); affine linear, t (12). */
+const SIMILARITY_FLOATS = 8, AFFINE_FLOATS = 12;
+/** A placement's `op` in the kernel's batch (kernel/place.c). */
+const OP_SIMILARITY = 0, OP_MIRRORED = 1, OP_AFFINE = 2, OP_LEAF = 3;
+/** Bytes of one placement in a batch, and placements a batch holds. */
+const PLACEMENT_BYTES = 96, BATCH = 1024;
 
-/** The (linear, normal matrix, translation) of a similarity placement, as mesh::instance_map. */
-function similarityMap(t, q, s, parity) {
-  const r = matFromQuat(q[0], q[1], q[2], q[3]);
-  const sign = parity ? -1 : 1;
-  const k = f(sign * s);
-  return { linear: r.map((m) => f(m * k)), normal: r.map((m) => f(m * sign)), t, flip: parity };
-}
-
-/** The (linear, cofactor normal matrix, translation) of an affine placement, as AffineInstance. */
-function affineMap(m, t) {
-  const [ax, ay, az, bx, by, bz, cx, cy, cz] = m;
-  const crossf = (px, py, pz, qx, qy, qz) => [f(f(py * qz) - f(qy * pz)), f(f(pz * qx) - f(qz * px)), f(f(px * qy) - f(qx * py))];
-  const bc = crossf(bx, by, bz, cx, cy, cz);
-  const ca = crossf(cx, cy, cz, ax, ay, az);
-  const ab = crossf(ax, ay, az, bx, by, bz);
-  const det = f(f(f(ax * bc[0]) + f(ay * bc[1])) + f(az * bc[2]));
-  const parity = det < 0;
-  let normal = [...bc, ...ca, ...ab];
-  if (parity) normal = normal.map((x) => f(x * -1));
-  return { linear: m, normal, t, flip: parity };
-}
-
-/** Growable output mesh with typed arrays. */
+/**
+ * One mesh's output, built in the kernel's memory and copied out by
+ * finish(). Placements are queued in a batch there and placed by one call
+ * to the kernel's place_batch per batch (each call from JavaScript into
+ * WebAssembly costs microseconds while the process is cold). Meshes are
+ * built one at a time, so each starts again at the kernel's heap base.
+ */
 class MeshOut {
-  constructor(name, vertices, triangles) {
+  constructor(name, vertices, triangles, protos) {
     this.name = name;
-    this.positions = new Float32Array(3 * vertices);
-    this.normals = new Float32Array(3 * vertices);
-    this.colours = new Uint8Array(4 * vertices);
-    this.indices = new Uint32Array(3 * triangles);
-    this.nv = 0;
-    this.ni = 0;
+    let at = HEAP_BASE;
+    // The kernel's mesh_out: positions, normals, colours, indices (pointers), vertices, indices written.
+    this.state = at; at += 32;
+    this.pos = at; at += 12 * vertices;
+    this.nrm = at; at += 12 * vertices;
+    this.col = at; at += 4 * vertices;
+    this.idx = at; at += 12 * triangles;
+    at = (at + 15) & ~15;
+    this.batch = at; at += PLACEMENT_BYTES * BATCH;
+    this.protoAt = new Map();
+    for (const p of protos) {
+      this.protoAt.set(p, at);
+      at += 4 * (p.positions.length + p.normals.length + p.indices.length);
+    }
+    const buf = reserve(at);
+    for (const [p, off] of this.protoAt) {
+      new Float32Array(buf, off, p.positions.length).set(p.positions);
+      new Float32Array(buf, off + 4 * p.positions.length, p.normals.length).set(p.normals);
+      new Uint32Array(buf, off + 4 * (p.positions.length + p.normals.length), p.indices.length).set(p.indices);
+    }
+    this.u32 = new Uint32Array(buf);
+    this.f32 = new Float32Array(buf);
+    this.f64 = new Float64Array(buf);
+    this.u32.set([this.pos, this.nrm, this.col, this.idx, 0, 0], this.state >> 2);
+    this.queued = 0;
   }
+
+  /** Queues `proto` placed by `op` in `colour` (an RGBA little-endian word); returns where its args go (byte offset). */
+  queue(proto, op, colour) {
+    if (this.queued === BATCH) this.flush();
+    const at = this.batch + PLACEMENT_BYTES * this.queued++, w = at >> 2;
+    const u32 = this.u32;
+    u32[w] = op;
+    u32[w + 1] = this.protoAt.get(proto);
+    u32[w + 2] = proto.positions.length / 3;
+    u32[w + 3] = proto.indices.length;
+    u32[w + 4] = colour;
+    return at + 32;
+  }
+
+  /** Places the queued placements. */
+  flush() {
+    if (this.queued) kernel.place_batch(this.batch, this.queued, this.state);
+    this.queued = 0;
+  }
+
+  /** A mesh that is not an instance (a sweep, an isosurface), copied as it is. */
+  appendMesh(m) {
+    this.flush();
+    const s = this.state >> 2, base = this.u32[s + 4], ni = this.u32[s + 5], at = this.idx + 4 * ni;
+    this.f32.set(m.positions, (this.pos >> 2) + 3 * base);
+    this.f32.set(m.normals, (this.nrm >> 2) + 3 * base);
+    new Uint8Array(kernel.memory.buffer, this.col + 4 * base, m.colours.length).set(m.colours);
+    this.u32.set(m.indices, at >> 2);
+    kernel.indices(at, m.indices.length, base, 0, at);
+    this.u32[s + 4] = base + m.positions.length / 3;
+    this.u32[s + 5] = ni + m.indices.length;
+  }
+
   finish() {
-    const { name, nv, ni } = this;
-    return { name, positions: this.positions.subarray(0, 3 * nv), normals: this.normals.subarray(0, 3 * nv), colours: this.colours.subarray(0, 4 * nv), indices: this.indices.subarray(0, ni) };
+    this.flush();
+    const buf = kernel.memory.buffer, s = this.state >> 2, nv = this.u32[s + 4], ni = this.u32[s + 5];
+    return {
+      name: this.name,
+      positions: new Float32Array(buf, this.pos, 3 * nv).slice(),
+      normals: new Float32Array(buf, this.nrm, 3 * nv).slice(),
+      colours: new Uint8Array(buf, this.col, 4 * nv).slice(),
+      indices: new Uint32Array(buf, this.idx, ni).slice(),
+    };
   }
 }
 
-/** mesh::append_mapped: the prototype through the map, glam's operation order. */
-function appendMapped(out, proto, map, colour) {
-  const { linear: L, normal: N, t, flip } = map;
-  const P = proto.positions, Q = proto.normals, I = proto.indices;
-  const base = out.nv;
-  const op = out.positions, on = out.normals, oc = out.colours;
-  const n = P.length / 3;
-  for (let k = 0; k < n; k++) {
-    const px = P[3 * k], py = P[3 * k + 1], pz = P[3 * k + 2];
-    const o = 3 * (base + k);
-    // Mat3 * Vec3: x_axis·px, + y_axis·py, + z_axis·pz; then + translation.
-    op[o] = f(f(f(f(L[0] * px) + f(L[3] * py)) + f(L[6] * pz)) + t[0]);
-    op[o + 1] = f(f(f(f(L[1] * px) + f(L[4] * py)) + f(L[7] * pz)) + t[1]);
-    op[o + 2] = f(f(f(f(L[2] * px) + f(L[5] * py)) + f(L[8] * pz)) + t[2]);
-    const nx = Q[3 * k], ny = Q[3 * k + 1], nz = Q[3 * k + 2];
-    const mx = f(f(f(N[0] * nx) + f(N[3] * ny)) + f(N[6] * nz));
-    const my = f(f(f(N[1] * nx) + f(N[4] * ny)) + f(N[7] * nz));
-    const mz = f(f(f(N[2] * nx) + f(N[5] * ny)) + f(N[8] * nz));
-    // Vec3::try_normalize, else +Z.
-    const rcp = f(1 / f(Math.sqrt(f(f(f(mx * mx) + f(my * my)) + f(mz * mz)))));
-    if (Number.isFinite(rcp) && rcp > 0) {
-      on[o] = f(mx * rcp); on[o + 1] = f(my * rcp); on[o + 2] = f(mz * rcp);
-    } else {
-      on[o] = 0; on[o + 1] = 0; on[o + 2] = 1;
-    }
-    const c = 4 * (base + k);
-    oc[c] = colour[0]; oc[c + 1] = colour[1]; oc[c + 2] = colour[2]; oc[c + 3] = colour[3];
-  }
-  const oi = out.indices;
-  let w = out.ni;
-  for (let k = 0; k < I.length; k += 3) {
-    oi[w++] = base + I[k];
-    if (flip) { oi[w++] = base + I[k + 2]; oi[w++] = base + I[k + 1]; } else { oi[w++] = base + I[k + 1]; oi[w++] = base + I[k + 2]; }
-  }
-  out.nv = base + n;
-  out.ni = w;
-}
+/** Queues one record of a primitives, affine or placed run. */
+const appendRecord = (function appendRecord(out, proto, rec) {
+  const op = rec.affine ? OP_AFFINE : rec.parity ? OP_MIRRORED : OP_SIMILARITY;
+  out.f32.set(rec.data, out.queue(proto, op, rec.colour) >> 2);
+});
+
 
 // ---- hierarchies (f64, glam's DQuat) ----
 
@@ -187,41 +218,27 @@ function quatNormalize(q) {
   return [q[0] * r, q[1] * r, q[2] * r, q[3] * r];
 }
 
-/** glam Quat::normalize in f32. */
-function quatNormalizeF32(q) {
-  const d = f(f(f(f(q[0] * q[0]) + f(q[1] * q[1])) + f(q[2] * q[2])) + f(q[3] * q[3]));
-  const r = f(1 / f(Math.sqrt(d)));
-  return [f(q[0] * r), f(q[1] * r), f(q[2] * r), f(q[3] * r)];
-}
-
 /** A leaf shape's prototype: the primitive scaled and offset in f32, normals by the inverse scale (LeafShape::prototype). */
-function leafPrototype(shape, detail) {
+const leafPrototype = (function leafPrototype(shape, detail) {
   const d = shape.tube ? Math.max(Math.floor(detail / 2), 4) : detail;
   const p = prototype(shape.kind, d);
   // A bare primitive (MDG's leaves, LeafShape::is_bare) is used untouched.
   const bare = !shape.tube && shape.scale.every((x) => x === 1) && shape.offset.every((x) => x === 0);
   if (bare) return p;
-  const [sx, sy, sz] = shape.scale, [ox, oy, oz] = shape.offset;
-  const positions = new Float32Array(p.positions.length);
-  const normals = new Float32Array(p.normals.length);
-  const inv = (s) => (s === 0 ? 0 : f(1 / s));
-  const ix = inv(sx), iy = inv(sy), iz = inv(sz);
-  for (let k = 0; k < positions.length; k += 3) {
-    positions[k] = f(f(p.positions[k] * sx) + ox);
-    positions[k + 1] = f(f(p.positions[k + 1] * sy) + oy);
-    positions[k + 2] = f(f(p.positions[k + 2] * sz) + oz);
-    const mx = f(p.normals[k] * ix), my = f(p.normals[k + 1] * iy), mz = f(p.normals[k + 2] * iz);
-    const rcp = f(1 / f(Math.sqrt(f(f(f(mx * mx) + f(my * my)) + f(mz * mz)))));
-    const ok = Number.isFinite(rcp) && rcp > 0;
-    normals[k] = ok ? f(mx * rcp) : 0;
-    normals[k + 1] = ok ? f(my * rcp) : 0;
-    normals[k + 2] = ok ? f(mz * rcp) : 0;
-  }
+  const n = p.positions.length, pos = HEAP_BASE, nrm = pos + 4 * n, out = nrm + 4 * n, args = out + 8 * n;
+  const buf = reserve(args + 24);
+  new Float32Array(buf, pos, n).set(p.positions);
+  new Float32Array(buf, nrm, n).set(p.normals);
+  new Float32Array(buf, args, 6).set([...shape.scale, ...shape.offset]);
+  kernel.shape_prototype(pos, nrm, n / 3, args, out, out + 4 * n);
+  const positions = new Float32Array(buf, out, n).slice();
+  const normals = new Float32Array(buf, out + 4 * n, n).slice();
   return { positions, normals, indices: p.indices };
-}
+});
+
 
 /** Leaves of the hierarchy's expansion, in drawing order (Hierarchy::walk). */
-function walk(h, leaf) {
+const walk = (function walk(h, leaf) {
   const root = h.objects.length - 1;
   if (root < 0) return;
   // Frame::then: t + s·(r·t'), (r·r')‾, s·s' (s = 1 in rigid hierarchies: exact).
@@ -240,10 +257,11 @@ function walk(h, leaf) {
     if (e.shape >= 0) leaf(e.shape, translation, rotation, e.colour, scale);
     else if (e.object < object) stack.push([e.object, 0, translation, rotation, scale]);
   }
-}
+});
+
 
 /** Leaves and triangles of the expansion (saturating at 2^53). */
-function expansionTriangles(h, detail) {
+const expansionTriangles = (function expansionTriangles(h, detail) {
   const leaves = new Array(h.objects.length).fill(null);
   let total = 0;
   const shapeTris = h.shapes.map((s) => triangleCount(s.kind, s.tube ? Math.max(Math.floor(detail / 2), 4) : detail));
@@ -254,16 +272,18 @@ function expansionTriangles(h, detail) {
     total = t;
   }
   return total;
-}
+});
+
 
 /** Leaves of the root's expansion (Hierarchy::leaves). */
-function leafCount(h) {
+const leafCount = (function leafCount(h) {
   const leaves = [];
   for (const entries of h.objects) leaves.push(entries.reduce((n, e) => n + (e.shape >= 0 ? 1 : leaves[e.object]), 0));
   return leaves.length ? leaves[leaves.length - 1] : 0;
-}
+});
 
-function readHierarchy(r, nshapes, nobjects, wide, scaled = false) {
+
+const readHierarchy = (function readHierarchy(r, nshapes, nobjects, wide, scaled = false) {
   r.room(nshapes, 28);
   r.room(nobjects, 4);
   const shapes = [];
@@ -284,7 +304,7 @@ function readHierarchy(r, nshapes, nobjects, wide, scaled = false) {
       const q = finite(wide ? [r.f64(), r.f64(), r.f64(), r.f64()] : r.f32s(4));
       const s = scaled ? r.f64() : 1;
       if (!(Number.isFinite(s) && s > 0)) throw new SceneError('non-finite number in scene');
-      const colour = r.bytes(4);
+      const colour = r.u32(); // RGBA bytes as one little-endian word
       const isShape = raw >= SHAPE_BIT;
       const idx = isShape ? raw - SHAPE_BIT : raw;
       if (isShape ? idx >= nshapes : idx >= o) throw new SceneError(`object ${o} refers to ${raw}, which is not an earlier object or a known shape`);
@@ -293,9 +313,10 @@ function readHierarchy(r, nshapes, nobjects, wide, scaled = false) {
     objects.push(entries);
   }
   return { shapes, objects };
-}
+});
 
-function readHeader(r) {
+
+const readHeader = (function readHeader(r) {
   const m = r.bytes(4);
   if (m[0] !== 0x52 || m[1] !== 0x4d || m[2] !== 0x53 || m[3] !== 0x43) throw new SceneError('not a rulemesh scene file');
   const version = r.u16();
@@ -323,9 +344,10 @@ function readHeader(r) {
     if (provenance === null || typeof provenance !== 'object' || Array.isArray(provenance)) throw new SceneError('provenance is not a JSON object');
   }
   return { version, flags, detail, counts, provenance };
-}
+});
 
-function readMesh(r, withColours) {
+
+const readMesh = (function readMesh(r, withColours) {
   const v = r.u32(), t = r.u32();
   r.room(v, withColours ? 28 : 24);
   r.room(t, 12);
@@ -341,14 +363,15 @@ function readMesh(r, withColours) {
     indices[k] = i;
   }
   return { positions, normals, colours, indices };
-}
+});
+
 
 /** Parses version 2 after the header: palette, prototypes, hierarchy, meshes with their runs. */
-function parseV2(r, header) {
+const parseV2 = (function parseV2(r, header) {
   const [ncolours, nprotos] = header.counts;
   r.room(ncolours, 4);
   const palette = [];
-  for (let i = 0; i < ncolours; i++) palette.push(r.bytes(4));
+  for (let i = 0; i < ncolours; i++) palette.push(r.u32()); // RGBA bytes as one little-endian word
   r.room(nprotos, 8);
   const protos = [];
   for (let i = 0; i < nprotos; i++) protos.push(readMesh(r, false));
@@ -378,21 +401,18 @@ function parseV2(r, header) {
             const kind = code & ~PARITY_BIT;
             if (kind > 8) throw new SceneError(`unknown primitive kind ${kind}`);
             const c = colour();
-            const t = finite(r.f32s(3)), q = finite(r.f32s(4)), s = finite(r.f32s(1))[0];
-            records.push({ kind, colour: c, map: similarityMap(t, q, s, (code & PARITY_BIT) !== 0) });
+            records.push({ kind, colour: c, data: r.finiteF32s(SIMILARITY_FLOATS), parity: (code & PARITY_BIT) !== 0 });
           } else if (type === RUN_AFFINE) {
             const kind = r.u8();
             if (kind > 8) throw new SceneError(`unknown primitive kind ${kind}`);
             const c = colour();
-            const m = finite(r.f32s(9)), t = finite(r.f32s(3));
-            records.push({ kind, colour: c, map: affineMap(m, t) });
+            records.push({ kind, colour: c, data: r.finiteF32s(AFFINE_FLOATS), affine: true });
           } else {
             const shape = r.u32();
             if (shape >= nprotos) throw new SceneError('placement of a prototype that does not exist');
             const parity = r.u8() !== 0;
             const c = colour();
-            const t = finite(r.f32s(3)), q = finite(r.f32s(4)), s = finite(r.f32s(1))[0];
-            records.push({ proto: protos[shape], colour: c, map: similarityMap(t, q, s, parity) });
+            records.push({ proto: protos[shape], colour: c, data: r.finiteF32s(SIMILARITY_FLOATS), parity });
           }
         }
         runs.push({ records });
@@ -407,7 +427,8 @@ function parseV2(r, header) {
     meshes.push({ name, runs });
   }
   return { hierarchy, meshes };
-}
+});
+
 
 /**
  * Decodes a scene file (Uint8Array) into the meshes rulemesh's flat glTF
@@ -417,7 +438,7 @@ function parseV2(r, header) {
  * Options: `detail` for version 1 files (which do not record theirs; 16 by
  * default), `maxTriangles` (default 50 million) refused before any work.
  */
-export function decodeScene(bytes, { detail: v1Detail = 16, maxTriangles = 50e6 } = {}) {
+export const decodeScene = (function decodeScene(bytes, { detail: v1Detail = 16, maxTriangles = 50e6 } = {}) {
   if (!(bytes instanceof Uint8Array)) throw new TypeError('decodeScene expects a Uint8Array');
   const r = new Reader(bytes);
   const header = readHeader(r);
@@ -438,10 +459,12 @@ export function decodeScene(bytes, { detail: v1Detail = 16, maxTriangles = 50e6 
   let total = 0;
   const sizes = parsed.meshes.map(({ runs }) => {
     let v = 0, t = 0;
+    const protos = new Set(); // every prototype the mesh places, copied into the kernel once
     for (const run of runs) {
       if (run.records) {
         for (const rec of run.records) {
           const p = rec.proto || prototype(rec.kind, detail);
+          protos.add(p);
           v += p.positions.length / 3;
           t += p.indices.length / 3;
         }
@@ -455,7 +478,10 @@ export function decodeScene(bytes, { detail: v1Detail = 16, maxTriangles = 50e6 
         const counts = new Array(h.objects.length);
         for (let o = 0; o < h.objects.length; o++) {
           let verts = 0;
-          for (const e of h.objects[o]) verts += e.shape >= 0 ? leafProto(e.shape).positions.length / 3 : counts[e.object];
+          for (const e of h.objects[o]) {
+            if (e.shape >= 0) protos.add(leafProto(e.shape));
+            verts += e.shape >= 0 ? leafProto(e.shape).positions.length / 3 : counts[e.object];
+          }
           counts[o] = verts;
         }
         v += counts[counts.length - 1] || 0;
@@ -464,32 +490,28 @@ export function decodeScene(bytes, { detail: v1Detail = 16, maxTriangles = 50e6 
     }
     total += t;
     if (total > maxTriangles) throw new SceneError(`scene expands to more than ${maxTriangles} triangles`);
-    return [v, t];
+    return [v, t, protos];
   });
   const meshes = parsed.meshes.map(({ name, runs }, mi) => {
-    const out = new MeshOut(name, sizes[mi][0], sizes[mi][1]);
+    const out = new MeshOut(name, sizes[mi][0], sizes[mi][1], sizes[mi][2]);
     for (const run of runs) {
       if (run.records) {
-        for (const rec of run.records) appendMapped(out, rec.proto || prototype(rec.kind, detail), rec.map, rec.colour);
+        for (const rec of run.records) appendRecord(out, rec.proto || prototype(rec.kind, detail), rec);
       } else if (run.mesh) {
-        const m = run.mesh, base = out.nv;
-        out.positions.set(m.positions, 3 * base);
-        out.normals.set(m.normals, 3 * base);
-        out.colours.set(m.colours, 4 * base);
-        for (let k = 0; k < m.indices.length; k++) out.indices[out.ni++] = base + m.indices[k];
-        out.nv += m.positions.length / 3;
+        out.appendMesh(run.mesh);
       } else {
         walk(h, (shape, t, q, colour, scale) => {
-          // Instance::new: translation, rotation and scale rounded to f32, the rotation renormalised in f32.
-          const tf = [f(t[0]), f(t[1]), f(t[2])];
-          const qf = quatNormalizeF32([f(q[0]), f(q[1]), f(q[2]), f(q[3])]);
-          const sf = f(scale);
-          if (!tf.every(Number.isFinite) || !qf.every(Number.isFinite) || !Number.isFinite(sf) || sf === 0) return;
-          appendMapped(out, leafProto(shape), similarityMap(tf, qf, sf, false), colour);
+          // Instance::new (the kernel's OP_LEAF): rounded to f32, the rotation
+          // renormalised in f32; a leaf with a non-finite value or a zero scale is dropped.
+          const f64 = out.f64, at = out.queue(leafProto(shape), OP_LEAF, colour) >> 3;
+          f64[at] = t[0]; f64[at + 1] = t[1]; f64[at + 2] = t[2];
+          f64[at + 3] = q[0]; f64[at + 4] = q[1]; f64[at + 5] = q[2]; f64[at + 6] = q[3];
+          f64[at + 7] = scale;
         });
       }
     }
     return out.finish();
   });
   return { version: header.version, detail, truncated: (header.flags & FLAG_TRUNCATED) !== 0, provenance: header.provenance, meshes };
-}
+});
+

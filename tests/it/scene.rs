@@ -203,3 +203,19 @@ fn decoded_scene_is_the_flat_glb_triangle_for_triangle_in_rust_and_js() {
     assert!(o.status.success(), "node --test clients/js/ failed:\n{text}");
     assert!(text.contains("# fail 0"), "{text}");
 }
+
+/// The WebAssembly kernel the JavaScript decoder embeds
+/// (`clients/js/kernel-wasm.mjs`) is what its C sources build to with
+/// Debian's clang and wasm-ld: nobody can change the decoder's arithmetic
+/// without the reviewable C, nor the C without rebuilding the kernel.
+#[test]
+fn js_kernel_is_what_its_c_sources_build_to() {
+    let o = Command::new("bash")
+        .arg(repo().join("scripts/build-js-kernel"))
+        .arg("--check")
+        .output()
+        .unwrap_or_else(|e| panic!("bash cannot run: {e}"));
+    let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "scripts/build-js-kernel --check (needs clang and lld, which scripts/test installs):\n{text}");
+    assert!(text.contains("matches"), "{text}");
+}
