@@ -25,20 +25,58 @@ fn trimesh_check(file: &Path) -> (bool, u64, f64) {
     (watertight, faces, volume)
 }
 
-/// Renders `grammar` with `--print`. The deadline is the ceiling's: unions of
-/// thousands of parts take seconds, more on a loaded machine, and the
-/// pipeline keeps the deadline (these tests are about solids, not time).
-fn render(grammar: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
-    let mut args = vec!["render", grammar.to_str().expect("utf-8"), "--print", "--timeout", "600000", "-o", out.to_str().expect("utf-8")];
+/// The deadline a test print runs under.
+#[derive(Clone, Copy, PartialEq)]
+enum Deadline {
+    /// The default limits (10 s): what a user gets. A union that does not
+    /// finish in time is refused naming the deadline, which is issue 16's
+    /// "refused with findings that name the cause".
+    Default,
+    /// The ceiling's 600 s: every union finishes, so every solid is checked
+    /// however slow it is (the long runs: unions of thousands of parts take
+    /// seconds, more on a loaded machine).
+    Patient,
+}
+
+/// Renders `grammar` with `--print` under `deadline`.
+fn render_within(grammar: &Path, out: &Path, extra: &[&str], deadline: Deadline) -> std::process::Output {
+    let mut args = vec!["render", grammar.to_str().expect("utf-8"), "--print", "-o", out.to_str().expect("utf-8")];
+    if deadline == Deadline::Patient {
+        args.extend_from_slice(&["--timeout", "600000"]);
+    }
     args.extend_from_slice(extra);
     run(&args, None)
 }
 
+/// Renders `grammar` with `--print` and the ceiling's deadline (these tests are about solids, not time).
+fn render(grammar: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+    render_within(grammar, out, extra, Deadline::Patient)
+}
+
+/// Every MDG and L-system grammar at default limits: one watertight solid,
+/// or refused with the cause. Unions that run past the 10 s deadline (the
+/// plants, whose tubes are united flat) are refused naming it; the same
+/// check with the ceiling's deadline, where every union finishes, is the
+/// long run `every_grammar_prints_given_time` (docs/print.md).
 #[test]
 fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
     let grammars: Vec<_> = grammar_files("mdg").into_iter().chain(grammar_files("ls")).filter(|g| !is_the_bush(g)).collect();
     assert!(grammars.len() >= 30, "only {} grammars", grammars.len());
-    prints_as_one_watertight_solid_or_says_why_not(&grammars);
+    let checked = prints_as_one_watertight_solid_or_says_why_not(&grammars, Deadline::Default);
+    // Refusals must not hollow the test out: most grammars print (or are
+    // served with findings) and are checked in full, STL and 3MF.
+    assert!(checked >= 20, "only {checked} of {} grammars were checked in full", grammars.len());
+}
+
+/// [`every_grammar_prints_as_one_watertight_solid_or_says_why_not`] with the
+/// ceiling's deadline: minutes (the plants' flat unions take 10–70 s each,
+/// three times), so a long run: `<it-binary> print --ignored` (docs/print.md).
+#[test]
+#[ignore = "minutes: a long run (docs/print.md)"]
+fn every_grammar_prints_given_time() {
+    let grammars: Vec<_> = grammar_files("mdg").into_iter().chain(grammar_files("ls")).filter(|g| !is_the_bush(g)).collect();
+    let checked = prints_as_one_watertight_solid_or_says_why_not(&grammars, Deadline::Patient);
+    assert!(checked >= 30, "only {checked} of {} grammars were checked in full", grammars.len());
 }
 
 /// The Sierpinski bush: a 35,310-tube union that takes minutes per run
@@ -52,19 +90,35 @@ fn is_the_bush(g: &Path) -> bool {
 #[test]
 #[ignore = "minutes per run: a long run (docs/print.md)"]
 fn the_sierpinski_bush_prints_as_one_watertight_solid_or_says_why_not() {
-    prints_as_one_watertight_solid_or_says_why_not(&[repo().join("grammars/sierpinski-bush.ls")]);
+    prints_as_one_watertight_solid_or_says_why_not(&[repo().join("grammars/sierpinski-bush.ls")], Deadline::Patient);
+}
+
+/// Whether a failed print was refused for running past the deadline, which
+/// only the default limits allow (a refusal that names its cause).
+fn refused_at_the_deadline(stem: &str, out: &std::process::Output, deadline: Deadline) -> bool {
+    let err = String::from_utf8_lossy(&out.stderr);
+    let refused = deadline == Deadline::Default && err.contains("limit exceeded: deadline");
+    if refused {
+        eprintln!("{stem}: refused at the default deadline: {}", err.trim());
+    }
+    refused
 }
 
 /// For each grammar: the report, the STL (checked by admesh and trimesh
 /// against the report) and the 3MF (from another process: the same union).
-fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf]) {
+/// Returns how many grammars were checked in full.
+fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf], deadline: Deadline) -> usize {
     let dir = tempdir();
+    let mut checked = 0;
     for g in grammars {
         let g = g.as_path();
         let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
         let json = dir.path().join(format!("{stem}.json"));
-        let out = render(&g, &json, &["--print-report", "--size-mm", "40"]);
+        let out = render_within(&g, &json, &["--print-report", "--size-mm", "40"], deadline);
         if !out.status.success() {
+            if refused_at_the_deadline(&stem, &out, deadline) {
+                continue;
+            }
             // Nothing closed to print (e.g. only free-vertex surfaces): the error says so.
             let err = String::from_utf8_lossy(&out.stderr);
             assert!(err.contains("nothing printable"), "{stem}: {err}");
@@ -72,7 +126,10 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
         }
         let report: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).expect("report")).expect("report is JSON");
         let stl = dir.path().join(format!("{stem}.stl"));
-        let out = render(&g, &stl, &["--size-mm", "40"]);
+        let out = render_within(&g, &stl, &["--size-mm", "40"], deadline);
+        if !out.status.success() && refused_at_the_deadline(&stem, &out, deadline) {
+            continue; // the report's union finished in time, this one did not (a loaded machine)
+        }
         assert!(out.status.success(), "{stem}: {}", String::from_utf8_lossy(&out.stderr));
         let a = admesh(&stl);
         assert_eq!((a.open_edges, a.degenerate), (0, 0), "{stem}: {}", a.raw);
@@ -97,7 +154,10 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
         assert!(watertight, "{stem}: trimesh says not watertight");
         assert_eq!(faces, a.facets, "{stem}");
         let mf = dir.path().join(format!("{stem}.3mf"));
-        let out = render(&g, &mf, &["--size-mm", "40"]);
+        let out = render_within(&g, &mf, &["--size-mm", "40"], deadline);
+        if !out.status.success() && refused_at_the_deadline(&stem, &out, deadline) {
+            continue;
+        }
         let err = String::from_utf8_lossy(&out.stderr);
         if !out.status.success() && err.contains("limit exceeded: memory") {
             // The 3MF XML of the 35 310-tube Sierpinski bush does not fit the
@@ -112,7 +172,9 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
         // same triangle for triangle (print output is deterministic).
         assert_eq!(faces, a.facets, "{stem}: 3MF and STL triangle counts");
         assert!((volume3 - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: 3MF volume {volume3}");
+        checked += 1;
     }
+    checked
 }
 
 #[test]
@@ -256,11 +318,24 @@ fn print_is_deterministic(grammar: &Path, dir: &Path) -> Option<bool> {
 /// and hogeweg came out a few triangles apart from run to run.
 #[test]
 fn print_output_is_deterministic() {
-    let dir = tempdir();
-    // The three that differed, and two large unions of other shapes; every
-    // other grammar's STL and 3MF come from separate processes in the
+    // Two of the three that differed and a large union of other shapes;
+    // every other grammar's STL and 3MF come from separate processes in the
     // every-grammar test and must agree triangle for triangle.
-    for stem in ["plant-b.ls", "grass.ls", "hogeweg.ls", "menger.mdg", "spiral-rings.mdg"] {
+    prints_the_same_twice(&["grass.ls", "hogeweg.ls", "menger.mdg"]);
+}
+
+/// [`print_output_is_deterministic`] for the slow ones: plant-b (the third
+/// that differed) and spiral-rings, each a union of tens of seconds run
+/// twice, so a long run: `<it-binary> print --ignored` (docs/print.md).
+#[test]
+#[ignore = "a minute or more: a long run (docs/print.md)"]
+fn slow_prints_are_deterministic() {
+    prints_the_same_twice(&["plant-b.ls", "spiral-rings.mdg"]);
+}
+
+fn prints_the_same_twice(stems: &[&str]) {
+    let dir = tempdir();
+    for stem in stems {
         let g = repo().join("grammars").join(stem);
         assert_eq!(print_is_deterministic(&g, dir.path()), Some(true), "{stem}: two runs differ or it does not print");
     }
