@@ -1,0 +1,150 @@
+//! The union of an instancing hierarchy, once per distinct subtree (issue
+//! 16's fast unions).
+//!
+//! A hierarchy (MDG's memoised subtrees) places each distinct subtree
+//! wherever it occurs: the level-3 Menger sponge is 20 copies of 20 copies
+//! of 20 cubes, 4 objects for 8,000 cubes. The union of an object is the
+//! union of its entries, each a leaf shape or a child object's union,
+//! placed by the entry's similarity transform (rotation, uniform scale,
+//! translation: a child's closed, outward union stays closed and outward).
+//! So each object is united once, children first, from its children's
+//! unions, and reused wherever it is placed: the sponge is three unions of
+//! 20 pieces instead of one of 8,000, 20 times less triangles crossing
+//! each other's boxes at the top, and Manifold's batch union (which already
+//! composes pieces whose boxes are disjoint without a boolean) does the
+//! rest.
+//!
+//! Every object's pieces are snapped to a grid of its own, 2⁻²⁰ of its
+//! largest coordinate's power of two (as the flat union snaps the whole
+//! model, `union::snap_grid`), so faces that coincide in exact arithmetic
+//! (sibling sub-sponges' faces) coincide exactly and fuse. Colours go up
+//! the same way: each object's united triangles take the colour of the
+//! piece triangle they lie in (`colour::triangle_colours`), once per object.
+
+use super::union::{self, Piece};
+use super::{colour, PrintError};
+use crate::core::budget::Budget;
+use crate::geom::halfedge::HalfEdgeMesh;
+use crate::model::hierarchy::{Entry, Hierarchy, Target};
+use glam::DVec3;
+
+/// A closed, outward solid in an object's frame, with each triangle's colour.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Solid {
+    /// Shared positions.
+    pub positions: Vec<DVec3>,
+    /// CCW (outward) triangles.
+    pub tris: Vec<[u32; 3]>,
+    /// Linear RGBA8 of each triangle.
+    pub colours: Vec<[u8; 4]>,
+}
+
+impl Solid {
+    /// Bytes it holds while it waits to be placed by its parents.
+    fn bytes(&self) -> u64 {
+        (self.positions.len() * 24 + self.tris.len() * 16) as u64
+    }
+}
+
+/// The union of a hierarchy's expansion and what the report needs of its parts.
+pub(super) struct United {
+    /// The root object's union.
+    pub solid: Solid,
+    /// Closed parts in the expansion (its leaves).
+    pub parts: u64,
+    /// The smallest bounding-box side of any placed part (model units).
+    pub min_extent: f64,
+}
+
+/// Unites `h` object by object, children first, at `detail`. `None` when a
+/// leaf shape is not one closed solid or a placement is not finite: the
+/// flat route (split into parts, thickened or left out) then decides.
+pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -> Result<Option<United>, PrintError> {
+    let Some(leaves) = h.shapes.iter().map(|s| leaf_solid(&s.prototype(detail))).collect::<Option<Vec<Solid>>>() else {
+        return Ok(None);
+    };
+    let Some(min_extent) = min_extent(h, &leaves) else { return Ok(None) };
+    let used = h.multiplicities();
+    let mut solids: Vec<Solid> = Vec::with_capacity(h.objects.len());
+    let mut held = 0u64;
+    for (object, &count) in h.objects.iter().zip(&used) {
+        if count == 0 {
+            solids.push(Solid::default());
+            continue;
+        }
+        budget.check_deadline()?;
+        let placed: Vec<Solid> = object
+            .entries
+            .iter()
+            .map(|e| {
+                let (source, colour) = match e.target {
+                    Target::Shape(s) => (leaves.get(s as usize), Some(e.colour)),
+                    Target::Object(c) => (solids.get(c as usize), None),
+                };
+                place(source.unwrap_or(&Solid::default()), e, colour)
+            })
+            .collect();
+        if placed.iter().any(|p| p.positions.iter().any(|q| !q.is_finite())) {
+            return Ok(None);
+        }
+        let solid = unite_pieces(&placed, budget)?;
+        held += solid.bytes();
+        budget.reserve_memory(solid.bytes())?;
+        solids.push(solid);
+    }
+    budget.release_memory(held);
+    let solid = solids.pop().unwrap_or_default();
+    Ok(Some(United { solid, parts: h.leaves(), min_extent }))
+}
+
+/// One object's union of its placed pieces, snapped to its own grid, with
+/// each united triangle's colour.
+fn unite_pieces(placed: &[Solid], budget: &mut Budget) -> Result<Solid, PrintError> {
+    let pieces: Vec<Piece<'_>> = placed.iter().map(|p| (p.positions.as_slice(), p.tris.as_slice())).collect();
+    let grid = union::snap_grid(&pieces);
+    let (positions, indices) = union::unite(&pieces, grid, budget)?;
+    // Colours against the snapped pieces: the union's faces lie in them.
+    let snapped: Vec<Vec<DVec3>> = placed.iter().map(|p| p.positions.iter().map(|q| union::snap(*q, grid)).collect()).collect();
+    let snapped_pieces: Vec<Piece<'_>> = snapped.iter().zip(placed).map(|(s, p)| (s.as_slice(), p.tris.as_slice())).collect();
+    let colours: Vec<Vec<[u8; 4]>> = placed.iter().map(|p| p.colours.clone()).collect();
+    let colours = colour::triangle_colours(&snapped_pieces, &colours, &positions, &indices, budget)?;
+    let tris = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+    Ok(Solid { positions, tris, colours })
+}
+
+/// `s` placed by entry `e` (its colour replaced by `colour`, a leaf's).
+fn place(s: &Solid, e: &Entry, colour: Option<[u8; 4]>) -> Solid {
+    let positions = s.positions.iter().map(|p| e.translation + e.rotation * (*p * e.scale)).collect();
+    let colours = match colour {
+        Some(c) => vec![c; s.tris.len()],
+        None => s.colours.clone(),
+    };
+    Solid { positions, tris: s.tris.clone(), colours }
+}
+
+/// A leaf shape's prototype as one closed, outward solid (welded by exact
+/// position), or `None` when it is open or pinched.
+fn leaf_solid(p: &crate::geom::primitives::Prototype) -> Option<Solid> {
+    let (distinct, remap) = crate::geom::weld::weld_by(p.positions.iter().copied(), crate::geom::weld::f32_key);
+    let positions: Vec<DVec3> = distinct.iter().map(|q| glam::Vec3::from_array(*q).as_dvec3()).collect();
+    let tris: Vec<[u32; 3]> = crate::geom::weld::welded_triangles(&p.indices, &remap).map(|(_, t)| t).collect();
+    let m = HalfEdgeMesh::new(positions, tris).ok().filter(|m| m.is_closed() && m.nonmanifold_vertices().is_empty())?;
+    let outward = m.signed_volume() > 0.0;
+    let (positions, tris) = m.into_parts();
+    let tris = if outward { tris } else { tris.into_iter().map(|t| [t[0], t[2], t[1]]).collect() };
+    Some(Solid { colours: vec![super::PLAIN; tris.len()], positions, tris })
+}
+
+/// The smallest bounding-box side of any leaf placed in the expansion
+/// (what the flat route's `min_extent` measures), `None` when a placement
+/// is not finite. One pass over the leaves, each shape's positions placed.
+fn min_extent(h: &Hierarchy, leaves: &[Solid]) -> Option<f64> {
+    let mut least = f64::INFINITY;
+    h.walk(&mut |leaf| {
+        if let Some(s) = leaves.get(leaf.shape as usize) {
+            let (lo, hi) = super::bounds(s.positions.iter().map(|p| leaf.translation + leaf.rotation * (*p * leaf.scale)));
+            least = least.min((hi - lo).min_element());
+        }
+    });
+    least.is_finite().then_some(least)
+}
