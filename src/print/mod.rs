@@ -148,11 +148,17 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
 /// model's grid and unsnapped).
 pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptions, budget: &mut Budget) -> Result<Option<(Vec<NamedMesh>, PrintReport)>, PrintError> {
     options.profile.validate()?;
-    let Some(united) = subtree::unite_hierarchy(h, detail, budget)? else { return Ok(None) };
+    // The flat route charges its own work: what this one did is refunded if it gives up.
+    let mark = budget.mark();
+    let Some(united) = subtree::unite_hierarchy(h, detail, budget)? else {
+        budget.rewind(mark);
+        return Ok(None);
+    };
     let subtree::United { solid, parts, min_extent } = united;
     let indices: Vec<u32> = solid.tris.iter().flatten().copied().collect();
     let placed = place((solid.positions, indices), options.size_um);
     if report::bad_edges(&placed.scaled, &placed.indices) > 0 {
+        budget.rewind(mark);
         return Ok(None);
     }
     let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0 };

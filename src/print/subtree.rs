@@ -63,6 +63,7 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
     let Some(leaves) = h.shapes.iter().map(|s| leaf_solid(&s.prototype(detail))).collect::<Option<Vec<Solid>>>() else {
         return Ok(None);
     };
+    budget.charge_steps(h.leaves())?;
     let Some(min_extent) = min_extent(h, &leaves) else { return Ok(None) };
     let used = h.multiplicities();
     let mut solids: Vec<Solid> = Vec::with_capacity(h.objects.len());
@@ -87,7 +88,11 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
         if placed.iter().any(|p| p.positions.iter().any(|q| !q.is_finite())) {
             return Ok(None);
         }
-        let solid = unite_pieces(&placed, budget)?;
+        // One child object placed alone is already a union: placing it is enough.
+        let solid = match (placed.len(), object.entries.first().map(|e| e.target)) {
+            (1, Some(Target::Object(_))) => placed.into_iter().next().unwrap_or_default(),
+            _ => unite_pieces(&placed, budget)?,
+        };
         held += solid.bytes();
         budget.reserve_memory(solid.bytes())?;
         solids.push(solid);
@@ -147,4 +152,79 @@ fn min_extent(h: &Hierarchy, leaves: &[Solid]) -> Option<f64> {
         }
     });
     least.is_finite().then_some(least)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::budget::Limits;
+    use crate::core::PrimitiveKind;
+    use crate::model::hierarchy::{LeafShape, Object};
+    use glam::DQuat;
+
+    /// An entry placing `target` at `t` scaled by `s`.
+    fn entry(target: Target, t: DVec3, s: f64, colour: [u8; 4]) -> Entry {
+        Entry { target, translation: t, rotation: DQuat::IDENTITY, scale: s, colour }
+    }
+
+    /// The 20 kept cells of a 3 × 3 × 3 split (at most one zero coordinate).
+    fn cells() -> Vec<DVec3> {
+        const R: [f64; 3] = [-1.0, 0.0, 1.0];
+        R.iter().flat_map(|&x| R.iter().flat_map(move |&y| R.iter().map(move |&z| DVec3::new(x, y, z)))).filter(|c| c.to_array().iter().filter(|v| **v == 0.0).count() <= 1).collect()
+    }
+
+    /// A Menger sponge of `levels` objects over one box (20^levels leaves), as MDG memoises it.
+    fn sponge(levels: usize) -> Hierarchy {
+        let mut objects = Vec::new();
+        for level in 0..levels {
+            let target = if level == 0 { Target::Shape(0) } else { Target::Object(level as u32 - 1) };
+            let entries = cells().into_iter().map(|c| entry(target, c / 3.0, 1.0 / 3.0, [200, 150, 60, 255])).collect();
+            objects.push(Object { entries, leaves: 20u64.pow(level as u32 + 1) });
+        }
+        Hierarchy { shapes: vec![LeafShape::primitive(PrimitiveKind::Box)], objects, truncated: None }
+    }
+
+    /// The united solid as a checked half-edge mesh (closed, no pinched vertex) and its volume.
+    fn closed_volume(s: &Solid) -> f64 {
+        let m = HalfEdgeMesh::new(s.positions.clone(), s.tris.clone()).expect("manifold");
+        assert!(m.is_closed() && m.nonmanifold_vertices().is_empty());
+        m.signed_volume()
+    }
+
+    #[test]
+    fn a_level_two_sponge_unites_per_subtree_into_one_closed_solid_of_its_volume() {
+        let mut budget = Budget::new(Limits::default());
+        let u = unite_hierarchy(&sponge(2), 8, &mut budget).expect("union").expect("boxes are solids");
+        assert_eq!(u.parts, 400);
+        assert!((u.min_extent - 1.0 / 9.0).abs() < 1e-12, "{}", u.min_extent);
+        let volume = closed_volume(&u.solid);
+        // Snapped to 2^-20: each box moves by under a millionth.
+        assert!((volume - (20.0f64 / 27.0).powi(2)).abs() < 1e-5, "{volume}");
+        // The same hierarchy gives the same solid, vertex for vertex.
+        let again = unite_hierarchy(&sponge(2), 8, &mut budget).expect("union").expect("solids");
+        assert_eq!((u.solid.positions, u.solid.tris), (again.solid.positions, again.solid.tris));
+    }
+
+    #[test]
+    fn colours_follow_the_leaves_up_the_hierarchy() {
+        // Object 0: a red box overlapping a blue one; the root places it twice, end to end.
+        let (red, blue) = ([255, 0, 0, 255], [0, 0, 255, 255]);
+        let pair = Object { entries: vec![entry(Target::Shape(0), DVec3::ZERO, 1.0, red), entry(Target::Shape(0), DVec3::X * 0.5, 1.0, blue)], leaves: 2 };
+        let root = Object { entries: vec![entry(Target::Object(0), DVec3::ZERO, 1.0, [0; 4]), entry(Target::Object(0), DVec3::X * 1.5, 1.0, [0; 4])], leaves: 4 };
+        let h = Hierarchy { shapes: vec![LeafShape::primitive(PrimitiveKind::Box)], objects: vec![pair, root], truncated: None };
+        let u = unite_hierarchy(&h, 8, &mut Budget::new(Limits::default())).expect("union").expect("solids");
+        // Boxes at 0, 0.5, 1.5 and 2: one block from -0.5 to 2.5 (the pairs touch at x = 1).
+        assert!((closed_volume(&u.solid) - 3.0).abs() < 1e-9);
+        for (t, c) in u.solid.tris.iter().zip(&u.solid.colours) {
+            let x = t.iter().map(|&v| u.solid.positions[v as usize].x).sum::<f64>() / 3.0;
+            // Where only one box's face is (the overlaps' coplanar faces may go either way).
+            let only = |a: f64, b: f64| x > a && x < b;
+            if only(-1.0, -0.05) || only(1.05, 1.45) {
+                assert_eq!(*c, red, "x {x}");
+            } else if only(0.55, 0.95) || only(2.05, 3.0) {
+                assert_eq!(*c, blue, "x {x}");
+            }
+        }
+        assert!(u.solid.colours.contains(&blue) && u.solid.colours.contains(&red));
+    }
 }
