@@ -10,23 +10,22 @@ coincide do exactly, then scaled to the 1 mm cube. Prints
 "<best seconds of 3> <triangles> <watertight>" and writes the union.
 """
 import sys
-import time
 
 import manifold3d as m3
-import trimesh
+
+from manifold_common import best_of_3, report
 
 CELLS = [(x, y, z) for x in (-1, 0, 1) for y in (-1, 0, 1) for z in (-1, 0, 1) if (x, y, z).count(0) <= 1]
-best, mesh = None, None
-for _ in range(3):
-    t0 = time.perf_counter()
+
+
+def sponge():
+    """The level-3 sponge, one batch union per level (per distinct subtree)."""
     m = m3.Manifold.cube((1, 1, 1), True)
     for level in range(3):
         s = 3**level
         m = m3.Manifold.batch_boolean([m.translate((x * s, y * s, z * s)) for (x, y, z) in CELLS], m3.OpType.Add)
-    m = m.scale((1 / 27, 1 / 27, 1 / 27))
-    mesh = m.to_mesh()
-    t = time.perf_counter() - t0
-    best = t if best is None else min(best, t)
-out = trimesh.Trimesh(vertices=mesh.vert_properties[:, :3], faces=mesh.tri_verts, process=False)
-out.export(sys.argv[1])
-print("%.3f %d %s" % (best, len(mesh.tri_verts), trimesh.load(sys.argv[1], force="mesh").is_watertight))
+    return m.scale((1 / 27, 1 / 27, 1 / 27))
+
+
+best, mesh = best_of_3(sponge)
+report(best, mesh, sys.argv[1])
