@@ -74,7 +74,9 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
             continue;
         }
         budget.check_deadline()?;
-        let placed: Vec<Solid> = object
+        // (Whether the entry places a child object, the placed piece.) Empty
+        // pieces (a subtree that draws nothing) take no part.
+        let placed: Vec<(bool, Solid)> = object
             .entries
             .iter()
             .map(|e| {
@@ -82,16 +84,18 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
                     Target::Shape(s) => (leaves.get(s as usize), Some(e.colour)),
                     Target::Object(c) => (solids.get(c as usize), None),
                 };
-                place(source.unwrap_or(&Solid::default()), e, colour)
+                (matches!(e.target, Target::Object(_)), place(source.unwrap_or(&Solid::default()), e, colour))
             })
+            .filter(|(_, p)| !p.tris.is_empty())
             .collect();
-        if placed.iter().any(|p| p.positions.iter().any(|q| !q.is_finite())) {
+        if placed.iter().any(|(_, p)| p.positions.iter().any(|q| !q.is_finite())) {
             return Ok(None);
         }
-        // One child object placed alone is already a union: placing it is enough.
-        let solid = match (placed.len(), object.entries.first().map(|e| e.target)) {
-            (1, Some(Target::Object(_))) => placed.into_iter().next().unwrap_or_default(),
-            _ => unite_pieces(&placed, budget)?,
+        let solid = match placed.len() {
+            0 => Solid::default(),
+            // One child object placed alone is already a union: placing it is enough.
+            1 if placed[0].0 => placed.into_iter().next().map(|(_, p)| p).unwrap_or_default(),
+            _ => unite_pieces(&placed.into_iter().map(|(_, p)| p).collect::<Vec<_>>(), budget)?,
         };
         held += solid.bytes();
         budget.reserve_memory(solid.bytes())?;
@@ -99,6 +103,10 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
     }
     budget.release_memory(held);
     let solid = solids.pop().unwrap_or_default();
+    if solid.tris.is_empty() {
+        // Nothing drawn: the flat route says so.
+        return Ok(None);
+    }
     Ok(Some(United { solid, parts: h.leaves(), min_extent }))
 }
 
@@ -226,5 +234,20 @@ mod tests {
             }
         }
         assert!(u.solid.colours.contains(&blue) && u.solid.colours.contains(&red));
+    }
+
+    #[test]
+    fn a_subtree_that_draws_nothing_takes_no_part() {
+        let box_shape = vec![LeafShape::primitive(PrimitiveKind::Box)];
+        let empty = Object { entries: Vec::new(), leaves: 0 };
+        let grey = [200, 200, 200, 255];
+        let root = Object { entries: vec![entry(Target::Object(0), DVec3::ZERO, 1.0, [0; 4]), entry(Target::Shape(0), DVec3::ZERO, 1.0, grey)], leaves: 1 };
+        let h = Hierarchy { shapes: box_shape.clone(), objects: vec![empty.clone(), root], truncated: None };
+        let u = unite_hierarchy(&h, 8, &mut Budget::new(Limits::default())).expect("union").expect("a box");
+        assert!((closed_volume(&u.solid) - 1.0).abs() < 1e-9);
+        // Nothing at all: the flat route says why.
+        let nothing = Object { entries: vec![entry(Target::Object(0), DVec3::ZERO, 1.0, [0; 4])], leaves: 0 };
+        let h = Hierarchy { shapes: box_shape, objects: vec![empty, nothing], truncated: None };
+        assert!(unite_hierarchy(&h, 8, &mut Budget::new(Limits::default())).expect("no error").is_none());
     }
 }
