@@ -57,8 +57,9 @@ pub(super) struct United {
 }
 
 /// Unites `h` object by object, children first, at `detail`. `None` when a
-/// leaf shape is not one closed solid or a placement is not finite: the
-/// flat route (split into parts, thickened or left out) then decides.
+/// leaf shape is not one closed solid, a placement is not finite, Manifold
+/// refuses an object's pieces, or nothing is drawn: the flat route (split
+/// into parts, thickened or left out) then decides.
 pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -> Result<Option<United>, PrintError> {
     let Some(leaves) = h.shapes.iter().map(|s| leaf_solid(&s.prototype(detail))).collect::<Option<Vec<Solid>>>() else {
         return Ok(None);
@@ -95,7 +96,11 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
             0 => Solid::default(),
             // One child object placed alone is already a union: placing it is enough.
             1 if placed[0].0 => placed.into_iter().next().map(|(_, p)| p).unwrap_or_default(),
-            _ => unite_pieces(&placed.into_iter().map(|(_, p)| p).collect::<Vec<_>>(), budget)?,
+            _ => match unite_pieces(&placed.into_iter().map(|(_, p)| p).collect::<Vec<_>>(), budget) {
+                // Manifold refused a piece (say, one snapped flat): the flat route decides.
+                Err(PrintError::Union(_)) => return Ok(None),
+                united => united?,
+            },
         };
         held += solid.bytes();
         budget.reserve_memory(solid.bytes())?;
