@@ -11,24 +11,17 @@ Manifolds from their meshes included, reading the STL not), and writes the
 union to OUT.stl.
 """
 import sys
-import time
 
 import manifold3d as m3
 import numpy as np
 import trimesh
+
+from manifold_common import best_of_3, report
 
 tris = trimesh.load(sys.argv[1], force="mesh", process=False).triangles
 meshes = []
 for c in range(len(tris) // 12):
     v, inv = np.unique(tris[12 * c : 12 * c + 12].reshape(-1, 3), axis=0, return_inverse=True)
     meshes.append(m3.Mesh(vert_properties=v.astype(np.float32), tri_verts=inv.reshape(-1, 3).astype(np.uint32)))
-best, mesh = None, None
-for _ in range(3):
-    t0 = time.perf_counter()
-    union = m3.Manifold.batch_boolean([m3.Manifold(m) for m in meshes], m3.OpType.Add)
-    mesh = union.to_mesh()
-    t = time.perf_counter() - t0
-    best = t if best is None else min(best, t)
-out = trimesh.Trimesh(vertices=mesh.vert_properties[:, :3], faces=mesh.tri_verts, process=False)
-out.export(sys.argv[2])
-print("%.3f %d %s" % (best, len(mesh.tri_verts), trimesh.load(sys.argv[2], force="mesh").is_watertight))
+best, mesh = best_of_3(lambda: m3.Manifold.batch_boolean([m3.Manifold(m) for m in meshes], m3.OpType.Add))
+report(best, mesh, sys.argv[2])

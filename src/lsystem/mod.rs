@@ -62,7 +62,9 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     };
     let wants = match req.hierarchy {
         HierarchyUse::Required | HierarchyUse::Preferred => dag.is_some(),
-        HierarchyUse::Never => false,
+        // Printing unites the turtle's mitred sweeps (their runs meet face
+        // to face), not the hierarchy's capped tube segments.
+        HierarchyUse::Never | HierarchyUse::Union => false,
     };
     if wants {
         let mark = budget.mark();

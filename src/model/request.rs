@@ -44,6 +44,11 @@ pub enum HierarchyUse {
     /// builds none cheaply, flat geometry, as for [`HierarchyUse::Preferred`]
     /// (so a scene holds the same model as the flat formats).
     Required,
+    /// A hierarchy where the language builds one, for printing, whose union
+    /// works once per distinct subtree (`print::make_printable_hierarchy`)
+    /// and falls back to the expansion; else flat geometry. The limits
+    /// charge the expansion's leaves and triangles, as flat geometry.
+    Union,
 }
 
 /// One front end call: everything besides the source that decides the model.

@@ -273,8 +273,9 @@ fn graph_capable(req: &RenderRequest) -> bool {
 fn hierarchy_use(req: &RenderRequest) -> HierarchyUse {
     match req.format {
         Format::Scene => HierarchyUse::Required,
-        // Printing unites the expanded parts into one solid, so it never instances.
-        Format::Glb | Format::Gltf if !req.export_options.print.enabled => HierarchyUse::Preferred,
+        // Printing unites once per distinct subtree where there is a hierarchy.
+        _ if req.export_options.print.enabled => HierarchyUse::Union,
+        Format::Glb | Format::Gltf => HierarchyUse::Preferred,
         _ => HierarchyUse::Never,
     }
 }
@@ -415,6 +416,16 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
         return Ok(summary(bytes, &model, triangles, truncated));
     }
+    // A print of a hierarchy unites once per distinct subtree, or (a leaf
+    // that is no solid, a union with bad edges) expands it for the flat route.
+    let mut printed = None;
+    if let Some(h) = model.hierarchy.take_if(|_| opts.print.enabled) {
+        printed = crate::print::make_printable_hierarchy(&h, req.detail, &opts.print, budget)?;
+        match printed {
+            Some(_) => model.scene.truncated = h.truncated,
+            None => model.hierarchy = Some(h),
+        }
+    }
     if let Some(h) = model.hierarchy.take() {
         let bytes = match req.format {
             Format::Glb | Format::Gltf if gpu_instancing(req) => {
@@ -450,10 +461,15 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
     let scene = &model.scene;
     let print = opts.print;
     let (mut meshes, graph, cut) = if print.enabled {
-        // Printing unites closed parts, so it needs them apart (and shows time 0).
-        let parts = mesh::build_parts(scene, req.detail, budget)?;
-        clock.lap(Phase::Mesh);
-        let (solid, report) = crate::print::make_printable(&parts, &print, budget)?;
+        let (solid, report) = match printed {
+            Some(done) => done,
+            None => {
+                // Printing unites closed parts, so it needs them apart (and shows time 0).
+                let parts = mesh::build_parts(scene, req.detail, budget)?;
+                clock.lap(Phase::Mesh);
+                crate::print::make_printable(&parts, &print, budget)?
+            }
+        };
         clock.lap(Phase::Print);
         if print.report {
             let bytes = serde_json::to_vec_pretty(&report).map_err(|e| RenderError::Export(e.into()))?;

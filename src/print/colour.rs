@@ -8,7 +8,7 @@
 //! faces coincide, the first part's colour wins (deterministic).
 
 use crate::core::budget::{Budget, LimitExceeded};
-use crate::geom::halfedge::HalfEdgeMesh;
+use super::union::Piece;
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -27,7 +27,7 @@ struct Source {
 /// per triangle), from the parts it was made of (`colours` parallel to
 /// `parts` and to each part's triangles). A one-colour model needs no
 /// search. Charges a step per grid entry.
-pub(super) fn triangle_colours(parts: &[HalfEdgeMesh], colours: &[Vec<[u8; 4]>], positions: &[DVec3], indices: &[u32], budget: &mut Budget) -> Result<Vec<[u8; 4]>, LimitExceeded> {
+pub(super) fn triangle_colours(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], positions: &[DVec3], indices: &[u32], budget: &mut Budget) -> Result<Vec<[u8; 4]>, LimitExceeded> {
     let count = indices.len() / 3;
     let first = colours.iter().flatten().next().copied().unwrap_or(super::PLAIN);
     if colours.iter().flatten().all(|c| *c == first) {
@@ -37,8 +37,8 @@ pub(super) fn triangle_colours(parts: &[HalfEdgeMesh], colours: &[Vec<[u8; 4]>],
         .iter()
         .zip(colours)
         .flat_map(|(p, cs)| {
-            p.triangles().iter().zip(cs).map(|(t, &colour)| {
-                let corners = t.map(|v| p.positions[v as usize]);
+            p.1.iter().zip(cs).map(|(t, &colour)| {
+                let corners = t.map(|v| p.0.get(v as usize).copied().unwrap_or(DVec3::ZERO));
                 let normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalize_or_zero();
                 Source { corners, normal, colour }
             })

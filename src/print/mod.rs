@@ -14,6 +14,7 @@ mod colour;
 pub mod findings;
 pub mod profile;
 mod report;
+mod subtree;
 pub mod thickness;
 mod union;
 
@@ -23,6 +24,7 @@ pub use report::{measure, measure_stl, PrintReport, ProfileReport};
 
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh};
+use crate::model::Hierarchy;
 use serde::{Deserialize, Serialize};
 
 /// What a request asks of printable output. Part of the export options (and
@@ -116,6 +118,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
         0.0
     };
     let parts = union::split_parts(meshes, wall, budget)?;
+    let pieces = union::pieces(&parts.closed);
     // Snapped to a grid first (src/print/union.rs, `snap_grid`): parts that
     // share faces in exact arithmetic then share them exactly and fuse.
     // Snapping also moves curved parts by up to half a step, which can turn
@@ -124,26 +127,73 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     // has edges not shared by exactly two faces, the parts are united again
     // unsnapped and the result with fewer such edges is kept (the snapped
     // one on a tie): the choice depends only on the two results.
-    let mut placed = place(union::unite(&parts.closed, union::snap_grid(&parts.closed), budget)?, options.size_um);
+    let mut placed = place(union::unite(&pieces, union::snap_grid(&pieces), budget)?, options.size_um);
     let bad = report::bad_edges(&placed.scaled, &placed.indices);
     if bad > 0 {
-        let plain = place(union::unite(&parts.closed, 0.0, budget)?, options.size_um);
+        let plain = place(union::unite(&pieces, 0.0, budget)?, options.size_um);
         if report::bad_edges(&plain.scaled, &plain.indices) < bad {
             placed = plain;
         }
     }
-    let Placed { united, scaled, indices, kept, scale } = placed;
-    let colours = colour::triangle_colours(&parts.closed, &parts.colours, &united.0, &united.1, budget)?;
+    let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
+    let summary = PartSummary { parts: parts.closed.len() as u64, skipped: parts.skipped, thickened: parts.thickened, min_extent: parts.min_extent, wall };
+    finish(placed, &colours, &summary, options, budget)
+}
+
+/// Unites the expansion of an instancing hierarchy (shapes at `detail`)
+/// once per distinct object, children first (`subtree`), and measures it as
+/// [`make_printable`] does. `None` when the flat route must decide instead:
+/// a leaf shape is not one closed solid, or the union has edges not shared
+/// by exactly two faces (the flat route then tries the parts snapped to the
+/// model's grid and unsnapped).
+pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptions, budget: &mut Budget) -> Result<Option<(Vec<NamedMesh>, PrintReport)>, PrintError> {
+    options.profile.validate()?;
+    // The flat route charges its own work: what this one did is refunded if it gives up.
+    let mark = budget.mark();
+    let Some(united) = subtree::unite_hierarchy(h, detail, budget)? else {
+        budget.rewind(mark);
+        return Ok(None);
+    };
+    let subtree::United { solid, parts, min_extent } = united;
+    let indices: Vec<u32> = solid.tris.iter().flatten().copied().collect();
+    let placed = place((solid.positions, indices), options.size_um);
+    if report::bad_edges(&placed.scaled, &placed.indices) > 0 {
+        budget.rewind(mark);
+        return Ok(None);
+    }
+    let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0 };
+    finish(placed, &solid.colours, &summary, options, budget).map(Some)
+}
+
+/// What the report says of the parts that went into a union.
+struct PartSummary {
+    /// Closed parts united (thickening prisms included).
+    parts: u64,
+    /// Open or non-manifold parts left out.
+    skipped: u64,
+    /// Open parts thickened into walls.
+    thickened: u64,
+    /// The smallest bounding-box side of a part (model units).
+    min_extent: f64,
+    /// The thickness walls were given (model units).
+    wall: f64,
+}
+
+/// The printed mesh and its report from a placed union and the colour of
+/// each of its (unplaced) triangles.
+fn finish(placed: Placed, colours: &[[u8; 4]], parts: &PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
+    let Placed { scaled, indices, kept, scale, .. } = placed;
     let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
     let mesh = flat_mesh(&scaled, &indices, &colours);
     let mut report = measure(&scaled, &indices);
-    report.parts = parts.closed.len() as u64;
+    report.parts = parts.parts;
     report.skipped_parts = parts.skipped;
     report.thickened_parts = parts.thickened;
-    report.wall_mm = if parts.thickened > 0 { wall * scale } else { 0.0 };
+    report.wall_mm = if parts.thickened > 0 { parts.wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
     if options.report {
+        let min_wall = options.profile.min_wall_mm();
         let walls = thickness::measure_walls(&scaled, &indices, min_wall, budget)?;
         report.thinnest_wall_mm = walls.thinnest.map(|w| w.0);
         report.thinnest_wall_at_mm = walls.thinnest.map(|w| w.1);

@@ -7,6 +7,16 @@ use crate::geom::NamedMesh;
 use glam::DVec3;
 use std::collections::HashMap;
 
+/// A closed, outward part borrowed for a union or a colour search: its
+/// positions and its CCW triangles (a [`HalfEdgeMesh`]'s, or a united
+/// subtree's from `subtree`).
+pub(super) type Piece<'a> = (&'a [DVec3], &'a [[u32; 3]]);
+
+/// The pieces of closed half-edge parts.
+pub(super) fn pieces(parts: &[HalfEdgeMesh]) -> Vec<Piece<'_>> {
+    parts.iter().map(|p| (p.positions.as_slice(), p.triangles())).collect()
+}
+
 /// The closed parts of a model, and how many open ones were left out.
 pub(super) struct Parts {
     /// Closed, outward-oriented parts.
@@ -178,8 +188,8 @@ pub const SNAP_BITS: i32 = 20;
 /// meshing a few ulps apart, overlapping or leaving gaps of 10⁻⁸. Manifold
 /// keeps those slivers exactly, and the level-3 sponge came out as 1,506
 /// pieces around them. On the grid such faces coincide exactly and fuse.
-pub(super) fn snap_grid(parts: &[HalfEdgeMesh]) -> f64 {
-    let largest = parts.iter().flat_map(|p| p.positions.iter()).map(|q| q.abs().max_element()).fold(0.0, f64::max);
+pub(super) fn snap_grid(parts: &[Piece<'_>]) -> f64 {
+    let largest = parts.iter().flat_map(|p| p.0.iter()).map(|q| q.abs().max_element()).fold(0.0, f64::max);
     if !(largest > 0.0 && largest.is_finite()) {
         return 0.0;
     }
@@ -189,7 +199,7 @@ pub(super) fn snap_grid(parts: &[HalfEdgeMesh]) -> f64 {
 }
 
 /// `q` on the grid of step `grid` (a power of two, so each step is exact).
-fn snap(q: DVec3, grid: f64) -> DVec3 {
+pub(super) fn snap(q: DVec3, grid: f64) -> DVec3 {
     if grid > 0.0 {
         (q / grid).round() * grid
     } else {
@@ -200,8 +210,8 @@ fn snap(q: DVec3, grid: f64) -> DVec3 {
 /// The union of closed parts, by Manifold's batch union, as shared
 /// positions and CCW triangles, their vertices snapped to `grid` first (0:
 /// not snapped; [`snap_grid`] says why and `make_printable` when).
-pub(super) fn unite(parts: &[HalfEdgeMesh], grid: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
-    let total: u64 = parts.iter().map(|p| p.face_count() as u64).sum();
+pub(super) fn unite(parts: &[Piece<'_>], grid: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
+    let total: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
     // Manifold holds about 200 bytes per triangle while it works (half-edges, collider, properties).
     let bytes = total.saturating_mul(200);
     budget.reserve_memory(bytes)?;
@@ -213,12 +223,12 @@ pub(super) fn unite(parts: &[HalfEdgeMesh], grid: f64, budget: &mut Budget) -> R
 
 /// One batch union of `parts`, their vertices snapped to `grid` (0: not
 /// snapped), cancelled at the budget's deadline.
-fn batch_union(parts: &[HalfEdgeMesh], grid: f64, budget: &Budget) -> Result<(Vec<[f32; 3]>, Vec<u32>), PrintError> {
+fn batch_union(parts: &[Piece<'_>], grid: f64, budget: &Budget) -> Result<(Vec<[f32; 3]>, Vec<u32>), PrintError> {
     let manifolds: Vec<manifold_rs::Manifold> = parts
         .iter()
         .map(|p| {
-            let verts: Vec<f32> = p.positions.iter().flat_map(|q| snap(*q, grid).as_vec3().to_array()).collect();
-            let idx: Vec<u32> = p.triangles().iter().flatten().copied().collect();
+            let verts: Vec<f32> = p.0.iter().flat_map(|q| snap(*q, grid).as_vec3().to_array()).collect();
+            let idx: Vec<u32> = p.1.iter().flatten().copied().collect();
             manifold_rs::Manifold::from_mesh(manifold_rs::Mesh::new(&verts, &idx))
         })
         .collect();

@@ -523,3 +523,32 @@ fn the_printable_collection_prints_as_single_watertight_shells() {
         assert_eq!(line, format!("True {facets} 1"), "{name}: trimesh (watertight, faces, bodies)");
     }
 }
+
+/// A level-2 sponge (400 boxes, memoised into a hierarchy by MDG) prints
+/// through the union per distinct subtree (src/print/subtree.rs): one
+/// watertight shell of the sponge's volume, the same bytes from two
+/// processes, in STL and in 3MF.
+#[test]
+fn a_hierarchy_prints_once_per_subtree_as_one_watertight_shell_byte_for_byte() {
+    let src = "startshape S\n@macro SPONGE(N)\n  N { s (1/3) x -1 -1 -1 } N { s (1/3) x -1 -1 0 } N { s (1/3) x -1 -1 1 } N { s (1/3) x -1 0 -1 }\n  N { s (1/3) x -1 0 1 } N { s (1/3) x -1 1 -1 } N { s (1/3) x -1 1 0 } N { s (1/3) x -1 1 1 }\n  N { s (1/3) x 0 -1 -1 } N { s (1/3) x 0 -1 1 } N { s (1/3) x 0 1 -1 } N { s (1/3) x 0 1 1 }\n  N { s (1/3) x 1 -1 -1 } N { s (1/3) x 1 -1 0 } N { s (1/3) x 1 -1 1 } N { s (1/3) x 1 0 -1 }\n  N { s (1/3) x 1 0 1 } N { s (1/3) x 1 1 -1 } N { s (1/3) x 1 1 0 } N { s (1/3) x 1 1 1 }\n@endmacro\nrule S { L1 { s 30 } }\nrule L1 { @expand SPONGE(L0) }\nrule L0 { @expand SPONGE(BOX) }\n";
+    let dir = tempdir();
+    let print = |format: &str| {
+        let out = run(&["render", "-", "--language", "mdg", "--print", "--format", format, "-o", "-"], Some(src.as_bytes()));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{err}");
+        // The summary's phases: the union ran on the hierarchy, nothing was meshed flat.
+        assert!(err.contains("print ") && !err.contains("mesh "), "{err}");
+        out.stdout
+    };
+    for format in ["stl", "3mf"] {
+        assert_eq!(print(format), print(format), "{format}: two processes, two unions");
+    }
+    let stl = dir.path().join("sponge.stl");
+    std::fs::write(&stl, print("stl")).expect("write");
+    let a = admesh(&stl);
+    assert_eq!((a.parts, a.backwards, a.degenerate, a.disconnected), (1, 0, 0, 0), "{}", a.raw);
+    let (watertight, faces, volume) = trimesh_check(&stl);
+    assert!(watertight && faces == a.facets, "trimesh: watertight {watertight}, {faces} faces");
+    let sponge = 30.0f64.powi(3) * (20.0f64 / 27.0).powi(2);
+    assert!((volume - sponge).abs() <= 1e-4 * sponge, "volume {volume} vs {sponge}");
+}
