@@ -17,4 +17,4 @@ pub use super::scene_format::{
     scene_provenance, SceneError, ENTRY_BYTES, ENTRY_BYTES_V1, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, HEADER_BYTES_V1, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION,
     VERSION_1,
 };
-pub use super::scene_v2::write_scene;
+pub use super::scene_v2::{write_scene, MAX_RECORD_BYTES};

@@ -34,6 +34,10 @@ pub const RUN_MESH: u8 = 4;
 pub const RUN_HIERARCHY: u8 = 5;
 /// Bit of a primitive record's kind byte that marks a mirrored placement.
 pub const PARITY_BIT: u8 = 0x80;
+/// Bytes of the largest instance record (an affine one with a 4-byte colour
+/// index, see `run_bytes`): what a front end promises per placement of a
+/// scene after a mesh's first, before it knows which runs it lands in.
+pub const MAX_RECORD_BYTES: u64 = 1 + 4 + 48;
 
 /// One run of records in a planned mesh; instance runs name the filter that
 /// picks their records from the scene, so the plan holds no copies.

@@ -291,15 +291,22 @@ fn gpu_instancing(req: &RenderRequest) -> bool {
 
 /// Bytes the mesh buffers and the encoded output need per vertex and per
 /// triangle (both are linear in the counts beyond a fixed `overhead`), and
-/// per instance when the output instances repeated meshes.
+/// per instance when the output instances repeated meshes: instanced glTF,
+/// and `scene`, which writes every placement as a record and tessellates
+/// nothing, so its placements are charged as instances too (issue 15:
+/// "budgets count what is made").
 fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
     let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
-    // A .gltf holds its buffer as base64 (4/3) after building it raw.
-    let per_instance = export::instanced::SCENE_INSTANCE_BYTES * if req.format == Format::Gltf { 3 } else { 1 };
+    let per_instance = match req.format {
+        Format::Scene => Some(export::scene::MAX_RECORD_BYTES),
+        // A .gltf holds its buffer as base64 (4/3) after building it raw.
+        Format::Gltf => gpu_instancing(req).then_some(3 * export::instanced::SCENE_INSTANCE_BYTES),
+        _ => gpu_instancing(req).then_some(export::instanced::SCENE_INSTANCE_BYTES),
+    };
     Downstream {
         per_vertex: geom::mesh::mesh_bytes(1, 0).saturating_add(est(1, 0)),
         per_triangle: geom::mesh::mesh_bytes(0, 1).saturating_add(est(0, 1)),
-        per_instance: gpu_instancing(req).then_some(per_instance),
+        per_instance,
     }
 }
 

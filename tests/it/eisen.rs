@@ -547,3 +547,21 @@ fn javascript_builder_never_runs_programs_or_leaves_its_folder() {
     let e = movie("#javascript\n\nfoo(;\n", req(Format::Glb)).0.unwrap_err();
     assert!(matches!(&e, RenderError::Eval(rulemesh::model::EvalError::Script { message }) if message.contains("line 3")), "{e}");
 }
+
+/// The examples that needed instancing to fit the default limits also
+/// render as `scene`, whose placements are charged as records, not
+/// triangles (issue 15: budgets count what a format makes); decoded, each
+/// is the glb's flat triangle count.
+#[test]
+fn big_debian_examples_render_as_scenes_at_default_limits() {
+    let dir = Path::new("/usr/share/structure-synth/Examples");
+    for (name, objects, triangles) in [("City of Glass.es", 53_651, 2_992_752), ("NineWorthies.es", 52_218, 2_924_208), ("Nouveau3.es", 19_700, 4_412_800)] {
+        let source = std::fs::read(dir.join(name)).expect("Debian's structure-synth examples (scripts/test installs them)");
+        let r = RenderRequest { format: Format::Scene, language: Some(Language::Eisenscript), ..RenderRequest::default() };
+        let out = render(&source, &r).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!((out.primitives, out.triangles), (objects, triangles), "{name}");
+        let d = rulemesh::export::scene::decode_scene_meshes(&out.bytes, 16, u64::MAX).expect("decodes");
+        let decoded: u64 = d.meshes.iter().map(|m| m.mesh.indices.len() as u64 / 3).sum();
+        assert_eq!(decoded, triangles, "{name}: decoded scene");
+    }
+}
