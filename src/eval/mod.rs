@@ -64,6 +64,7 @@ fn hierarchy(program: &lang::ir::Program, params: &[f64], options: &EvalOptions,
     let wanted = match req.hierarchy {
         HierarchyUse::Required => true,
         HierarchyUse::Preferred => req.downstream.per_instance.is_some(),
+        HierarchyUse::Streamed => true,
         HierarchyUse::Never => false,
     };
     if !wanted {
@@ -74,6 +75,10 @@ fn hierarchy(program: &lang::ir::Program, params: &[f64], options: &EvalOptions,
         let Some(h) = h else { return Ok(None) };
         if req.hierarchy == HierarchyUse::Required {
             budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?;
+        } else if req.hierarchy == HierarchyUse::Streamed {
+            // Every leaf is tessellated as it is written: charged as the flat derivation would be.
+            budget.check_total(Limit::Primitives, h.leaves())?;
+            budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
         } else {
             budget.check_total(Limit::Primitives, h.leaves())?;
             let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(req.detail))).fold(0u64, u64::saturating_add);

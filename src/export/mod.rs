@@ -15,6 +15,8 @@ mod scene_format;
 mod scene_v2;
 pub mod stl;
 pub mod strips;
+mod strips_chunk;
+mod strips_decode;
 pub mod threemf;
 pub mod ug;
 

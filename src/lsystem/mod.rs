@@ -62,7 +62,8 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     };
     let wants = match req.hierarchy {
         HierarchyUse::Required | HierarchyUse::Preferred => dag.is_some(),
-        HierarchyUse::Never => false,
+        // Flat L-system output sweeps its segments into tubes; the DAG's leaves are instanced segments.
+        HierarchyUse::Never | HierarchyUse::Streamed => false,
     };
     if wants {
         let mark = budget.mark();

@@ -275,6 +275,7 @@ fn hierarchy_use(req: &RenderRequest) -> HierarchyUse {
         Format::Scene => HierarchyUse::Required,
         // Printing unites the expanded parts into one solid, so it never instances.
         Format::Glb | Format::Gltf if !req.export_options.print.enabled => HierarchyUse::Preferred,
+        Format::Strips if streamed_strips(req) => HierarchyUse::Streamed,
         _ => HierarchyUse::Never,
     }
 }
@@ -288,16 +289,25 @@ fn gpu_instancing(req: &RenderRequest) -> bool {
     matches!(req.format, Format::Glb | Format::Gltf) && opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled
 }
 
+/// Whether strips are written from the model a chunk at a time (no merged
+/// mesh, a hierarchy walked rather than expanded): every strips request but
+/// printed or unit-box-fitted ones, which need the whole mesh first.
+fn streamed_strips(req: &RenderRequest) -> bool {
+    req.format == Format::Strips && !req.export_options.print.enabled && !req.export_options.fit_unit_box
+}
+
 /// Bytes the mesh buffers and the encoded output need per vertex and per
 /// triangle (both are linear in the counts beyond a fixed `overhead`), and
 /// per instance when the output instances repeated meshes.
 fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
     let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
+    // Streamed strips build no mesh: only the output is promised.
+    let mesh_bytes = |v, t| if streamed_strips(req) { 0 } else { geom::mesh::mesh_bytes(v, t) };
     // A .gltf holds its buffer as base64 (4/3) after building it raw.
     let per_instance = export::instanced::SCENE_INSTANCE_BYTES * if req.format == Format::Gltf { 3 } else { 1 };
     Downstream {
-        per_vertex: geom::mesh::mesh_bytes(1, 0).saturating_add(est(1, 0)),
-        per_triangle: geom::mesh::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+        per_vertex: mesh_bytes(1, 0).saturating_add(est(1, 0)),
+        per_triangle: mesh_bytes(0, 1).saturating_add(est(0, 1)),
         per_instance: gpu_instancing(req).then_some(per_instance),
     }
 }
@@ -414,6 +424,9 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         clock.lap(Phase::Export);
         let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
         return Ok(summary(bytes, &model, triangles, truncated));
+    }
+    if streamed_strips(req) {
+        return strips_from_model(model, provenance, req, budget, clock);
     }
     if let Some(h) = model.hierarchy.take() {
         let bytes = match req.format {
@@ -564,6 +577,32 @@ fn instanced_scene(model: &mut Model, provenance: &Provenance, req: &RenderReque
     let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req, budget)?;
     clock.lap(Phase::Export);
     Ok(Some(summary(bytes, model, triangles, truncated)))
+}
+
+/// Strips written from the model a chunk at a time (docs/strips-format.md):
+/// a first pass for the bounds and palette (timed as meshing, and cut at the
+/// meshing deadline under `truncate`), then the chunks, each tessellated,
+/// coded and appended in turn. No merged mesh is built and a hierarchy is
+/// walked, not expanded.
+fn strips_from_model(mut model: Model, provenance: Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+    let h = model.hierarchy.take();
+    let src = export::strips::ModelSource { scene: &model.scene, hierarchy: h.as_ref(), detail: req.detail, layout: req.layout };
+    let survey = export::strips::survey_model(&src, req.on_limit, budget)?;
+    clock.lap(Phase::Mesh);
+    budget.set_stage_share(None);
+    let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(survey.cut);
+    let meta = ExportMeta {
+        background: model.scene.background,
+        truncated: truncated.is_some(),
+        graph: None,
+        material_per_mesh: false,
+        camera: None,
+        provenance: Some(provenance),
+    };
+    let written = export::strips::write_strips_model(&src, &survey, &req.export_options.strips, budget);
+    let (bytes, triangles, truncated) = empty_if_late(written, survey.triangles(), truncated, meta, req, budget)?;
+    clock.lap(Phase::Export);
+    Ok(summary(bytes, &model, triangles, truncated))
 }
 
 /// The output of a render whose bytes are written (times are filled in by [`render`]).
