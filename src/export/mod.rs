@@ -17,6 +17,7 @@ pub mod stl;
 pub mod strips;
 mod strips_chunk;
 mod strips_decode;
+mod strips_format;
 pub mod threemf;
 pub mod ug;
 

@@ -17,187 +17,16 @@
 //! one chunk is written as version 2 (one mesh), anything larger as version 3.
 
 pub use super::strips_chunk::CHUNK_TRIANGLES;
-use super::strips_chunk::{encode_chunk, quantise_unit, Chunker, EncodedChunk, Part, Quantiser, Survey};
+use super::strips_chunk::{encode_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
 pub use super::strips_decode::{decode_strips, decode_strips_full};
+pub use super::strips_format::*;
 use super::ExportError;
 use crate::core::budget::{Budget, LimitExceeded, OnLimit};
 use crate::geom::strip::RESTART;
-use crate::geom::{Mesh, NamedMesh};
+use crate::geom::NamedMesh;
 use crate::mesh::pieces::{for_each_piece, Piece};
 use crate::mesh::MeshLayout;
 use crate::model::{Hierarchy, Scene};
-
-/// The four bytes every strips file starts with.
-pub const MAGIC: [u8; 4] = *b"RMST";
-/// The format version of a model cut into several chunks: the body is a
-/// list of independently coded chunks, so neither the encoder nor a decoder
-/// ever holds more than one chunk's working arrays. The decoders read it and
-/// [`VERSION_ONE_MESH`].
-pub const VERSION: u8 = 3;
-/// The format version of a model of one chunk (at most [`CHUNK_TRIANGLES`]
-/// triangles): the body is that chunk's two streams, byte for byte what
-/// version 2 always was (so icons did not change). Version 2 stores the
-/// strip as its triangles (index buffer codec) where version 1 stored the
-/// strip indices (index sequence codec); version 1 is not read.
-pub const VERSION_ONE_MESH: u8 = 2;
-/// Bytes before the body: magic, version, flags, bits, bounding box, counts, lengths.
-pub const HEADER_LEN: usize = 52;
-/// Bytes after the body: the CRC32.
-pub const TRAILER_LEN: usize = 4;
-/// Bytes of one quantised vertex in the vertex stream.
-pub const VERTEX_BYTES: usize = 16;
-/// Flag bit: the body is one zstd frame.
-pub const FLAG_ZSTD: u8 = 1;
-/// Flag bit: colours are indices into the palette.
-pub const FLAG_PALETTE: u8 = 2;
-/// Most palette entries (one byte per index).
-pub const MAX_PALETTE: usize = 256;
-/// The decoder refuses a zstd body that claims to expand more than this
-/// many times (plus 64 KiB): our bodies are already compressed, so a larger
-/// claim can only be a hostile file asking for a huge allocation.
-pub const MAX_ZSTD_RATIO: u64 = 64;
-/// A block of up to 256 vertices costs at least 4 control bytes in the
-/// vertex codec (version 1), so a stream of `n` bytes cannot hold more than
-/// `64·n` vertices (plus one block); the decoder refuses larger counts
-/// before allocating.
-pub const MAX_VERTICES_PER_STREAM_BYTE: u64 = 64;
-/// The index buffer codec spends at least one code byte per triangle, after a
-/// 1-byte header and before a 16-byte table, so `n` bytes cannot hold more
-/// than `n − 17` triangles; the decoder refuses larger counts before allocating.
-pub const INDEX_STREAM_OVERHEAD: u64 = 17;
-
-/// Precision choices for the `strips` format (request options). Every other
-/// format ignores them; they reach only the exporter, never the parser or
-/// the evaluator.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub struct StripsOptions {
-    /// Bits per position axis, relative to the bounding box: 8, 10, 12 or 16.
-    /// The error per axis is at most extent / (2·(2^bits − 1)).
-    pub position_bits: u8,
-    /// Bits per octahedral normal component: 8 or 16 (see the doc for the
-    /// angular error of each).
-    pub normal_bits: u8,
-    /// Wrap the body in zstd. Off by default: the JavaScript decoder has no
-    /// zstd, and the meshoptimizer codecs already remove most redundancy.
-    pub zstd: bool,
-}
-
-impl Default for StripsOptions {
-    /// 16-bit positions (sub-micrometre on a 1 m icon), 8-bit normals
-    /// (under 1° off, invisible in flat-shaded icons), no zstd.
-    fn default() -> Self {
-        StripsOptions { position_bits: 16, normal_bits: 8, zstd: false }
-    }
-}
-
-impl StripsOptions {
-    /// Checks the bit counts against the ones the format allows.
-    pub fn validate(&self) -> Result<(), String> {
-        if !matches!(self.position_bits, 8 | 10 | 12 | 16) {
-            return Err(format!("strips position bits must be 8, 10, 12 or 16, got {}", self.position_bits));
-        }
-        if !matches!(self.normal_bits, 8 | 16) {
-            return Err(format!("strips normal bits must be 8 or 16, got {}", self.normal_bits));
-        }
-        Ok(())
-    }
-}
-
-/// Why a strips payload was rejected. Every message says what was wrong,
-/// so a client can tell a truncated download from a wrong file.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum StripsError {
-    /// Fewer bytes than the fixed header and trailer.
-    #[error("strips payload truncated: {len} bytes, the header and CRC alone need {min}")]
-    TooShort {
-        /// Bytes received.
-        len: usize,
-        /// Bytes needed.
-        min: usize,
-    },
-    /// The first four bytes are not `RMST`.
-    #[error("not a strips payload (bad magic)")]
-    BadMagic,
-    /// The total length disagrees with the header's body length.
-    #[error("strips payload truncated or padded: the header promises {expected} bytes, got {actual}")]
-    Length {
-        /// Bytes the header promises.
-        expected: u64,
-        /// Bytes received.
-        actual: usize,
-    },
-    /// The CRC32 at the end does not match the bytes before it.
-    #[error("strips payload corrupted: CRC32 is {computed:08x}, the file says {stored:08x}")]
-    Checksum {
-        /// The CRC stored in the file.
-        stored: u32,
-        /// The CRC of the bytes received.
-        computed: u32,
-    },
-    /// A version this decoder does not know.
-    #[error("unsupported strips version {0} (this decoder reads versions 2 and 3)")]
-    Version(u8),
-    /// Any other header field out of range.
-    #[error("invalid strips header: {0}")]
-    Header(String),
-    /// The body (or one of its streams) does not decode.
-    #[error("invalid strips body: {0}")]
-    Body(String),
-}
-
-/// A decoded strips file, with the strip itself and the quantisation facts
-/// (for clients and tests that want more than a triangle list).
-#[derive(Debug, Clone, PartialEq)]
-pub struct DecodedStrips {
-    /// The mesh; `indices` is the triangle list as stored (in strip order,
-    /// each triangle possibly rotated by the index codec, winding kept).
-    pub mesh: Mesh,
-    /// The strip index sequence rebuilt from the triangles by
-    /// [`strip::restrip`], with [`RESTART`] between strips.
-    pub strip: Vec<u32>,
-    /// Bounding box minimum (the quantisation origin).
-    pub bbox_min: [f32; 3],
-    /// Bounding box maximum.
-    pub bbox_max: [f32; 3],
-    /// Bits per position axis.
-    pub position_bits: u8,
-    /// Bits per normal component.
-    pub normal_bits: u8,
-    /// The palette, when colours are palette indices.
-    pub palette: Option<Vec<[u8; 4]>>,
-}
-
-/// Octahedral encoding of a normal to two values in `0..=max` (zero normals
-/// encode as +Z, so decoding always yields a unit vector).
-pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
-    let [x, y, z] = n.map(f64::from);
-    let l1 = x.abs() + y.abs() + z.abs();
-    let (mut u, mut v) = if l1 > 0.0 && l1.is_finite() { (x / l1, y / l1) } else { (0.0, 0.0) };
-    if l1 > 0.0 && z < 0.0 {
-        let (ou, ov) = (u, v);
-        u = (1.0 - ov.abs()) * if ou >= 0.0 { 1.0 } else { -1.0 };
-        v = (1.0 - ou.abs()) * if ov >= 0.0 { 1.0 } else { -1.0 };
-    }
-    [quantise_unit(u * 0.5 + 0.5, max), quantise_unit(v * 0.5 + 0.5, max)]
-}
-
-/// Decodes an octahedral normal; the arithmetic (in f64, rounded to f32 at
-/// the end) is the one the spec and the JavaScript decoder use, so both
-/// decoders produce identical floats.
-pub fn oct_decode(q: [u16; 2], max: u32) -> [f32; 3] {
-    let m = f64::from(max);
-    let mut x = f64::from(q[0]) / m * 2.0 - 1.0;
-    let mut y = f64::from(q[1]) / m * 2.0 - 1.0;
-    let z = 1.0 - x.abs() - y.abs();
-    if z < 0.0 {
-        let (ox, oy) = (x, y);
-        x = (1.0 - oy.abs()) * if ox >= 0.0 { 1.0 } else { -1.0 };
-        y = (1.0 - ox.abs()) * if oy >= 0.0 { 1.0 } else { -1.0 };
-    }
-    let len = (x * x + y * y + z * z).sqrt();
-    [(x / len) as f32, (y / len) as f32, (z / len) as f32]
-}
-
 
 /// Checks every mesh (in order, so the first bad one is named) before any is read.
 fn check_meshes(meshes: &[NamedMesh]) -> Result<(), ExportError> {
@@ -356,7 +185,7 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
     budget.check_deadline()?;
     let palette = survey.palette();
     let q = Quantiser::new(survey.bounds(), opts.position_bits, opts.normal_bits, palette.as_deref());
-    let mut body = Body::new(survey.chunks, palette.as_deref());
+    let mut body = Body::new(survey.chunks(), palette.as_deref());
     mesh_chunks(meshes, &mut |parts| {
         budget.check_deadline()?;
         body.push(&encode_chunk(parts, &q)?)
@@ -434,13 +263,18 @@ fn feed(
     Ok((pieces, cut))
 }
 
-/// The first pass of a streamed strips file: walks the model (tessellating
-/// each piece into a chunk-sized buffer and dropping it) for the bounding
-/// box, the palette and the chunk count. Under `truncate`, the deadline
+/// The first pass of a streamed strips file: walks the model (mapping each
+/// placed piece's corners, positions only) for the bounding box, the
+/// palette and the chunk count. Under `truncate`, the deadline
 /// stops it (as it stops meshing), and the writer then stops at the same piece.
 pub fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budget) -> Result<ModelSurvey, ExportError> {
     let mut survey = Survey::default();
-    let (pieces, cut) = feed(src, on_limit, None, budget, &mut |parts, _| survey.add(parts))?;
+    let mut pieces = 0u64;
+    let cut = for_each_piece::<ExportError>(src.scene, src.hierarchy, src.detail, src.layout, on_limit, budget, &mut |piece, _| {
+        pieces += 1;
+        survey.add_piece(&piece)?;
+        Ok(true)
+    })?;
     Ok(ModelSurvey { survey, pieces, cut })
 }
 
@@ -455,7 +289,7 @@ pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &St
     let bounds = survey.survey.bounds();
     let q = Quantiser::new(bounds, opts.position_bits, opts.normal_bits, palette.as_deref());
     budget.reserve_memory(CHUNK_WORKING_SET + super::estimated_size(super::Format::Strips, 0, 0))?;
-    let mut body = Body::new(survey.survey.chunks, palette.as_deref());
+    let mut body = Body::new(survey.survey.chunks(), palette.as_deref());
     feed(src, OnLimit::Error, Some(survey.pieces), budget, &mut |parts, budget| {
         let c = encode_chunk(parts, &q)?;
         // The output grows by what the chunk adds (its capacity may double: reserve that too).

@@ -7,6 +7,7 @@
 //! `docs/strips-format.md` ("Chunks") states the rules; the container
 //! (header, body, CRC) is `export::strips`.
 
+use super::strips_format::{oct_encode, quantise_unit, MAX_PALETTE};
 use super::ExportError;
 use crate::geom::strip;
 use crate::geom::Mesh;
@@ -30,11 +31,6 @@ pub type Part<'a> = (&'a Mesh, &'a [u32]);
 /// Quantised vertex: the format's 16 bytes as eight little-endian `u16`.
 type Quantised = [u16; 8];
 
-/// Quantises `v` in `[0, 1]` to `0..=max`.
-pub(super) fn quantise_unit(v: f64, max: u32) -> u16 {
-    (v * f64::from(max)).round().clamp(0.0, f64::from(max)) as u16
-}
-
 /// What the first pass learns: the bounding box of the vertices triangles
 /// use, the colours they use (while at most 256), and the chunks and
 /// triangles the model cuts into.
@@ -44,43 +40,76 @@ pub struct Survey {
     hi: [f32; 3],
     colours: BTreeSet<[u8; 4]>,
     too_many_colours: bool,
-    /// Chunks the model cuts into.
-    pub chunks: u64,
     /// Triangles (before zero-area ones are dropped).
     pub triangles: u64,
 }
 
 impl Default for Survey {
     fn default() -> Self {
-        Survey { lo: [f32::INFINITY; 3], hi: [f32::NEG_INFINITY; 3], colours: BTreeSet::new(), too_many_colours: false, chunks: 0, triangles: 0 }
+        Survey { lo: [f32::INFINITY; 3], hi: [f32::NEG_INFINITY; 3], colours: BTreeSet::new(), too_many_colours: false, triangles: 0 }
     }
 }
 
 impl Survey {
-    /// Takes in one chunk's parts.
+    /// Chunks the model cuts into: every [`CHUNK_TRIANGLES`] triangles one.
+    pub fn chunks(&self) -> u64 {
+        self.triangles.div_ceil(CHUNK_TRIANGLES as u64)
+    }
+
+    /// Takes in one piece without tessellating it: a placed piece's corners
+    /// are mapped as the mesher maps them (positions only, with the same
+    /// arithmetic), its one colour is its vertices' colour.
+    pub fn add_piece(&mut self, piece: &Piece<'_>) -> Result<(), ExportError> {
+        let Piece::Placed { proto, map: (linear, _, translation), colour, .. } = *piece else {
+            let Piece::Whole(m) = *piece else { return Ok(()) };
+            return self.add(&[(m, &m.indices)]);
+        };
+        let t = proto.indices.len() / 3;
+        if t == 0 {
+            return Ok(());
+        }
+        self.triangles += t as u64;
+        for &i in &proto.indices {
+            let p = (linear * glam::Vec3::from_array(proto.positions[i as usize]) + translation).to_array();
+            self.take_position(p)?;
+        }
+        self.take_colour(crate::core::quantise::rgba8(colour));
+        Ok(())
+    }
+
+    fn take_position(&mut self, p: [f32; 3]) -> Result<(), ExportError> {
+        if p.iter().any(|c| !c.is_finite()) {
+            return Err(ExportError::InvalidMesh { name: "model".into(), detail: "non-finite position".into() });
+        }
+        for a in 0..3 {
+            self.lo[a] = self.lo[a].min(p[a]);
+            self.hi[a] = self.hi[a].max(p[a]);
+        }
+        Ok(())
+    }
+
+    fn take_colour(&mut self, c: [u8; 4]) {
+        if !self.too_many_colours {
+            self.colours.insert(c);
+            if self.colours.len() > MAX_PALETTE {
+                self.too_many_colours = true;
+                self.colours.clear();
+            }
+        }
+    }
+
+    /// Takes in some triangles of meshes.
     pub fn add(&mut self, parts: &[Part<'_>]) -> Result<(), ExportError> {
-        self.chunks += 1;
         for &(mesh, tris) in parts {
             self.triangles += (tris.len() / 3) as u64;
             let mut last = None;
             for &i in tris {
-                let p = mesh.positions[i as usize];
-                if p.iter().any(|c| !c.is_finite()) {
-                    return Err(ExportError::InvalidMesh { name: "model".into(), detail: "non-finite position".into() });
-                }
-                for a in 0..3 {
-                    self.lo[a] = self.lo[a].min(p[a]);
-                    self.hi[a] = self.hi[a].max(p[a]);
-                }
+                self.take_position(mesh.positions[i as usize])?;
                 let c = mesh.colours[i as usize];
                 // Neighbouring corners mostly share a colour: skip the set then.
-                if !self.too_many_colours && last != Some(c) {
+                if last != Some(c) {
                     last = Some(c);
-                    self.colours.insert(c);
-                    if self.colours.len() > super::strips::MAX_PALETTE {
-                        self.too_many_colours = true;
-                        self.colours.clear();
-                    }
+                    self.take_colour(c);
                 }
             }
         }
@@ -135,7 +164,7 @@ impl Quantiser {
             let n = match last_normal {
                 Some((from, to)) if from.map(f32::to_bits) == n.map(f32::to_bits) => to,
                 _ => {
-                    let to = super::strips::oct_encode(n, self.nmax);
+                    let to = oct_encode(n, self.nmax);
                     last_normal = Some((n, to));
                     to
                 }

@@ -5,7 +5,7 @@
 //! before anything is allocated, so damaged or hostile input is an error,
 //! never a large allocation or a panic.
 
-use super::strips::*;
+use super::strips_format::*;
 use crate::geom::strip::{self, RESTART};
 use crate::geom::Mesh;
 use std::io::Read;
