@@ -220,32 +220,26 @@ fn c_decoder_refuses_damage_as_rust_does() {
 
     // Hostile counts and lengths with a valid CRC, each refused before any
     // allocation by both.
-    let mut batch = Vec::new();
-    let mut rust = Vec::new();
-    for (off, val) in [(32usize, u32::MAX - 1), (32, u32::MAX), (36, u32::MAX), (36, u32::MAX / 3), (40, 300), (40, 0), (44, u32::MAX), (48, u32::MAX), (48, 0)] {
-        let mut b = gem_bytes.clone();
-        b[off..off + 4].copy_from_slice(&val.to_le_bytes());
-        let end = b.len() - 4;
-        let crc = crc32fast::hash(&b[..end]);
-        b[end..].copy_from_slice(&crc.to_le_bytes());
-        batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
-        batch.extend_from_slice(&b);
-        rust.push(rust_line(&b));
-    }
     // The same for a version 3 chunk list: chunk count, the first chunk's
     // counts and stream lengths.
     let v3 = as_chunks(&gem_bytes, 2);
     assert!(rust_line(&v3).starts_with("ok"), "the two-chunk file decodes");
     let at = 52 + 4 * u32::from_le_bytes([v3[40], v3[41], v3[42], v3[43]]) as usize;
-    for (off, val) in [(at, 3u32), (at, u32::MAX), (at, 1), (at + 4, u32::MAX), (at + 4, 0), (at + 8, u32::MAX), (at + 8, 1), (at + 12, u32::MAX), (at + 12, 5)] {
-        let mut b = v3.clone();
-        b[off..off + 4].copy_from_slice(&val.to_le_bytes());
-        let end = b.len() - 4;
-        let crc = crc32fast::hash(&b[..end]);
-        b[end..].copy_from_slice(&crc.to_le_bytes());
-        batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
-        batch.extend_from_slice(&b);
-        rust.push(rust_line(&b));
+    let header = [(32usize, u32::MAX - 1), (32, u32::MAX), (36, u32::MAX), (36, u32::MAX / 3), (40, 300), (40, 0), (44, u32::MAX), (48, u32::MAX), (48, 0)];
+    let chunks = [(at, 3u32), (at, u32::MAX), (at, 1), (at + 4, u32::MAX), (at + 4, 0), (at + 8, u32::MAX), (at + 8, 1), (at + 12, u32::MAX), (at + 12, 5)];
+    let mut batch = Vec::new();
+    let mut rust = Vec::new();
+    for (source, edits) in [(&gem_bytes, &header), (&v3, &chunks)] {
+        for &(off, val) in edits {
+            let mut b = source.clone();
+            b[off..off + 4].copy_from_slice(&val.to_le_bytes());
+            let end = b.len() - 4;
+            let crc = crc32fast::hash(&b[..end]);
+            b[end..].copy_from_slice(&crc.to_le_bytes());
+            batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
+            batch.extend_from_slice(&b);
+            rust.push(rust_line(&b));
+        }
     }
     assert!(rust.iter().all(|l| l == "err"));
     let path = dir.path().join("batch");
