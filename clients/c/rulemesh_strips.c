@@ -468,10 +468,20 @@ void rms_indices_to_u16(const uint32_t *in, size_t count, uint16_t *out) {
 /* The header and body layout, read and checked once. */
 typedef struct layout {
     rms_info info;
+    uint8_t version;                 /* 2: one mesh; 3: a chunk list */
     const uint8_t *palette;          /* 4·P bytes, or NULL */
+    const uint8_t *body;             /* the body and its length */
+    size_t blen;
+    size_t chunks_at;                /* where the first chunk starts in the body */
+    uint32_t chunk_count;            /* 1 in version 2 */
+} layout;
+
+/* One chunk: its counts and streams (version 2's one mesh is one chunk). */
+typedef struct chunk {
+    uint32_t vertices, triangles;
     const uint8_t *vstream, *istream;
     size_t vlen, ilen;
-} layout;
+} chunk;
 
 /* Reads one stream of the body at *at: a u32 length, then that many bytes
  * (the vertex and the index stream are laid out alike). */
@@ -486,6 +496,44 @@ static rms_status length_prefixed(const uint8_t *body, size_t blen, size_t *at, 
     *stream = body + *at + 4;
     *len = n;
     *at += 4 + (size_t)n;
+    return RMS_OK;
+}
+
+/* Reads a u32 of the body at *at. */
+static rms_status body_u32(const uint8_t *body, size_t blen, size_t *at, const char *name, uint32_t *v, rms_error *err) {
+    if (blen - *at < 4) return fail(err, RMS_ERR_BODY, "invalid strips body: %s missing", name);
+    *v = u32_at(body + *at);
+    *at += 4;
+    return RMS_OK;
+}
+
+/* Reads the chunk `k` at *at (version 3: counts, then the two streams;
+ * version 2: the streams, with the header's counts) and checks its counts
+ * against its streams' lengths (the safety limits of the spec). */
+static rms_status read_chunk(const layout *l, size_t *at, uint32_t k, chunk *c, rms_error *err) {
+    rms_status st;
+    char name[40];
+    if (l->version == 2) {
+        c->vertices = l->info.vertex_count;
+        c->triangles = l->info.triangle_count;
+        name[0] = 0;
+    } else {
+        st = body_u32(l->body, l->blen, at, "chunk vertex count", &c->vertices, err);
+        if (st != RMS_OK) return st;
+        st = body_u32(l->body, l->blen, at, "chunk triangle count", &c->triangles, err);
+        if (st != RMS_OK) return st;
+        snprintf(name, sizeof name, "chunk %lu: ", (unsigned long)k);
+    }
+    st = length_prefixed(l->body, l->blen, at, "vertex", &c->vstream, &c->vlen, err);
+    if (st != RMS_OK) return st;
+    st = length_prefixed(l->body, l->blen, at, "index", &c->istream, &c->ilen, err);
+    if (st != RMS_OK) return st;
+    if ((uint64_t)c->vertices > (uint64_t)c->vlen * MAX_VERTICES_PER_STREAM_BYTE + 256u)
+        return fail(err, RMS_ERR_HEADER, "invalid strips header: %s%lu vertices cannot fit in a %lu-byte vertex stream", name,
+                    (unsigned long)c->vertices, (unsigned long)c->vlen);
+    if ((uint64_t)c->triangles + INDEX_STREAM_OVERHEAD > (uint64_t)c->ilen)
+        return fail(err, RMS_ERR_HEADER, "invalid strips header: %s%lu triangles cannot fit in a %lu-byte index stream", name,
+                    (unsigned long)c->triangles, (unsigned long)c->ilen);
     return RMS_OK;
 }
 
@@ -517,7 +565,9 @@ static rms_status parse(const uint8_t *data, size_t size, layout *l, rms_error *
     flags = data[5];
     pb = data[6];
     nb = data[7];
-    if (version != 2) return fail(err, RMS_ERR_VERSION, "unsupported strips version %u (this decoder reads version 2)", version);
+    if (version != 2 && version != 3)
+        return fail(err, RMS_ERR_VERSION, "unsupported strips version %u (this decoder reads versions 2 and 3)", version);
+    l->version = version;
     if (flags & ~(FLAG_ZSTD | FLAG_PALETTE)) return fail(err, RMS_ERR_HEADER, "invalid strips header: unknown flags 0x%02x", flags);
     if (flags & FLAG_ZSTD)
         return fail(err, RMS_ERR_ZSTD,
@@ -549,18 +599,38 @@ static rms_status parse(const uint8_t *data, size_t size, layout *l, rms_error *
     at = 4u * info->palette_count;
     if (blen < at) return fail(err, RMS_ERR_BODY, "invalid strips body: palette cut short");
     l->palette = info->palette_count ? body : NULL;
-    st = length_prefixed(body, blen, &at, "vertex", &l->vstream, &l->vlen, err);
-    if (st != RMS_OK) return st;
-    st = length_prefixed(body, blen, &at, "index", &l->istream, &l->ilen, err);
-    if (st != RMS_OK) return st;
+    l->body = body;
+    l->blen = blen;
+    if (info->vertex_count == RMS_RESTART)
+        return fail(err, RMS_ERR_HEADER, "invalid strips header: %lu vertices: the restart index is no vertex",
+                    (unsigned long)info->vertex_count);
+    l->chunk_count = 1;
+    if (version == 3) {
+        st = body_u32(body, blen, &at, "chunk count", &l->chunk_count, err);
+        if (st != RMS_OK) return st;
+        if ((uint64_t)l->chunk_count * 16u > (uint64_t)(blen - at))
+            return fail(err, RMS_ERR_HEADER, "invalid strips header: %lu chunks cannot fit in %lu bytes", (unsigned long)l->chunk_count,
+                        (unsigned long)(blen - at));
+    }
+    l->chunks_at = at;
+    {
+        /* Walk the chunk list once: every chunk's counts against its streams, and the sums against the header. */
+        uint64_t vsum = 0, tsum = 0;
+        uint32_t k;
+        chunk c;
+        for (k = 0; k < l->chunk_count; k++) {
+            st = read_chunk(l, &at, k, &c, err);
+            if (st != RMS_OK) return st;
+            vsum += c.vertices;
+            tsum += c.triangles;
+        }
+        if (vsum != info->vertex_count || tsum != info->triangle_count)
+            return fail(err, RMS_ERR_HEADER, "invalid strips header: chunks hold %lu vertices and %lu triangles, the header says %lu and %lu",
+                        (unsigned long)vsum, (unsigned long)tsum, (unsigned long)info->vertex_count,
+                        (unsigned long)info->triangle_count);
+    }
     if (at != blen)
         return fail(err, RMS_ERR_BODY, "invalid strips body: %lu stray bytes after the index stream", (unsigned long)(blen - at));
-    if ((uint64_t)info->vertex_count > (uint64_t)l->vlen * MAX_VERTICES_PER_STREAM_BYTE + 256u || info->vertex_count == RMS_RESTART)
-        return fail(err, RMS_ERR_HEADER, "invalid strips header: %lu vertices cannot fit in a %lu-byte vertex stream",
-                    (unsigned long)info->vertex_count, (unsigned long)l->vlen);
-    if ((uint64_t)info->triangle_count + INDEX_STREAM_OVERHEAD > (uint64_t)l->ilen)
-        return fail(err, RMS_ERR_HEADER, "invalid strips header: %lu triangles cannot fit in a %lu-byte index stream",
-                    (unsigned long)info->triangle_count, (unsigned long)l->ilen);
 #if SIZE_MAX / 16u < UINT32_MAX
     /* With a 32-bit size_t (armv7), the arrays a caller allocates must still
      * be addressable; on 64 bits every u32 count is. */
@@ -641,44 +711,55 @@ rms_status rms_decode(const uint8_t *data, size_t size, rms_output *out, rms_err
     vx_stream vs;
     uint8_t block[VX_BLOCK_MAX * VERTEX_BYTES];
     const char *why;
-    size_t t, n3, done;
-    uint32_t v;
+    size_t t, n3, done, at, vbase = 0, tbase = 0;
+    uint32_t k;
+    chunk c;
     if (err == NULL) return RMS_ERR_ARGUMENT;
     if (out == NULL) return fail(err, RMS_ERR_ARGUMENT, "out is NULL");
     out->strip_length = 0;
     s = parse(data, size, &l, err);
     if (s != RMS_OK) return s;
-    v = l.info.vertex_count;
     n3 = 3u * (size_t)l.info.triangle_count;
     if (out->triangles == NULL && n3 > 0) return fail(err, RMS_ERR_ARGUMENT, "out->triangles is NULL");
     if (out->strip == NULL && out->strip_capacity > 0) return fail(err, RMS_ERR_ARGUMENT, "out->strip is NULL");
 
-    /* Triangles first: they go straight into the caller's array. */
-    why = decode_index_buffer(l.istream, l.ilen, out->triangles, l.info.triangle_count);
-    if (why) return fail(err, RMS_ERR_BODY, "invalid strips body: %s", why);
-    for (t = 0; t < n3; t++) {
-        if (out->triangles[t] >= v)
-            return fail(err, RMS_ERR_BODY, "invalid strips body: index %lu out of range (%lu vertices)",
-                        (unsigned long)out->triangles[t], (unsigned long)v);
-    }
-    for (t = 0; t < n3; t += 3) {
-        const uint32_t *tr = out->triangles + t;
-        if (tr[0] == tr[1] || tr[1] == tr[2] || tr[0] == tr[2])
-            return fail(err, RMS_ERR_BODY, "invalid strips body: triangle %lu has a repeated index", (unsigned long)(t / 3));
-    }
-
-    /* Vertices one block at a time through a 4 KiB stack buffer. */
-    s = vx_open(&vs, l.vstream, l.vlen, err);
-    if (s != RMS_OK) return s;
-    for (done = 0; done < v;) {
-        size_t count = v - done < VX_BLOCK_MAX ? v - done : VX_BLOCK_MAX;
-        vs.p = decode_vertex_block(vs.data, vs.p, vs.end, block, count, vs.last, vs.channels, vs.version);
-        if (vs.p == 0) return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream does not decode (truncated or corrupt)");
-        s = emit_block(&l, block, done, count, out, err);
+    /* Chunk by chunk; within one, triangles first: they go straight into the caller's array. */
+    at = l.chunks_at;
+    for (k = 0; k < l.chunk_count; k++) {
+        uint32_t *tris = out->triangles ? out->triangles + 3u * tbase : NULL;
+        s = read_chunk(&l, &at, k, &c, err);
         if (s != RMS_OK) return s;
-        done += count;
+        n3 = 3u * (size_t)c.triangles;
+        why = decode_index_buffer(c.istream, c.ilen, tris, c.triangles);
+        if (why) return fail(err, RMS_ERR_BODY, "invalid strips body: %s", why);
+        for (t = 0; t < n3; t++) {
+            if (tris[t] >= c.vertices)
+                return fail(err, RMS_ERR_BODY, "invalid strips body: index %lu out of range (%lu vertices)", (unsigned long)tris[t],
+                            (unsigned long)c.vertices);
+        }
+        for (t = 0; t < n3; t += 3) {
+            const uint32_t *tr = tris + t;
+            if (tr[0] == tr[1] || tr[1] == tr[2] || tr[0] == tr[2])
+                return fail(err, RMS_ERR_BODY, "invalid strips body: triangle %lu has a repeated index", (unsigned long)(t / 3));
+        }
+        /* Fits: the header's vertex count (the sum) is below RMS_RESTART. */
+        for (t = 0; t < n3; t++) tris[t] += (uint32_t)vbase;
+
+        /* Vertices one block at a time through a 4 KiB stack buffer. */
+        s = vx_open(&vs, c.vstream, c.vlen, err);
+        if (s != RMS_OK) return s;
+        for (done = 0; done < c.vertices;) {
+            size_t count = c.vertices - done < VX_BLOCK_MAX ? c.vertices - done : VX_BLOCK_MAX;
+            vs.p = decode_vertex_block(vs.data, vs.p, vs.end, block, count, vs.last, vs.channels, vs.version);
+            if (vs.p == 0) return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream does not decode (truncated or corrupt)");
+            s = emit_block(&l, block, vbase + done, count, out, err);
+            if (s != RMS_OK) return s;
+            done += count;
+        }
+        if (vs.end - vs.p != vs.pad) return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream has the wrong length");
+        vbase += c.vertices;
+        tbase += c.triangles;
     }
-    if (vs.end - vs.p != vs.pad) return fail(err, RMS_ERR_BODY, "invalid strips body: vertex stream has the wrong length");
 
     if (out->strip) {
         size_t len = rms_restrip(out->triangles, l.info.triangle_count, out->strip, out->strip_capacity);

@@ -1,5 +1,5 @@
 /* rulemesh_strips.h: a dependency-free C99 decoder for rulemesh's `strips`
- * format (application/vnd.rulemesh.strips, format version 2), specified in
+ * format (application/vnd.rulemesh.strips, format versions 2 and 3), specified in
  * docs/strips-format.md. Built for iOS (Swift through a bridging header) and
  * Android (NDK); see clients/c/README.md.
  *
@@ -39,7 +39,7 @@ typedef enum rms_status {
     RMS_ERR_TRUNCATED = 2, /* shorter or longer than the header says (a cut download) */
     RMS_ERR_MAGIC = 3,     /* not a strips payload */
     RMS_ERR_CHECKSUM = 4,  /* the CRC-32 does not match (a damaged byte) */
-    RMS_ERR_VERSION = 5,   /* a format version other than 2 */
+    RMS_ERR_VERSION = 5,   /* a format version other than 2 and 3 */
     RMS_ERR_ZSTD = 6,      /* zstd-wrapped: request zstd=false */
     RMS_ERR_HEADER = 7,    /* a header field out of range */
     RMS_ERR_BODY = 8       /* a stream does not decode, or a value is out of range */

@@ -1,7 +1,8 @@
 // Decoder for rulemesh's `strips` format (application/vnd.rulemesh.strips),
 // specified in docs/strips-format.md. Dependency-free ES module: decodes to
 // typed arrays ready for WebGL (TRIANGLE_STRIP with primitive restart, or a
-// TRIANGLES list on request). Reads format version 2. meshoptimizer's vertex
+// TRIANGLES list on request). Reads format versions 2 (one coded mesh) and
+// 3 (independently coded chunks, for big models). meshoptimizer's vertex
 // codec (versions 0 and 1) and index buffer codec (versions 0 and 1) are
 // ported by hand from meshoptimizer's src/vertexcodec.cpp and
 // src/indexcodec.cpp (scalar paths); the strip is rebuilt from the stored
@@ -492,7 +493,7 @@ export function decodeStrips(input, options = {}) {
   const flags = bytes[5];
   const pbits = bytes[6];
   const nbits = bytes[7];
-  if (version !== 2) throw new StripsError(`unsupported strips version ${version} (this decoder reads version 2)`);
+  if (version !== 2 && version !== 3) throw new StripsError(`unsupported strips version ${version} (this decoder reads versions 2 and 3)`);
   if (flags & ~(FLAG_ZSTD | FLAG_PALETTE)) throw new StripsError(`invalid strips header: unknown flags ${flags}`);
   if (flags & FLAG_ZSTD) throw new StripsError('this payload is zstd-wrapped; the JavaScript decoder reads only unwrapped payloads (request zstd=false)');
   if (![8, 10, 12, 16].includes(pbits) || ![8, 16].includes(nbits)) throw new StripsError(`invalid strips header: position bits ${pbits}, normal bits ${nbits}`);
@@ -513,49 +514,84 @@ export function decodeStrips(input, options = {}) {
   const palette = hasPalette ? body.slice(0, paletteLen * 4) : null;
   let at = paletteLen * 4;
   const bdv = new DataView(body.buffer, body.byteOffset, body.byteLength);
-  const takeStream = (what) => {
-    if (body.length - at < 4) throw new StripsError(`invalid strips body: ${what} stream length missing`);
+  const takeU32 = (what) => {
+    if (body.length - at < 4) throw new StripsError(`invalid strips body: ${what} missing`);
     const n = bdv.getUint32(at, true);
-    if (body.length - at - 4 < n) throw new StripsError(`invalid strips body: ${what} stream says ${n} bytes, only ${body.length - at - 4} left`);
-    const s = body.subarray(at + 4, at + 4 + n);
-    at += 4 + n;
+    at += 4;
+    return n;
+  };
+  const takeStream = (what) => {
+    const n = takeU32(`${what} stream length`);
+    if (body.length - at < n) throw new StripsError(`invalid strips body: ${what} stream says ${n} bytes, only ${body.length - at} left`);
+    const s = body.subarray(at, at + n);
+    at += n;
     return s;
   };
-  const vstream = takeStream('vertex');
-  const istream = takeStream('index');
+  if (vertexCount >= RESTART) throw new StripsError(`invalid strips header: ${vertexCount} vertices: the restart index is no vertex`);
+  // Every chunk's counts are checked against its streams before anything is decoded.
+  const chunk = (name, cv, ct) => {
+    const vstream = takeStream('vertex');
+    const istream = takeStream('index');
+    if (cv > vstream.length * MAX_VERTICES_PER_STREAM_BYTE + 256) throw new StripsError(`invalid strips header: ${name}${cv} vertices cannot fit in a ${vstream.length}-byte vertex stream`);
+    if (ct + INDEX_STREAM_OVERHEAD > istream.length) throw new StripsError(`invalid strips header: ${name}${ct} triangles cannot fit in a ${istream.length}-byte index stream`);
+    return { name, vertices: cv, triangles: ct, vstream, istream };
+  };
+  const chunks = [];
+  if (version === 2) {
+    chunks.push(chunk('', vertexCount, triangleCount));
+  } else {
+    const count = takeU32('chunk count');
+    if (count * 16 > body.length - at) throw new StripsError(`invalid strips header: ${count} chunks cannot fit in ${body.length - at} bytes`);
+    let v = 0;
+    let t = 0;
+    for (let k = 0; k < count; k++) {
+      const cv = takeU32('chunk vertex count');
+      const ct = takeU32('chunk triangle count');
+      chunks.push(chunk(`chunk ${k}: `, cv, ct));
+      v += cv;
+      t += ct;
+    }
+    if (v !== vertexCount || t !== triangleCount) throw new StripsError(`invalid strips header: chunks hold ${v} vertices and ${t} triangles, the header says ${vertexCount} and ${triangleCount}`);
+  }
   if (at !== body.length) throw new StripsError(`invalid strips body: ${body.length - at} stray bytes after the index stream`);
-  if (vertexCount > vstream.length * MAX_VERTICES_PER_STREAM_BYTE + 256 || vertexCount >= RESTART) throw new StripsError(`invalid strips header: ${vertexCount} vertices cannot fit in a ${vstream.length}-byte vertex stream`);
-  if (triangleCount + INDEX_STREAM_OVERHEAD > istream.length) throw new StripsError(`invalid strips header: ${triangleCount} triangles cannot fit in a ${istream.length}-byte index stream`);
-
-  const raw = decodeVertexBuffer(vstream, vertexCount, 16);
-  const tris = decodeIndexBuffer(istream, triangleCount * 3);
-  for (let i = 0; i < tris.length; i++) {
-    if (tris[i] >= vertexCount) throw new StripsError(`invalid strips body: index ${tris[i]} out of range (${vertexCount} vertices)`);
-  }
-  for (let t = 0; t < tris.length; t += 3) {
-    if (tris[t] === tris[t + 1] || tris[t + 1] === tris[t + 2] || tris[t] === tris[t + 2]) throw new StripsError(`invalid strips body: triangle ${t / 3} has a repeated index`);
-  }
 
   const pmax = 2 ** pbits - 1;
   const nmax = 2 ** nbits - 1;
   const positions = new Float32Array(vertexCount * 3);
   const normals = new Float32Array(vertexCount * 3);
   const colours = new Uint8Array(vertexCount * 4);
-  const rv = new DataView(raw.buffer, raw.byteOffset, raw.byteLength);
-  for (let k = 0; k < vertexCount; k++) {
-    const o = k * 16;
-    const q = [0, 1, 2, 3, 4, 5].map((c) => rv.getUint16(o + 2 * c, true));
-    if (q[0] > pmax || q[1] > pmax || q[2] > pmax || q[3] !== 0 || q[4] > nmax || q[5] > nmax) throw new StripsError(`invalid strips body: vertex ${k} has a value out of range for its bit count`);
-    for (let a = 0; a < 3; a++) positions[k * 3 + a] = bboxMin[a] + (q[a] * (bboxMax[a] - bboxMin[a])) / pmax;
-    octDecode(q[4], q[5], nmax, normals, k * 3);
-    if (palette) {
-      const idx = raw[o + 12];
-      if (raw[o + 13] || raw[o + 14] || raw[o + 15]) throw new StripsError(`invalid strips body: vertex ${k}: palette padding not zero`);
-      if (idx >= paletteLen) throw new StripsError(`invalid strips body: vertex ${k}: palette index ${idx} out of range`);
-      colours.set(palette.subarray(idx * 4, idx * 4 + 4), k * 4);
-    } else {
-      colours.set(raw.subarray(o + 12, o + 16), k * 4);
+  const tris = new Uint32Array(triangleCount * 3);
+  let base = 0;
+  let tbase = 0;
+  for (const c of chunks) {
+    const raw = decodeVertexBuffer(c.vstream, c.vertices, 16);
+    const ct = decodeIndexBuffer(c.istream, c.triangles * 3);
+    for (let i = 0; i < ct.length; i++) {
+      if (ct[i] >= c.vertices) throw new StripsError(`invalid strips body: ${c.name}index ${ct[i]} out of range (${c.vertices} vertices)`);
     }
+    for (let t = 0; t < ct.length; t += 3) {
+      if (ct[t] === ct[t + 1] || ct[t + 1] === ct[t + 2] || ct[t] === ct[t + 2]) throw new StripsError(`invalid strips body: ${c.name}triangle ${t / 3} has a repeated index`);
+    }
+    for (let i = 0; i < ct.length; i++) tris[tbase + i] = ct[i] + base;
+    tbase += ct.length;
+    const rv = new DataView(raw.buffer, raw.byteOffset, raw.byteLength);
+    for (let j = 0; j < c.vertices; j++) {
+      const o = j * 16;
+      const k = base + j;
+      const q = [0, 1, 2, 3, 4, 5].map((w) => rv.getUint16(o + 2 * w, true));
+      if (q[0] > pmax || q[1] > pmax || q[2] > pmax || q[3] !== 0 || q[4] > nmax || q[5] > nmax) throw new StripsError(`invalid strips body: ${c.name}vertex ${j} has a value out of range for its bit count`);
+      for (let a = 0; a < 3; a++) positions[k * 3 + a] = bboxMin[a] + (q[a] * (bboxMax[a] - bboxMin[a])) / pmax;
+      octDecode(q[4], q[5], nmax, normals, k * 3);
+      if (palette) {
+        const idx = raw[o + 12];
+        if (raw[o + 13] || raw[o + 14] || raw[o + 15]) throw new StripsError(`invalid strips body: ${c.name}vertex ${j}: palette padding not zero`);
+        if (idx >= paletteLen) throw new StripsError(`invalid strips body: ${c.name}vertex ${j}: palette index ${idx} out of range`);
+        colours.set(palette.subarray(idx * 4, idx * 4 + 4), k * 4);
+      } else {
+        colours.set(raw.subarray(o + 12, o + 16), k * 4);
+      }
+    }
+    base += c.vertices;
   }
 
   const small = vertexCount < 0xffff;

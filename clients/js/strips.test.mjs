@@ -3,13 +3,14 @@
 // writes one pair per grammar there) or else from ./fixtures (committed,
 // kept in sync with the encoder by the same Rust test). Each X.strips has an
 // X.json holding what the Rust reference decoder read from it (format
-// version 2).
+// version 2, or 3 for the grammars over 65 536 triangles, which the Rust
+// test writes; the committed fixtures are version 2).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { decodeStrips, unstripify, StripsError } from './strips.mjs';
+import { decodeStrips, unstripify, StripsError, crc32 } from './strips.mjs';
 
 /** Each triangle rotated so its smallest index comes first, order kept. */
 function rotations(list) {
@@ -86,3 +87,24 @@ test('zstd-wrapped payloads are refused with a clear message', () => {
     assert.throws(() => decodeStrips(readFileSync(join(dir, f))), /zstd-wrapped/);
   }
 });
+
+// Version 3 files (chunks) come only from $STRIPS_FIXTURES (the Rust test
+// checks that this test ran); damaged chunk lists with a valid CRC must be
+// refused before anything is decoded.
+const chunked = names.map((n) => new Uint8Array(readFileSync(join(dir, n)))).filter((b) => b[4] === 3);
+if (chunked.length > 0) {
+  test('version 3 chunk lists that disagree with their streams are rejected', () => {
+    const bytes = chunked.reduce((a, b) => (a.length <= b.length ? a : b));
+    const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    const at = 52 + 4 * dv.getUint32(40, true);
+    assert.ok(dv.getUint32(at, true) >= 2, 'a version 3 file has chunks');
+    const edits = [[at, 3], [at, 0xffffffff], [at + 4, 0xffffffff], [at + 4, 0], [at + 8, 0xffffffff], [at + 8, 1], [at + 12, 0xffffffff], [at + 12, 5]];
+    for (const [off, val] of edits) {
+      const b = bytes.slice();
+      const v = new DataView(b.buffer);
+      v.setUint32(off, val, true);
+      v.setUint32(b.length - 4, crc32(b.subarray(0, b.length - 4)), true);
+      assert.throws(() => decodeStrips(b), StripsError, `offset ${off} = ${val}`);
+    }
+  });
+}

@@ -62,7 +62,7 @@ pub fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, bu
 /// derivation, which stops at the limit.
 fn hierarchy(program: &lang::ir::Program, params: &[f64], options: &EvalOptions, req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Option<Hierarchy>, BuildError> {
     let wanted = match req.hierarchy {
-        HierarchyUse::Required | HierarchyUse::Union => true,
+        HierarchyUse::Required | HierarchyUse::Union | HierarchyUse::Streamed => true,
         HierarchyUse::Preferred => req.downstream.per_instance.is_some(),
         HierarchyUse::Never => false,
     };
@@ -72,17 +72,19 @@ fn hierarchy(program: &lang::ir::Program, params: &[f64], options: &EvalOptions,
     let mark = budget.mark();
     let built = evaluate_hierarchy(program, params, options, budget).and_then(|h| {
         let Some(h) = h else { return Ok(None) };
-        if req.hierarchy == HierarchyUse::Required {
-            budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?;
-        } else {
-            budget.check_total(Limit::Primitives, h.leaves())?;
-            if req.hierarchy == HierarchyUse::Union {
-                // The union's fallback expands every leaf: charged as flat geometry.
+        match req.hierarchy {
+            HierarchyUse::Required => budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?,
+            // Streamed strips tessellate every leaf as they write it, and the
+            // union's fallback expands every leaf: charged as the flat derivation would be.
+            HierarchyUse::Streamed | HierarchyUse::Union => {
+                budget.check_total(Limit::Primitives, h.leaves())?;
                 budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
-                return Ok(Some(h));
             }
-            let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(req.detail))).fold(0u64, u64::saturating_add);
-            budget.check_total(Limit::Triangles, meshes)?;
+            HierarchyUse::Preferred | HierarchyUse::Never => {
+                budget.check_total(Limit::Primitives, h.leaves())?;
+                let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(req.detail))).fold(0u64, u64::saturating_add);
+                budget.check_total(Limit::Triangles, meshes)?;
+            }
         }
         Ok(Some(h))
     });

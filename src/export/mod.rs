@@ -15,6 +15,9 @@ mod scene_format;
 mod scene_v2;
 pub mod stl;
 pub mod strips;
+mod strips_chunk;
+mod strips_decode;
+mod strips_format;
 pub mod threemf;
 pub mod ug;
 

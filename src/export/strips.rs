@@ -1,206 +1,35 @@
 //! The `strips` format (`application/vnd.rulemesh.strips`): one quantised,
 //! stripified, compressed mesh for phone clients that fetch icons over slow
 //! links and decode them on small CPUs. `docs/strips-format.md` specifies it
-//! byte by byte; this module is the reference encoder and decoder, and
-//! `clients/js/strips.mjs` the JavaScript decoder.
+//! byte by byte; this module is the reference encoder's container (header,
+//! body, CRC) and its two ways in: meshes ([`write_strips`]) and the model
+//! itself, streamed ([`survey_model`], [`write_strips_model`]).
+//! `export::strips_chunk` codes the chunks and `export::strips_decode` is the
+//! reference decoder (`clients/js/strips.mjs` and `clients/c/` its twins).
 //!
-//! Encoding: merge all meshes → quantise each vertex to 16 bytes (positions
-//! relative to the bounding box, octahedral normals, colour or palette index)
-//! → weld identical quantised vertices → optimise for the vertex cache and
-//! stripify ([`crate::geom::strip`]) → meshoptimizer's vertex codec for the
-//! vertices and its index buffer codec for the strip's triangles, in strip
-//! order (the decoder rebuilds the strip from them with
-//! [`strip::restrip`]) → optional zstd → header and CRC32.
+//! Encoding: a first pass finds the bounding box and palette of the whole
+//! model; the second cuts the model's triangles into chunks of
+//! [`CHUNK_TRIANGLES`], and each chunk is quantised (16 bytes a vertex:
+//! positions relative to the bounding box, octahedral normals, colour or
+//! palette index), welded, optimised for the vertex cache and stripified
+//! ([`crate::geom::strip`]) and coded with meshoptimizer's vertex and index
+//! buffer codecs on its own → optional zstd → header and CRC32. A model of
+//! one chunk is written as version 2 (one mesh), anything larger as version 3.
 
+pub use super::strips_chunk::CHUNK_TRIANGLES;
+use super::strips_chunk::{encode_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
+pub use super::strips_decode::{decode_strips, decode_strips_full};
+pub use super::strips_format::*;
 use super::ExportError;
-use crate::core::budget::Budget;
-use crate::geom::strip::{self, RESTART};
-use crate::geom::{Mesh, NamedMesh};
-use std::collections::BTreeMap;
-use std::io::Read;
+use crate::core::budget::{Budget, LimitExceeded, OnLimit};
+use crate::geom::strip::RESTART;
+use crate::geom::NamedMesh;
+use crate::mesh::pieces::{for_each_piece, Piece};
+use crate::mesh::MeshLayout;
+use crate::model::{Hierarchy, Scene};
 
-/// The four bytes every strips file starts with.
-pub const MAGIC: [u8; 4] = *b"RMST";
-/// The format version this encoder writes and the decoder reads.
-/// Version 2 stores the strip as its triangles (index buffer codec) where
-/// version 1 stored the strip indices (index sequence codec); the decoders
-/// read version 2 only.
-pub const VERSION: u8 = 2;
-/// Bytes before the body: magic, version, flags, bits, bounding box, counts, lengths.
-pub const HEADER_LEN: usize = 52;
-/// Bytes after the body: the CRC32.
-pub const TRAILER_LEN: usize = 4;
-/// Bytes of one quantised vertex in the vertex stream.
-pub const VERTEX_BYTES: usize = 16;
-/// Flag bit: the body is one zstd frame.
-pub const FLAG_ZSTD: u8 = 1;
-/// Flag bit: colours are indices into the palette.
-pub const FLAG_PALETTE: u8 = 2;
-/// Most palette entries (one byte per index).
-pub const MAX_PALETTE: usize = 256;
-/// The decoder refuses a zstd body that claims to expand more than this
-/// many times (plus 64 KiB): our bodies are already compressed, so a larger
-/// claim can only be a hostile file asking for a huge allocation.
-pub const MAX_ZSTD_RATIO: u64 = 64;
-/// A block of up to 256 vertices costs at least 4 control bytes in the
-/// vertex codec (version 1), so a stream of `n` bytes cannot hold more than
-/// `64·n` vertices (plus one block); the decoder refuses larger counts
-/// before allocating.
-pub const MAX_VERTICES_PER_STREAM_BYTE: u64 = 64;
-/// The index buffer codec spends at least one code byte per triangle, after a
-/// 1-byte header and before a 16-byte table, so `n` bytes cannot hold more
-/// than `n − 17` triangles; the decoder refuses larger counts before allocating.
-pub const INDEX_STREAM_OVERHEAD: u64 = 17;
-
-/// Precision choices for the `strips` format (request options). Every other
-/// format ignores them; they reach only the exporter, never the parser or
-/// the evaluator.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub struct StripsOptions {
-    /// Bits per position axis, relative to the bounding box: 8, 10, 12 or 16.
-    /// The error per axis is at most extent / (2·(2^bits − 1)).
-    pub position_bits: u8,
-    /// Bits per octahedral normal component: 8 or 16 (see the doc for the
-    /// angular error of each).
-    pub normal_bits: u8,
-    /// Wrap the body in zstd. Off by default: the JavaScript decoder has no
-    /// zstd, and the meshoptimizer codecs already remove most redundancy.
-    pub zstd: bool,
-}
-
-impl Default for StripsOptions {
-    /// 16-bit positions (sub-micrometre on a 1 m icon), 8-bit normals
-    /// (under 1° off, invisible in flat-shaded icons), no zstd.
-    fn default() -> Self {
-        StripsOptions { position_bits: 16, normal_bits: 8, zstd: false }
-    }
-}
-
-impl StripsOptions {
-    /// Checks the bit counts against the ones the format allows.
-    pub fn validate(&self) -> Result<(), String> {
-        if !matches!(self.position_bits, 8 | 10 | 12 | 16) {
-            return Err(format!("strips position bits must be 8, 10, 12 or 16, got {}", self.position_bits));
-        }
-        if !matches!(self.normal_bits, 8 | 16) {
-            return Err(format!("strips normal bits must be 8 or 16, got {}", self.normal_bits));
-        }
-        Ok(())
-    }
-}
-
-/// Why a strips payload was rejected. Every message says what was wrong,
-/// so a client can tell a truncated download from a wrong file.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum StripsError {
-    /// Fewer bytes than the fixed header and trailer.
-    #[error("strips payload truncated: {len} bytes, the header and CRC alone need {min}")]
-    TooShort {
-        /// Bytes received.
-        len: usize,
-        /// Bytes needed.
-        min: usize,
-    },
-    /// The first four bytes are not `RMST`.
-    #[error("not a strips payload (bad magic)")]
-    BadMagic,
-    /// The total length disagrees with the header's body length.
-    #[error("strips payload truncated or padded: the header promises {expected} bytes, got {actual}")]
-    Length {
-        /// Bytes the header promises.
-        expected: u64,
-        /// Bytes received.
-        actual: usize,
-    },
-    /// The CRC32 at the end does not match the bytes before it.
-    #[error("strips payload corrupted: CRC32 is {computed:08x}, the file says {stored:08x}")]
-    Checksum {
-        /// The CRC stored in the file.
-        stored: u32,
-        /// The CRC of the bytes received.
-        computed: u32,
-    },
-    /// A version this decoder does not know.
-    #[error("unsupported strips version {0} (this decoder reads version 2)")]
-    Version(u8),
-    /// Any other header field out of range.
-    #[error("invalid strips header: {0}")]
-    Header(String),
-    /// The body (or one of its streams) does not decode.
-    #[error("invalid strips body: {0}")]
-    Body(String),
-}
-
-/// A decoded strips file, with the strip itself and the quantisation facts
-/// (for clients and tests that want more than a triangle list).
-#[derive(Debug, Clone, PartialEq)]
-pub struct DecodedStrips {
-    /// The mesh; `indices` is the triangle list as stored (in strip order,
-    /// each triangle possibly rotated by the index codec, winding kept).
-    pub mesh: Mesh,
-    /// The strip index sequence rebuilt from the triangles by
-    /// [`strip::restrip`], with [`RESTART`] between strips.
-    pub strip: Vec<u32>,
-    /// Bounding box minimum (the quantisation origin).
-    pub bbox_min: [f32; 3],
-    /// Bounding box maximum.
-    pub bbox_max: [f32; 3],
-    /// Bits per position axis.
-    pub position_bits: u8,
-    /// Bits per normal component.
-    pub normal_bits: u8,
-    /// The palette, when colours are palette indices.
-    pub palette: Option<Vec<[u8; 4]>>,
-}
-
-/// Quantises `v` in `[0, 1]` to `0..=max`.
-fn quantise_unit(v: f64, max: u32) -> u16 {
-    (v * f64::from(max)).round().clamp(0.0, f64::from(max)) as u16
-}
-
-/// Octahedral encoding of a normal to two values in `0..=max` (zero normals
-/// encode as +Z, so decoding always yields a unit vector).
-pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
-    let [x, y, z] = n.map(f64::from);
-    let l1 = x.abs() + y.abs() + z.abs();
-    let (mut u, mut v) = if l1 > 0.0 && l1.is_finite() { (x / l1, y / l1) } else { (0.0, 0.0) };
-    if l1 > 0.0 && z < 0.0 {
-        let (ou, ov) = (u, v);
-        u = (1.0 - ov.abs()) * if ou >= 0.0 { 1.0 } else { -1.0 };
-        v = (1.0 - ou.abs()) * if ov >= 0.0 { 1.0 } else { -1.0 };
-    }
-    [quantise_unit(u * 0.5 + 0.5, max), quantise_unit(v * 0.5 + 0.5, max)]
-}
-
-/// Decodes an octahedral normal; the arithmetic (in f64, rounded to f32 at
-/// the end) is the one the spec and the JavaScript decoder use, so both
-/// decoders produce identical floats.
-pub fn oct_decode(q: [u16; 2], max: u32) -> [f32; 3] {
-    let m = f64::from(max);
-    let mut x = f64::from(q[0]) / m * 2.0 - 1.0;
-    let mut y = f64::from(q[1]) / m * 2.0 - 1.0;
-    let z = 1.0 - x.abs() - y.abs();
-    if z < 0.0 {
-        let (ox, oy) = (x, y);
-        x = (1.0 - oy.abs()) * if ox >= 0.0 { 1.0 } else { -1.0 };
-        y = (1.0 - ox.abs()) * if oy >= 0.0 { 1.0 } else { -1.0 };
-    }
-    let len = (x * x + y * y + z * z).sqrt();
-    [(x / len) as f32, (y / len) as f32, (z / len) as f32]
-}
-
-/// Dequantises one position coordinate (f64 arithmetic, rounded once).
-fn dequantise(q: u16, lo: f32, hi: f32, max: u32) -> f32 {
-    let (lo, hi) = (f64::from(lo), f64::from(hi));
-    (lo + f64::from(q) * (hi - lo) / f64::from(max)) as f32
-}
-
-/// Checks every mesh (in order, so the first bad one is named) and returns
-/// the index of each mesh's first vertex in the merged numbering (the format
-/// holds a single mesh) and the total vertex count.
-fn vertex_bases(meshes: &[NamedMesh]) -> Result<(Vec<u32>, usize), ExportError> {
-    let mut bases = Vec::with_capacity(meshes.len());
-    let mut total = 0usize;
+/// Checks every mesh (in order, so the first bad one is named) before any is read.
+fn check_meshes(meshes: &[NamedMesh]) -> Result<(), ExportError> {
     for nm in meshes {
         let m = &nm.mesh;
         let bad = |detail: String| ExportError::InvalidMesh { name: nm.name.clone(), detail };
@@ -216,345 +45,269 @@ fn vertex_bases(meshes: &[NamedMesh]) -> Result<(Vec<u32>, usize), ExportError> 
         if let Some(&i) = m.indices.iter().find(|&&i| i as usize >= m.positions.len()) {
             return Err(bad(format!("index {i} out of range")));
         }
-        let too_large = || ExportError::TooLarge { format: "strips", detail: "more than 2^32 - 2 vertices".into() };
-        bases.push(u32::try_from(total).map_err(|_| too_large())?);
-        total += m.positions.len();
-        if total >= RESTART as usize {
-            return Err(too_large());
-        }
     }
-    Ok((bases, total))
+    Ok(())
 }
 
-/// The bounding box of the vertices triangles use (zero when none do).
-fn used_bounds(meshes: &[NamedMesh]) -> ([f32; 3], [f32; 3]) {
-    let mut lo = [f32::INFINITY; 3];
-    let mut hi = [f32::NEG_INFINITY; 3];
-    let mut any = false;
-    for m in meshes {
-        for &i in &m.mesh.indices {
-            let p = m.mesh.positions[i as usize];
-            any = true;
-            for a in 0..3 {
-                lo[a] = lo[a].min(p[a]);
-                hi[a] = hi[a].max(p[a]);
+fn len32(n: usize) -> Result<u32, ExportError> {
+    u32::try_from(n).map_err(|_| ExportError::TooLarge { format: "strips", detail: "stream over 4 GiB".into() })
+}
+
+/// The container being written: header space, palette, chunks; the header
+/// and CRC are filled in by [`Body::finish`] once the counts are known.
+struct Body {
+    out: Vec<u8>,
+    version: u8,
+    count_at: usize,
+    chunks: u32,
+    vertices: u64,
+    triangles: u64,
+}
+
+impl Body {
+    /// A body of `chunks` chunks (version 2 when there is at most one).
+    fn new(chunks: u64, palette: Option<&[[u8; 4]]>) -> Body {
+        let version = if chunks <= 1 { VERSION_ONE_MESH } else { VERSION };
+        let mut out = vec![0u8; HEADER_LEN];
+        for c in palette.into_iter().flatten() {
+            out.extend_from_slice(c);
+        }
+        let count_at = out.len();
+        if version == VERSION {
+            out.extend_from_slice(&0u32.to_le_bytes());
+        }
+        Body { out, version, count_at, chunks: 0, vertices: 0, triangles: 0 }
+    }
+
+    /// Bytes [`Body::push`] adds for `c`.
+    fn growth(c: &EncodedChunk) -> u64 {
+        (16 + c.vstream.len() + c.istream.len()) as u64
+    }
+
+    /// Appends one coded chunk.
+    fn push(&mut self, c: &EncodedChunk) -> Result<(), ExportError> {
+        if self.version == VERSION {
+            self.out.extend_from_slice(&c.vertices.to_le_bytes());
+            self.out.extend_from_slice(&c.triangles.to_le_bytes());
+        } else if self.chunks > 0 {
+            return Err(ExportError::TooLarge { format: "strips", detail: "a second chunk in a one-mesh file".into() });
+        }
+        self.out.extend_from_slice(&len32(c.vstream.len())?.to_le_bytes());
+        self.out.extend_from_slice(&c.vstream);
+        self.out.extend_from_slice(&len32(c.istream.len())?.to_le_bytes());
+        self.out.extend_from_slice(&c.istream);
+        self.chunks += 1;
+        self.vertices += u64::from(c.vertices);
+        self.triangles += u64::from(c.triangles);
+        Ok(())
+    }
+
+    /// Fills in the header, compresses the body if asked, and appends the CRC.
+    fn finish(mut self, (lo, hi): ([f32; 3], [f32; 3]), palette: Option<&[[u8; 4]]>, opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+        if self.version == VERSION_ONE_MESH && self.chunks == 0 {
+            // An empty model is one empty chunk.
+            self.push(&encode_chunk(&[], &Quantiser::new((lo, hi), opts.position_bits, opts.normal_bits, None))?)?;
+        }
+        if self.version == VERSION {
+            self.out[self.count_at..self.count_at + 4].copy_from_slice(&self.chunks.to_le_bytes());
+        }
+        if self.vertices >= u64::from(RESTART) {
+            return Err(ExportError::TooLarge { format: "strips", detail: "more than 2^32 - 2 vertices".into() });
+        }
+        let mut out = self.out;
+        let raw_len = len32(out.len() - HEADER_LEN)?;
+        let mut flags = if palette.is_some() { FLAG_PALETTE } else { 0 };
+        if opts.zstd {
+            budget.check_deadline()?;
+            budget.reserve_memory(u64::from(raw_len))?;
+            flags |= FLAG_ZSTD;
+            // Level 19, single-threaded, no checksum or dictionary: deterministic.
+            let body = zstd::bulk::compress(&out[HEADER_LEN..], 19).map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("zstd: {e}") })?;
+            out.truncate(HEADER_LEN);
+            out.extend_from_slice(&body);
+        }
+        let body_len = len32(out.len() - HEADER_LEN)?;
+        let mut header = Vec::with_capacity(HEADER_LEN);
+        header.extend_from_slice(&MAGIC);
+        header.extend_from_slice(&[self.version, flags, opts.position_bits, opts.normal_bits]);
+        for c in lo.iter().chain(&hi) {
+            header.extend_from_slice(&c.to_le_bytes());
+        }
+        // Fit: below RESTART (checked above), and triangles ≤ vertices·2 for every chunk's mesh.
+        header.extend_from_slice(&(self.vertices as u32).to_le_bytes());
+        header.extend_from_slice(&len32(self.triangles as usize)?.to_le_bytes());
+        header.extend_from_slice(&(palette.map_or(0, <[_]>::len) as u32).to_le_bytes());
+        header.extend_from_slice(&body_len.to_le_bytes());
+        header.extend_from_slice(&raw_len.to_le_bytes());
+        debug_assert_eq!(header.len(), HEADER_LEN);
+        out[..HEADER_LEN].copy_from_slice(&header);
+        let crc = crc32fast::hash(&out);
+        out.extend_from_slice(&crc.to_le_bytes());
+        Ok(out)
+    }
+}
+
+/// Calls `chunk` with every chunk of `meshes` (merged into one, in order),
+/// a chunk's window of each mesh at a time: nothing is copied.
+fn mesh_chunks(meshes: &[NamedMesh], chunk: &mut dyn FnMut(&[Part<'_>]) -> Result<(), ExportError>) -> Result<(), ExportError> {
+    let mut parts: Vec<Part<'_>> = Vec::new();
+    let mut pending = 0usize;
+    for nm in meshes {
+        let mut at = 0;
+        while at < nm.mesh.indices.len() {
+            let take = (3 * (CHUNK_TRIANGLES - pending)).min(nm.mesh.indices.len() - at);
+            parts.push((&nm.mesh, &nm.mesh.indices[at..at + take]));
+            at += take;
+            pending += take / 3;
+            if pending == CHUNK_TRIANGLES {
+                chunk(&parts)?;
+                parts.clear();
+                pending = 0;
             }
         }
     }
-    if any {
-        (lo, hi)
-    } else {
-        ([0.0; 3], [0.0; 3])
+    if pending > 0 {
+        chunk(&parts)?;
     }
-}
-
-/// The palette when the colours triangles use fit in one byte (sorted, so
-/// output is deterministic), else empty.
-fn palette_of(meshes: &[NamedMesh]) -> BTreeMap<[u8; 4], u8> {
-    let mut set = std::collections::BTreeSet::new();
-    let mut last = None;
-    for m in meshes {
-        for &i in &m.mesh.indices {
-            let c = m.mesh.colours[i as usize];
-            // Neighbouring corners mostly share a colour: skip the set then.
-            if last != Some(c) {
-                last = Some(c);
-                set.insert(c);
-                if set.len() > MAX_PALETTE {
-                    return BTreeMap::new();
-                }
-            }
-        }
-    }
-    set.into_iter().enumerate().map(|(k, c)| (c, k as u8)).collect()
-}
-
-/// Quantises every vertex of every mesh to the format's 16 bytes (merged
-/// numbering) and returns them with the merged triangle list, minus the
-/// triangles whose corners quantise to the same position (they cover no area).
-fn quantise(meshes: &[NamedMesh], bases: &[u32], total: usize, bounds: ([f32; 3], [f32; 3]), palette: Option<&BTreeMap<[u8; 4], u8>>, opts: &StripsOptions) -> (Vec<[u16; 8]>, Vec<u32>) {
-    let (lo, hi) = bounds;
-    let pmax = (1u32 << opts.position_bits) - 1;
-    let nmax = (1u32 << opts.normal_bits) - 1;
-    let ext: [f64; 3] = [0, 1, 2].map(|a| f64::from(hi[a]) - f64::from(lo[a]));
-    let mut quantised = Vec::with_capacity(total);
-    let mut last: Option<([u8; 4], [u8; 4])> = None;
-    let mut last_normal: Option<([f32; 3], [u16; 2])> = None;
-    for m in meshes {
-        let m = &m.mesh;
-        for ((p, &n), &c) in m.positions.iter().zip(&m.normals).zip(&m.colours) {
-            let q = |a: usize| if ext[a] > 0.0 { quantise_unit((f64::from(p[a]) - f64::from(lo[a])) / ext[a], pmax) } else { 0 };
-            // Neighbouring vertices mostly share a normal (flat faces): encode it once.
-            let n = match last_normal {
-                Some((from, to)) if from.map(f32::to_bits) == n.map(f32::to_bits) => to,
-                _ => {
-                    let to = oct_encode(n, nmax);
-                    last_normal = Some((n, to));
-                    to
-                }
-            };
-            let c = match palette {
-                Some(map) => match last {
-                    Some((from, to)) if from == c => to,
-                    _ => {
-                        let to = [map.get(&c).copied().unwrap_or(0), 0, 0, 0];
-                        last = Some((c, to));
-                        to
-                    }
-                },
-                None => c,
-            };
-            quantised.push([q(0), q(1), q(2), 0, n[0], n[1], u16::from_le_bytes([c[0], c[1]]), u16::from_le_bytes([c[2], c[3]])].map(u16::to_le));
-        }
-    }
-    let triangles: usize = meshes.iter().map(|m| m.mesh.indices.len()).sum();
-    let mut indices = Vec::with_capacity(triangles);
-    for (m, &base) in meshes.iter().zip(bases) {
-        for t in m.mesh.indices.chunks_exact(3) {
-            let t = [t[0] + base, t[1] + base, t[2] + base];
-            let p = |k: usize| &quantised[t[k] as usize][..3];
-            if p(0) != p(1) && p(1) != p(2) && p(0) != p(2) {
-                indices.extend_from_slice(&t);
-            }
-        }
-    }
-    (quantised, indices)
+    Ok(())
 }
 
 /// Encodes `meshes` (merged into one) as a strips file. Deterministic: the
-/// same meshes and options give the same bytes.
-///
-/// Built for models of millions of triangles: the meshes are read in place
-/// (never merged into a copy), the quantised vertices are the only
-/// vertex-sized copy until the strip is made, and the body is written
-/// straight into the output after its header.
+/// same meshes and options give the same bytes, and the same bytes as
+/// [`write_strips_model`] of the model they were meshed from.
 pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     opts.validate().map_err(|detail| ExportError::InvalidOptions { format: "strips", detail })?;
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
     budget.reserve_memory(super::estimated_size(super::Format::Strips, v, t))?;
-    let (bases, total) = vertex_bases(meshes)?;
-    // Each phase below is one pass over the model: the deadline is looked at between them.
+    check_meshes(meshes)?;
+    let mut survey = Survey::default();
+    mesh_chunks(meshes, &mut |parts| survey.add(parts))?;
     budget.check_deadline()?;
-    let (lo, hi) = used_bounds(meshes);
-    let distinct = palette_of(meshes);
-    let palette = t > 0 && !distinct.is_empty();
-    let (quantised, indices) = quantise(meshes, &bases, total, (lo, hi), palette.then_some(&distinct), opts);
-    budget.check_deadline()?;
-    // The strip travels as its triangles, in strip order: the index buffer
-    // codec stores them in fewer bytes than the sequence codec stores the
-    // strip, and the decoder rebuilds the strip with `strip::restrip`.
-    let (vertices, triangles) = strip::weld_stripify(&quantised, indices);
-    drop(quantised);
-    budget.check_deadline()?;
-
-    let len32 = |n: usize| u32::try_from(n).map_err(|_| ExportError::TooLarge { format: "strips", detail: "stream over 4 GiB".into() });
-    let vstream = meshopt::encode_vertex_buffer_level(&vertices, 3, Some(1))
-        .map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("vertex codec: {e:?}") })?;
-    let (vertex_count, triangle_count) = (len32(vertices.len())?, len32(triangles.len() / 3)?);
-    drop(vertices);
-    let istream = meshopt::encode_index_buffer(&triangles, vertex_count as usize)
-        .map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("index codec: {e:?}") })?;
-    drop(triangles);
-
-    // The header is filled in once the body's lengths are known.
-    let pal_len = if palette { distinct.len() * 4 } else { 0 };
-    let mut out = Vec::with_capacity(HEADER_LEN + pal_len + 8 + vstream.len() + istream.len() + TRAILER_LEN);
-    out.resize(HEADER_LEN, 0);
-    if palette {
-        for c in distinct.keys() {
-            out.extend_from_slice(c);
-        }
-    }
-    out.extend_from_slice(&len32(vstream.len())?.to_le_bytes());
-    out.extend_from_slice(&vstream);
-    drop(vstream);
-    out.extend_from_slice(&len32(istream.len())?.to_le_bytes());
-    out.extend_from_slice(&istream);
-    drop(istream);
-    let raw_len = len32(out.len() - HEADER_LEN)?;
-    let mut flags = 0u8;
-    if palette {
-        flags |= FLAG_PALETTE;
-    }
-    if opts.zstd {
+    let palette = survey.palette();
+    let q = Quantiser::new(survey.bounds(), opts.position_bits, opts.normal_bits, palette.as_deref());
+    let mut body = Body::new(survey.chunks(), palette.as_deref());
+    mesh_chunks(meshes, &mut |parts| {
         budget.check_deadline()?;
-        flags |= FLAG_ZSTD;
-        // Level 19, single-threaded, no checksum or dictionary: deterministic.
-        let body = zstd::bulk::compress(&out[HEADER_LEN..], 19).map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("zstd: {e}") })?;
-        out.truncate(HEADER_LEN);
-        out.extend_from_slice(&body);
-    }
-    let body_len = len32(out.len() - HEADER_LEN)?;
-
-    let mut header = Vec::with_capacity(HEADER_LEN);
-    header.extend_from_slice(&MAGIC);
-    header.extend_from_slice(&[VERSION, flags, opts.position_bits, opts.normal_bits]);
-    for c in lo.iter().chain(&hi) {
-        header.extend_from_slice(&c.to_le_bytes());
-    }
-    header.extend_from_slice(&vertex_count.to_le_bytes());
-    header.extend_from_slice(&triangle_count.to_le_bytes());
-    header.extend_from_slice(&(if palette { distinct.len() as u32 } else { 0 }).to_le_bytes());
-    header.extend_from_slice(&body_len.to_le_bytes());
-    header.extend_from_slice(&raw_len.to_le_bytes());
-    debug_assert_eq!(header.len(), HEADER_LEN);
-    out[..HEADER_LEN].copy_from_slice(&header);
-    let crc = crc32fast::hash(&out);
-    out.extend_from_slice(&crc.to_le_bytes());
-    Ok(out)
+        body.push(&encode_chunk(parts, &q)?)
+    })?;
+    body.finish(survey.bounds(), palette.as_deref(), opts, budget)
 }
 
-fn u32_at(b: &[u8], off: usize) -> u32 {
-    u32::from_le_bytes([b[off], b[off + 1], b[off + 2], b[off + 3]])
+/// The flat model a streamed strips file is written from: a scene (and the
+/// hierarchy whose leaves it stands for, not expanded), at a detail, its
+/// pieces in the order of the merged meshes of `layout`.
+#[derive(Debug, Clone, Copy)]
+pub struct ModelSource<'a> {
+    /// The flat part of the model.
+    pub scene: &'a Scene,
+    /// An instancing hierarchy, walked leaf by leaf after the scene.
+    pub hierarchy: Option<&'a Hierarchy>,
+    /// Tessellation detail.
+    pub detail: u32,
+    /// The mesh layout (it orders the pieces).
+    pub layout: MeshLayout,
 }
 
-fn f32_at(b: &[u8], off: usize) -> f32 {
-    f32::from_bits(u32_at(b, off))
+/// What the first pass over a model found: bounds, palette, chunk and
+/// triangle counts, and where it stopped.
+#[derive(Debug, Clone)]
+pub struct ModelSurvey {
+    survey: Survey,
+    pieces: u64,
+    /// The limit that cut the model short under `truncate` (the pass stops there, and so will the writer).
+    pub cut: Option<LimitExceeded>,
 }
 
-/// Reads a `u32` length prefix and that many bytes from `body` at `*at`.
-fn take_stream<'a>(body: &'a [u8], at: &mut usize, what: &str) -> Result<&'a [u8], StripsError> {
-    let rest = body.get(*at..).unwrap_or_default();
-    if rest.len() < 4 {
-        return Err(StripsError::Body(format!("{what} stream length missing")));
+impl ModelSurvey {
+    /// Triangles of the flat model (what the flat mesh would hold).
+    pub fn triangles(&self) -> u64 {
+        self.survey.triangles
     }
-    let n = u32_at(rest, 0) as usize;
-    let s = rest.get(4..4 + n).ok_or_else(|| StripsError::Body(format!("{what} stream says {n} bytes, only {} left", rest.len() - 4)))?;
-    *at += 4 + n;
-    Ok(s)
 }
 
-/// Decodes a strips file into a triangle-list mesh. Never panics, and never
-/// allocates more than the payload's own size justifies (see the limits in
-/// `docs/strips-format.md`); any damage is a [`StripsError`].
-pub fn decode_strips(bytes: &[u8]) -> Result<Mesh, StripsError> {
-    decode_strips_full(bytes).map(|d| d.mesh)
-}
+/// Bytes one chunk's coding needs at most besides its output: quantised
+/// vertices, weld tables, the strip and meshoptimizer's own arrays for up to
+/// three vertices per triangle.
+pub const CHUNK_WORKING_SET: u64 = 3 * CHUNK_TRIANGLES as u64 * 128;
 
-/// Like [`decode_strips`], also returning the strip and the quantisation facts.
-pub fn decode_strips_full(bytes: &[u8]) -> Result<DecodedStrips, StripsError> {
-    let min = HEADER_LEN + TRAILER_LEN;
-    if bytes.len() < min {
-        return Err(StripsError::TooShort { len: bytes.len(), min });
-    }
-    if bytes[..4] != MAGIC {
-        return Err(StripsError::BadMagic);
-    }
-    let body_len = u64::from(u32_at(bytes, 44));
-    let expected = body_len + min as u64;
-    if expected != bytes.len() as u64 {
-        return Err(StripsError::Length { expected, actual: bytes.len() });
-    }
-    let end = bytes.len() - TRAILER_LEN;
-    let (stored, computed) = (u32_at(bytes, end), crc32fast::hash(&bytes[..end]));
-    if stored != computed {
-        return Err(StripsError::Checksum { stored, computed });
-    }
-    let (version, flags, pbits, nbits) = (bytes[4], bytes[5], bytes[6], bytes[7]);
-    if version != VERSION {
-        return Err(StripsError::Version(version));
-    }
-    if flags & !(FLAG_ZSTD | FLAG_PALETTE) != 0 {
-        return Err(StripsError::Header(format!("unknown flags {flags:#04x}")));
-    }
-    StripsOptions { position_bits: pbits, normal_bits: nbits, zstd: false }.validate().map_err(StripsError::Header)?;
-    let bbox_min = [f32_at(bytes, 8), f32_at(bytes, 12), f32_at(bytes, 16)];
-    let bbox_max = [f32_at(bytes, 20), f32_at(bytes, 24), f32_at(bytes, 28)];
-    if bbox_min.iter().chain(&bbox_max).any(|c| !c.is_finite()) || (0..3).any(|a| bbox_min[a] > bbox_max[a]) {
-        return Err(StripsError::Header("bounding box not finite or min > max".into()));
-    }
-    let vertex_count = u32_at(bytes, 32) as u64;
-    let triangle_count = u32_at(bytes, 36) as u64;
-    let palette_len = u32_at(bytes, 40) as u64;
-    let raw_len = u32_at(bytes, 48) as u64;
-    let palette_flag = flags & FLAG_PALETTE != 0;
-    if palette_flag != (palette_len > 0) || palette_len > MAX_PALETTE as u64 {
-        return Err(StripsError::Header(format!("palette of {palette_len} entries with palette flag {palette_flag}")));
-    }
-    let stored_body = &bytes[HEADER_LEN..end];
-    let owned;
-    let body: &[u8] = if flags & FLAG_ZSTD != 0 {
-        if raw_len > body_len.saturating_mul(MAX_ZSTD_RATIO) + 65536 {
-            return Err(StripsError::Header(format!("zstd body of {body_len} bytes claims {raw_len} bytes raw")));
-        }
-        let mut out = Vec::new();
-        zstd::stream::read::Decoder::new(stored_body)
-            .and_then(|d| d.take(raw_len + 1).read_to_end(&mut out))
-            .map_err(|e| StripsError::Body(format!("zstd: {e}")))?;
-        owned = out;
-        &owned
-    } else {
-        stored_body
-    };
-    if body.len() as u64 != raw_len {
-        return Err(StripsError::Body(format!("body is {} bytes, the header says {raw_len}", body.len())));
-    }
-    let pal_bytes = palette_len as usize * 4;
-    let palette: Option<Vec<[u8; 4]>> =
-        palette_flag.then(|| body.get(..pal_bytes).unwrap_or_default().chunks_exact(4).map(|c| [c[0], c[1], c[2], c[3]]).collect());
-    if palette.as_ref().is_some_and(|p| p.len() as u64 != palette_len) {
-        return Err(StripsError::Body("palette cut short".into()));
-    }
-    let mut at = pal_bytes;
-    let vstream = take_stream(body, &mut at, "vertex")?;
-    let istream = take_stream(body, &mut at, "index")?;
-    if at != body.len() {
-        return Err(StripsError::Body(format!("{} stray bytes after the index stream", body.len() - at)));
-    }
-    if vertex_count > (vstream.len() as u64).saturating_mul(MAX_VERTICES_PER_STREAM_BYTE) + 256 || vertex_count >= u64::from(RESTART) {
-        return Err(StripsError::Header(format!("{vertex_count} vertices cannot fit in a {}-byte vertex stream", vstream.len())));
-    }
-    if triangle_count + INDEX_STREAM_OVERHEAD > istream.len() as u64 {
-        return Err(StripsError::Header(format!("{triangle_count} triangles cannot fit in a {}-byte index stream", istream.len())));
-    }
-    let raw: Vec<[u16; 8]> = meshopt::decode_vertex_buffer(vstream, vertex_count as usize)
-        .map_err(|e| StripsError::Body(format!("vertex stream does not decode: {e:?}")))?;
-    let triangles: Vec<u32> = meshopt::decode_index_buffer(istream, triangle_count as usize * 3)
-        .map_err(|e| StripsError::Body(format!("index stream does not decode: {e:?}")))?;
-    if let Some(i) = triangles.iter().find(|&&i| u64::from(i) >= vertex_count) {
-        return Err(StripsError::Body(format!("index {i} out of range ({vertex_count} vertices)")));
-    }
-    if let Some(k) = triangles.chunks_exact(3).position(|t| t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-        return Err(StripsError::Body(format!("triangle {k} has a repeated index")));
-    }
-
-    let pmax = (1u32 << pbits) - 1;
-    let nmax = (1u32 << nbits) - 1;
-    let mut mesh = Mesh {
-        positions: Vec::with_capacity(raw.len()),
-        normals: Vec::with_capacity(raw.len()),
-        colours: Vec::with_capacity(raw.len()),
-        indices: Vec::new(),
-    };
-    for (k, v) in raw.iter().enumerate() {
-        let v = v.map(u16::from_le);
-        if v[..3].iter().chain(&v[4..6]).zip([pmax, pmax, pmax, nmax, nmax]).any(|(&q, m)| u32::from(q) > m) || v[3] != 0 {
-            return Err(StripsError::Body(format!("vertex {k} has a value out of range for its bit count")));
-        }
-        mesh.positions.push([0, 1, 2].map(|a| dequantise(v[a], bbox_min[a], bbox_max[a], pmax)));
-        mesh.normals.push(oct_decode([v[4], v[5]], nmax));
-        let [c0, c1] = v[6].to_le_bytes();
-        let [c2, c3] = v[7].to_le_bytes();
-        let colour = match &palette {
-            Some(p) => {
-                if [c1, c2, c3] != [0, 0, 0] {
-                    return Err(StripsError::Body(format!("vertex {k}: palette padding not zero")));
-                }
-                *p.get(c0 as usize).ok_or_else(|| StripsError::Body(format!("vertex {k}: palette index {c0} out of range")))?
+/// Feeds the model's pieces to `chunker` (the first `limit` of them, or all),
+/// reserving the chunker's buffer in `budget` as it grows.
+fn feed(
+    src: &ModelSource<'_>,
+    on_limit: OnLimit,
+    limit: Option<u64>,
+    budget: &mut Budget,
+    chunk: &mut dyn FnMut(&[Part<'_>], &mut Budget) -> Result<(), ExportError>,
+) -> Result<(u64, Option<LimitExceeded>), ExportError> {
+    let mut chunker = Chunker::default();
+    let mut reserved = 0u64;
+    let cut = {
+        let mut sink = |piece: Piece<'_>, budget: &mut Budget| -> Result<bool, ExportError> {
+            if limit.is_some_and(|n| chunker.pieces >= n) {
+                return Ok(false);
             }
-            None => [c0, c1, c2, c3],
+            let (v, t) = piece.counts();
+            let need = chunker.buffer_bytes().max(crate::geom::mesh::mesh_bytes((v + 3 * CHUNK_TRIANGLES) as u64, (t + CHUNK_TRIANGLES) as u64));
+            if need > reserved {
+                budget.reserve_memory(need - reserved)?;
+                reserved = need;
+            }
+            chunker.push(&piece, &mut |parts| chunk(parts, budget))?;
+            Ok(true)
         };
-        mesh.colours.push(colour);
-    }
-    let strip = strip::restrip(&triangles);
-    mesh.indices = triangles;
-    Ok(DecodedStrips { mesh, strip, bbox_min, bbox_max, position_bits: pbits, normal_bits: nbits, palette })
+        for_each_piece(src.scene, src.hierarchy, src.detail, src.layout, on_limit, budget, &mut sink)?
+    };
+    let pieces = chunker.pieces;
+    chunker.finish(&mut |parts| chunk(parts, budget))?;
+    budget.release_memory(reserved);
+    Ok((pieces, cut))
+}
+
+/// The first pass of a streamed strips file: walks the model (mapping each
+/// placed piece's corners, positions only) for the bounding box, the
+/// palette and the chunk count. Under `truncate`, the deadline
+/// stops it (as it stops meshing), and the writer then stops at the same piece.
+pub fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budget) -> Result<ModelSurvey, ExportError> {
+    let mut survey = Survey::default();
+    let mut pieces = 0u64;
+    let cut = for_each_piece::<ExportError>(src.scene, src.hierarchy, src.detail, src.layout, on_limit, budget, &mut |piece, _| {
+        pieces += 1;
+        survey.add_piece(&piece)?;
+        Ok(true)
+    })?;
+    Ok(ModelSurvey { survey, pieces, cut })
+}
+
+/// Writes the model as a strips file, a chunk at a time, never holding a
+/// model-sized mesh: the same bytes as [`write_strips`] of the merged
+/// meshes of the same model. `survey` is [`survey_model`]'s answer for the
+/// same source; the deadline fails the call.
+pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    opts.validate().map_err(|detail| ExportError::InvalidOptions { format: "strips", detail })?;
+    budget.check_deadline()?;
+    let palette = survey.survey.palette();
+    let bounds = survey.survey.bounds();
+    let q = Quantiser::new(bounds, opts.position_bits, opts.normal_bits, palette.as_deref());
+    budget.reserve_memory(CHUNK_WORKING_SET + super::estimated_size(super::Format::Strips, 0, 0))?;
+    let mut body = Body::new(survey.survey.chunks(), palette.as_deref());
+    feed(src, OnLimit::Error, Some(survey.pieces), budget, &mut |parts, budget| {
+        let c = encode_chunk(parts, &q)?;
+        // The output grows by what the chunk adds (its capacity may double: reserve that too).
+        let grown = Body::growth(&c);
+        if body.out.len() as u64 + grown > body.out.capacity() as u64 {
+            budget.reserve_memory((body.out.capacity() as u64).max(grown))?;
+        }
+        body.push(&c)
+    })?;
+    budget.release_memory(CHUNK_WORKING_SET);
+    body.finish(bounds, palette.as_deref(), opts, budget)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::core::budget::Limits;
+    use crate::geom::strip::RESTART;
 
     fn cube() -> Vec<NamedMesh> {
         use crate::export::gltf::tests::{all_nine, meshes_of};
@@ -632,6 +385,76 @@ mod tests {
             b[end..].copy_from_slice(&crc.to_le_bytes());
             assert!(decode_strips(&b).is_err(), "offset {off} = {val}");
         }
+    }
+
+    /// A grid of boxes of `n`² · 12 triangles (two chunks at n = 80), and its strips file.
+    fn grid(n: u32) -> (Scene, Vec<u8>) {
+        use crate::mesh::tests::{inst, scene};
+        let s = scene((0..n * n).map(|k| inst(crate::core::PrimitiveKind::Box, [(k / n) as f32, (k % n) as f32, 0.0], 0.5, k % 7 == 0)).collect());
+        let src = ModelSource { scene: &s, hierarchy: None, detail: 8, layout: MeshLayout::Merged };
+        let mut b = Budget::new(Limits::default());
+        let survey = survey_model(&src, OnLimit::Error, &mut b).unwrap();
+        let bytes = write_strips_model(&src, &survey, &StripsOptions::default(), &mut b).unwrap();
+        (s, bytes)
+    }
+
+    #[test]
+    fn streamed_chunks_equal_the_meshed_model_and_decode() {
+        let (s, bytes) = grid(80);
+        assert_eq!(bytes[4], VERSION, "76 800 triangles are two chunks");
+        let mut b = Budget::new(Limits::default());
+        let meshes = crate::mesh::build_meshes(&s, 8, MeshLayout::Merged, &mut b).unwrap();
+        assert_eq!(write_strips(&meshes, &StripsOptions::default(), &mut b).unwrap(), bytes, "streamed = meshed");
+        assert_eq!(grid(80).1, bytes, "deterministic");
+        let d = decode_strips_full(&bytes).unwrap();
+        assert_eq!(d.mesh.triangle_count(), 80 * 80 * 12);
+        // The two chunks' strips are separate runs, and their vertices disjoint.
+        assert_eq!(u32_le(&bytes, HEADER_LEN + d.palette.as_ref().map_or(0, |p| 4 * p.len())), 2);
+        assert!(d.strip.iter().filter(|&&i| i == RESTART).count() >= 1);
+        // One chunk stays version 2.
+        assert_eq!(grid(10).1[4], VERSION_ONE_MESH);
+    }
+
+    fn u32_le(b: &[u8], at: usize) -> u32 {
+        u32::from_le_bytes([b[at], b[at + 1], b[at + 2], b[at + 3]])
+    }
+
+    /// Rewrites the CRC after `b` was edited, so the edit reaches the body checks.
+    fn recrc(b: &mut [u8]) {
+        let end = b.len() - 4;
+        let crc = crc32fast::hash(&b[..end]);
+        b[end..].copy_from_slice(&crc.to_le_bytes());
+    }
+
+    #[test]
+    fn damaged_chunks_are_refused() {
+        let (_, bytes) = grid(80);
+        for n in (0..bytes.len()).step_by(997) {
+            assert!(decode_strips(&bytes[..n]).is_err(), "truncated to {n}");
+        }
+        let at = HEADER_LEN + 4 * u32_le(&bytes, 40) as usize;
+        // Chunk count, first chunk's vertex and triangle counts and stream lengths.
+        for (off, val) in [(at, 3u32), (at, u32::MAX), (at + 4, u32::MAX), (at + 4, 0), (at + 8, u32::MAX), (at + 8, 1), (at + 12, u32::MAX), (at + 12, 5)] {
+            let mut b = bytes.clone();
+            b[off..off + 4].copy_from_slice(&val.to_le_bytes());
+            recrc(&mut b);
+            assert!(decode_strips(&b).is_err(), "offset {off} = {val}");
+        }
+        // A byte inside the first chunk's streams, with a valid CRC.
+        for k in (at + 20..at + 2000).step_by(37) {
+            let mut b = bytes.clone();
+            b[k] ^= 0x5a;
+            recrc(&mut b);
+            // Either refused or decoded to valid indices (the codecs cannot tell every change).
+            if let Ok(m) = decode_strips(&b) {
+                assert!(m.indices.iter().all(|&i| (i as usize) < m.positions.len()));
+            }
+        }
+        // Version 2 with a chunk list is refused (the body does not parse as one mesh).
+        let mut b = bytes.clone();
+        b[4] = VERSION_ONE_MESH;
+        recrc(&mut b);
+        assert!(decode_strips(&b).is_err());
     }
 
     #[test]

@@ -63,8 +63,9 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     let wants = match req.hierarchy {
         HierarchyUse::Required | HierarchyUse::Preferred => dag.is_some(),
         // Printing unites the turtle's mitred sweeps (their runs meet face
-        // to face), not the hierarchy's capped tube segments.
-        HierarchyUse::Never | HierarchyUse::Union => false,
+        // to face), not the hierarchy's capped tube segments; flat strips
+        // sweep the segments into tubes too.
+        HierarchyUse::Never | HierarchyUse::Union | HierarchyUse::Streamed => false,
     };
     if wants {
         let mark = budget.mark();

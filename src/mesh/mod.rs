@@ -18,6 +18,8 @@ use crate::model::scene::{AffineInstance, FreeVertex, Instance, Scene};
 use crate::core::PrimitiveKind;
 use glam::{Mat3, Vec3};
 
+pub mod pieces;
+
 /// How instances are grouped into meshes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]

@@ -39,6 +39,12 @@ pub enum HierarchyUse {
     /// A hierarchy where the language builds one cheaply (glTF: instanced or
     /// expanded), else flat geometry.
     Preferred,
+    /// The output walks a hierarchy leaf by leaf and tessellates each leaf as
+    /// it writes (flat `strips`, written in chunks), so it never needs the
+    /// expanded scene: MDG's memoised derivations come as a hierarchy, charged
+    /// as the flat geometry they stand for (every leaf a primitive, every
+    /// triangle); other languages give flat geometry, as for [`HierarchyUse::Never`].
+    Streamed,
     /// The output writes a hierarchy as it is (`format=scene`), so its size,
     /// not its expansion's, is what the limits charge; where the language
     /// builds none cheaply, flat geometry, as for [`HierarchyUse::Preferred`]

@@ -276,6 +276,7 @@ fn hierarchy_use(req: &RenderRequest) -> HierarchyUse {
         // Printing unites once per distinct subtree where there is a hierarchy.
         _ if req.export_options.print.enabled => HierarchyUse::Union,
         Format::Glb | Format::Gltf => HierarchyUse::Preferred,
+        Format::Strips if streamed_strips(req) => HierarchyUse::Streamed,
         _ => HierarchyUse::Never,
     }
 }
@@ -289,6 +290,13 @@ fn gpu_instancing(req: &RenderRequest) -> bool {
     matches!(req.format, Format::Glb | Format::Gltf) && opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled
 }
 
+/// Whether strips are written from the model a chunk at a time (no merged
+/// mesh, a hierarchy walked rather than expanded): every strips request but
+/// printed or unit-box-fitted ones, which need the whole mesh first.
+fn streamed_strips(req: &RenderRequest) -> bool {
+    req.format == Format::Strips && !req.export_options.print.enabled && !req.export_options.fit_unit_box
+}
+
 /// Bytes the mesh buffers and the encoded output need per vertex and per
 /// triangle (both are linear in the counts beyond a fixed `overhead`), and
 /// per instance when the output instances repeated meshes: instanced glTF,
@@ -297,6 +305,8 @@ fn gpu_instancing(req: &RenderRequest) -> bool {
 /// "budgets count what is made").
 fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
     let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
+    // Streamed strips build no mesh: only the output is promised.
+    let mesh_bytes = |v, t| if streamed_strips(req) { 0 } else { geom::mesh::mesh_bytes(v, t) };
     let per_instance = match req.format {
         Format::Scene => Some(export::scene::MAX_RECORD_BYTES),
         // A .gltf holds its buffer as base64 (4/3) after building it raw.
@@ -304,8 +314,8 @@ fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
         _ => gpu_instancing(req).then_some(export::instanced::SCENE_INSTANCE_BYTES),
     };
     Downstream {
-        per_vertex: geom::mesh::mesh_bytes(1, 0).saturating_add(est(1, 0)),
-        per_triangle: geom::mesh::mesh_bytes(0, 1).saturating_add(est(0, 1)),
+        per_vertex: mesh_bytes(1, 0).saturating_add(est(1, 0)),
+        per_triangle: mesh_bytes(0, 1).saturating_add(est(0, 1)),
         per_instance,
     }
 }
@@ -422,6 +432,9 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         clock.lap(Phase::Export);
         let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
         return Ok(summary(bytes, &model, triangles, truncated));
+    }
+    if streamed_strips(req) {
+        return strips_from_model(model, provenance, req, budget, clock);
     }
     // A print of a hierarchy unites once per distinct subtree, or (a leaf
     // that is no solid, a union with bad edges) expands it for the flat route.
@@ -587,6 +600,32 @@ fn instanced_scene(model: &mut Model, provenance: &Provenance, req: &RenderReque
     let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req, budget)?;
     clock.lap(Phase::Export);
     Ok(Some(summary(bytes, model, triangles, truncated)))
+}
+
+/// Strips written from the model a chunk at a time (docs/strips-format.md):
+/// a first pass for the bounds and palette (timed as meshing, and cut at the
+/// meshing deadline under `truncate`), then the chunks, each tessellated,
+/// coded and appended in turn. No merged mesh is built and a hierarchy is
+/// walked, not expanded.
+fn strips_from_model(mut model: Model, provenance: Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+    let h = model.hierarchy.take();
+    let src = export::strips::ModelSource { scene: &model.scene, hierarchy: h.as_ref(), detail: req.detail, layout: req.layout };
+    let survey = export::strips::survey_model(&src, req.on_limit, budget)?;
+    clock.lap(Phase::Mesh);
+    budget.set_stage_share(None);
+    let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(survey.cut);
+    let meta = ExportMeta {
+        background: model.scene.background,
+        truncated: truncated.is_some(),
+        graph: None,
+        material_per_mesh: false,
+        camera: None,
+        provenance: Some(provenance),
+    };
+    let written = export::strips::write_strips_model(&src, &survey, &req.export_options.strips, budget);
+    let (bytes, triangles, truncated) = empty_if_late(written, survey.triangles(), truncated, meta, req, budget)?;
+    clock.lap(Phase::Export);
+    Ok(summary(bytes, &model, triangles, truncated))
 }
 
 /// The output of a render whose bytes are written (times are filled in by [`render`]).

@@ -134,10 +134,12 @@ fn c_decoder_matches_rust_on_every_grammar() {
         &["--position-bits", "8", "--normal-bits", "16"],
         &["--normal-bits", "16"],
     ];
+    let mut chunked = 0;
     for (k, g) in grammars.iter().enumerate() {
         for extra in [&[][..], others[k % others.len()]] {
             let name = format!("{} {extra:?}", g.display());
             let bytes = render(g, extra);
+            chunked += usize::from(bytes[4] == 3);
             let d = decode_strips_full(&bytes).unwrap_or_else(|e| panic!("{name}: {e}"));
             assert!(!d.mesh.indices.is_empty(), "{name}: no triangles");
             let input = dir.path().join("in.strips");
@@ -153,6 +155,7 @@ fn c_decoder_matches_rust_on_every_grammar() {
             }
         }
     }
+    assert!(chunked >= 2, "{chunked} version 3 (chunked) files: the grammars over 65 536 triangles should be");
     // The -O2 build decodes identically too (one file; it is the build apps use).
     let g = repo().join("grammars/gem.mdg");
     let input = dir.path().join("gem.strips");
@@ -217,22 +220,58 @@ fn c_decoder_refuses_damage_as_rust_does() {
 
     // Hostile counts and lengths with a valid CRC, each refused before any
     // allocation by both.
+    // The same for a version 3 chunk list: chunk count, the first chunk's
+    // counts and stream lengths.
+    let v3 = as_chunks(&gem_bytes, 2);
+    assert!(rust_line(&v3).starts_with("ok"), "the two-chunk file decodes");
+    let at = 52 + 4 * u32::from_le_bytes([v3[40], v3[41], v3[42], v3[43]]) as usize;
+    let header = [(32usize, u32::MAX - 1), (32, u32::MAX), (36, u32::MAX), (36, u32::MAX / 3), (40, 300), (40, 0), (44, u32::MAX), (48, u32::MAX), (48, 0)];
+    let chunks = [(at, 3u32), (at, u32::MAX), (at, 1), (at + 4, u32::MAX), (at + 4, 0), (at + 8, u32::MAX), (at + 8, 1), (at + 12, u32::MAX), (at + 12, 5)];
     let mut batch = Vec::new();
     let mut rust = Vec::new();
-    for (off, val) in [(32usize, u32::MAX - 1), (32, u32::MAX), (36, u32::MAX), (36, u32::MAX / 3), (40, 300), (40, 0), (44, u32::MAX), (48, u32::MAX), (48, 0)] {
-        let mut b = gem_bytes.clone();
-        b[off..off + 4].copy_from_slice(&val.to_le_bytes());
-        let end = b.len() - 4;
-        let crc = crc32fast::hash(&b[..end]);
-        b[end..].copy_from_slice(&crc.to_le_bytes());
-        batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
-        batch.extend_from_slice(&b);
-        rust.push(rust_line(&b));
+    for (source, edits) in [(&gem_bytes, &header), (&v3, &chunks)] {
+        for &(off, val) in edits {
+            let mut b = source.clone();
+            b[off..off + 4].copy_from_slice(&val.to_le_bytes());
+            let end = b.len() - 4;
+            let crc = crc32fast::hash(&b[..end]);
+            b[end..].copy_from_slice(&crc.to_le_bytes());
+            batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
+            batch.extend_from_slice(&b);
+            rust.push(rust_line(&b));
+        }
     }
     assert!(rust.iter().all(|l| l == "err"));
     let path = dir.path().join("batch");
     std::fs::write(&path, &batch).expect("write");
     assert_same_lines("hostile header fields", &c_lines(&exec(&exe, &["--batch", path.to_str().expect("utf-8")])), &rust);
+}
+
+/// A strips version 3 file holding the one chunk of the version 2 file `v2`
+/// `n` times (as `fuzz/make-seeds` makes its seeds): real version 3 files
+/// start at 65 537 triangles, but the decoders take chunks of any size.
+fn as_chunks(v2: &[u8], n: u32) -> Vec<u8> {
+    let u32_at = |at: usize| u32::from_le_bytes([v2[at], v2[at + 1], v2[at + 2], v2[at + 3]]);
+    let pal = 4 * u32_at(40) as usize;
+    let (v, t) = (u32_at(32), u32_at(36));
+    let mut raw = v2[52..52 + pal].to_vec();
+    raw.extend_from_slice(&n.to_le_bytes());
+    for _ in 0..n {
+        raw.extend_from_slice(&v.to_le_bytes());
+        raw.extend_from_slice(&t.to_le_bytes());
+        raw.extend_from_slice(&v2[52 + pal..v2.len() - 4]);
+    }
+    let mut out = v2[..52].to_vec();
+    out[4] = 3;
+    out[32..36].copy_from_slice(&(v * n).to_le_bytes());
+    out[36..40].copy_from_slice(&(t * n).to_le_bytes());
+    let len = u32::try_from(raw.len()).expect("fits").to_le_bytes();
+    out[44..48].copy_from_slice(&len);
+    out[48..52].copy_from_slice(&len);
+    out.extend_from_slice(&raw);
+    let crc = crc32fast::hash(&out);
+    out.extend_from_slice(&crc.to_le_bytes());
+    out
 }
 
 #[test]
@@ -267,6 +306,9 @@ fn c_fuzz_target_survives_a_smoke_run() {
         }
     }
     assert!(seeds >= 2, "{seeds} seeds");
+    // And a version 3 file of two chunks (a real one is far over -max_len).
+    let gradient = std::fs::read(repo().join("clients/js/fixtures/gradient.strips")).expect("fixture");
+    std::fs::write(corpus.join("gradient.v3.strips"), as_chunks(&gradient, 2)).expect("write seed");
     let o = Command::new(&exe)
         .arg(&corpus)
         .args(["-runs=20000", "-seed=1", "-max_len=20000", "-timeout=10", "-rss_limit_mb=2048"])

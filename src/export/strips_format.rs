@@ -1,0 +1,186 @@
+//! What every part of the `strips` format shares: the constants of the
+//! container, the request options, the decoder's errors and result, and the
+//! octahedral normal code (`docs/strips-format.md`). The encoder
+//! (`export::strips`, `export::strips_chunk`) and the decoder
+//! (`export::strips_decode`) both build on it, and `export::strips`
+//! re-exports it.
+
+use crate::geom::Mesh;
+
+/// The four bytes every strips file starts with.
+pub const MAGIC: [u8; 4] = *b"RMST";
+/// The format version of a model cut into several chunks: the body is a
+/// list of independently coded chunks, so neither the encoder nor a decoder
+/// ever holds more than one chunk's working arrays. The decoders read it and
+/// [`VERSION_ONE_MESH`].
+pub const VERSION: u8 = 3;
+/// The format version of a model of one chunk (at most [`CHUNK_TRIANGLES`](super::strips_chunk::CHUNK_TRIANGLES)
+/// triangles): the body is that chunk's two streams, byte for byte what
+/// version 2 always was (so icons did not change). Version 2 stores the
+/// strip as its triangles (index buffer codec) where version 1 stored the
+/// strip indices (index sequence codec); version 1 is not read.
+pub const VERSION_ONE_MESH: u8 = 2;
+/// Bytes before the body: magic, version, flags, bits, bounding box, counts, lengths.
+pub const HEADER_LEN: usize = 52;
+/// Bytes after the body: the CRC32.
+pub const TRAILER_LEN: usize = 4;
+/// Bytes of one quantised vertex in the vertex stream.
+pub const VERTEX_BYTES: usize = 16;
+/// Flag bit: the body is one zstd frame.
+pub const FLAG_ZSTD: u8 = 1;
+/// Flag bit: colours are indices into the palette.
+pub const FLAG_PALETTE: u8 = 2;
+/// Most palette entries (one byte per index).
+pub const MAX_PALETTE: usize = 256;
+/// The decoder refuses a zstd body that claims to expand more than this
+/// many times (plus 64 KiB): our bodies are already compressed, so a larger
+/// claim can only be a hostile file asking for a huge allocation.
+pub const MAX_ZSTD_RATIO: u64 = 64;
+/// A block of up to 256 vertices costs at least 4 control bytes in the
+/// vertex codec (version 1), so a stream of `n` bytes cannot hold more than
+/// `64·n` vertices (plus one block); the decoder refuses larger counts
+/// before allocating.
+pub const MAX_VERTICES_PER_STREAM_BYTE: u64 = 64;
+/// The index buffer codec spends at least one code byte per triangle, after a
+/// 1-byte header and before a 16-byte table, so `n` bytes cannot hold more
+/// than `n − 17` triangles; the decoder refuses larger counts before allocating.
+pub const INDEX_STREAM_OVERHEAD: u64 = 17;
+
+/// Precision choices for the `strips` format (request options). Every other
+/// format ignores them; they reach only the exporter, never the parser or
+/// the evaluator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub struct StripsOptions {
+    /// Bits per position axis, relative to the bounding box: 8, 10, 12 or 16.
+    /// The error per axis is at most extent / (2·(2^bits − 1)).
+    pub position_bits: u8,
+    /// Bits per octahedral normal component: 8 or 16 (see the doc for the
+    /// angular error of each).
+    pub normal_bits: u8,
+    /// Wrap the body in zstd. Off by default: the JavaScript decoder has no
+    /// zstd, and the meshoptimizer codecs already remove most redundancy.
+    pub zstd: bool,
+}
+
+impl Default for StripsOptions {
+    /// 16-bit positions (sub-micrometre on a 1 m icon), 8-bit normals
+    /// (under 1° off, invisible in flat-shaded icons), no zstd.
+    fn default() -> Self {
+        StripsOptions { position_bits: 16, normal_bits: 8, zstd: false }
+    }
+}
+
+impl StripsOptions {
+    /// Checks the bit counts against the ones the format allows.
+    pub fn validate(&self) -> Result<(), String> {
+        if !matches!(self.position_bits, 8 | 10 | 12 | 16) {
+            return Err(format!("strips position bits must be 8, 10, 12 or 16, got {}", self.position_bits));
+        }
+        if !matches!(self.normal_bits, 8 | 16) {
+            return Err(format!("strips normal bits must be 8 or 16, got {}", self.normal_bits));
+        }
+        Ok(())
+    }
+}
+
+/// Why a strips payload was rejected. Every message says what was wrong,
+/// so a client can tell a truncated download from a wrong file.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum StripsError {
+    /// Fewer bytes than the fixed header and trailer.
+    #[error("strips payload truncated: {len} bytes, the header and CRC alone need {min}")]
+    TooShort {
+        /// Bytes received.
+        len: usize,
+        /// Bytes needed.
+        min: usize,
+    },
+    /// The first four bytes are not `RMST`.
+    #[error("not a strips payload (bad magic)")]
+    BadMagic,
+    /// The total length disagrees with the header's body length.
+    #[error("strips payload truncated or padded: the header promises {expected} bytes, got {actual}")]
+    Length {
+        /// Bytes the header promises.
+        expected: u64,
+        /// Bytes received.
+        actual: usize,
+    },
+    /// The CRC32 at the end does not match the bytes before it.
+    #[error("strips payload corrupted: CRC32 is {computed:08x}, the file says {stored:08x}")]
+    Checksum {
+        /// The CRC stored in the file.
+        stored: u32,
+        /// The CRC of the bytes received.
+        computed: u32,
+    },
+    /// A version this decoder does not know.
+    #[error("unsupported strips version {0} (this decoder reads versions 2 and 3)")]
+    Version(u8),
+    /// Any other header field out of range.
+    #[error("invalid strips header: {0}")]
+    Header(String),
+    /// The body (or one of its streams) does not decode.
+    #[error("invalid strips body: {0}")]
+    Body(String),
+}
+
+/// A decoded strips file, with the strip itself and the quantisation facts
+/// (for clients and tests that want more than a triangle list).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DecodedStrips {
+    /// The mesh; `indices` is the triangle list as stored (in strip order,
+    /// each triangle possibly rotated by the index codec, winding kept).
+    pub mesh: Mesh,
+    /// The strip index sequence rebuilt from the triangles by
+    /// [`strip::restrip`], with [`RESTART`] between strips.
+    pub strip: Vec<u32>,
+    /// Bounding box minimum (the quantisation origin).
+    pub bbox_min: [f32; 3],
+    /// Bounding box maximum.
+    pub bbox_max: [f32; 3],
+    /// Bits per position axis.
+    pub position_bits: u8,
+    /// Bits per normal component.
+    pub normal_bits: u8,
+    /// The palette, when colours are palette indices.
+    pub palette: Option<Vec<[u8; 4]>>,
+}
+
+/// Octahedral encoding of a normal to two values in `0..=max` (zero normals
+/// encode as +Z, so decoding always yields a unit vector).
+pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
+    let [x, y, z] = n.map(f64::from);
+    let l1 = x.abs() + y.abs() + z.abs();
+    let (mut u, mut v) = if l1 > 0.0 && l1.is_finite() { (x / l1, y / l1) } else { (0.0, 0.0) };
+    if l1 > 0.0 && z < 0.0 {
+        let (ou, ov) = (u, v);
+        u = (1.0 - ov.abs()) * if ou >= 0.0 { 1.0 } else { -1.0 };
+        v = (1.0 - ou.abs()) * if ov >= 0.0 { 1.0 } else { -1.0 };
+    }
+    [quantise_unit(u * 0.5 + 0.5, max), quantise_unit(v * 0.5 + 0.5, max)]
+}
+
+/// Decodes an octahedral normal; the arithmetic (in f64, rounded to f32 at
+/// the end) is the one the spec and the JavaScript decoder use, so both
+/// decoders produce identical floats.
+pub fn oct_decode(q: [u16; 2], max: u32) -> [f32; 3] {
+    let m = f64::from(max);
+    let mut x = f64::from(q[0]) / m * 2.0 - 1.0;
+    let mut y = f64::from(q[1]) / m * 2.0 - 1.0;
+    let z = 1.0 - x.abs() - y.abs();
+    if z < 0.0 {
+        let (ox, oy) = (x, y);
+        x = (1.0 - oy.abs()) * if ox >= 0.0 { 1.0 } else { -1.0 };
+        y = (1.0 - ox.abs()) * if oy >= 0.0 { 1.0 } else { -1.0 };
+    }
+    let len = (x * x + y * y + z * z).sqrt();
+    [(x / len) as f32, (y / len) as f32, (z / len) as f32]
+}
+
+
+/// Quantises `v` in `[0, 1]` to `0..=max`.
+pub fn quantise_unit(v: f64, max: u32) -> u16 {
+    (v * f64::from(max)).round().clamp(0.0, f64::from(max)) as u16
+}
+
