@@ -17,7 +17,7 @@
 //! one chunk is written as version 2 (one mesh), anything larger as version 3.
 
 pub use super::strips_chunk::CHUNK_TRIANGLES;
-use super::strips_chunk::{encode_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
+use super::strips_chunk::{encode_chunk, weld_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
 pub use super::strips_decode::{decode_strips, decode_strips_full};
 pub use super::strips_format::*;
 use super::ExportError;
@@ -288,18 +288,42 @@ pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &St
     let palette = survey.survey.palette();
     let bounds = survey.survey.bounds();
     let q = Quantiser::new(bounds, opts.position_bits, opts.normal_bits, palette.as_deref());
-    budget.reserve_memory(CHUNK_WORKING_SET + super::estimated_size(super::Format::Strips, 0, 0))?;
+    // A second chunk is in flight while its codecs run (below): its welded
+    // vertices and triangles, at most half a working set.
+    let working_set = CHUNK_WORKING_SET + CHUNK_WORKING_SET / 2;
+    budget.reserve_memory(working_set + super::estimated_size(super::Format::Strips, 0, 0))?;
     let mut body = Body::new(survey.survey.chunks(), palette.as_deref());
-    feed(src, OnLimit::Error, Some(survey.pieces), budget, &mut |parts, budget| {
-        let c = encode_chunk(parts, &q)?;
+    let append = |body: &mut Body, c: EncodedChunk, budget: &mut Budget| -> Result<(), ExportError> {
         // The output grows by what the chunk adds (its capacity may double: reserve that too).
         let grown = Body::growth(&c);
         if body.out.len() as u64 + grown > body.out.capacity() as u64 {
             budget.reserve_memory((body.out.capacity() as u64).max(grown))?;
         }
         body.push(&c)
+    };
+    // Each chunk's codecs (meshoptimizer's vertex and index codecs, about a
+    // third of the encoder's time) run on a second thread while this one
+    // tessellates, quantises and welds the next chunk; chunks are appended
+    // in order, so the bytes are those of one thread.
+    std::thread::scope(|s| -> Result<(), ExportError> {
+        let mut coding: Option<std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>> = None;
+        let join = |h: std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>| {
+            h.join().unwrap_or_else(|_| Err(ExportError::TooLarge { format: "strips", detail: "a chunk's codec thread panicked".into() }))
+        };
+        feed(src, OnLimit::Error, Some(survey.pieces), budget, &mut |parts, budget| {
+            let welded = weld_chunk(parts, &q);
+            if let Some(h) = coding.take() {
+                append(&mut body, join(h)?, budget)?;
+            }
+            coding = Some(s.spawn(move || welded.code()));
+            Ok(())
+        })?;
+        match coding.take() {
+            Some(h) => append(&mut body, join(h)?, budget),
+            None => Ok(()),
+        }
     })?;
-    budget.release_memory(CHUNK_WORKING_SET);
+    budget.release_memory(working_set);
     body.finish(bounds, palette.as_deref(), opts, budget)
 }
 

@@ -197,10 +197,21 @@ pub struct EncodedChunk {
     pub istream: Vec<u8>,
 }
 
+/// A chunk welded and stripified, ready for the codecs ([`WeldedChunk::code`]).
+pub struct WeldedChunk {
+    vertices: Vec<Quantised>,
+    triangles: Vec<u32>,
+}
+
 /// Codes one chunk: the parts' triangles with the vertices they use. The
 /// result does not depend on how the parts number their vertices (welding
 /// numbers them by first use), only on the triangles' corners, in order.
 pub fn encode_chunk(parts: &[Part<'_>], q: &Quantiser) -> Result<EncodedChunk, ExportError> {
+    weld_chunk(parts, q).code()
+}
+
+/// The first half of [`encode_chunk`]: quantise, weld and stripify.
+pub fn weld_chunk(parts: &[Part<'_>], q: &Quantiser) -> WeldedChunk {
     let mut quantised: Vec<Quantised> = Vec::new();
     let mut indices: Vec<u32> = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
     for &(mesh, tris) in parts {
@@ -222,12 +233,21 @@ pub fn encode_chunk(parts: &[Part<'_>], q: &Quantiser) -> Result<EncodedChunk, E
     // codec stores them in fewer bytes than the sequence codec stores the
     // strip, and the decoder rebuilds the strip with `strip::restrip`.
     let (vertices, triangles) = strip::weld_stripify(&quantised, indices);
-    drop(quantised);
-    let codec = |what: &str, e: meshopt::Error| ExportError::TooLarge { format: "strips", detail: format!("{what} codec: {e:?}") };
-    let vstream = meshopt::encode_vertex_buffer_level(&vertices, 3, Some(1)).map_err(|e| codec("vertex", e))?;
-    let istream = meshopt::encode_index_buffer(&triangles, vertices.len()).map_err(|e| codec("index", e))?;
-    // Fits: at most 3·CHUNK_TRIANGLES of each.
-    Ok(EncodedChunk { vertices: vertices.len() as u32, triangles: (triangles.len() / 3) as u32, vstream, istream })
+    WeldedChunk { vertices, triangles }
+}
+
+impl WeldedChunk {
+    /// The second half of [`encode_chunk`]: meshoptimizer's vertex and index
+    /// codecs. It needs nothing but the chunk, so the streamed writer runs it
+    /// on a second thread while the next chunk is welded.
+    pub fn code(self) -> Result<EncodedChunk, ExportError> {
+        let WeldedChunk { vertices, triangles } = self;
+        let codec = |what: &str, e: meshopt::Error| ExportError::TooLarge { format: "strips", detail: format!("{what} codec: {e:?}") };
+        let vstream = meshopt::encode_vertex_buffer_level(&vertices, 3, Some(1)).map_err(|e| codec("vertex", e))?;
+        let istream = meshopt::encode_index_buffer(&triangles, vertices.len()).map_err(|e| codec("index", e))?;
+        // Fits: at most 3·CHUNK_TRIANGLES of each.
+        Ok(EncodedChunk { vertices: vertices.len() as u32, triangles: (triangles.len() / 3) as u32, vstream, istream })
+    }
 }
 
 /// Cuts a stream of pieces into chunks of [`CHUNK_TRIANGLES`] triangles,
