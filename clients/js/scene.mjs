@@ -58,16 +58,6 @@ class Reader {
   f64() { this.need(8); const x = this.v.getFloat64(this.at, true); this.at += 8; return x; }
   bytes(n) { this.need(n); const s = this.b.subarray(this.at, this.at + n); this.at += n; return s; }
   f32s(n) { const a = new Array(n); for (let i = 0; i < n; i++) a[i] = this.f32(); return a; }
-  /** n float32s that must all be finite, as a Float32Array (exact: they are float32). */
-  finiteF32s(n) {
-    const a = new Float32Array(n);
-    for (let i = 0; i < n; i++) {
-      const x = this.f32();
-      if (!Number.isFinite(x)) throw new SceneError('non-finite number in scene');
-      a[i] = x;
-    }
-    return a;
-  }
 }
 
 const decoder = new TextDecoder('utf-8', { fatal: true });
@@ -401,18 +391,18 @@ const parseV2 = (function parseV2(r, header) {
             const kind = code & ~PARITY_BIT;
             if (kind > 8) throw new SceneError(`unknown primitive kind ${kind}`);
             const c = colour();
-            records.push({ kind, colour: c, data: r.finiteF32s(SIMILARITY_FLOATS), parity: (code & PARITY_BIT) !== 0 });
+            records.push({ kind, colour: c, data: new Float32Array(finite(r.f32s(SIMILARITY_FLOATS))), parity: (code & PARITY_BIT) !== 0 });
           } else if (type === RUN_AFFINE) {
             const kind = r.u8();
             if (kind > 8) throw new SceneError(`unknown primitive kind ${kind}`);
             const c = colour();
-            records.push({ kind, colour: c, data: r.finiteF32s(AFFINE_FLOATS), affine: true });
+            records.push({ kind, colour: c, data: new Float32Array(finite(r.f32s(AFFINE_FLOATS))), affine: true });
           } else {
             const shape = r.u32();
             if (shape >= nprotos) throw new SceneError('placement of a prototype that does not exist');
             const parity = r.u8() !== 0;
             const c = colour();
-            records.push({ proto: protos[shape], colour: c, data: r.finiteF32s(SIMILARITY_FLOATS), parity });
+            records.push({ proto: protos[shape], colour: c, data: new Float32Array(finite(r.f32s(SIMILARITY_FLOATS))), parity });
           }
         }
         runs.push({ records });
