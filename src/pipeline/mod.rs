@@ -192,7 +192,7 @@ impl From<PrintError> for RenderError {
         match e {
             PrintError::Limit(l) => RenderError::Limit(l),
             // The model has nothing closed to print, or an option is off: the request's fault.
-            e @ PrintError::NothingPrintable(_) => RenderError::Unprintable(e),
+            e @ (PrintError::NothingPrintable(_) | PrintError::SeparatePieces { .. }) => RenderError::Unprintable(e),
             e if e.is_bad_option() => RenderError::Unprintable(e),
             other => RenderError::Export(ExportError::Print(other)),
         }

@@ -11,10 +11,14 @@
 
 mod bvh;
 mod colour;
+mod edt;
+mod field;
 pub mod findings;
+mod fuse;
 pub mod profile;
 mod report;
 mod subtree;
+mod tetra;
 pub mod thickness;
 mod union;
 
@@ -61,6 +65,15 @@ pub enum PrintError {
     /// The boolean union failed.
     #[error("boolean union failed: {0}")]
     Union(String),
+    /// The model is pieces that do not touch, even with the gaps narrower
+    /// than the printer resolves closed: a print would fall apart.
+    #[error("separate_shells: the model is {shells} separate pieces that do not touch (gaps narrower than {gap_mm:.3} mm were closed; the rest are wider); print them one by one, or connect them in the grammar")]
+    SeparatePieces {
+        /// How many pieces.
+        shells: u64,
+        /// Gaps narrower than this were closed (mm).
+        gap_mm: f64,
+    },
     /// The size is out of range.
     #[error("size_mm must be in (0, 10000], found {0}")]
     BadSize(f64),
@@ -119,25 +132,71 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     };
     let parts = union::split_parts(meshes, wall, budget)?;
     let pieces = union::pieces(&parts.closed);
-    // Snapped to a grid first (src/print/union.rs, `snap_grid`): parts that
-    // share faces in exact arithmetic then share them exactly and fuse.
-    // Snapping also moves curved parts by up to half a step, which can turn
-    // a near miss into a contact along an edge (the truncated icosahedron's
-    // tubes and balls: four edges of four faces). So if the snapped result
-    // has edges not shared by exactly two faces, the parts are united again
-    // unsnapped and the result with fewer such edges is kept (the snapped
-    // one on a tie): the choice depends only on the two results.
-    let mut placed = place(union::unite(&pieces, union::snap_grid(&pieces), budget)?, options.size_um);
-    let bad = report::bad_edges(&placed.scaled, &placed.indices);
-    if bad > 0 {
-        let plain = place(union::unite(&pieces, 0.0, budget)?, options.size_um);
-        if report::bad_edges(&plain.scaled, &plain.indices) < bad {
-            placed = plain;
+    let summary = PartSummary { parts: parts.closed.len() as u64, skipped: parts.skipped, thickened: parts.thickened, min_extent: parts.min_extent, wall, fused: None };
+    // The exact union first: a model that prints as one watertight shell
+    // prints exactly as modelled. It gets half the time left; the rest is
+    // for fusing (below) if it is not one watertight shell or runs out.
+    if let Some(placed) = exact_union(&pieces, options.size_um, budget)? {
+        let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
+        return finish(placed, &colours, &summary, options, budget);
+    }
+    // Contacts become connections: gaps narrower than the printer's
+    // minimum wall at the printed size (but at most a hundredth of the
+    // model, so that a model printed at its 1-unit-is-1-mm size does not
+    // melt into a blob) are closed, and the surface is re-extracted.
+    let scale = match options.size_um {
+        0 => 1.0,
+        _ if extent > 0.0 => f64::from(options.size_um) / 1000.0 / (extent + 2.0 * wall),
+        _ => 1.0,
+    };
+    let closing = (min_wall / 2.0 / scale).min(CLOSING_FRACTION * extent);
+    let fused = fuse::fuse(&pieces, &parts.colours, closing, budget)?;
+    let gap = 2.0 * fused.closing;
+    let summary = PartSummary { fused: Some((gap, fused.bridges, fused.spacing)), ..summary };
+    let placed = place((fused.positions, fused.indices), options.size_um);
+    let (mesh, report) = finish(placed, &fused.colours, &summary, options, budget)?;
+    if report.shells > 1 && !options.report {
+        return Err(PrintError::SeparatePieces { shells: report.shells, gap_mm: report.fused_gap_mm });
+    }
+    Ok((mesh, report))
+}
+
+/// The largest closing radius of the fused route, as a fraction of the
+/// model's longest side: a model printed at its own size (one unit a
+/// millimetre, often a few millimetres across) would otherwise have every
+/// gap under the printer's minimum wall closed, detail and all.
+pub const CLOSING_FRACTION: f64 = 0.01;
+
+/// Share of the time left that the exact union may take before the fused
+/// route takes over.
+const EXACT_SHARE: f64 = 0.5;
+
+/// The exact union of `pieces`, placed, if it is one watertight shell:
+/// snapped to a grid first (src/print/union.rs, `snap_grid`: parts that
+/// share faces in exact arithmetic then share them exactly and fuse).
+/// Snapping also moves curved parts by up to half a step, which can turn a
+/// near miss into a contact along an edge (the truncated icosahedron's
+/// tubes and balls: four edges of four faces), so if the snapped result has
+/// edges not shared by exactly two faces, the parts are united again
+/// unsnapped. `None` if neither is one watertight shell, or the unions ran
+/// past their share of the time ([`EXACT_SHARE`]).
+fn exact_union(pieces: &[union::Piece<'_>], size_um: u32, budget: &mut Budget) -> Result<Option<Placed>, PrintError> {
+    let until = budget.time_left().map(|t| std::time::Instant::now() + t.mul_f64(EXACT_SHARE));
+    for grid in [union::snap_grid(pieces), 0.0] {
+        let left = until.map(|u| u.saturating_duration_since(std::time::Instant::now()));
+        let united = match union::unite(pieces, grid, left, budget) {
+            Ok(u) => u,
+            Err(PrintError::Union(_)) => return Ok(None),
+            Err(e) => return Err(e),
+        };
+        let placed = place(united, size_um);
+        let measured = measure(&placed.scaled, &placed.indices);
+        if measured.nonmanifold_edges == 0 {
+            // Unsnapped, pieces apart stay apart: no second try.
+            return Ok((measured.is_watertight && measured.shells == 1).then_some(placed));
         }
     }
-    let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
-    let summary = PartSummary { parts: parts.closed.len() as u64, skipped: parts.skipped, thickened: parts.thickened, min_extent: parts.min_extent, wall };
-    finish(placed, &colours, &summary, options, budget)
+    Ok(None)
 }
 
 /// Unites the expansion of an instancing hierarchy (shapes at `detail`)
@@ -161,7 +220,11 @@ pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptio
         budget.rewind(mark);
         return Ok(None);
     }
-    let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0 };
+    if measure(&placed.scaled, &placed.indices).shells != 1 {
+        budget.rewind(mark);
+        return Ok(None);
+    }
+    let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0, fused: None };
     finish(placed, &solid.colours, &summary, options, budget).map(Some)
 }
 
@@ -177,6 +240,9 @@ struct PartSummary {
     min_extent: f64,
     /// The thickness walls were given (model units).
     wall: f64,
+    /// When the parts were fused (`fuse`) rather than united exactly: the
+    /// widest gap closed, the bridges added and the sample spacing (model units).
+    fused: Option<(f64, u64, f64)>,
 }
 
 /// The printed mesh and its report from a placed union and the colour of
@@ -192,6 +258,11 @@ fn finish(placed: Placed, colours: &[[u8; 4]], parts: &PartSummary, options: &Pr
     report.wall_mm = if parts.thickened > 0 { parts.wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
+    if let Some((gap, bridges, spacing)) = parts.fused {
+        report.fused_gap_mm = gap * scale;
+        report.bridges = bridges;
+        report.sample_mm = spacing * scale;
+    }
     if options.report {
         let min_wall = options.profile.min_wall_mm();
         let walls = thickness::measure_walls(&scaled, &indices, min_wall, budget)?;

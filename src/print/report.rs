@@ -31,6 +31,16 @@ pub struct PrintReport {
     pub thickened_parts: u64,
     /// Thickness of those walls (mm); 0 when nothing was thickened.
     pub wall_mm: f64,
+    /// Gaps narrower than this were closed (mm): 0 when the parts' exact
+    /// union was printed; else twice the closing radius of the fused route
+    /// (contacts become connections, `fuse`).
+    pub fused_gap_mm: f64,
+    /// Connections the fused route added between pieces that were apart.
+    pub bridges: u64,
+    /// The fused route's sample spacing (mm): its surface is within about
+    /// this of the parts' (sharp edges are rounded by about as much); 0 when
+    /// the exact union was printed.
+    pub sample_mm: f64,
     /// Smallest bounding-box side of any part (mm): a rough estimate of the
     /// thinnest feature, kept for older clients; `thinnest_wall_mm` is measured.
     pub min_feature_mm: f64,

@@ -41,6 +41,10 @@ mod ffi {
         /// cancelled after `timeout_ms` milliseconds unless that is 0.
         fn batch_union(parts: &ManifoldVec, timeout_ms: u64) -> UniquePtr<Manifold>;
 
+        /// `m` simplified within `tolerance`, cancelled after `timeout_ms`
+        /// unless 0 (rulemesh addition).
+        fn simplify(m: &Manifold, tolerance: f64, timeout_ms: u64) -> UniquePtr<Manifold>;
+
         /// Slice the manifold into a set of polygons.
         fn slice(self: &Manifold, height: f64) -> UniquePtr<Polygons>;
 
@@ -222,6 +226,15 @@ impl Manifold {
             list.pin_mut().push(p.inner());
         }
         Self(ffi::batch_union(&list, timeout_ms.map_or(0, |t| t.max(1))))
+    }
+
+    /// This manifold simplified: Manifold's `Simplify`, which collapses
+    /// edges while the surface moves less than `tolerance` and keeps it
+    /// manifold. With a timeout, cancelled after that many milliseconds
+    /// ([`Manifold::status`] is then [`Manifold::CANCELLED`]) (rulemesh
+    /// addition).
+    pub fn simplify(&self, tolerance: f64, timeout_ms: Option<u64>) -> Self {
+        Self(ffi::simplify(&self.0, tolerance, timeout_ms.map_or(0, |t| t.max(1))))
     }
 
     /// Slice the manifold into a set of polygons.

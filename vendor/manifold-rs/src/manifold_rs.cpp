@@ -4,6 +4,7 @@
 #include "manifold_rs.h"
 
 #include <manifold/manifold.h>
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstring> // memcpy
@@ -159,16 +160,13 @@ namespace manifold_rs
         return std::make_unique<ManifoldVec>();
     }
 
-    std::unique_ptr<Manifold> batch_union(const ManifoldVec &parts, std::uint64_t timeout_ms)
+    // Runs `evaluate` (which evaluates a Manifold under `ctx`) with a
+    // watchdog thread that cancels `ctx` after `timeout_ms` milliseconds;
+    // Manifold checks the context between (and inside) its phases
+    // (rulemesh addition).
+    template <typename F>
+    static ::manifold::Manifold watched(std::uint64_t timeout_ms, F evaluate)
     {
-        auto united = ::manifold::Manifold::BatchBoolean(parts.items, ::manifold::OpType::Add);
-        if (timeout_ms == 0)
-        {
-            united.Status(); // evaluates the deferred union
-            return std::make_unique<Manifold>(std::move(united));
-        }
-        // A watchdog thread cancels the evaluation at the deadline; Manifold
-        // checks the context between (and inside) its boolean phases.
         ::manifold::ExecutionContext ctx;
         std::mutex mutex;
         std::condition_variable finished;
@@ -178,15 +176,46 @@ namespace manifold_rs
             std::unique_lock<std::mutex> lock(mutex);
             if (!finished.wait_for(lock, std::chrono::milliseconds(timeout_ms), [&] { return done; }))
                 ctx.Cancel(); });
-        auto watched = united.WithContext(ctx);
-        watched.Status(); // evaluates the deferred union under the context
+        auto result = evaluate(ctx);
         {
             std::lock_guard<std::mutex> lock(mutex);
             done = true;
         }
         finished.notify_one();
         watchdog.join();
-        return std::make_unique<Manifold>(std::move(watched));
+        return result;
+    }
+
+    std::unique_ptr<Manifold> batch_union(const ManifoldVec &parts, std::uint64_t timeout_ms)
+    {
+        auto united = ::manifold::Manifold::BatchBoolean(parts.items, ::manifold::OpType::Add);
+        if (timeout_ms == 0)
+        {
+            united.Status(); // evaluates the deferred union
+            return std::make_unique<Manifold>(std::move(united));
+        }
+        auto result = watched(timeout_ms, [&](::manifold::ExecutionContext &ctx)
+                              {
+            auto w = united.WithContext(ctx);
+            w.Status(); // evaluates the deferred union under the context
+            return w; });
+        return std::make_unique<Manifold>(std::move(result));
+    }
+
+    std::unique_ptr<Manifold> simplify(const Manifold &m, double tolerance, std::uint64_t timeout_ms)
+    {
+        auto evaluate = [&](::manifold::ExecutionContext &ctx)
+        {
+            auto simplified = m.manifold->WithContext(ctx).Simplify(tolerance);
+            simplified.Status(); // evaluates under the context
+            return simplified;
+        };
+        if (timeout_ms == 0)
+        {
+            ::manifold::ExecutionContext ctx;
+            return std::make_unique<Manifold>(evaluate(ctx));
+        }
+        return std::make_unique<Manifold>(watched(timeout_ms, evaluate));
     }
 
     Mesh::Mesh() : mesh(std::make_unique<::manifold::Mesh>()) {}

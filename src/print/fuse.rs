@@ -1,0 +1,342 @@
+//! Contacts become connections (issue 16): parts that touch at a point or
+//! along an edge, or nearly touch, are fused into one solid with a
+//! connection at least the closing radius thick.
+//!
+//! The exact union (`union`) keeps parts that only touch as separate shells
+//! or as edges of four faces, and a gap a printer cannot resolve stays a
+//! gap. Here the union is sampled on a voxel grid (`field`), closed
+//! morphologically (dilated, then eroded, by a ball of the closing radius:
+//! gaps narrower than twice the radius fill, nothing else grows), and only
+//! the filled regions that join two pieces which were apart are kept as
+//! bridges. The surface is then extracted from the sampled signed distance
+//! with the bridges added, by marching tetrahedra (`tetra`: manifold by
+//! construction, whatever the contacts were), and simplified by Manifold
+//! within a quarter of a sample. Why a distance field and not an outward
+//! offset of each part before the exact union: the offset doubled triangle
+//! counts and fused only what it pushed into overlap; the closing finds
+//! every contact, point, edge or near miss, at one resolution, and its
+//! result is one manifold surface. The cost: the printed surface is the
+//! sampled one (sharp edges rounded by about a sample), so this route is
+//! taken only when the exact union is not one watertight shell.
+
+use super::edt::squared_distances;
+use super::field::{self, Grid};
+use super::tetra;
+use super::union::Piece;
+use super::PrintError;
+use crate::core::budget::Budget;
+use glam::DVec3;
+
+/// Samples the grid may have: about 8 million (a 203³ cube), some 150 MB
+/// of working arrays at most.
+pub const MAX_SAMPLES: usize = 1 << 23;
+
+/// Samples aimed at: the spacing is the closing radius's half, but no finer
+/// than this many samples over the box needs.
+const TARGET_SAMPLES: f64 = 3.0e6;
+
+/// Bytes of working arrays per sample: the signed distance, the nearest
+/// triangle, a distance transform, labels, and the inside flags.
+const BYTES_PER_SAMPLE: u64 = 4 + 4 + 4 + 4 + 1 + 1;
+
+/// Radius of the ball each bridge sample adds, in samples: more than half
+/// the diagonal of a sample's square (0.707) so that samples next to each
+/// other along a face diagonal make one connected bridge.
+const BRIDGE_RADIUS: f64 = 0.9;
+
+/// A fused solid: one closed manifold surface (model units).
+pub(super) struct Fused {
+    /// Shared positions.
+    pub positions: Vec<DVec3>,
+    /// Three per triangle, counter-clockwise seen from outside.
+    pub indices: Vec<u32>,
+    /// Each triangle's colour: the nearest part triangle's.
+    pub colours: Vec<[u8; 4]>,
+    /// The closing radius used (model units).
+    pub closing: f64,
+    /// The sample spacing (model units).
+    pub spacing: f64,
+    /// How many bridges joined pieces that were apart.
+    pub bridges: u64,
+}
+
+/// Fuses closed, outward `parts` (with each triangle's colour, parallel to
+/// `parts`) into one surface, closing gaps narrower than twice `closing`
+/// (model units). The spacing is half the closing radius, coarser (and the
+/// radius twice the spacing) if the grid would exceed [`MAX_SAMPLES`].
+pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, budget: &mut Budget) -> Result<Fused, PrintError> {
+    let (lo, hi) = super::bounds(parts.iter().flat_map(|p| p.0.iter().copied()));
+    let size = hi - lo;
+    if !(size.max_element() > 0.0 && size.is_finite() && closing > 0.0 && closing.is_finite()) {
+        return Err(PrintError::Union("nothing to fuse".into()));
+    }
+    let volume = size.max(DVec3::splat(size.max_element() * 1e-3)).element_product();
+    let mut h = (closing / 2.0).max((volume / TARGET_SAMPLES).cbrt());
+    let mut closing = closing.max(2.0 * h);
+    let samples = |h: f64, closing: f64| {
+        let pad = closing + 3.0 * h;
+        (size + DVec3::splat(2.0 * pad)) / h + DVec3::splat(2.0)
+    };
+    while samples(h, closing).element_product() > MAX_SAMPLES as f64 {
+        h *= 1.1;
+        closing = closing.max(2.0 * h);
+    }
+    let pad = closing + 3.0 * h;
+    let n = samples(h, closing).to_array().map(|v| v.ceil() as usize);
+    // An origin a fraction of a sample off the model's own coordinates: grid
+    // samples then rarely fall exactly on a face, an edge or a corner of a
+    // part placed on round numbers (the tie rule in `field` handles them).
+    let origin = lo - DVec3::splat(pad) - DVec3::splat(h * 0.318_309_886);
+    let grid = Grid { origin, h, n };
+    let len = grid.len();
+    let triangles: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
+    let bytes = (len as u64).saturating_mul(BYTES_PER_SAMPLE);
+    budget.reserve_memory(bytes)?;
+    // A step per sample (each pass over the grid is a few operations per
+    // sample), and eight per triangle (its columns and its neighbourhood).
+    budget.charge_steps((len as u64).saturating_add(triangles.saturating_mul(8)))?;
+
+    let inside = field::inside(parts, &grid);
+    budget.check_deadline()?;
+    let band = 2.5 * h;
+    let (distance, nearest) = field::near_surface(parts, &grid, band);
+    budget.check_deadline()?;
+    let closed = close(&inside, &grid, closing / h);
+    budget.check_deadline()?;
+    let (bridge, bridges) = bridges(&inside, &closed, &grid);
+    drop(closed);
+    budget.check_deadline()?;
+
+    // The signed distance, positive inside, with each bridge sample's ball.
+    let mut value: Vec<f32> = distance.iter().zip(&inside).map(|(d, &i)| if i { *d } else { -*d }).collect();
+    drop(distance);
+    if bridges > 0 {
+        let mut reach: Vec<f32> = bridge.iter().map(|&b| if b { 0.0 } else { f32::INFINITY }).collect();
+        squared_distances(&mut reach, n);
+        for (v, r) in value.iter_mut().zip(&reach) {
+            let ball = (BRIDGE_RADIUS - f64::from(*r).sqrt()) * h;
+            *v = v.max(ball as f32);
+        }
+    }
+    drop(bridge);
+    budget.check_deadline()?;
+    let (positions, indices) = tetra::surface(&value, &grid);
+    drop(value);
+    budget.release_memory(bytes);
+    budget.check_deadline()?;
+    let dbg = |p: &[DVec3], i: &[u32], w: &str| { if std::env::var("FUSEDBG").is_ok() { let t: Vec<[u32;3]> = i.chunks_exact(3).map(|t| [t[0],t[1],t[2]]).collect(); match crate::geom::halfedge::HalfEdgeMesh::new(p.to_vec(), t) { Ok(m) => eprintln!("DBG {w}: closed {} pinched {} chi {}", m.is_closed(), m.nonmanifold_vertices().len(), m.euler_characteristic()), Err(e) => eprintln!("DBG {w}: {e}") } } };
+    dbg(&positions, &indices, "tetra");
+    // Simplifying can pinch a neck thinner than the tolerance into a vertex
+    // and so split a piece in two: then less, then not at all.
+    let pieces = components(positions.len(), &indices);
+    let mut simplified = None;
+    for tolerance in [h / 4.0, h / 16.0] {
+        let (p, i) = simplify(&positions, &indices, tolerance, budget)?;
+        if components(p.len(), &i) <= pieces {
+            simplified = Some((p, i));
+            break;
+        }
+    }
+    let (positions, indices) = simplified.unwrap_or((positions, indices));
+    dbg(&positions, &indices, "simplified");
+    let flat: Vec<[u8; 4]> = colours.iter().flatten().copied().collect();
+    let colours = indices
+        .chunks_exact(3)
+        .map(|t| {
+            let centre = t.iter().map(|&v| positions.get(v as usize).copied().unwrap_or(DVec3::ZERO)).sum::<DVec3>() / 3.0;
+            let near = nearest.get(grid.nearest(centre)).copied().unwrap_or(u32::MAX);
+            flat.get(near as usize).or(flat.first()).copied().unwrap_or(super::PLAIN)
+        })
+        .collect();
+    Ok(Fused { positions, indices, colours, closing, spacing: h, bridges })
+}
+
+/// The surface (shared positions, CCW triangles) simplified by Manifold
+/// within `tolerance` (model units): marching tetrahedra cut every cell the
+/// surface crosses into up to twelve triangles, most of them slivers on
+/// flat faces. Manifold's `Simplify` collapses edges while the surface moves
+/// less than the tolerance and keeps its topology manifold; where a
+/// collapse would pinch two sheets together at a vertex, it keeps a copy of
+/// the vertex for each sheet, at one position. A print's STL has positions
+/// only and would weld the copies back into a pinch, so each copy but the
+/// first is moved a hundredth of a sample into its own sheet ([`unpinch`]).
+/// Why not meshoptimizer's simplifier: its collapses do not check every
+/// link condition, and on these surfaces it made edges of four faces.
+/// Cancelled at the deadline.
+fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
+    let bytes = (indices.len() as u64 / 3).saturating_mul(200);
+    budget.reserve_memory(bytes)?;
+    budget.charge_steps(indices.len() as u64)?;
+    let verts: Vec<f32> = positions.iter().flat_map(|p| p.as_vec3().to_array()).collect();
+    let surface = manifold_rs::Manifold::from_mesh(manifold_rs::Mesh::new(&verts, indices));
+    if surface.is_empty() {
+        return Err(PrintError::Union(format!("the fused surface was not accepted as a manifold (status {})", surface.status())));
+    }
+    let timeout = budget.time_left().map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));
+    let simplified = surface.simplify(tolerance, timeout);
+    budget.release_memory(bytes);
+    if simplified.status() == manifold_rs::Manifold::CANCELLED {
+        budget.check_deadline()?;
+        return Err(PrintError::Union("simplifying cancelled at the deadline".into()));
+    }
+    let mesh = simplified.to_mesh();
+    let props = mesh.num_props().max(3) as usize;
+    let mut positions: Vec<DVec3> = mesh.vertices().chunks_exact(props).map(|v| glam::Vec3::new(v[0], v[1], v[2]).as_dvec3()).collect();
+    let indices = mesh.indices();
+    unpinch(&mut positions, &indices, tolerance / 25.0 * 4.0);
+    Ok((positions, indices))
+}
+
+/// Moves every vertex that shares its position (as `f32`) with an earlier
+/// one by `step` towards the middle of its own triangles, so that copies of
+/// a vertex kept apart by Manifold stay apart once welded by position.
+fn unpinch(positions: &mut [DVec3], indices: &[u32], step: f64) {
+    let key = |p: DVec3| p.as_vec3().to_array().map(f32::to_bits);
+    let mut first: std::collections::HashMap<[u32; 3], usize> = std::collections::HashMap::new();
+    let mut copies: Vec<usize> = Vec::new();
+    for (v, p) in positions.iter().enumerate() {
+        if *first.entry(key(*p)).or_insert(v) != v {
+            copies.push(v);
+        }
+    }
+    if copies.is_empty() {
+        return;
+    }
+    // The sum of the centres of each copy's triangles, and how many.
+    let mut towards: std::collections::HashMap<usize, (DVec3, f64)> = copies.iter().map(|&v| (v, (DVec3::ZERO, 0.0))).collect();
+    for t in indices.chunks_exact(3) {
+        let centre = t.iter().map(|&v| positions.get(v as usize).copied().unwrap_or(DVec3::ZERO)).sum::<DVec3>() / 3.0;
+        for &v in t {
+            if let Some(e) = towards.get_mut(&(v as usize)) {
+                e.0 += centre;
+                e.1 += 1.0;
+            }
+        }
+    }
+    for v in copies {
+        if let Some((sum, count)) = towards.get(&v).copied().filter(|e| e.1 > 0.0) {
+            let p = positions[v];
+            positions[v] = p + (sum / count - p).normalize_or_zero() * step;
+        }
+    }
+}
+
+/// How many pieces the triangles make, joined through shared vertices.
+fn components(vertices: usize, indices: &[u32]) -> usize {
+    let mut root: Vec<u32> = (0..vertices as u32).collect();
+    for t in indices.chunks_exact(3) {
+        let a = super::find_root(&mut root, t[0]);
+        for &c in &t[1..] {
+            let b = super::find_root(&mut root, c);
+            if a != b {
+                root[b as usize] = a;
+            }
+        }
+    }
+    let mut used = vec![false; vertices];
+    for &v in indices {
+        used[v as usize] = true;
+    }
+    (0..vertices as u32).filter(|&v| used[v as usize] && super::find_root(&mut root, v) == v).count()
+}
+
+/// The morphological closing of `inside` by a ball of `radius` samples:
+/// the samples within the radius of an inside one (the dilation), less
+/// those within the radius of a sample outside the dilation (the erosion).
+fn close(inside: &[bool], grid: &Grid, radius: f64) -> Vec<bool> {
+    let r2 = (radius * radius) as f32;
+    let mut d: Vec<f32> = inside.iter().map(|&i| if i { 0.0 } else { f32::INFINITY }).collect();
+    squared_distances(&mut d, grid.n);
+    // Seeds of the erosion: samples outside the dilation.
+    for v in d.iter_mut() {
+        *v = if *v <= r2 { f32::INFINITY } else { 0.0 };
+    }
+    squared_distances(&mut d, grid.n);
+    d.iter().map(|&v| v > r2).collect()
+}
+
+/// The samples the closing added that join pieces which were apart: each
+/// connected region of added samples (sharing faces) is kept if it touches
+/// two or more connected pieces of `inside`. Also how many regions were kept.
+fn bridges(inside: &[bool], closed: &[bool], grid: &Grid) -> (Vec<bool>, u64) {
+    let pieces = label(grid, |s| inside[s]);
+    let added = label(grid, |s| closed[s] && !inside[s]);
+    // The pieces each added region touches, as (region, piece) pairs.
+    let mut touches: Vec<(u32, u32)> = Vec::new();
+    let [nx, ny, nz] = grid.n;
+    for k in 0..nz {
+        for j in 0..ny {
+            for i in 0..nx {
+                let s = grid.index(i, j, k);
+                let region = added[s];
+                if region == 0 {
+                    continue;
+                }
+                for t in neighbours(grid, i, j, k) {
+                    if pieces[t] != 0 {
+                        touches.push((region, pieces[t]));
+                    }
+                }
+            }
+        }
+    }
+    touches.sort_unstable();
+    touches.dedup();
+    let regions = added.iter().copied().max().unwrap_or(0) as usize;
+    let mut joins = vec![0u32; regions + 1];
+    for (region, _) in &touches {
+        joins[*region as usize] += 1;
+    }
+    let keep: Vec<bool> = joins.iter().map(|&j| j >= 2).collect();
+    let kept = keep.iter().filter(|&&k| k).count() as u64;
+    (added.iter().map(|&r| r != 0 && keep[r as usize]).collect(), kept)
+}
+
+/// Labels the connected regions (sharing faces) of the samples `member`
+/// picks, 1, 2, ... in scan order; 0 for samples outside every region.
+fn label(grid: &Grid, member: impl Fn(usize) -> bool) -> Vec<u32> {
+    let mut labels = vec![0u32; grid.len()];
+    let mut next = 0u32;
+    let mut stack: Vec<[usize; 3]> = Vec::new();
+    let [nx, ny, nz] = grid.n;
+    for k in 0..nz {
+        for j in 0..ny {
+            for i in 0..nx {
+                let s = grid.index(i, j, k);
+                if labels[s] != 0 || !member(s) {
+                    continue;
+                }
+                next += 1;
+                labels[s] = next;
+                stack.push([i, j, k]);
+                while let Some([a, b, c]) = stack.pop() {
+                    for (t, at) in neighbours_at(grid, a, b, c) {
+                        if labels[t] == 0 && member(t) {
+                            labels[t] = next;
+                            stack.push(at);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    labels
+}
+
+/// The flat indices of the up to six samples sharing a face with (i, j, k).
+fn neighbours(grid: &Grid, i: usize, j: usize, k: usize) -> impl Iterator<Item = usize> + '_ {
+    neighbours_at(grid, i, j, k).map(|(t, _)| t)
+}
+
+/// The up to six samples sharing a face with (i, j, k): flat index and position.
+fn neighbours_at(grid: &Grid, i: usize, j: usize, k: usize) -> impl Iterator<Item = (usize, [usize; 3])> + '_ {
+    const STEPS: [[i64; 3]; 6] = [[-1, 0, 0], [1, 0, 0], [0, -1, 0], [0, 1, 0], [0, 0, -1], [0, 0, 1]];
+    STEPS.iter().filter_map(move |d| {
+        let at = [i as i64 + d[0], j as i64 + d[1], k as i64 + d[2]];
+        if (0..3).any(|a| at[a] < 0 || at[a] >= grid.n[a] as i64) {
+            return None;
+        }
+        let at = at.map(|v| v as usize);
+        Some((grid.index(at[0], at[1], at[2]), at))
+    })
+}
