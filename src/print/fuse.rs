@@ -58,6 +58,8 @@ pub(super) struct Fused {
     pub spacing: f64,
     /// How many bridges joined pieces that were apart.
     pub bridges: u64,
+    /// How many enclosed voids were filled.
+    pub voids: u64,
 }
 
 /// Fuses closed, outward `parts` (with each triangle's colour, parallel to
@@ -77,7 +79,12 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
         let pad = closing + 3.0 * h;
         (size + DVec3::splat(2.0 * pad)) / h + DVec3::splat(2.0)
     };
-    while samples(h, closing).element_product() > MAX_SAMPLES as f64 {
+    // At most MAX_SAMPLES, and at most half the steps the request has left
+    // (a step per sample): a grid too coarse for the closing radius widens
+    // it, which the report says (`fused_gap_mm`).
+    let steps_left = budget.limits().max_steps.saturating_sub(budget.steps());
+    let most = (MAX_SAMPLES as f64).min(steps_left as f64 / 2.0).max(1e5);
+    while samples(h, closing).element_product() > most {
         h *= 1.1;
         closing = closing.max(2.0 * h);
     }
@@ -118,14 +125,16 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
             *v = v.max(ball as f32);
         }
     }
+    // Enclosed voids (a hollow the parts close all round, pockets where
+    // parts meet) are filled: a print would trap material in them, and each
+    // is one more shell.
+    let voids = fill_voids(&mut value, &inside, &bridge, &grid);
     drop(bridge);
     budget.check_deadline()?;
     let (positions, indices) = tetra::surface(&value, &grid);
     drop(value);
     budget.release_memory(bytes);
     budget.check_deadline()?;
-    let dbg = |p: &[DVec3], i: &[u32], w: &str| { if std::env::var("FUSEDBG").is_ok() { let t: Vec<[u32;3]> = i.chunks_exact(3).map(|t| [t[0],t[1],t[2]]).collect(); match crate::geom::halfedge::HalfEdgeMesh::new(p.to_vec(), t) { Ok(m) => eprintln!("DBG {w}: closed {} pinched {} chi {}", m.is_closed(), m.nonmanifold_vertices().len(), m.euler_characteristic()), Err(e) => eprintln!("DBG {w}: {e}") } } };
-    dbg(&positions, &indices, "tetra");
     // Simplifying can pinch a neck thinner than the tolerance into a vertex
     // and so split a piece in two: then less, then not at all.
     let pieces = components(positions.len(), &indices);
@@ -138,7 +147,6 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
         }
     }
     let (positions, indices) = simplified.unwrap_or((positions, indices));
-    dbg(&positions, &indices, "simplified");
     let flat: Vec<[u8; 4]> = colours.iter().flatten().copied().collect();
     let colours = indices
         .chunks_exact(3)
@@ -148,7 +156,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
             flat.get(near as usize).or(flat.first()).copied().unwrap_or(super::PLAIN)
         })
         .collect();
-    Ok(Fused { positions, indices, colours, closing, spacing: h, bridges })
+    Ok(Fused { positions, indices, colours, closing, spacing: h, bridges, voids })
 }
 
 /// The surface (shared positions, CCW triangles) simplified by Manifold
@@ -166,7 +174,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
 fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
     let bytes = (indices.len() as u64 / 3).saturating_mul(200);
     budget.reserve_memory(bytes)?;
-    budget.charge_steps(indices.len() as u64)?;
+    budget.charge_steps(indices.len() as u64 / 3)?;
     let verts: Vec<f32> = positions.iter().flat_map(|p| p.as_vec3().to_array()).collect();
     let surface = manifold_rs::Manifold::from_mesh(manifold_rs::Mesh::new(&verts, indices));
     if surface.is_empty() {
@@ -219,6 +227,24 @@ fn unpinch(positions: &mut [DVec3], indices: &[u32], step: f64) {
             positions[v] = p + (sum / count - p).normalize_or_zero() * step;
         }
     }
+}
+
+/// Fills the regions outside the solid (`inside` or `bridge`) that do not
+/// reach the grid's border, sharing faces: `value` becomes half a sample
+/// inside there. Returns how many regions were filled.
+fn fill_voids(value: &mut [f32], inside: &[bool], bridge: &[bool], grid: &Grid) -> u64 {
+    let outside = label(grid, |s| !inside[s] && !bridge[s]);
+    let regions = outside.iter().copied().max().unwrap_or(0) as usize;
+    // The grid's border is outside everything (the padding), all one region.
+    let open = outside[0];
+    let mut filled = vec![false; regions + 1];
+    for (v, &r) in value.iter_mut().zip(&outside) {
+        if r != 0 && r != open {
+            *v = (grid.h / 2.0) as f32;
+            filled[r as usize] = true;
+        }
+    }
+    filled.iter().filter(|&&f| f).count() as u64
 }
 
 /// How many pieces the triangles make, joined through shared vertices.
@@ -339,4 +365,77 @@ fn neighbours_at(grid: &Grid, i: usize, j: usize, k: usize) -> impl Iterator<Ite
         let at = at.map(|v| v as usize);
         Some((grid.index(at[0], at[1], at[2]), at))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::budget::Limits;
+    use crate::geom::halfedge::HalfEdgeMesh;
+
+    /// A box's corners and outward triangles, from `lo` to `hi`.
+    fn cuboid(lo: DVec3, hi: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        let p: Vec<DVec3> = (0..8).map(|i| DVec3::new([lo.x, hi.x][i & 1], [lo.y, hi.y][(i >> 1) & 1], [lo.z, hi.z][(i >> 2) & 1])).collect();
+        let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+        (p, quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect())
+    }
+
+    /// Fuses boxes, checks the result is closed, manifold and unpinched, and
+    /// gives it with its volume and how many pieces it is.
+    fn fuse_boxes(boxes: &[(DVec3, DVec3)], closing: f64) -> (Fused, f64, i64) {
+        let meshes: Vec<_> = boxes.iter().map(|(lo, hi)| cuboid(*lo, *hi)).collect();
+        let parts: Vec<Piece<'_>> = meshes.iter().map(|(p, t)| (p.as_slice(), t.as_slice())).collect();
+        let colours: Vec<Vec<[u8; 4]>> = meshes.iter().map(|m| vec![[255, 0, 0, 255]; m.1.len()]).collect();
+        let fused = fuse(&parts, &colours, closing, &mut Budget::new(Limits::default())).expect("fused");
+        let tris: Vec<[u32; 3]> = fused.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+        let m = HalfEdgeMesh::new(fused.positions.clone(), tris).expect("manifold");
+        assert!(m.is_closed() && m.nonmanifold_vertices().is_empty());
+        // Unpinched: no two vertices share a position.
+        let mut at: Vec<[u32; 3]> = fused.positions.iter().map(|p| p.as_vec3().to_array().map(f32::to_bits)).collect();
+        at.sort_unstable();
+        assert!(at.windows(2).all(|w| w[0] != w[1]));
+        let (volume, chi) = (m.signed_volume(), m.euler_characteristic());
+        assert_eq!(fused.colours, vec![[255, 0, 0, 255]; fused.indices.len() / 3]);
+        (fused, volume, chi)
+    }
+
+    /// Two cubes touching only along an edge (a union leaves four faces on
+    /// it) fuse into one closed solid of about their volume, with a bridge.
+    #[test]
+    fn cubes_touching_along_an_edge_become_one_solid() {
+        let (fused, volume, chi) = fuse_boxes(&[(DVec3::ZERO, DVec3::ONE), (DVec3::new(1.0, 1.0, 0.0), DVec3::new(2.0, 2.0, 1.0))], 0.02);
+        assert_eq!(chi, 2, "one piece, no hole");
+        assert!(fused.bridges >= 1);
+        assert!((volume - 2.0).abs() < 0.02, "{volume}");
+    }
+
+    /// Cubes further apart than twice the closing radius stay two pieces;
+    /// nearer, they are bridged.
+    #[test]
+    fn a_gap_closes_only_below_twice_the_closing_radius() {
+        let apart = [(DVec3::ZERO, DVec3::ONE), (DVec3::new(1.1, 0.0, 0.0), DVec3::new(2.1, 1.0, 1.0))];
+        let (fused, _, chi) = fuse_boxes(&apart, 0.03);
+        assert_eq!((chi, fused.bridges), (4, 0), "two pieces");
+        let (fused, volume, chi) = fuse_boxes(&apart, 0.08);
+        assert_eq!((chi, fused.bridges), (2, 1), "bridged");
+        assert!(volume > 2.0 && volume < 2.1, "{volume}");
+    }
+
+    /// Six slabs closing a hollow box print as the solid box: the void is filled.
+    #[test]
+    fn an_enclosed_void_is_filled() {
+        let (lo, hi, t) = (DVec3::ZERO, DVec3::splat(1.0), 0.2);
+        let slabs: Vec<(DVec3, DVec3)> = (0..3)
+            .flat_map(|axis| {
+                let mut a_hi = hi;
+                a_hi[axis] = t;
+                let mut b_lo = lo;
+                b_lo[axis] = 1.0 - t;
+                [(lo, a_hi), (b_lo, hi)]
+            })
+            .collect();
+        let (fused, volume, chi) = fuse_boxes(&slabs, 0.02);
+        assert_eq!((chi, fused.voids), (2, 1));
+        assert!((volume - 1.0).abs() < 0.02, "{volume}");
+    }
 }

@@ -136,10 +136,13 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     // The exact union first: a model that prints as one watertight shell
     // prints exactly as modelled. It gets half the time left; the rest is
     // for fusing (below) if it is not one watertight shell or runs out.
+    let mark = budget.mark();
     if let Some(placed) = exact_union(&pieces, options.size_um, budget)? {
         let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
         return finish(placed, &colours, &summary, options, budget);
     }
+    // The exact unions' work is thrown away: refunded (the clock goes on).
+    budget.rewind(mark);
     // Contacts become connections: gaps narrower than the printer's
     // minimum wall at the printed size (but at most a hundredth of the
     // model, so that a model printed at its 1-unit-is-1-mm size does not
@@ -152,7 +155,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     let closing = (min_wall / 2.0 / scale).min(CLOSING_FRACTION * extent);
     let fused = fuse::fuse(&pieces, &parts.colours, closing, budget)?;
     let gap = 2.0 * fused.closing;
-    let summary = PartSummary { fused: Some((gap, fused.bridges, fused.spacing)), ..summary };
+    let summary = PartSummary { fused: Some((gap, fused.bridges, fused.spacing, fused.voids)), ..summary };
     let placed = place((fused.positions, fused.indices), options.size_um);
     let (mesh, report) = finish(placed, &fused.colours, &summary, options, budget)?;
     if report.shells > 1 && !options.report {
@@ -241,8 +244,9 @@ struct PartSummary {
     /// The thickness walls were given (model units).
     wall: f64,
     /// When the parts were fused (`fuse`) rather than united exactly: the
-    /// widest gap closed, the bridges added and the sample spacing (model units).
-    fused: Option<(f64, u64, f64)>,
+    /// widest gap closed, the bridges added, the sample spacing (model
+    /// units) and the voids filled.
+    fused: Option<(f64, u64, f64, u64)>,
 }
 
 /// The printed mesh and its report from a placed union and the colour of
@@ -258,10 +262,11 @@ fn finish(placed: Placed, colours: &[[u8; 4]], parts: &PartSummary, options: &Pr
     report.wall_mm = if parts.thickened > 0 { parts.wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
-    if let Some((gap, bridges, spacing)) = parts.fused {
+    if let Some((gap, bridges, spacing, voids)) = parts.fused {
         report.fused_gap_mm = gap * scale;
         report.bridges = bridges;
         report.sample_mm = spacing * scale;
+        report.filled_voids = voids;
     }
     if options.report {
         let min_wall = options.profile.min_wall_mm();

@@ -37,6 +37,8 @@ pub struct PrintReport {
     pub fused_gap_mm: f64,
     /// Connections the fused route added between pieces that were apart.
     pub bridges: u64,
+    /// Enclosed voids the fused route filled (they would trap material).
+    pub filled_voids: u64,
     /// The fused route's sample spacing (mm): its surface is within about
     /// this of the parts' (sharp edges are rounded by about as much); 0 when
     /// the exact union was printed.
