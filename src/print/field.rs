@@ -3,6 +3,7 @@
 //! triangle. What `fuse` closes gaps on and extracts a surface from.
 
 use super::union::Piece;
+use crate::core::budget::{Budget, LimitExceeded};
 use glam::DVec3;
 
 /// A regular grid of samples: sample (i, j, k) is at `origin + h · (i, j, k)`;
@@ -63,11 +64,15 @@ impl Grid {
 /// corner crosses is decided by a tie rule (below) that gives it to exactly
 /// one of the triangles around it, so a closed part is entered and left
 /// equally often on every column.
-pub(super) fn inside(parts: &[Piece<'_>], grid: &Grid) -> Vec<bool> {
+/// Checks the deadline every 1,024 triangles.
+pub(super) fn inside(parts: &[Piece<'_>], grid: &Grid, budget: &Budget) -> Result<Vec<bool>, LimitExceeded> {
     // (column, z, +1 entering / -1 leaving) for every crossing.
     let mut crossings: Vec<(u32, f64, i8)> = Vec::new();
     for (positions, tris) in parts {
-        for t in tris.iter() {
+        for (n, t) in tris.iter().enumerate() {
+            if n % 1024 == 1023 {
+                budget.check_deadline()?;
+            }
             let [a, b, c] = t.map(|v| positions.get(v as usize).copied().unwrap_or(DVec3::ZERO));
             column_crossings(a, b, c, grid, &mut crossings);
         }
@@ -93,7 +98,7 @@ pub(super) fn inside(parts: &[Piece<'_>], grid: &Grid) -> Vec<bool> {
         }
         run = end;
     }
-    inside
+    Ok(inside)
 }
 
 /// Pushes the crossing of triangle (a, b, c) with every column of samples
@@ -157,13 +162,17 @@ fn owns_edge(from: DVec3, to: DVec3) -> bool {
 
 /// For every sample within `band` of a triangle of `parts`: the distance to
 /// the nearest one and that triangle's index (counting through the parts in
-/// order); `band` and `u32::MAX` elsewhere.
-pub(super) fn near_surface(parts: &[Piece<'_>], grid: &Grid, band: f64) -> (Vec<f32>, Vec<u32>) {
+/// order); `band` and `u32::MAX` elsewhere. Checks the deadline every 1,024
+/// triangles.
+pub(super) fn near_surface(parts: &[Piece<'_>], grid: &Grid, band: f64, budget: &Budget) -> Result<(Vec<f32>, Vec<u32>), LimitExceeded> {
     let mut distance = vec![band as f32; grid.len()];
     let mut nearest = vec![u32::MAX; grid.len()];
     let mut index = 0u32;
     for (positions, tris) in parts {
         for t in tris.iter() {
+            if index % 1024 == 1023 {
+                budget.check_deadline()?;
+            }
             let [a, b, c] = t.map(|v| positions.get(v as usize).copied().unwrap_or(DVec3::ZERO));
             let lo = a.min(b).min(c) - DVec3::splat(band);
             let hi = a.max(b).max(c) + DVec3::splat(band);
@@ -182,7 +191,7 @@ pub(super) fn near_surface(parts: &[Piece<'_>], grid: &Grid, band: f64) -> (Vec<
             index = index.saturating_add(1);
         }
     }
-    (distance, nearest)
+    Ok((distance, nearest))
 }
 
 /// The distance from `p` to triangle (a, b, c): Ericson's closest point on
@@ -252,7 +261,8 @@ mod tests {
         let parts: Vec<Piece<'_>> = vec![(&pa, &ta), (&pb, &tb)];
         // Samples every quarter unit from -0.5: some lie exactly on faces.
         let grid = Grid { origin: DVec3::splat(-0.5), h: 0.25, n: [11, 11, 11] };
-        let inside = inside(&parts, &grid);
+        let budget = Budget::new(crate::core::budget::Limits::default());
+        let inside = inside(&parts, &grid, &budget).expect("in time");
         let within = |p: DVec3, o: f64| (0..3).all(|k| p[k] > o && p[k] < o + 1.0);
         let mut boundary = 0;
         for k in 0..11 {
@@ -269,7 +279,7 @@ mod tests {
             }
         }
         assert!(boundary > 0);
-        let (distance, nearest) = near_surface(&parts, &grid, 0.6);
+        let (distance, nearest) = near_surface(&parts, &grid, 0.6, &budget).expect("in time");
         let s = grid.index(2, 2, 2); // (0, 0, 0): a corner of the first cube
         assert_eq!((distance[s], nearest[s] < 12), (0.0, true));
         let s = grid.index(0, 4, 4); // (-0.5, 0.5, 0.5): half a unit left of it

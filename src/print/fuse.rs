@@ -103,11 +103,9 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     // sample), and eight per triangle (its columns and its neighbourhood).
     budget.charge_steps((len as u64).saturating_add(triangles.saturating_mul(8)))?;
 
-    let inside = field::inside(parts, &grid);
-    budget.check_deadline()?;
+    let inside = field::inside(parts, &grid, budget)?;
     let band = 2.5 * h;
-    let (distance, nearest) = field::near_surface(parts, &grid, band);
-    budget.check_deadline()?;
+    let (distance, nearest) = field::near_surface(parts, &grid, band, budget)?;
     let closed = close(&inside, &grid, closing / h);
     budget.check_deadline()?;
     let (bridge, bridges) = bridges(&inside, &closed, &grid);
@@ -131,7 +129,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let voids = fill_voids(&mut value, &inside, &bridge, &grid);
     drop(bridge);
     budget.check_deadline()?;
-    let (positions, indices) = tetra::surface(&value, &grid);
+    let (positions, indices) = tetra::surface(&value, &grid, budget)?;
     drop(value);
     budget.release_memory(bytes);
     budget.check_deadline()?;
@@ -176,16 +174,15 @@ fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut B
     budget.reserve_memory(bytes)?;
     budget.charge_steps(indices.len() as u64 / 3)?;
     let verts: Vec<f32> = positions.iter().flat_map(|p| p.as_vec3().to_array()).collect();
-    let surface = manifold_rs::Manifold::from_mesh(manifold_rs::Mesh::new(&verts, indices));
-    if surface.is_empty() {
-        return Err(PrintError::Union(format!("the fused surface was not accepted as a manifold (status {})", surface.status())));
-    }
     let timeout = budget.time_left().map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));
-    let simplified = surface.simplify(tolerance, timeout);
+    let simplified = manifold_rs::Manifold::simplified(&manifold_rs::Mesh::new(&verts, indices), tolerance, timeout);
     budget.release_memory(bytes);
     if simplified.status() == manifold_rs::Manifold::CANCELLED {
         budget.check_deadline()?;
         return Err(PrintError::Union("simplifying cancelled at the deadline".into()));
+    }
+    if simplified.status() != 0 || simplified.is_empty() {
+        return Err(PrintError::Union(format!("the fused surface was not accepted as a manifold (status {})", simplified.status())));
     }
     let mesh = simplified.to_mesh();
     let props = mesh.num_props().max(3) as usize;

@@ -120,7 +120,7 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
 fn unite_pieces(placed: &[Solid], budget: &mut Budget) -> Result<Solid, PrintError> {
     let pieces: Vec<Piece<'_>> = placed.iter().map(|p| (p.positions.as_slice(), p.tris.as_slice())).collect();
     let grid = union::snap_grid(&pieces);
-    let (positions, indices) = union::unite(&pieces, grid, None, budget)?;
+    let (positions, indices) = union::unite(&pieces, grid, budget)?;
     // Colours against the snapped pieces: the union's faces lie in them.
     let snapped: Vec<Vec<DVec3>> = placed.iter().map(|p| p.positions.iter().map(|q| union::snap(*q, grid)).collect()).collect();
     let snapped_pieces: Vec<Piece<'_>> = snapped.iter().zip(placed).map(|(s, p)| (s.as_slice(), p.tris.as_slice())).collect();

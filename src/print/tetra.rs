@@ -16,6 +16,7 @@
 //! kissing ones. Written by hand for those reasons.
 
 use super::field::Grid;
+use crate::core::budget::{Budget, LimitExceeded};
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -32,7 +33,8 @@ fn corner(c: u8) -> [i64; 3] {
 /// The zero set of `values` (on `grid`, positive inside) as shared
 /// positions and triangles wound counter-clockwise seen from outside (where
 /// the field is negative). Samples that are exactly zero count as outside.
-pub(super) fn surface(values: &[f32], grid: &Grid) -> (Vec<DVec3>, Vec<u32>) {
+/// Checks the deadline once per layer of cells.
+pub(super) fn surface(values: &[f32], grid: &Grid, budget: &Budget) -> Result<(Vec<DVec3>, Vec<u32>), LimitExceeded> {
     let [nx, ny, nz] = grid.n;
     let mut positions: Vec<DVec3> = Vec::new();
     let mut indices: Vec<u32> = Vec::new();
@@ -40,6 +42,7 @@ pub(super) fn surface(values: &[f32], grid: &Grid) -> (Vec<DVec3>, Vec<u32>) {
     let mut on_edge: HashMap<(usize, usize), u32> = HashMap::new();
     let inside = |s: usize| values.get(s).is_some_and(|v| *v > 0.0);
     for k in 0..nz.saturating_sub(1) {
+        budget.check_deadline()?;
         for j in 0..ny.saturating_sub(1) {
             for i in 0..nx.saturating_sub(1) {
                 let sample = |c: u8| {
@@ -82,7 +85,7 @@ pub(super) fn surface(values: &[f32], grid: &Grid) -> (Vec<DVec3>, Vec<u32>) {
             }
         }
     }
-    (positions, indices)
+    Ok((positions, indices))
 }
 
 /// The sign of the volume of the tetrahedron of corners (p, a, b, c),
@@ -128,7 +131,8 @@ mod tests {
                     }
                 }
             }
-            let (positions, indices) = surface(&values, &grid);
+            let budget = Budget::new(crate::core::budget::Limits::default());
+            let (positions, indices) = surface(&values, &grid, &budget).expect("in time");
             let tris: Vec<[u32; 3]> = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
             let m = HalfEdgeMesh::new(positions, tris).expect("manifold");
             assert!(m.is_closed() && m.nonmanifold_vertices().is_empty());

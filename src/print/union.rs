@@ -210,22 +210,20 @@ pub(super) fn snap(q: DVec3, grid: f64) -> DVec3 {
 /// The union of closed parts, by Manifold's batch union, as shared
 /// positions and CCW triangles, their vertices snapped to `grid` first (0:
 /// not snapped; [`snap_grid`] says why and `make_printable` when).
-/// With `within`, the union is cancelled after that long (a
-/// [`PrintError::Union`] if the deadline has not passed by then).
-pub(super) fn unite(parts: &[Piece<'_>], grid: f64, within: Option<std::time::Duration>, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
+pub(super) fn unite(parts: &[Piece<'_>], grid: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
     let total: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
     // Manifold holds about 200 bytes per triangle while it works (half-edges, collider, properties).
     let bytes = total.saturating_mul(200);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(total.saturating_mul(8))?;
-    let (positions, indices) = batch_union(parts, grid, within, budget)?;
+    let (positions, indices) = batch_union(parts, grid, budget)?;
     budget.release_memory(bytes);
     Ok((positions.iter().map(|p| glam::Vec3::from_array(*p).as_dvec3()).collect(), indices))
 }
 
 /// One batch union of `parts`, their vertices snapped to `grid` (0: not
 /// snapped), cancelled at the budget's deadline.
-fn batch_union(parts: &[Piece<'_>], grid: f64, within: Option<std::time::Duration>, budget: &Budget) -> Result<(Vec<[f32; 3]>, Vec<u32>), PrintError> {
+fn batch_union(parts: &[Piece<'_>], grid: f64, budget: &Budget) -> Result<(Vec<[f32; 3]>, Vec<u32>), PrintError> {
     let manifolds: Vec<manifold_rs::Manifold> = parts
         .iter()
         .map(|p| {
@@ -242,16 +240,12 @@ fn batch_union(parts: &[Piece<'_>], grid: f64, within: Option<std::time::Duratio
     // the corner between them, and the seam they left survived as edges of
     // four faces. The union cannot check the budget itself, so it is
     // cancelled at the deadline (at least a millisecond from now).
-    let left = match (budget.time_left(), within) {
-        (Some(t), Some(w)) => Some(t.min(w)),
-        (t, w) => t.or(w),
-    };
-    let timeout = left.map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));
+    let timeout = budget.time_left().map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));
     let result = manifold_rs::Manifold::batch_union(&manifolds, timeout);
     drop(manifolds);
     if result.status() == manifold_rs::Manifold::CANCELLED {
         budget.check_deadline()?;
-        return Err(PrintError::Union("cancelled at its share of the time".into()));
+        return Err(PrintError::Union("cancelled at the deadline".into()));
     }
     if result.is_empty() {
         return Err(PrintError::Union("the union is empty (a part was rejected by Manifold)".into()));

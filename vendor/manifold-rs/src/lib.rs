@@ -41,9 +41,9 @@ mod ffi {
         /// cancelled after `timeout_ms` milliseconds unless that is 0.
         fn batch_union(parts: &ManifoldVec, timeout_ms: u64) -> UniquePtr<Manifold>;
 
-        /// `m` simplified within `tolerance`, cancelled after `timeout_ms`
-        /// unless 0 (rulemesh addition).
-        fn simplify(m: &Manifold, tolerance: f64, timeout_ms: u64) -> UniquePtr<Manifold>;
+        /// `mesh` imported and simplified within `tolerance`, cancelled
+        /// after `timeout_ms` unless 0 (rulemesh addition).
+        fn simplify_mesh(mesh: &Mesh, tolerance: f64, timeout_ms: u64) -> UniquePtr<Manifold>;
 
         /// Slice the manifold into a set of polygons.
         fn slice(self: &Manifold, height: f64) -> UniquePtr<Polygons>;
@@ -228,13 +228,14 @@ impl Manifold {
         Self(ffi::batch_union(&list, timeout_ms.map_or(0, |t| t.max(1))))
     }
 
-    /// This manifold simplified: Manifold's `Simplify`, which collapses
-    /// edges while the surface moves less than `tolerance` and keeps it
-    /// manifold. With a timeout, cancelled after that many milliseconds
-    /// ([`Manifold::status`] is then [`Manifold::CANCELLED`]) (rulemesh
-    /// addition).
-    pub fn simplify(&self, tolerance: f64, timeout_ms: Option<u64>) -> Self {
-        Self(ffi::simplify(&self.0, tolerance, timeout_ms.map_or(0, |t| t.max(1))))
+    /// `mesh` as a manifold, simplified: Manifold's `Simplify`, which
+    /// collapses edges while the surface moves less than `tolerance` and
+    /// keeps it manifold. With a timeout, the import and the simplification
+    /// are cancelled after that many milliseconds ([`Manifold::status`] is
+    /// then [`Manifold::CANCELLED`]); a mesh that is not manifold gives its
+    /// error status (rulemesh addition).
+    pub fn simplified(mesh: &Mesh, tolerance: f64, timeout_ms: Option<u64>) -> Self {
+        Self(ffi::simplify_mesh(&mesh.0, tolerance, timeout_ms.map_or(0, |t| t.max(1))))
     }
 
     /// Slice the manifold into a set of polygons.

@@ -202,11 +202,16 @@ namespace manifold_rs
         return std::make_unique<Manifold>(std::move(result));
     }
 
-    std::unique_ptr<Manifold> simplify(const Manifold &m, double tolerance, std::uint64_t timeout_ms)
+    std::unique_ptr<Manifold> simplify_mesh(const Mesh &mesh, double tolerance, std::uint64_t timeout_ms)
     {
+        // Both the import (FromMeshGL under the context) and the
+        // simplification check the context, so the watchdog bounds both.
         auto evaluate = [&](::manifold::ExecutionContext &ctx)
         {
-            auto simplified = m.manifold->WithContext(ctx).Simplify(tolerance);
+            auto imported = ctx.FromMeshGL(*mesh.mesh);
+            if (imported.Status() != ::manifold::Manifold::Error::NoError)
+                return imported;
+            auto simplified = imported.WithContext(ctx).Simplify(tolerance);
             simplified.Status(); // evaluates under the context
             return simplified;
         };

@@ -162,11 +162,13 @@ namespace manifold_rs
     /// @return The union, evaluated
     std::unique_ptr<Manifold> batch_union(const ManifoldVec &parts, std::uint64_t timeout_ms);
 
-    /// @brief `m` simplified (Manifold::Simplify: edges collapsed while the
-    ///        surface moves less than `tolerance` and stays manifold)
-    ///        (rulemesh addition)
+    class Mesh;
+
+    /// @brief `mesh` imported and simplified (Manifold::Simplify: edges
+    ///        collapsed while the surface moves less than `tolerance` and
+    ///        stays manifold) (rulemesh addition)
     /// @param timeout_ms Cancel after this many milliseconds (status Cancelled); 0 for no limit
-    std::unique_ptr<Manifold> simplify(const Manifold &m, double tolerance, std::uint64_t timeout_ms);
+    std::unique_ptr<Manifold> simplify_mesh(const Mesh &mesh, double tolerance, std::uint64_t timeout_ms);
 
     /// @brief Extrude a multi-polygon to create a 3D shape
     std::unique_ptr<Manifold> extrude(
