@@ -24,7 +24,7 @@ use super::field::{self, Grid};
 use super::tetra;
 use super::union::Piece;
 use super::PrintError;
-use crate::core::budget::Budget;
+use crate::core::budget::{Budget, LimitExceeded};
 use glam::DVec3;
 
 /// Samples the grid may have: about 8 million (a 203³ cube), some 150 MB
@@ -106,9 +106,9 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let inside = field::inside(parts, &grid, budget)?;
     let band = 2.5 * h;
     let (distance, nearest) = field::near_surface(parts, &grid, band, budget)?;
-    let closed = close(&inside, &grid, closing / h);
+    let closed = close(&inside, &grid, closing / h, budget)?;
     budget.check_deadline()?;
-    let (bridge, bridges) = bridges(&inside, &closed, &grid);
+    let (bridge, bridges) = bridges(&inside, &closed, &grid, budget)?;
     drop(closed);
     budget.check_deadline()?;
 
@@ -118,6 +118,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     if bridges > 0 {
         let mut reach: Vec<f32> = bridge.iter().map(|&b| if b { 0.0 } else { f32::INFINITY }).collect();
         squared_distances(&mut reach, n);
+        budget.check_deadline()?;
         for (v, r) in value.iter_mut().zip(&reach) {
             let ball = (BRIDGE_RADIUS - f64::from(*r).sqrt()) * h;
             *v = v.max(ball as f32);
@@ -174,12 +175,17 @@ fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut B
     budget.reserve_memory(bytes)?;
     budget.charge_steps(indices.len() as u64 / 3)?;
     let verts: Vec<f32> = positions.iter().flat_map(|p| p.as_vec3().to_array()).collect();
-    let timeout = budget.time_left().map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));
+    // Manifold checks for cancellation between its phases, some of which
+    // take a second on a million triangles: cancelled at three quarters of
+    // the time left, it stops before the deadline, and what follows
+    // (placing, measuring, writing) has the rest.
+    let timeout = budget.time_left().map(|t| u64::try_from(t.mul_f64(0.75).as_millis()).unwrap_or(u64::MAX).max(1));
     let simplified = manifold_rs::Manifold::simplified(&manifold_rs::Mesh::new(&verts, indices), tolerance, timeout);
     budget.release_memory(bytes);
     if simplified.status() == manifold_rs::Manifold::CANCELLED {
-        budget.check_deadline()?;
-        return Err(PrintError::Union("simplifying cancelled at the deadline".into()));
+        // Refused as at the deadline: what is left cannot finish the work.
+        let elapsed = u64::try_from(budget.elapsed().as_millis()).unwrap_or(u64::MAX);
+        return Err(LimitExceeded::deadline_passed(budget.limits().timeout_ms, elapsed).into());
     }
     if simplified.status() != 0 || simplified.is_empty() {
         return Err(PrintError::Union(format!("the fused surface was not accepted as a manifold (status {})", simplified.status())));
@@ -266,24 +272,29 @@ fn components(vertices: usize, indices: &[u32]) -> usize {
 /// The morphological closing of `inside` by a ball of `radius` samples:
 /// the samples within the radius of an inside one (the dilation), less
 /// those within the radius of a sample outside the dilation (the erosion).
-fn close(inside: &[bool], grid: &Grid, radius: f64) -> Vec<bool> {
+/// Checks the deadline between the passes.
+fn close(inside: &[bool], grid: &Grid, radius: f64, budget: &Budget) -> Result<Vec<bool>, LimitExceeded> {
     let r2 = (radius * radius) as f32;
     let mut d: Vec<f32> = inside.iter().map(|&i| if i { 0.0 } else { f32::INFINITY }).collect();
     squared_distances(&mut d, grid.n);
+    budget.check_deadline()?;
     // Seeds of the erosion: samples outside the dilation.
     for v in d.iter_mut() {
         *v = if *v <= r2 { f32::INFINITY } else { 0.0 };
     }
     squared_distances(&mut d, grid.n);
-    d.iter().map(|&v| v > r2).collect()
+    Ok(d.iter().map(|&v| v > r2).collect())
 }
 
 /// The samples the closing added that join pieces which were apart: each
 /// connected region of added samples (sharing faces) is kept if it touches
-/// two or more connected pieces of `inside`. Also how many regions were kept.
-fn bridges(inside: &[bool], closed: &[bool], grid: &Grid) -> (Vec<bool>, u64) {
+/// two or more connected pieces of `inside`. Also how many regions were
+/// kept. Checks the deadline between the passes.
+fn bridges(inside: &[bool], closed: &[bool], grid: &Grid, budget: &Budget) -> Result<(Vec<bool>, u64), LimitExceeded> {
     let pieces = label(grid, |s| inside[s]);
+    budget.check_deadline()?;
     let added = label(grid, |s| closed[s] && !inside[s]);
+    budget.check_deadline()?;
     // The pieces each added region touches, as (region, piece) pairs.
     let mut touches: Vec<(u32, u32)> = Vec::new();
     let [nx, ny, nz] = grid.n;
@@ -312,7 +323,7 @@ fn bridges(inside: &[bool], closed: &[bool], grid: &Grid) -> (Vec<bool>, u64) {
     }
     let keep: Vec<bool> = joins.iter().map(|&j| j >= 2).collect();
     let kept = keep.iter().filter(|&&k| k).count() as u64;
-    (added.iter().map(|&r| r != 0 && keep[r as usize]).collect(), kept)
+    Ok((added.iter().map(|&r| r != 0 && keep[r as usize]).collect(), kept))
 }
 
 /// Labels the connected regions (sharing faces) of the samples `member`
