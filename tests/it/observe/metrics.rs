@@ -2,7 +2,7 @@
 //! render once per stage that ran, by language and format; the cache figures
 //! are per tier (memory, disk, and a real Redis shared by two workers).
 
-use super::{client, config, metrics, mdg, render, sample, start, stop, EISEN};
+use super::{client, config, metrics, mdg, mdg_printable, render, sample, start, stop, EISEN};
 use crate::common;
 use crate::scaleout::{free_port, require_redis_server, Redis};
 use rulemesh::service::grpc::pb;
@@ -40,7 +40,7 @@ async fn a_mix_of_requests_shows_per_stage_and_per_tier_figures() {
     for body in [
         json!({"source": lsystem, "format": "scene"}),
         json!({"source": EISEN, "language": "eisenscript", "format": "stl"}),
-        json!({"source": mdg("print"), "format": "stl", "print": true, "size_mm": 30}),
+        json!({"source": mdg_printable("print"), "format": "stl", "print": true, "size_mm": 30}),
     ] {
         let r = render(&base_a, &body).await;
         assert_eq!(r.status(), 200, "{body}");

@@ -42,6 +42,12 @@ pub fn mdg(tag: &str) -> String {
     format!("// {tag}\nstartshape A\nrule A {{ 5 * {{ x 1.5 }} BOX {{ R 0.5 }} SPHERE {{ y 2 }} }}\n")
 }
 
+/// A small MDG source that prints as one solid (overlapping boxes, a ball
+/// on each), tagged like [`mdg`]: printing refuses pieces that do not touch.
+pub fn mdg_printable(tag: &str) -> String {
+    format!("// {tag}\nstartshape A\nrule A {{ 5 * {{ x 0.8 }} BOX {{ R 0.5 }} SPHERE {{ y 0.6 }} }}\n")
+}
+
 /// A small EisenScript.
 pub const EISEN: &str = "set maxdepth 20\n10 * { x 1 } r\nrule r { box }\n";
 

@@ -2,7 +2,7 @@
 //! gRPC response metadata and in the request's JSON log line; its numbers
 //! never add up to more than the request's wall time.
 
-use super::{client, config, header, mdg, render, server_timing, start, stop, EISEN};
+use super::{client, config, header, mdg, mdg_printable, render, server_timing, start, stop, EISEN};
 use crate::common;
 use crate::scaleout::free_port;
 use rulemesh::service::grpc::pb;
@@ -51,7 +51,7 @@ async fn every_model_response_says_where_its_time_went() {
     let cases: Vec<(Value, &[&str])> = vec![
         (json!({"source": mdg("t1"), "format": "glb"}), &mesh),
         (json!({"source": EISEN, "language": "eisenscript", "format": "gltf"}), &mesh),
-        (json!({"source": mdg("t2"), "format": "stl", "print": true, "size_mm": 30}), &["parse", "eval", "mesh", "print", "export"]),
+        (json!({"source": mdg_printable("t2"), "format": "stl", "print": true, "size_mm": 30}), &["parse", "eval", "mesh", "print", "export"]),
         (json!({"source": lsystem, "format": "scene"}), &["parse", "eval", "export"]),
         (json!({"source": mdg("t3"), "format": "strips"}), &mesh),
     ];
