@@ -11,7 +11,7 @@
 //! bridges. The surface is then extracted from the sampled signed distance
 //! with the bridges added, by marching tetrahedra (`tetra`: manifold by
 //! construction, whatever the contacts were), and simplified by Manifold
-//! within a quarter of a sample. Why a distance field and not an outward
+//! within an eighth of a sample. Why a distance field and not an outward
 //! offset of each part before the exact union: the offset doubled triangle
 //! counts and fused only what it pushed into overlap; the closing finds
 //! every contact, point, edge or near miss, at one resolution, and its
@@ -135,10 +135,12 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     budget.release_memory(bytes);
     budget.check_deadline()?;
     // Simplifying can pinch a neck thinner than the tolerance into a vertex
-    // and so split a piece in two: then less, then not at all.
+    // and so split a piece in two: then less, then not at all. (An eighth
+    // of a sample first: a quarter split tree, sphereflake and the knot,
+    // and each failed try costs as much as a success.)
     let pieces = components(positions.len(), &indices);
     let mut simplified = None;
-    for tolerance in [h / 4.0, h / 16.0] {
+    for tolerance in [h / 8.0, h / 16.0] {
         let (p, i) = simplify(&positions, &indices, tolerance, budget)?;
         if components(p.len(), &i) <= pieces {
             simplified = Some((p, i));
@@ -166,7 +168,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
 /// collapse would pinch two sheets together at a vertex, it keeps a copy of
 /// the vertex for each sheet, at one position. A print's STL has positions
 /// only and would weld the copies back into a pinch, so each copy but the
-/// first is moved a hundredth of a sample into its own sheet ([`unpinch`]).
+/// first is moved a sixth of the tolerance into its own sheet ([`unpinch`]).
 /// Why not meshoptimizer's simplifier: its collapses do not check every
 /// link condition, and on these surfaces it made edges of four faces.
 /// Cancelled at the deadline.
@@ -194,7 +196,7 @@ fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut B
     let props = mesh.num_props().max(3) as usize;
     let mut positions: Vec<DVec3> = mesh.vertices().chunks_exact(props).map(|v| glam::Vec3::new(v[0], v[1], v[2]).as_dvec3()).collect();
     let indices = mesh.indices();
-    unpinch(&mut positions, &indices, tolerance / 25.0 * 4.0);
+    unpinch(&mut positions, &indices, tolerance / 6.0);
     Ok((positions, indices))
 }
 

@@ -175,11 +175,12 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
 pub const CLOSING_FRACTION: f64 = 0.01;
 
 /// Most triangles (over all parts) for which the exact union is tried
-/// before fusing. Its cost grows with the triangles that overlap, and past
-/// this the models here either took most of the deadline to come out not
-/// watertight (the plants' tubes, the knot) or ran past it; the truncated
-/// icosahedron, 102,000 triangles, unites exactly in under 3 s.
-pub const EXACT_MAX_TRIANGLES: usize = 150_000;
+/// before fusing. Its cost grows with the triangles that overlap: the
+/// largest model here that prints exactly is hogeweg's 50,208 triangles
+/// (1.1 s); the knot's, spiral-rings' and sic-lattice's 96,000 to 98,304
+/// took most of the deadline to come out not watertight, or ran past it,
+/// and fused they print in 2 to 9 s.
+pub const EXACT_MAX_TRIANGLES: usize = 64_000;
 
 /// The exact union of `pieces`, placed, if it is one watertight shell:
 /// snapped to a grid first (src/print/union.rs, `snap_grid`: parts that

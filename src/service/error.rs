@@ -287,6 +287,10 @@ mod tests {
         let unprintable: ServiceError = RenderError::Unprintable(PrintError::NothingPrintable("only open surfaces".into())).into();
         assert_eq!((unprintable.http_status(), unprintable.code()), (StatusCode::UNPROCESSABLE_ENTITY, "unprintable"));
         assert!(unprintable.to_string().starts_with("print: "), "{unprintable}");
+        // Pieces that do not touch are the model's fault, named by their finding's code.
+        let apart: ServiceError = RenderError::from(PrintError::SeparatePieces { shells: 3, gap_mm: 0.4 }).into();
+        assert_eq!((apart.http_status(), apart.code()), (StatusCode::UNPROCESSABLE_ENTITY, "unprintable"));
+        assert!(apart.to_string().contains("separate_shells") && apart.to_string().contains("3 separate pieces"), "{apart}");
         let size: ServiceError = RenderError::Unprintable(PrintError::BadSize(0.0)).into();
         assert_eq!((size.http_status(), size.code()), (StatusCode::BAD_REQUEST, "bad_request"));
         let wall: ServiceError = RenderError::Unprintable(PrintError::BadMinWall(0.0)).into();
