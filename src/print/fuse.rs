@@ -133,6 +133,10 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let (positions, indices) = tetra::surface(&value, &grid, budget)?;
     drop(value);
     budget.release_memory(bytes);
+    // The extracted surface while it is simplified: its positions (and
+    // their f32 copy for Manifold) and its indices.
+    let surface_bytes = (positions.len() as u64).saturating_mul(24 + 12).saturating_add((indices.len() as u64).saturating_mul(4));
+    budget.reserve_memory(surface_bytes)?;
     budget.check_deadline()?;
     // Simplifying can pinch a neck thinner than the tolerance into a vertex
     // and so split a piece in two: then less, then not at all. (An eighth
@@ -157,6 +161,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
             flat.get(near as usize).or(flat.first()).copied().unwrap_or(super::PLAIN)
         })
         .collect();
+    budget.release_memory(surface_bytes);
     Ok(Fused { positions, indices, colours, closing, spacing: h, bridges, voids })
 }
 
