@@ -238,16 +238,21 @@ pub(super) fn point_triangle_distance(p: DVec3, a: DVec3, b: DVec3, c: DVec3) ->
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::geom::halfedge::HalfEdgeMesh;
 
-    /// A unit cube's corners and outward triangles, moved by `offset`.
-    fn cube(offset: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-        let p: Vec<DVec3> = (0..8).map(|i| DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64) + offset).collect();
+    /// A box's corners and outward triangles, from `lo` to `hi` (for the
+    /// print stage's tests: `fuse`'s too).
+    pub(in crate::print) fn cuboid(lo: DVec3, hi: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        let p: Vec<DVec3> = (0..8).map(|i| DVec3::new([lo.x, hi.x][i & 1], [lo.y, hi.y][(i >> 1) & 1], [lo.z, hi.z][(i >> 2) & 1])).collect();
         let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
-        let t = quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect();
-        (p, t)
+        (p, quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect())
+    }
+
+    /// A unit cube moved by `offset`.
+    fn cube(offset: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        cuboid(offset, offset + DVec3::ONE)
     }
 
     /// Samples inside two overlapping cubes are exactly those within either

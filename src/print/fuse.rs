@@ -385,15 +385,9 @@ fn neighbours_at(grid: &Grid, i: usize, j: usize, k: usize) -> impl Iterator<Ite
 #[cfg(test)]
 mod tests {
     use super::*;
+    use super::super::field::tests::cuboid;
     use crate::core::budget::Limits;
     use crate::geom::halfedge::HalfEdgeMesh;
-
-    /// A box's corners and outward triangles, from `lo` to `hi`.
-    fn cuboid(lo: DVec3, hi: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-        let p: Vec<DVec3> = (0..8).map(|i| DVec3::new([lo.x, hi.x][i & 1], [lo.y, hi.y][(i >> 1) & 1], [lo.z, hi.z][(i >> 2) & 1])).collect();
-        let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
-        (p, quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect())
-    }
 
     /// Fuses boxes, checks the result is closed, manifold and unpinched, and
     /// gives it with its volume and how many pieces it is.
