@@ -259,16 +259,7 @@ fn fill_voids(value: &mut [f32], inside: &[bool], bridge: &[bool], grid: &Grid) 
 
 /// How many pieces the triangles make, joined through shared vertices.
 fn components(vertices: usize, indices: &[u32]) -> usize {
-    let mut root: Vec<u32> = (0..vertices as u32).collect();
-    for t in indices.chunks_exact(3) {
-        let a = super::find_root(&mut root, t[0]);
-        for &c in &t[1..] {
-            let b = super::find_root(&mut root, c);
-            if a != b {
-                root[b as usize] = a;
-            }
-        }
-    }
+    let mut root = super::joined_through_triangles(vertices, indices.chunks_exact(3));
     let mut used = vec![false; vertices];
     for &v in indices {
         used[v as usize] = true;
@@ -313,7 +304,7 @@ fn bridges(inside: &[bool], closed: &[bool], grid: &Grid, budget: &Budget) -> Re
                 if region == 0 {
                     continue;
                 }
-                for t in neighbours(grid, i, j, k) {
+                for (t, _) in neighbours_at(grid, i, j, k) {
                     if pieces[t] != 0 {
                         touches.push((region, pieces[t]));
                     }
@@ -362,11 +353,6 @@ fn label(grid: &Grid, member: impl Fn(usize) -> bool) -> Vec<u32> {
         }
     }
     labels
-}
-
-/// The flat indices of the up to six samples sharing a face with (i, j, k).
-fn neighbours(grid: &Grid, i: usize, j: usize, k: usize) -> impl Iterator<Item = usize> + '_ {
-    neighbours_at(grid, i, j, k).map(|(t, _)| t)
 }
 
 /// The up to six samples sharing a face with (i, j, k): flat index and position.

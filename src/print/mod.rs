@@ -363,16 +363,7 @@ pub const FLAT_SHELL: f64 = 1e-6;
 /// would count as separate shells. Keeps everything if every piece is flat.
 /// Also filters `kept` (each triangle's index in the union) alike.
 fn drop_flat_shells(positions: &[[f32; 3]], indices: Vec<u32>, kept: Vec<usize>) -> (Vec<u32>, Vec<usize>) {
-    let mut root: Vec<u32> = (0..positions.len() as u32).collect();
-    for t in indices.chunks_exact(3) {
-        let a = find_root(&mut root, t[0]);
-        for &c in &t[1..] {
-            let b = find_root(&mut root, c);
-            if a != b {
-                root[b as usize] = a;
-            }
-        }
-    }
+    let mut root = joined_through_triangles(positions.len(), indices.chunks_exact(3));
     let at = |i: u32| glam::Vec3::from_array(positions.get(i as usize).copied().unwrap_or([0.0; 3])).as_dvec3();
     // Per piece (by root): signed volume and bounding box.
     let mut pieces: std::collections::BTreeMap<u32, (f64, glam::DVec3, glam::DVec3)> = std::collections::BTreeMap::new();
@@ -397,6 +388,24 @@ fn drop_flat_shells(positions: &[[f32; 3]], indices: Vec<u32>, kept: Vec<usize>)
         }
     }
     (out, out_kept)
+}
+
+/// A union-find forest over `vertices` vertices in which the corners of
+/// each of `triangles` are joined: [`find_root`] then gives each vertex its
+/// connected piece.
+pub(super) fn joined_through_triangles<'a>(vertices: usize, triangles: impl IntoIterator<Item = &'a [u32]>) -> Vec<u32> {
+    let mut root: Vec<u32> = (0..vertices as u32).collect();
+    for t in triangles {
+        let Some((&first, rest)) = t.split_first() else { continue };
+        let a = find_root(&mut root, first);
+        for &c in rest {
+            let b = find_root(&mut root, c);
+            if a != b {
+                root[b as usize] = a;
+            }
+        }
+    }
+    root
 }
 
 /// The root of `v` in the union-find forest `root` (each entry its parent,

@@ -52,7 +52,6 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
     let mut positions: Vec<DVec3> = Vec::new();
     let mut tris: Vec<[u32; 3]> = Vec::with_capacity(triangles as usize);
     let mut colours: Vec<[u8; 4]> = Vec::with_capacity(triangles as usize);
-    let mut parent: Vec<u32> = Vec::new();
     for m in meshes {
         // Each mesh welds on its own: touching parts of different meshes stay apart.
         let (distinct, remap) = crate::geom::weld::weld_by(m.mesh.positions.iter().copied(), crate::geom::weld::f32_key);
@@ -66,16 +65,7 @@ pub(super) fn split_parts(meshes: &[NamedMesh], wall: f64, budget: &mut Budget) 
         }
     }
     // Union-find over vertices joined by triangles.
-    parent.extend(0..positions.len() as u32);
-    for t in &tris {
-        let a = super::find_root(&mut parent, t[0]);
-        for &c in &t[1..] {
-            let b = super::find_root(&mut parent, c);
-            if a != b {
-                parent[b as usize] = a;
-            }
-        }
-    }
+    let mut parent = super::joined_through_triangles(positions.len(), tris.iter().map(|t| t.as_slice()));
     // Group triangles (their indices) by root, in order of first appearance (deterministic).
     let mut group_of: HashMap<u32, usize> = HashMap::new();
     let mut groups: Vec<Vec<usize>> = Vec::new();
