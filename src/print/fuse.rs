@@ -52,6 +52,14 @@ pub(super) struct Fused {
     pub indices: Vec<u32>,
     /// Each triangle's colour: the nearest part triangle's.
     pub colours: Vec<[u8; 4]>,
+    /// What fusing did, for the report.
+    pub stats: FuseStats,
+}
+
+/// What fusing did: the report's `fused_gap_mm`, `bridges`, `sample_mm`
+/// and `filled_voids`.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct FuseStats {
     /// The closing radius used (model units).
     pub closing: f64,
     /// The sample spacing (model units).
@@ -60,6 +68,13 @@ pub(super) struct Fused {
     pub bridges: u64,
     /// How many enclosed voids were filled.
     pub voids: u64,
+}
+
+impl FuseStats {
+    /// The widest gap closed (model units): twice the closing radius.
+    pub fn gap(&self) -> f64 {
+        2.0 * self.closing
+    }
 }
 
 /// Fuses closed, outward `parts` (with each triangle's colour, parallel to
@@ -162,7 +177,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
         })
         .collect();
     budget.release_memory(surface_bytes);
-    Ok(Fused { positions, indices, colours, closing, spacing: h, bridges, voids })
+    Ok(Fused { positions, indices, colours, stats: FuseStats { closing, spacing: h, bridges, voids } })
 }
 
 /// The surface (shared positions, CCW triangles) simplified by Manifold
@@ -400,7 +415,7 @@ mod tests {
     fn cubes_touching_along_an_edge_become_one_solid() {
         let (fused, volume, chi) = fuse_boxes(&[(DVec3::ZERO, DVec3::ONE), (DVec3::new(1.0, 1.0, 0.0), DVec3::new(2.0, 2.0, 1.0))], 0.02);
         assert_eq!(chi, 2, "one piece, no hole");
-        assert!(fused.bridges >= 1);
+        assert!(fused.stats.bridges >= 1);
         assert!((volume - 2.0).abs() < 0.02, "{volume}");
     }
 
@@ -410,9 +425,9 @@ mod tests {
     fn a_gap_closes_only_below_twice_the_closing_radius() {
         let apart = [(DVec3::ZERO, DVec3::ONE), (DVec3::new(1.1, 0.0, 0.0), DVec3::new(2.1, 1.0, 1.0))];
         let (fused, _, chi) = fuse_boxes(&apart, 0.03);
-        assert_eq!((chi, fused.bridges), (4, 0), "two pieces");
+        assert_eq!((chi, fused.stats.bridges), (4, 0), "two pieces");
         let (fused, volume, chi) = fuse_boxes(&apart, 0.08);
-        assert_eq!((chi, fused.bridges), (2, 1), "bridged");
+        assert_eq!((chi, fused.stats.bridges), (2, 1), "bridged");
         assert!(volume > 2.0 && volume < 2.1, "{volume}");
     }
 
@@ -430,7 +445,7 @@ mod tests {
             })
             .collect();
         let (fused, volume, chi) = fuse_boxes(&slabs, 0.02);
-        assert_eq!((chi, fused.voids), (2, 1));
+        assert_eq!((chi, fused.stats.voids), (2, 1));
         assert!((volume - 1.0).abs() < 0.02, "{volume}");
     }
 }

@@ -141,9 +141,9 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     let mark = budget.mark();
     let triangles: usize = pieces.iter().map(|p| p.1.len()).sum();
     let exact = if triangles <= EXACT_MAX_TRIANGLES { exact_union(&pieces, options.size_um, budget)? } else { None };
-    if let Some(placed) = exact {
+    if let Some((placed, measured)) = exact {
         let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
-        return finish(placed, &colours, &summary, options, budget);
+        return finish(placed, measured, &colours, &summary, options, budget);
     }
     // The exact unions' work is thrown away: refunded (the clock goes on).
     budget.rewind(mark);
@@ -158,14 +158,13 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     };
     let closing = (min_wall / 2.0 / scale).min(CLOSING_FRACTION * extent);
     let fused = fuse::fuse(&pieces, &parts.colours, closing, budget)?;
-    let gap = 2.0 * fused.closing;
-    let summary = PartSummary { fused: Some((gap, fused.bridges, fused.spacing, fused.voids)), ..summary };
+    let summary = PartSummary { fused: Some(fused.stats), ..summary };
     let placed = place((fused.positions, fused.indices), options.size_um);
-    let (mesh, report) = finish(placed, &fused.colours, &summary, options, budget)?;
-    if report.shells > 1 && !options.report {
-        return Err(PrintError::SeparatePieces { shells: report.shells, gap_mm: report.fused_gap_mm });
+    let measured = measure(&placed.scaled, &placed.indices);
+    if measured.shells > 1 && !options.report {
+        return Err(PrintError::SeparatePieces { shells: measured.shells, gap_mm: fused.stats.gap() * placed.scale });
     }
-    Ok((mesh, report))
+    finish(placed, measured, &fused.colours, &summary, options, budget)
 }
 
 /// The largest closing radius of the fused route, as a fraction of the
@@ -189,15 +188,16 @@ pub const EXACT_MAX_TRIANGLES: usize = 64_000;
 /// near miss into a contact along an edge (the truncated icosahedron's
 /// tubes and balls: four edges of four faces), so if the snapped result has
 /// edges not shared by exactly two faces, the parts are united again
-/// unsnapped. `None` if neither is one watertight shell.
-fn exact_union(pieces: &[union::Piece<'_>], size_um: u32, budget: &mut Budget) -> Result<Option<Placed>, PrintError> {
+/// unsnapped. `None` if neither is one watertight shell; else the union
+/// placed, with its measurements.
+fn exact_union(pieces: &[union::Piece<'_>], size_um: u32, budget: &mut Budget) -> Result<Option<(Placed, PrintReport)>, PrintError> {
     for grid in [union::snap_grid(pieces), 0.0] {
         let united = union::unite(pieces, grid, budget)?;
         let placed = place(united, size_um);
         let measured = measure(&placed.scaled, &placed.indices);
         if measured.nonmanifold_edges == 0 {
             // Unsnapped, pieces apart stay apart: no second try.
-            return Ok((measured.is_watertight && measured.shells == 1).then_some(placed));
+            return Ok((measured.is_watertight && measured.shells == 1).then_some((placed, measured)));
         }
     }
     Ok(None)
@@ -207,8 +207,8 @@ fn exact_union(pieces: &[union::Piece<'_>], size_um: u32, budget: &mut Budget) -
 /// once per distinct object, children first (`subtree`), and measures it as
 /// [`make_printable`] does. `None` when the flat route must decide instead:
 /// a leaf shape is not one closed solid, or the union has edges not shared
-/// by exactly two faces (the flat route then tries the parts snapped to the
-/// model's grid and unsnapped).
+/// by exactly two faces or is several pieces (the flat route then tries the
+/// parts snapped to the model's grid and unsnapped, then fusing).
 pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptions, budget: &mut Budget) -> Result<Option<(Vec<NamedMesh>, PrintReport)>, PrintError> {
     options.profile.validate()?;
     // The flat route charges its own work: what this one did is refunded if it gives up.
@@ -220,16 +220,13 @@ pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptio
     let subtree::United { solid, parts, min_extent } = united;
     let indices: Vec<u32> = solid.tris.iter().flatten().copied().collect();
     let placed = place((solid.positions, indices), options.size_um);
-    if report::bad_edges(&placed.scaled, &placed.indices) > 0 {
-        budget.rewind(mark);
-        return Ok(None);
-    }
-    if measure(&placed.scaled, &placed.indices).shells != 1 {
+    let measured = measure(&placed.scaled, &placed.indices);
+    if measured.nonmanifold_edges > 0 || measured.shells != 1 {
         budget.rewind(mark);
         return Ok(None);
     }
     let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0, fused: None };
-    finish(placed, &solid.colours, &summary, options, budget).map(Some)
+    finish(placed, measured, &solid.colours, &summary, options, budget).map(Some)
 }
 
 /// What the report says of the parts that went into a union.
@@ -244,30 +241,29 @@ struct PartSummary {
     min_extent: f64,
     /// The thickness walls were given (model units).
     wall: f64,
-    /// When the parts were fused (`fuse`) rather than united exactly: the
-    /// widest gap closed, the bridges added, the sample spacing (model
-    /// units) and the voids filled.
-    fused: Option<(f64, u64, f64, u64)>,
+    /// What fusing did, when the parts were fused (`fuse`) rather than
+    /// united exactly.
+    fused: Option<fuse::FuseStats>,
 }
 
-/// The printed mesh and its report from a placed union and the colour of
-/// each of its (unplaced) triangles.
-fn finish(placed: Placed, colours: &[[u8; 4]], parts: &PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
+/// The printed mesh and its report from a placed union, its measurements
+/// ([`measure`], taken by the caller to decide on it) and the colour of each
+/// of its (unplaced) triangles.
+fn finish(placed: Placed, mut report: PrintReport, colours: &[[u8; 4]], parts: &PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
     let Placed { scaled, indices, kept, scale, .. } = placed;
     let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
     let mesh = flat_mesh(&scaled, &indices, &colours);
-    let mut report = measure(&scaled, &indices);
     report.parts = parts.parts;
     report.skipped_parts = parts.skipped;
     report.thickened_parts = parts.thickened;
     report.wall_mm = if parts.thickened > 0 { parts.wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
-    if let Some((gap, bridges, spacing, voids)) = parts.fused {
-        report.fused_gap_mm = gap * scale;
-        report.bridges = bridges;
-        report.sample_mm = spacing * scale;
-        report.filled_voids = voids;
+    if let Some(f) = parts.fused {
+        report.fused_gap_mm = f.gap() * scale;
+        report.bridges = f.bridges;
+        report.sample_mm = f.spacing * scale;
+        report.filled_voids = f.voids;
     }
     if options.report {
         let min_wall = options.profile.min_wall_mm();
