@@ -151,10 +151,14 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     // minimum wall at the printed size (but at most a hundredth of the
     // model, so that a model printed at its 1-unit-is-1-mm size does not
     // melt into a blob) are closed, and the surface is re-extracted.
+    // The printed scale: the fused solid spans the parts' box (thickened
+    // walls included), whose longest side becomes `size_mm`.
+    let (plo, phi) = bounds(pieces.iter().flat_map(|p| p.0.iter().copied()));
+    let pieces_extent = (phi - plo).max_element();
     let scale = match options.size_um {
+        _ if !(pieces_extent > 0.0 && pieces_extent.is_finite()) => 1.0,
         0 => 1.0,
-        _ if extent > 0.0 => f64::from(options.size_um) / 1000.0 / (extent + 2.0 * wall),
-        _ => 1.0,
+        size => f64::from(size) / 1000.0 / pieces_extent,
     };
     let closing = (min_wall / 2.0 / scale).min(CLOSING_FRACTION * extent);
     let fused = fuse::fuse(&pieces, &parts.colours, closing, budget)?;
