@@ -109,8 +109,9 @@ impl Grid {
 }
 
 /// The distance from `p` to the triangle `t` (closest point by Voronoi
-/// region, Ericson, *Real-Time Collision Detection* §5.1.5).
-fn distance_to_triangle(p: DVec3, t: &[DVec3; 3]) -> f64 {
+/// region, Ericson, *Real-Time Collision Detection* §5.1.5). Also what
+/// `field` samples the parts' distance with.
+pub(super) fn distance_to_triangle(p: DVec3, t: &[DVec3; 3]) -> f64 {
     let [a, b, c] = *t;
     let (ab, ac, ap) = (b - a, c - a, p - a);
     let (d1, d2) = (ab.dot(ap), ac.dot(ap));

@@ -2,6 +2,7 @@
 //! it, and how far each sample near the surface is from the nearest part
 //! triangle. What `fuse` closes gaps on and extracts a surface from.
 
+use super::colour::distance_to_triangle;
 use super::union::Piece;
 use crate::core::budget::{Budget, LimitExceeded};
 use glam::DVec3;
@@ -180,7 +181,7 @@ pub(super) fn near_surface(parts: &[Piece<'_>], grid: &Grid, band: f64, budget: 
                 for j in grid.span(1, lo.y, hi.y) {
                     for i in grid.span(0, lo.x, hi.x) {
                         let s = grid.index(i, j, k);
-                        let d = point_triangle_distance(grid.at(i, j, k), a, b, c) as f32;
+                        let d = distance_to_triangle(grid.at(i, j, k), &[a, b, c]) as f32;
                         if d < distance[s] {
                             distance[s] = d;
                             nearest[s] = index;
@@ -192,49 +193,6 @@ pub(super) fn near_surface(parts: &[Piece<'_>], grid: &Grid, band: f64, budget: 
         }
     }
     Ok((distance, nearest))
-}
-
-/// The distance from `p` to triangle (a, b, c): Ericson's closest point on
-/// a triangle (Real-Time Collision Detection, 5.1.5), by the region of the
-/// triangle's plane that `p` projects into.
-pub(super) fn point_triangle_distance(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> f64 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return ap.length();
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return bp.length();
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        let v = d1 / (d1 - d3);
-        return (p - (a + ab * v)).length();
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return cp.length();
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        let w = d2 / (d2 - d6);
-        return (p - (a + ac * w)).length();
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
-        let w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return (p - (b + (c - b) * w)).length();
-    }
-    let denom = va + vb + vc;
-    if !(denom.abs() > 0.0) {
-        // A degenerate triangle: the nearest of its corners.
-        return ap.length().min(bp.length()).min(cp.length());
-    }
-    let (v, w) = (vb / denom, vc / denom);
-    (p - (a + ab * v + ac * w)).length()
 }
 
 #[cfg(test)]
