@@ -212,10 +212,8 @@ fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut B
     if simplified.status() != 0 || simplified.is_empty() {
         return Err(PrintError::Union(format!("the fused surface was not accepted as a manifold (status {})", simplified.status())));
     }
-    let mesh = simplified.to_mesh();
-    let props = mesh.num_props().max(3) as usize;
-    let mut positions: Vec<DVec3> = mesh.vertices().chunks_exact(props).map(|v| glam::Vec3::new(v[0], v[1], v[2]).as_dvec3()).collect();
-    let indices = mesh.indices();
+    let (positions, indices) = super::union::triangles_of(&simplified);
+    let mut positions: Vec<DVec3> = positions.iter().map(|p| glam::Vec3::from_array(*p).as_dvec3()).collect();
     unpinch(&mut positions, &indices, tolerance / 6.0);
     Ok((positions, indices))
 }

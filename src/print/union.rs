@@ -240,8 +240,14 @@ fn batch_union(parts: &[Piece<'_>], grid: f64, budget: &Budget) -> Result<(Vec<[
     if result.is_empty() {
         return Err(PrintError::Union("the union is empty (a part was rejected by Manifold)".into()));
     }
-    let mesh = result.to_mesh();
+    Ok(triangles_of(&result))
+}
+
+/// A manifold's positions (the first three of each vertex's properties)
+/// and triangles.
+pub(super) fn triangles_of(m: &manifold_rs::Manifold) -> (Vec<[f32; 3]>, Vec<u32>) {
+    let mesh = m.to_mesh();
     let props = mesh.num_props().max(3) as usize;
     let positions: Vec<[f32; 3]> = mesh.vertices().chunks_exact(props).map(|v| [v[0], v[1], v[2]]).collect();
-    Ok((positions, mesh.indices()))
+    (positions, mesh.indices())
 }
