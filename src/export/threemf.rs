@@ -97,10 +97,11 @@ fn display_colour(c: [u8; 4]) -> String {
     }
 }
 
-/// The model XML for `meshes` coloured from `colours` (their
-/// [`palette`]), with the core `Application` metadata and, when given, the
-/// model's provenance as `rulemesh:` metadata.
-fn model_xml(meshes: &[NamedMesh], colours: &[[u8; 4]], provenance: Option<&Provenance>) -> String {
+/// The model XML for `meshes` (each with its welded points and triangles,
+/// `welded`) coloured from `colours` (their [`palette`]), with the core
+/// `Application` metadata and, when given, the model's provenance as
+/// `rulemesh:` metadata.
+fn model_xml(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], provenance: Option<&Provenance>) -> String {
     let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"");
     if provenance.is_some() {
         let _ = write!(s, " xmlns:rulemesh=\"{PROVENANCE_NAMESPACE}\"");
@@ -119,17 +120,16 @@ fn model_xml(meshes: &[NamedMesh], colours: &[[u8; 4]], provenance: Option<&Prov
     }
     s.push_str("</basematerials>\n");
     let mut ids = Vec::new();
-    for (k, m) in meshes.iter().enumerate().filter(|(_, m)| m.mesh.triangle_count() > 0) {
+    for (k, (m, (points, tris))) in meshes.iter().zip(welded).enumerate().filter(|(_, (m, _))| m.mesh.triangle_count() > 0) {
         let id = MATERIALS_ID + k + 1;
         ids.push(id);
         let default = index.get(&triangle_colour(&m.mesh, 0)).copied().unwrap_or(0);
         let _ = writeln!(s, "<object id=\"{id}\" type=\"model\" pid=\"{MATERIALS_ID}\" pindex=\"{default}\"><mesh><vertices>");
-        let (points, tris) = super::welded(&m.mesh);
-        for p in &points {
+        for p in points {
             let _ = writeln!(s, "<vertex x=\"{}\" y=\"{}\" z=\"{}\"/>", p[0], p[1], p[2]);
         }
         s.push_str("</vertices><triangles>\n");
-        for (t, [a, b, c]) in tris {
+        for &(t, [a, b, c]) in tris {
             match index.get(&triangle_colour(&m.mesh, t)).copied().unwrap_or(default) {
                 p if p == default => {
                     let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
@@ -149,11 +149,22 @@ fn model_xml(meshes: &[NamedMesh], colours: &[[u8; 4]], provenance: Option<&Prov
     s
 }
 
+/// A mesh's shared points and its triangles (each with its index in the mesh).
+type Welded = (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>);
+
 /// Writes a 3MF package (with `provenance` as metadata when given),
 /// reserving its worst-case size first.
 pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    let v: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
+    // 3MF shares vertices: the estimate counts the welded ones (a printed
+    // solid's flat mesh has three positions per triangle, about six times
+    // as many as it shares; counted unwelded, the Sierpinski bush's million
+    // triangles asked for 480 MB). The welded copy is reserved first.
+    let positions: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
+    let weld_bytes = positions.saturating_mul(12 + 4).saturating_add(t.saturating_mul(20));
+    budget.reserve_memory(weld_bytes)?;
+    let welded: Vec<Welded> = meshes.iter().map(|m| super::welded(&m.mesh)).collect();
+    let v: u64 = welded.iter().map(|w| w.0.len() as u64).sum();
     // The XML text and the zip each hold about the estimate (plus the
     // colours: the materials and the triangles of their own colour); both
     // live at once.
@@ -161,7 +172,8 @@ pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: 
     let colour_bytes = (colours.len() as u64).saturating_mul(MATERIAL_BYTES).saturating_add(own.saturating_mul(TRIANGLE_COLOUR_BYTES));
     let bytes = super::estimated_size(super::Format::ThreeMf, v, t).saturating_add(colour_bytes).saturating_mul(2);
     budget.reserve_memory(bytes)?;
-    let xml = model_xml(meshes, &colours, provenance);
+    let xml = model_xml(meshes, &welded, &colours, provenance);
+    drop(welded);
     // The XML is most of the work; compressing it is the rest.
     budget.check_deadline()?;
     let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
@@ -172,6 +184,6 @@ pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: 
         zip.write_all(body.as_bytes()).map_err(|e| fail(&e))?;
     }
     let out = zip.finish().map_err(|e| fail(&e))?.into_inner();
-    budget.release_memory(bytes);
+    budget.release_memory(bytes.saturating_add(weld_bytes));
     Ok(out)
 }

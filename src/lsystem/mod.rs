@@ -24,6 +24,7 @@ use crate::core::timing::{Phase, StageClock};
 use crate::core::PrimitiveKind;
 use crate::geom::{primitives, sweep};
 use crate::lang::{etol, lsystem as lang_ls, Language};
+use crate::model::request::EXACT_UNION_MAX_TRIANGLES;
 use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, HierarchyUse, Model};
 
 pub use derive::{derive, Derivation, ModuleString};
@@ -61,15 +62,17 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         },
     };
     let wants = match req.hierarchy {
-        HierarchyUse::Required | HierarchyUse::Preferred => dag.is_some(),
-        // Printing unites the turtle's mitred sweeps (their runs meet face
-        // to face), not the hierarchy's capped tube segments; flat strips
-        // sweep the segments into tubes too.
-        HierarchyUse::Never | HierarchyUse::Union | HierarchyUse::Streamed => false,
+        HierarchyUse::Required | HierarchyUse::Preferred | HierarchyUse::Union => dag.is_some(),
+        // Flat strips sweep the segments into tubes.
+        HierarchyUse::Never | HierarchyUse::Streamed => false,
     };
     if wants {
         let mark = budget.mark();
         match hierarchy(&sys, dag.as_ref(), seed, req, budget) {
+            // Printing unites the turtle's mitred sweeps (their runs meet
+            // face to face) where that union is tried exactly; the
+            // hierarchy's capped segments only above that size.
+            Ok(h) if req.hierarchy == HierarchyUse::Union && h.triangles(req.detail) <= EXACT_UNION_MAX_TRIANGLES => budget.rewind(mark),
             Ok(h) => {
                 let primitives = h.leaves();
                 return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), primitives, warnings: sys.warnings, promised: 0, seed });

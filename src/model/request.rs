@@ -54,8 +54,19 @@ pub enum HierarchyUse {
     /// works once per distinct subtree (`print::make_printable_hierarchy`)
     /// and falls back to the expansion; else flat geometry. The limits
     /// charge the expansion's leaves and triangles, as flat geometry.
+    /// L-systems give theirs only when its expansion has more than
+    /// [`EXACT_UNION_MAX_TRIANGLES`]: below, the flat route unites the
+    /// turtle's mitred sweeps exactly, and the print is what it always was.
     Union,
 }
+
+/// Most triangles whose flat union the print stage tries exactly
+/// (`print::EXACT_MAX_TRIANGLES` is this). Above it a flat model is fused
+/// (sampled), so an L-system's hierarchy, whose capped segments are united
+/// exactly once per distinct subtree, is offered instead (the Sierpinski
+/// bush: one exact shell in about 5 s, where fusing cannot resolve its
+/// tubes within the limits).
+pub const EXACT_UNION_MAX_TRIANGLES: u64 = 64_000;
 
 /// One front end call: everything besides the source that decides the model.
 #[derive(Debug, Clone, Copy)]

@@ -17,6 +17,7 @@ pub mod findings;
 mod fuse;
 pub mod profile;
 mod report;
+mod rigid;
 mod subtree;
 mod tetra;
 pub mod thickness;
@@ -147,10 +148,16 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     }
     // The exact unions' work is thrown away: refunded (the clock goes on).
     budget.rewind(mark);
-    // Contacts become connections: gaps narrower than the printer's
-    // minimum wall at the printed size (but at most a hundredth of the
-    // model, so that a model printed at its 1-unit-is-1-mm size does not
-    // melt into a blob) are closed, and the surface is re-extracted.
+    fused(&pieces, &parts.colours, extent, summary, options, budget)
+}
+
+/// Contacts become connections: `pieces` (closed, outward) fused into one
+/// solid with gaps narrower than the printer's minimum wall at the printed
+/// size closed (but at most a hundredth of `extent`, the model's longest
+/// side, so that a model printed at its 1-unit-is-1-mm size does not melt
+/// into a blob), and the surface re-extracted; refused as separate pieces
+/// if it is still more than one (unless the report is asked for).
+fn fused(pieces: &[union::Piece<'_>], colours: &[Vec<[u8; 4]>], extent: f64, summary: PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
     // The printed scale: the fused solid spans the parts' box (thickened
     // walls included), whose longest side becomes `size_mm`.
     let (plo, phi) = bounds(pieces.iter().flat_map(|p| p.0.iter().copied()));
@@ -160,8 +167,8 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
         0 => 1.0,
         size => f64::from(size) / 1000.0 / pieces_extent,
     };
-    let closing = (min_wall / 2.0 / scale).min(CLOSING_FRACTION * extent);
-    let fused = fuse::fuse(&pieces, &parts.colours, closing, budget)?;
+    let closing = (options.profile.min_wall_mm() / 2.0 / scale).min(CLOSING_FRACTION * extent);
+    let fused = fuse::fuse(pieces, colours, closing, budget)?;
     let summary = PartSummary { fused: Some(fused.stats), ..summary };
     let placed = place((fused.positions, fused.indices), options.size_um);
     let measured = measure(&placed.scaled, &placed.indices);
@@ -183,7 +190,7 @@ pub const CLOSING_FRACTION: f64 = 0.01;
 /// (1.1 s); the knot's, spiral-rings' and sic-lattice's 96,000 to 98,304
 /// took most of the deadline to come out not watertight, or ran past it,
 /// and fused they print in 2 to 9 s.
-pub const EXACT_MAX_TRIANGLES: usize = 64_000;
+pub const EXACT_MAX_TRIANGLES: usize = crate::model::request::EXACT_UNION_MAX_TRIANGLES as usize;
 
 /// The exact union of `pieces`, placed, if it is one watertight shell:
 /// snapped to a grid first (src/print/union.rs, `snap_grid`: parts that
@@ -225,12 +232,25 @@ pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptio
     let indices: Vec<u32> = solid.tris.iter().flatten().copied().collect();
     let placed = place((solid.positions, indices), options.size_um);
     let measured = measure(&placed.scaled, &placed.indices);
-    if measured.nonmanifold_edges > 0 || measured.shells != 1 {
-        budget.rewind(mark);
-        return Ok(None);
-    }
     let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0, fused: None };
-    finish(placed, measured, &solid.colours, &summary, options, budget).map(Some)
+    if measured.nonmanifold_edges == 0 && measured.shells == 1 {
+        return finish(placed, measured, &solid.colours, &summary, options, budget).map(Some);
+    }
+    if !h.is_scaled() {
+        // A rigid hierarchy's union (L-systems': capped segments) is one
+        // closed surface in Manifold, but where parts only kiss, at a point
+        // or along an edge (a plant's leaf on its twig), its vertices meet
+        // once written in f32, or it is pieces: fused, as the flat route
+        // would fuse its parts, but from the union, whose triangles are a
+        // fraction of the parts' (and without expanding the segments).
+        let positions = placed.united.0;
+        let (lo, hi) = bounds(positions.iter().copied());
+        let extent = (hi - lo).max_element();
+        let tris = solid.tris;
+        return fused(&[(positions.as_slice(), tris.as_slice())], &[solid.colours], extent, summary, options, budget).map(Some);
+    }
+    budget.rewind(mark);
+    Ok(None)
 }
 
 /// What the report says of the parts that went into a union.
@@ -254,7 +274,7 @@ struct PartSummary {
 /// ([`measure`], taken by the caller to decide on it) and the colour of each
 /// of its (unplaced) triangles.
 fn finish(placed: Placed, mut report: PrintReport, colours: &[[u8; 4]], parts: &PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
-    let Placed { scaled, indices, kept, scale, .. } = placed;
+    let Placed { scaled, indices, kept, scale, voids, .. } = placed;
     let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
     let mesh = flat_mesh(&scaled, &indices, &colours);
     report.parts = parts.parts;
@@ -263,11 +283,12 @@ fn finish(placed: Placed, mut report: PrintReport, colours: &[[u8; 4]], parts: &
     report.wall_mm = if parts.thickened > 0 { parts.wall * scale } else { 0.0 };
     report.min_feature_mm = parts.min_extent * scale;
     report.scale = scale;
+    report.filled_voids = voids;
     if let Some(f) = parts.fused {
         report.fused_gap_mm = f.gap() * scale;
         report.bridges = f.bridges;
         report.sample_mm = f.spacing * scale;
-        report.filled_voids = f.voids;
+        report.filled_voids += f.voids;
     }
     if options.report {
         let min_wall = options.profile.min_wall_mm();
@@ -296,6 +317,8 @@ struct Placed {
     kept: Vec<usize>,
     /// Millimetres per model unit.
     scale: f64,
+    /// Enclosed voids filled (their walls dropped).
+    voids: u64,
 }
 
 /// Places a union (`size_um` 0: one model unit is a millimetre).
@@ -316,8 +339,8 @@ fn place(united: (Vec<glam::DVec3>, Vec<u32>), size_um: u32) -> Placed {
     // (trimesh merges within 1e-8) fuse into non-manifold edges: collapse
     // edges shorter than a millionth of the size.
     let (scaled, indices, kept) = collapse_short_edges(scaled, &united.1, (longest * scale) * 1e-6);
-    let (indices, kept) = drop_flat_shells(&scaled, indices, kept);
-    Placed { united, scaled, indices, kept, scale }
+    let (indices, kept, voids) = drop_flat_shells(&scaled, indices, kept);
+    Placed { united, scaled, indices, kept, scale, voids }
 }
 
 /// Merges the two ends of every edge shorter than `eps` (and vertices at
@@ -360,9 +383,14 @@ pub const FLAT_SHELL: f64 = 1e-6;
 /// the solid where faces of parts coincide (the ring's 6-triangle sheet
 /// 0.8 mm across, the lamp shade's 4-triangle one; |volume| about 10⁻⁹ of
 /// their diagonal cubed, a real piece 10⁻³ or more). They print nothing and
-/// would count as separate shells. Keeps everything if every piece is flat.
-/// Also filters `kept` (each triangle's index in the union) alike.
-fn drop_flat_shells(positions: &[[f32; 3]], indices: Vec<u32>, kept: Vec<usize>) -> (Vec<u32>, Vec<usize>) {
+/// would count as separate shells. Also fills enclosed voids: a piece
+/// wound inward (negative volume) is the wall of a cavity inside the solid
+/// (where tubes cross, the Sierpinski bush's union closes 18 tetrahedral
+/// pockets of 3·10⁻⁷ mm³), which would trap resin or powder and count as
+/// a shell; dropping its wall fills it, as fusing fills voids. Keeps
+/// everything if nothing would be left. Also filters `kept` (each
+/// triangle's index in the union) alike, and says how many voids it filled.
+fn drop_flat_shells(positions: &[[f32; 3]], indices: Vec<u32>, kept: Vec<usize>) -> (Vec<u32>, Vec<usize>, u64) {
     let mut root = joined_through_triangles(positions.len(), indices.chunks_exact(3));
     let at = |i: u32| glam::Vec3::from_array(positions.get(i as usize).copied().unwrap_or([0.0; 3])).as_dvec3();
     // Per piece (by root): signed volume and bounding box.
@@ -375,19 +403,21 @@ fn drop_flat_shells(positions: &[[f32; 3]], indices: Vec<u32>, kept: Vec<usize>)
         e.1 = e.1.min(a).min(b).min(c);
         e.2 = e.2.max(a).max(b).max(c);
     }
-    let flat: std::collections::BTreeSet<u32> = pieces.iter().filter(|(_, (v, lo, hi))| v.abs() <= FLAT_SHELL * (*hi - *lo).length().powi(3)).map(|(r, _)| *r).collect();
-    if flat.is_empty() || flat.len() == pieces.len() {
-        return (indices, kept);
+    let flat = |v: f64, lo: glam::DVec3, hi: glam::DVec3| v.abs() <= FLAT_SHELL * (hi - lo).length().powi(3);
+    let dropped: std::collections::BTreeSet<u32> = pieces.iter().filter(|(_, (v, lo, hi))| *v < 0.0 || flat(*v, *lo, *hi)).map(|(r, _)| *r).collect();
+    if dropped.is_empty() || dropped.len() == pieces.len() {
+        return (indices, kept, 0);
     }
+    let voids = pieces.iter().filter(|(r, (v, lo, hi))| dropped.contains(r) && !flat(*v, *lo, *hi)).count() as u64;
     let mut out = Vec::with_capacity(indices.len());
     let mut out_kept = Vec::with_capacity(kept.len());
     for (t, k) in indices.chunks_exact(3).zip(kept) {
-        if !flat.contains(&find_root(&mut root, t[0])) {
+        if !dropped.contains(&find_root(&mut root, t[0])) {
             out.extend_from_slice(t);
             out_kept.push(k);
         }
     }
-    (out, out_kept)
+    (out, out_kept, voids)
 }
 
 /// A union-find forest over `vertices` vertices in which the corners of

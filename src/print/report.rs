@@ -37,7 +37,8 @@ pub struct PrintReport {
     pub fused_gap_mm: f64,
     /// Connections the fused route added between pieces that were apart.
     pub bridges: u64,
-    /// Enclosed voids the fused route filled (they would trap material).
+    /// Enclosed voids filled (they would trap material): by the fused
+    /// route before extraction, or by dropping the inward shells of an exact union.
     pub filled_voids: u64,
     /// The fused route's sample spacing (mm): its surface is within about
     /// this of the parts' (sharp edges are rounded by about as much); 0 when
@@ -154,7 +155,7 @@ pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
 /// Undirected edges (vertices welded by position) not used exactly once in each direction.
 pub(super) fn bad_edges(positions: &[[f32; 3]], indices: &[u32]) -> u64 {
     let key = |i: u32| positions.get(i as usize).map_or([0; 3], |p| p.map(f32::to_bits));
-    let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32)> = std::collections::HashMap::new();
+    let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32), rustc_hash::FxBuildHasher> = std::collections::HashMap::default();
     for t in indices.chunks_exact(3) {
         for k in 0..3 {
             let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));

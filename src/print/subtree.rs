@@ -66,6 +66,10 @@ pub(super) fn unite_hierarchy(h: &Hierarchy, detail: u32, budget: &mut Budget) -
     };
     budget.charge_steps(h.leaves())?;
     let Some(min_extent) = min_extent(h, &leaves) else { return Ok(None) };
+    if !h.is_scaled() {
+        // Rigid (L-systems): kept in Manifold's double precision between levels.
+        return Ok(super::rigid::unite_rigid(h, &leaves, budget)?.map(|solid| United { solid, parts: h.leaves(), min_extent }));
+    }
     let used = h.multiplicities();
     let mut solids: Vec<Solid> = Vec::with_capacity(h.objects.len());
     let mut held = 0u64;

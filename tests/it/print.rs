@@ -97,18 +97,35 @@ fn every_grammar_prints_given_time() {
     assert!(printed.printed.len() >= 25, "only {} of {} grammars were checked in full: {:?}", printed.printed.len(), grammars.len(), printed.refused);
 }
 
-/// The Sierpinski bush: a 35,310-tube union that takes minutes per run
-/// (issue 16 wants it under 10 s). Three runs of it were a third of CI's
-/// time, so it is a long run: `<it-binary> print --ignored` (docs/print.md).
+/// The Sierpinski bush (35,310 tubes) has a test of its own, below.
 fn is_the_bush(g: &Path) -> bool {
     g.file_stem().and_then(|s| s.to_str()) == Some("sierpinski-bush")
 }
 
-/// The every-grammar check for the Sierpinski bush alone (see [`is_the_bush`]).
+/// The Sierpinski bush prints at default limits, STL and 3MF, as one
+/// watertight shell (united once per distinct subtree, kept in Manifold's
+/// double precision: `print::rigid`). Issue 16's 10 s is measured in
+/// `scripts/bench` (docs/benchmarks.md), not here: the suite's other tests
+/// share the cores, so a refusal at the default deadline is retried with
+/// the ceiling's, and the solid is checked either way.
 #[test]
-#[ignore = "minutes per run: a long run (docs/print.md)"]
-fn the_sierpinski_bush_prints_as_one_watertight_solid_or_says_why_not() {
-    prints_as_one_watertight_solid_or_says_why_not(&[repo().join("grammars/sierpinski-bush.ls")], Deadline::Patient);
+fn the_sierpinski_bush_prints_as_one_watertight_solid() {
+    let bush = [repo().join("grammars/sierpinski-bush.ls")];
+    let mut outcome = prints_as_one_watertight_solid_or_says_why_not(&bush, Deadline::Default);
+    if outcome.refused.iter().any(|(_, _, why)| why.contains("limit exceeded: deadline")) {
+        outcome = prints_as_one_watertight_solid_or_says_why_not(&bush, Deadline::Patient);
+    }
+    assert_eq!(outcome.printed.len(), 1, "{:?}", outcome.refused);
+    // The same solid on every machine: Manifold's union is deterministic.
+    let dir = tempdir();
+    let stl = dir.path().join("bush.stl");
+    let out = render(&bush[0], &stl, &[]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let a = admesh(&stl);
+    assert_eq!(a.facets, 1_007_446, "{}", a.raw);
+    // The tubes' volume less their overlaps (Manifold 3.5.4 in Python, from
+    // the same turtle: 11,677.2 mm³).
+    assert!((a.volume - 11_677.0).abs() < 10.0, "{}", a.volume);
 }
 
 /// Whether a failed print was refused at a limit, a typed refusal that

@@ -45,6 +45,21 @@ mod ffi {
         /// after `timeout_ms` unless 0 (rulemesh addition).
         fn simplify_mesh(mesh: &Mesh, tolerance: f64, timeout_ms: u64) -> UniquePtr<Manifold>;
 
+        /// The manifold placed by a 3x4 column-major affine map (rulemesh addition).
+        fn transformed(self: &Manifold, m: &[f64]) -> UniquePtr<Manifold>;
+
+        /// The manifold marked as an original with a new ID (rulemesh addition).
+        fn as_original(self: &Manifold) -> UniquePtr<Manifold>;
+
+        /// The original ID, -1 for a product of booleans (rulemesh addition).
+        fn original_id(self: &Manifold) -> i32;
+
+        /// Number of triangles (rulemesh addition).
+        fn num_tri(self: &Manifold) -> usize;
+
+        /// Manifold's Simplify within `tolerance` (rulemesh addition).
+        fn simplify(self: &Manifold, tolerance: f64) -> UniquePtr<Manifold>;
+
         /// Slice the manifold into a set of polygons.
         fn slice(self: &Manifold, height: f64) -> UniquePtr<Polygons>;
 
@@ -156,6 +171,12 @@ mod ffi {
         /// Get the indices of the mesh.
         fn indices(self: &Mesh) -> UniquePtr<CxxVector<u32>>;
 
+        /// The original ID of each run of triangles (rulemesh addition).
+        fn run_original_ids(self: &Mesh) -> UniquePtr<CxxVector<u32>>;
+
+        /// Where each run starts in the indices, then their length (rulemesh addition).
+        fn run_indices(self: &Mesh) -> UniquePtr<CxxVector<u32>>;
+
         /// Create a mesh from a manifold.
         fn mesh_from_manifold(manifold: &Manifold) -> UniquePtr<Mesh>;
 
@@ -236,6 +257,42 @@ impl Manifold {
     /// error status (rulemesh addition).
     pub fn simplified(mesh: &Mesh, tolerance: f64, timeout_ms: Option<u64>) -> Self {
         Self(ffi::simplify_mesh(&mesh.0, tolerance, timeout_ms.map_or(0, |t| t.max(1))))
+    }
+
+    /// The manifold placed by the affine map `m`: three columns of its
+    /// linear part, then the translation (column-major 3x4). Manifold
+    /// applies it in double precision, lazily, so a shared manifold placed
+    /// many times is stored once and flat faces stay exactly flat
+    /// (rulemesh addition).
+    pub fn transformed(&self, m: &[f64; 12]) -> Self {
+        Self(self.0.transformed(m))
+    }
+
+    /// The same manifold marked as an original: its triangles carry a new
+    /// original ID through later booleans, which [`Mesh::run_original_ids`]
+    /// reports, so a union's triangles can be traced to the part they came
+    /// from (rulemesh addition).
+    pub fn as_original(&self) -> Self {
+        Self(self.0.as_original())
+    }
+
+    /// The original ID of a manifold made by [`Manifold::as_original`]; -1
+    /// for a product of booleans (rulemesh addition).
+    pub fn original_id(&self) -> i32 {
+        self.0.original_id()
+    }
+
+    /// Number of triangles; evaluates a deferred boolean (rulemesh addition).
+    pub fn num_tri(&self) -> usize {
+        self.0.num_tri()
+    }
+
+    /// Manifold's `Simplify`: edges collapsed wherever the surface moves
+    /// less than `tolerance` (0: its own tolerance, about the precision of
+    /// its coordinates, so only vertices in the middle of flat faces and
+    /// straight edges go), and the result stays manifold (rulemesh addition).
+    pub fn simplify(&self, tolerance: f64) -> Self {
+        Self(self.0.simplify(tolerance))
     }
 
     /// Slice the manifold into a set of polygons.
@@ -428,6 +485,18 @@ impl Mesh {
         let indices_binding = self.0.indices();
         let indices = indices_binding.as_ref().unwrap().as_slice();
         indices.to_vec()
+    }
+
+    /// The original ID of each run of triangles: run `r` is triangles
+    /// `run_indices[r] / 3 .. run_indices[r + 1] / 3` (rulemesh addition).
+    pub fn run_original_ids(&self) -> Vec<u32> {
+        self.0.run_original_ids().as_ref().map(|v| v.as_slice().to_vec()).unwrap_or_default()
+    }
+
+    /// Where each run of triangles starts in [`Mesh::indices`], and after
+    /// the last run, the indices' length (rulemesh addition).
+    pub fn run_indices(&self) -> Vec<u32> {
+        self.0.run_indices().as_ref().map(|v| v.as_slice().to_vec()).unwrap_or_default()
     }
 
     /// Get the manifold representation of the mesh.

@@ -70,6 +70,36 @@ namespace manifold_rs
         return std::make_unique<Manifold>(manifold->Translate({x, y, z}));
     }
 
+    std::unique_ptr<Manifold> Manifold::transformed(rust::Slice<const double> m) const
+    {
+        // rulemesh addition: a rigid or similarity placement, kept in double precision.
+        assert(m.size() == 12);
+        ::manifold::mat3x4 t;
+        for (int c = 0; c < 4; ++c)
+            t[c] = ::manifold::vec3(m[3 * c], m[3 * c + 1], m[3 * c + 2]);
+        return std::make_unique<Manifold>(manifold->Transform(t));
+    }
+
+    std::unique_ptr<Manifold> Manifold::as_original() const
+    {
+        return std::make_unique<Manifold>(manifold->AsOriginal());
+    }
+
+    std::int32_t Manifold::original_id() const
+    {
+        return manifold->OriginalID();
+    }
+
+    std::size_t Manifold::num_tri() const
+    {
+        return manifold->NumTri();
+    }
+
+    std::unique_ptr<Manifold> Manifold::simplify(double tolerance) const
+    {
+        return std::make_unique<Manifold>(manifold->Simplify(tolerance));
+    }
+
     std::unique_ptr<Manifold> Manifold::scale(double x, double y, double z) const
     {
         return std::make_unique<Manifold>(manifold->Scale({x, y, z}));
@@ -242,6 +272,16 @@ namespace manifold_rs
     std::unique_ptr<std::vector<uint32_t>> Mesh::indices() const
     {
         return std::make_unique<std::vector<uint32_t>>(mesh->triVerts);
+    }
+
+    std::unique_ptr<std::vector<uint32_t>> Mesh::run_original_ids() const
+    {
+        return std::make_unique<std::vector<uint32_t>>(mesh->runOriginalID);
+    }
+
+    std::unique_ptr<std::vector<uint32_t>> Mesh::run_indices() const
+    {
+        return std::make_unique<std::vector<uint32_t>>(mesh->runIndex);
     }
 
     std::unique_ptr<Mesh> mesh_from_manifold(const Manifold &manifold)

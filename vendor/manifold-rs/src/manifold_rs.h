@@ -49,6 +49,27 @@ namespace manifold_rs
         /// its ::manifold::Manifold::Error (14 is Cancelled) (rulemesh addition).
         std::uint32_t status() const;
 
+        /// @brief The manifold transformed by the affine map `m` (a 3x4
+        /// matrix, column-major: three columns of the linear part, then the
+        /// translation), applied in double precision (rulemesh addition).
+        std::unique_ptr<Manifold> transformed(rust::Slice<const double> m) const;
+
+        /// @brief The same manifold marked as an original: its triangles
+        /// carry a new original ID through later booleans (rulemesh addition).
+        std::unique_ptr<Manifold> as_original() const;
+
+        /// @brief The original ID of a manifold made by `as_original`, -1
+        /// for a product of booleans (rulemesh addition).
+        std::int32_t original_id() const;
+
+        /// @brief Number of triangles (rulemesh addition).
+        std::size_t num_tri() const;
+
+        /// @brief Manifold's Simplify: edges collapsed where the surface
+        /// moves less than `tolerance` (at least its own tolerance), kept
+        /// manifold (rulemesh addition).
+        std::unique_ptr<Manifold> simplify(double tolerance) const;
+
         /// @brief Slice the manifold at a given height
         std::unique_ptr<Polygons> slice(double height) const;
 
@@ -200,6 +221,13 @@ namespace manifold_rs
 
         /// @brief  Get the indices of the mesh
         std::unique_ptr<std::vector<uint32_t>> indices() const;
+
+        /// @brief The original ID of each run of triangles (rulemesh addition).
+        std::unique_ptr<std::vector<uint32_t>> run_original_ids() const;
+
+        /// @brief Where each run starts in the indices, and after the last
+        /// run, their length (rulemesh addition).
+        std::unique_ptr<std::vector<uint32_t>> run_indices() const;
 
         std::unique_ptr<::manifold::Mesh> mesh;
     };
