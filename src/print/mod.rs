@@ -470,3 +470,35 @@ fn flat_mesh(positions: &[[f32; 3]], indices: &[u32], colours: &[[u8; 4]]) -> Me
     }
     m
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    /// A 3-unit cube with a 1-unit cavity in its middle (the cavity's wall
+    /// wound inward, as Manifold writes it), and a flat sheet beside it.
+    fn cube_with_cavity_and_sheet() -> (Vec<DVec3>, Vec<u32>) {
+        let (mut positions, outer) = field::tests::cuboid(DVec3::ZERO, DVec3::splat(3.0));
+        let (inner_p, inner) = field::tests::cuboid(DVec3::ONE, DVec3::splat(2.0));
+        let mut indices: Vec<u32> = outer.iter().flatten().copied().collect();
+        indices.extend(inner.iter().flat_map(|t| [t[0] + 8, t[2] + 8, t[1] + 8]));
+        positions.extend(inner_p);
+        // Two triangles back to back: encloses nothing.
+        let s = positions.len() as u32;
+        positions.extend([DVec3::new(5.0, 0.0, 0.0), DVec3::new(6.0, 0.0, 0.0), DVec3::new(5.0, 1.0, 0.0)]);
+        indices.extend([s, s + 1, s + 2, s, s + 2, s + 1]);
+        (positions, indices)
+    }
+
+    #[test]
+    fn a_union_with_a_cavity_prints_filled_as_one_shell() {
+        let placed = place(cube_with_cavity_and_sheet(), 0);
+        // The cavity is filled (its wall dropped, counted); the sheet is dropped, not counted.
+        assert_eq!(placed.voids, 1);
+        assert_eq!(placed.indices.len(), 12 * 3);
+        let m = measure(&placed.scaled, &placed.indices);
+        assert_eq!((m.shells, m.is_watertight, m.nonmanifold_edges), (1, true, 0));
+        assert!((m.volume_mm3 - 27.0).abs() < 1e-9, "{}", m.volume_mm3);
+    }
+}

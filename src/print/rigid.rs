@@ -190,3 +190,84 @@ fn solid_of(m: &manifold_rs::Manifold, colour_of: &HashMap<u32, [u8; 4]>) -> Sol
     }
     Solid { positions, tris, colours }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::budget::Limits;
+    use crate::core::PrimitiveKind;
+    use crate::geom::halfedge::HalfEdgeMesh;
+    use crate::model::hierarchy::{LeafShape, Object};
+    use glam::{DQuat, DVec3};
+
+    /// A tube segment 0.8 wide from the origin one unit up +Y, as the L-system turtle makes them.
+    fn segment() -> LeafShape {
+        LeafShape { kind: PrimitiveKind::Cylinder, scale: [0.8, 1.0, 0.8], offset: [0.0, 0.5, 0.0], tube: true }
+    }
+
+    fn entry(target: Target, translation: DVec3, rotation: DQuat, colour: [u8; 4]) -> Entry {
+        Entry { target, translation, rotation, scale: 1.0, colour }
+    }
+
+    const RED: [u8; 4] = [255, 0, 0, 255];
+    const BLUE: [u8; 4] = [0, 0, 255, 255];
+
+    /// A two-segment red trunk (object 0) and a root that stands it up and
+    /// branches three copies of it from its top, 35° out and 120° apart, with
+    /// a blue segment straight up between them: a small Sierpinski bush.
+    fn bush() -> Hierarchy {
+        let trunk = Object { entries: vec![entry(Target::Shape(0), DVec3::ZERO, DQuat::IDENTITY, RED), entry(Target::Shape(0), DVec3::Y, DQuat::IDENTITY, RED)], leaves: 2 };
+        let top = DVec3::Y * 2.0;
+        let mut entries = vec![entry(Target::Object(0), DVec3::ZERO, DQuat::IDENTITY, [0; 4]), entry(Target::Shape(0), top, DQuat::IDENTITY, BLUE)];
+        for i in 0..3 {
+            let turn = DQuat::from_rotation_y((120.0 * i as f64).to_radians()) * DQuat::from_rotation_z(35f64.to_radians());
+            entries.push(entry(Target::Object(0), top, turn, [0; 4]));
+        }
+        Hierarchy { shapes: vec![segment()], objects: vec![trunk, Object { entries, leaves: 9 }], truncated: None }
+    }
+
+    fn leaves(h: &Hierarchy) -> Vec<Solid> {
+        h.shapes.iter().map(|s| super::super::subtree::leaf_solid(&s.prototype(16)).expect("a closed tube")).collect()
+    }
+
+    #[test]
+    fn a_small_bush_unites_into_one_closed_shell_with_its_leaves_colours() {
+        let h = bush();
+        let solid = unite_rigid(&h, &leaves(&h), &mut Budget::new(Limits::default())).expect("union").expect("solid");
+        let m = HalfEdgeMesh::new(solid.positions.clone(), solid.tris.clone()).expect("manifold");
+        assert!(m.is_closed() && m.nonmanifold_vertices().is_empty());
+        let pieces = crate::print::joined_through_triangles(solid.positions.len(), solid.tris.iter().map(|t| t.as_slice()));
+        let mut roots: Vec<u32> = (0..solid.positions.len() as u32).map(|v| { let mut r = v; while pieces[r as usize] != r { r = pieces[r as usize]; } r }).collect();
+        roots.sort_unstable();
+        roots.dedup();
+        assert_eq!(roots.len(), 1, "one shell");
+        // Nine octagonal segments of 0.8 across overlap at the fork: less than their sum.
+        let segment = 8.0 * 0.5 * 0.4f64.powi(2) * (std::f64::consts::TAU / 8.0).sin();
+        let volume = m.signed_volume();
+        assert!(volume > 5.0 * segment && volume < 9.0 * segment, "{volume} against {segment} a segment");
+        // Colours come through the union as Manifold's original IDs.
+        assert!(solid.colours.contains(&RED) && solid.colours.contains(&BLUE));
+        assert!(solid.colours.iter().all(|c| *c == RED || *c == BLUE));
+        let on_blue_cap = |v: u32| {
+            let p = solid.positions[v as usize];
+            (p.y - 3.0).abs() < 1e-5 && p.x * p.x + p.z * p.z < 0.17
+        };
+        let cap: Vec<[u8; 4]> = solid.tris.iter().zip(&solid.colours).filter(|(t, _)| t.iter().all(|&v| on_blue_cap(v))).map(|(_, c)| *c).collect();
+        assert!(!cap.is_empty() && cap.iter().all(|c| *c == BLUE), "the blue segment's top cap: {cap:?}");
+        // The same hierarchy gives the same solid, vertex for vertex.
+        let again = unite_rigid(&h, &leaves(&h), &mut Budget::new(Limits::default())).expect("union").expect("solid");
+        assert_eq!((solid.positions, solid.tris, solid.colours), (again.positions, again.tris, again.colours));
+    }
+
+    #[test]
+    fn the_union_is_charged_and_its_memory_returned() {
+        let h = bush();
+        let mut budget = Budget::new(Limits::default());
+        unite_rigid(&h, &leaves(&h), &mut budget).expect("union").expect("solid");
+        assert_eq!(budget.memory(), 0, "every reservation released");
+        assert!(budget.steps() > 0);
+        let tight = Limits { max_memory: 1_000, ..Limits::default() };
+        let refused = unite_rigid(&h, &leaves(&h), &mut Budget::new(tight));
+        assert!(matches!(refused, Err(PrintError::Limit(l)) if l.limit == crate::core::budget::Limit::Memory), "{refused:?}");
+    }
+}

@@ -146,7 +146,7 @@ fn place(s: &Solid, e: &Entry, colour: Option<[u8; 4]>) -> Solid {
 
 /// A leaf shape's prototype as one closed, outward solid (welded by exact
 /// position), or `None` when it is open or pinched.
-fn leaf_solid(p: &crate::geom::primitives::Prototype) -> Option<Solid> {
+pub(super) fn leaf_solid(p: &crate::geom::primitives::Prototype) -> Option<Solid> {
     let (distinct, remap) = crate::geom::weld::weld_by(p.positions.iter().copied(), crate::geom::weld::f32_key);
     let positions: Vec<DVec3> = distinct.iter().map(|q| glam::Vec3::from_array(*q).as_dvec3()).collect();
     let tris: Vec<[u32; 3]> = crate::geom::weld::welded_triangles(&p.indices, &remap).map(|(_, t)| t).collect();
