@@ -82,6 +82,15 @@ pub(super) fn unite_rigid(h: &Hierarchy, leaves: &[Solid], budget: &mut Budget) 
                 input += tris;
             }
         }
+        // Children no later object places are dropped: from here their
+        // triangles are counted as this union's input (Manifold shares a
+        // child's mesh with its placed copies until the boolean reads them).
+        for (child, &last) in last_use.iter().enumerate() {
+            if last == index && child != index {
+                unions[child] = None;
+                budget.release_memory(std::mem::take(&mut held[child]));
+            }
+        }
         let united = match pieces.len() {
             0 => None,
             // One piece placed alone (a closed leaf, or a child's union) is already a union.
@@ -97,13 +106,6 @@ pub(super) fn unite_rigid(h: &Hierarchy, leaves: &[Solid], budget: &mut Budget) 
             budget.reserve_memory(held[index])?;
         }
         unions.push(united);
-        // Children no later object places are dropped.
-        for (child, &last) in last_use.iter().enumerate() {
-            if last == index && child != index {
-                unions[child] = None;
-                budget.release_memory(std::mem::take(&mut held[child]));
-            }
-        }
     }
     let root = unions.pop().flatten();
     budget.release_memory(held.iter().sum());
