@@ -18,6 +18,7 @@ mod fuse;
 pub mod profile;
 mod report;
 mod rigid;
+mod solid;
 mod subtree;
 mod tetra;
 pub mod thickness;

@@ -21,7 +21,7 @@
 //! as Manifold's original IDs: each (leaf shape, colour) is one original,
 //! and every result triangle says which original it lies in.
 
-use super::subtree::Solid;
+use super::solid::Solid;
 use super::{PrintError, PLAIN};
 use crate::core::budget::Budget;
 use crate::model::hierarchy::{Entry, Hierarchy, Target};
@@ -229,7 +229,7 @@ mod tests {
     }
 
     fn leaves(h: &Hierarchy) -> Vec<Solid> {
-        h.shapes.iter().map(|s| super::super::subtree::leaf_solid(&s.prototype(16)).expect("a closed tube")).collect()
+        h.shapes.iter().map(|s| super::super::solid::leaf_solid(&s.prototype(16)).expect("a closed tube")).collect()
     }
 
     #[test]

@@ -21,30 +21,12 @@
 //! the same way: each object's united triangles take the colour of the
 //! piece triangle they lie in (`colour::triangle_colours`), once per object.
 
+use super::solid::{leaf_solid, Solid};
 use super::union::{self, Piece};
 use super::{colour, PrintError};
 use crate::core::budget::Budget;
-use crate::geom::halfedge::HalfEdgeMesh;
 use crate::model::hierarchy::{Entry, Hierarchy, Target};
 use glam::DVec3;
-
-/// A closed, outward solid in an object's frame, with each triangle's colour.
-#[derive(Debug, Clone, Default)]
-pub(super) struct Solid {
-    /// Shared positions.
-    pub positions: Vec<DVec3>,
-    /// CCW (outward) triangles.
-    pub tris: Vec<[u32; 3]>,
-    /// Linear RGBA8 of each triangle.
-    pub colours: Vec<[u8; 4]>,
-}
-
-impl Solid {
-    /// Bytes it holds while it waits to be placed by its parents.
-    fn bytes(&self) -> u64 {
-        (self.positions.len() * 24 + self.tris.len() * 16) as u64
-    }
-}
 
 /// The union of a hierarchy's expansion and what the report needs of its parts.
 pub(super) struct United {
@@ -144,19 +126,6 @@ fn place(s: &Solid, e: &Entry, colour: Option<[u8; 4]>) -> Solid {
     Solid { positions, tris: s.tris.clone(), colours }
 }
 
-/// A leaf shape's prototype as one closed, outward solid (welded by exact
-/// position), or `None` when it is open or pinched.
-pub(super) fn leaf_solid(p: &crate::geom::primitives::Prototype) -> Option<Solid> {
-    let (distinct, remap) = crate::geom::weld::weld_by(p.positions.iter().copied(), crate::geom::weld::f32_key);
-    let positions: Vec<DVec3> = distinct.iter().map(|q| glam::Vec3::from_array(*q).as_dvec3()).collect();
-    let tris: Vec<[u32; 3]> = crate::geom::weld::welded_triangles(&p.indices, &remap).map(|(_, t)| t).collect();
-    let m = HalfEdgeMesh::new(positions, tris).ok().filter(|m| m.is_closed() && m.nonmanifold_vertices().is_empty())?;
-    let outward = m.signed_volume() > 0.0;
-    let (positions, tris) = m.into_parts();
-    let tris = if outward { tris } else { tris.into_iter().map(|t| [t[0], t[2], t[1]]).collect() };
-    Some(Solid { colours: vec![super::PLAIN; tris.len()], positions, tris })
-}
-
 /// The smallest bounding-box side of any leaf placed in the expansion
 /// (what the flat route's `min_extent` measures), `None` when a placement
 /// is not finite. One pass over the leaves, each shape's positions placed.
@@ -176,6 +145,7 @@ mod tests {
     use super::*;
     use crate::core::budget::Limits;
     use crate::core::PrimitiveKind;
+    use crate::geom::halfedge::HalfEdgeMesh;
     use crate::model::hierarchy::{LeafShape, Object};
     use glam::DQuat;
 
