@@ -97,8 +97,8 @@ impl HalfEdgeMesh {
         if tris.len() >= (u32::MAX / 3) as usize || positions.len() >= u32::MAX as usize {
             return Err(HalfEdgeError::TooLarge { triangles: tris.len() });
         }
-        // FxHash: only inserted and looked up, never iterated.
-        let mut edges: HashMap<(u32, u32), u32, rustc_hash::FxBuildHasher> = HashMap::with_capacity_and_hasher(tris.len() * 3, rustc_hash::FxBuildHasher);
+        // foldhash: only inserted and looked up, never iterated.
+        let mut edges: HashMap<(u32, u32), u32, foldhash::fast::FixedState> = HashMap::with_capacity_and_hasher(tris.len() * 3, foldhash::fast::FixedState::default());
         for (f, t) in tris.iter().enumerate() {
             if f % STOP_EVERY == STOP_EVERY - 1 && stop() {
                 return Err(HalfEdgeError::Stopped);

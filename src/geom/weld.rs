@@ -33,8 +33,8 @@ pub fn weld_by_until<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>,
 /// The weld itself; the flag says whether `stop` ended it early.
 fn weld_while<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K, stop: &dyn Fn() -> bool) -> (Vec<P>, Vec<u32>, bool) {
     let points = points.into_iter();
-    // FxHash: the ids come from the order of first occurrence, not the map's.
-    let mut ids: HashMap<K, u32, rustc_hash::FxBuildHasher> = HashMap::with_capacity_and_hasher(points.size_hint().0, rustc_hash::FxBuildHasher);
+    // foldhash: the ids come from the order of first occurrence, not the map's.
+    let mut ids: HashMap<K, u32, foldhash::fast::FixedState> = HashMap::with_capacity_and_hasher(points.size_hint().0, foldhash::fast::FixedState::default());
     let mut distinct = Vec::new();
     let mut remap = Vec::with_capacity(points.size_hint().0);
     for (i, p) in points.enumerate() {

@@ -155,7 +155,7 @@ pub fn measure(positions: &[[f32; 3]], indices: &[u32]) -> PrintReport {
 /// Undirected edges (vertices welded by position) not used exactly once in each direction.
 pub(super) fn bad_edges(positions: &[[f32; 3]], indices: &[u32]) -> u64 {
     let key = |i: u32| positions.get(i as usize).map_or([0; 3], |p| p.map(f32::to_bits));
-    let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32), rustc_hash::FxBuildHasher> = std::collections::HashMap::default();
+    let mut uses: std::collections::HashMap<([u32; 3], [u32; 3]), (u32, u32), foldhash::fast::FixedState> = std::collections::HashMap::default();
     for t in indices.chunks_exact(3) {
         for k in 0..3 {
             let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));

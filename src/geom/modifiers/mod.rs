@@ -350,12 +350,14 @@ pub fn apply_until(mesh: &HalfEdgeMesh, op: &Modifier, stop: &dyn Fn() -> bool) 
             if !weight.is_finite() {
                 return Err(invalid(format!("weight {weight} is not finite")));
             }
-            let mut m = mesh.clone();
+            // Subdivided from `mesh` itself, not a clone of it: copying a
+            // mesh of millions of triangles is work no deadline check sees.
+            let mut m: Option<HalfEdgeMesh> = None;
             for _ in 0..*levels {
-                let (p, t) = subdivide::subdivide_once(&m, *weight, *smooth, stop).ok_or(ModifyError::Stopped)?;
-                m = rebuild(p, t)?;
+                let (p, t) = subdivide::subdivide_once(m.as_ref().unwrap_or(mesh), *weight, *smooth, stop).ok_or(ModifyError::Stopped)?;
+                m = Some(rebuild(p, t)?);
             }
-            Ok(m)
+            Ok(m.unwrap_or_else(|| mesh.clone()))
         }
         Modifier::Spikeify { height } => {
             if !(height.is_finite() && *height > 0.0) {

@@ -27,6 +27,11 @@ pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool, stop: 
     let mut positions: Vec<DVec3> = Vec::with_capacity(nv + m.edge_count());
     // Old vertices (eq 2.4).
     for v in 0..nv as u32 {
+        // Each vertex walks its ring: millions of them take longer than
+        // the deadline's slack, so this loop asks too.
+        if v as usize % STOP_EVERY == STOP_EVERY - 1 && stop() {
+            return None;
+        }
         let p = m.positions[v as usize];
         if !smooth || m.is_boundary_vertex(v) || m.outgoing(v) == NO_PAIR {
             positions.push(p);
