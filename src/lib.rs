@@ -1,29 +1,17 @@
 //! rulemesh: shape grammars to 3D models.
 //!
-//! Data flows one way: source → a front end ([`eval`] for MDG, stacking
-//! strings and UniGrafix, [`lsystem`] for L-systems and ETOL, [`eisen`] for
-//! EisenScript) → one [`model::Model`] → the stages ([`print`], [`mesh`], [`preview`]) →
-//! [`export`] → bytes. [`render`] ([`pipeline`]) is the only orchestrator and
-//! runs it all under one [`core::Budget`]. `ARCHITECTURE.md` has the code map.
+//! This package is the command-line binary (`src/main.rs`) and a facade that
+//! re-exports the workspace's crates under one name, for the integration
+//! tests, the fuzz targets and the benches. The crates, bottom layer first
+//! (`layers.txt`, ARCHITECTURE.md): `rulemesh-core` ([`core`], [`geom`]),
+//! `rulemesh-lang` ([`lang`]), `rulemesh-engine` (the model, the front ends,
+//! the stages, [`export`] and [`pipeline`]) and `rulemesh-service`
+//! ([`cache`], [`service`]).
 
 #![warn(missing_docs)]
 
-pub mod cache;
-pub mod core;
-pub mod eisen;
-pub mod eval;
-pub mod export;
-pub mod geom;
-pub mod lang;
-pub mod lsystem;
-pub mod mesh;
-pub mod model;
-pub mod pipeline;
-pub mod preview;
-pub mod print;
-pub mod service;
-
-pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
-
-/// The engine version; part of every cache key, since outputs may change with it.
-pub const ENGINE_VERSION: &str = env!("CARGO_PKG_VERSION");
+pub use rulemesh_core::{core, geom, ENGINE_VERSION};
+pub use rulemesh_engine::{eisen, eval, export, lsystem, mesh, model, pipeline, preview, print};
+pub use rulemesh_engine::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
+pub use rulemesh_lang::lang;
+pub use rulemesh_service::{cache, service};

@@ -14,6 +14,18 @@ use std::collections::BTreeMap;
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use rulemesh::core::Choice;
+
+/// A clap value parser for one of the engine's [`Choice`] enums: the engine's
+/// crates carry no command-line library, so the flag's possible values (and
+/// `--help`'s list of them) come from the enum's own request names.
+fn choice<T: Choice + Clone>() -> impl clap::builder::TypedValueParser<Value = T> {
+    use clap::builder::TypedValueParser as _;
+    clap::builder::PossibleValuesParser::new(T::names()).try_map(|name| {
+        T::from_name(&name).ok_or_else(|| clap::Error::new(clap::error::ErrorKind::InvalidValue))
+    })
+}
+
 
 /// Exit code for a parse or usage error.
 const EXIT_USAGE: u8 = 2;
@@ -79,7 +91,7 @@ struct GalleryArgs {
     #[arg(long, default_value_t = 6)]
     columns: u32,
     /// Where the camera looks from.
-    #[arg(long, value_enum, default_value = "three-quarter")]
+    #[arg(long, value_parser = choice::<rulemesh::preview::View>(), default_value = "three-quarter")]
     view: rulemesh::preview::View,
     /// Sheet and picture background, `#rrggbb`.
     #[arg(long, default_value = "#ffffff")]
@@ -94,7 +106,7 @@ struct DecodeArgs {
     #[arg(short, long)]
     output: String,
     /// Output format (default: from the output extension, else glb).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Format>())]
     format: Option<Format>,
 }
 
@@ -103,7 +115,7 @@ struct RenderArgs {
     /// Grammar file, or `-` for standard input.
     file: String,
     /// Source language (default: from the file extension, then from the content).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Language>())]
     language: Option<Language>,
     /// Random seed (default: the grammar's `randseed`, else 0).
     #[arg(long, conflicts_with = "seeds")]
@@ -116,7 +128,7 @@ struct RenderArgs {
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
     /// Output format (default: from the output extension, else glb).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Format>())]
     format: Option<Format>,
     /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug, .png), or `-` for standard output.
     #[arg(short, long, default_value = "-")]
@@ -143,13 +155,13 @@ struct RenderArgs {
     #[arg(long)]
     max_source_bytes: Option<u64>,
     /// What to do when a limit runs out.
-    #[arg(long, value_enum, default_value = "error")]
+    #[arg(long, value_parser = choice::<OnLimit>(), default_value = "error")]
     on_limit: OnLimit,
     /// Tessellation detail (segments around round primitives).
     #[arg(long, default_value_t = DEFAULT_DETAIL)]
     detail: u32,
     /// One merged mesh or one mesh per primitive kind.
-    #[arg(long, value_enum, default_value = "merged")]
+    #[arg(long, value_parser = choice::<MeshLayout>(), default_value = "merged")]
     layout: MeshLayout,
     /// A Structure Synth JavaScript movie only: build its K-th saved picture alone (0-based), as Structure Synth renders one picture at a time.
     #[arg(long, value_name = "K")]
@@ -170,13 +182,13 @@ struct RenderArgs {
     #[arg(long)]
     quantize: bool,
     /// glb/gltf: buffer compression (meshopt = EXT_meshopt_compression; implies --weld).
-    #[arg(long, value_enum, default_value = "none")]
+    #[arg(long, value_parser = choice::<Compression>(), default_value = "none")]
     compress: Compression,
     /// Scale and move the model into a unit box centred at the origin (every format).
     #[arg(long)]
     fit_unit_box: bool,
     /// glb/gltf: gpu (each mesh placed more than once written once, EXT_mesh_gpu_instancing) or flat (plain meshes).
-    #[arg(long, value_enum, default_value = "gpu")]
+    #[arg(long, value_parser = choice::<Instancing>(), default_value = "gpu")]
     instancing: Instancing,
     /// Merge every part into one watertight, outward-oriented solid in millimetres for 3D printing (docs/print.md).
     #[arg(long)]
@@ -200,7 +212,7 @@ struct RenderArgs {
     #[arg(long, default_value_t = rulemesh::preview::DEFAULT_SIZE)]
     size: u32,
     /// png: where the camera looks from.
-    #[arg(long, value_enum, default_value = "three-quarter")]
+    #[arg(long, value_parser = choice::<rulemesh::preview::View>(), default_value = "three-quarter")]
     view: rulemesh::preview::View,
     /// png: `transparent`, or an opaque background colour `#rrggbb`.
     #[arg(long, default_value = "transparent")]
@@ -212,7 +224,7 @@ struct CheckArgs {
     /// Grammar file, or `-` for standard input.
     file: String,
     /// Source language (default: from the file extension, then from the content).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Language>())]
     language: Option<Language>,
 }
 

@@ -28,6 +28,7 @@ mod instancing;
 mod invariants;
 mod lines;
 mod winding;
+mod workspace;
 mod lsystem;
 mod mdg_hierarchy;
 mod modifiers;
