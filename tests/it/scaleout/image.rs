@@ -42,6 +42,29 @@ fn dockerfile() -> Vec<(String, String)> {
     out
 }
 
+/// Member directories of `[workspace] members` (entries ending in `/*` expanded).
+fn workspace_members(manifest: &str) -> Vec<String> {
+    let Some(ws) = manifest.split("[workspace]").nth(1) else { return Vec::new() };
+    let Some(list) = ws.split("members").nth(1).and_then(|m| m.split_once('[')).and_then(|(_, r)| r.split_once(']')).map(|(l, _)| l) else { return Vec::new() };
+    let mut out = Vec::new();
+    for entry in list.split(',').map(|e| e.trim().trim_matches('"')).filter(|e| !e.is_empty() && *e != ".") {
+        match entry.strip_suffix("/*") {
+            Some(dir) => {
+                let mut found: Vec<String> = std::fs::read_dir(common::repo().join(dir))
+                    .unwrap_or_else(|e| panic!("{dir}: {e}"))
+                    .filter_map(|d| d.ok())
+                    .filter(|d| d.path().join("Cargo.toml").exists())
+                    .map(|d| format!("{dir}/{}", d.file_name().to_string_lossy()))
+                    .collect();
+                found.sort();
+                out.extend(found);
+            }
+            None => out.push(entry.to_string()),
+        }
+    }
+    out
+}
+
 fn last<'a>(instrs: &'a [(String, String)], kw: &str) -> &'a str {
     instrs.iter().rev().find(|(k, _)| k == kw).map(|(_, a)| a.as_str()).unwrap_or_else(|| panic!("no {kw}"))
 }
@@ -72,6 +95,20 @@ fn dockerfile_parses_and_its_dependency_layer_covers_the_manifest() {
     let manifest = read("Cargo.toml");
     for path in manifest.lines().filter_map(|l| l.trim().strip_prefix("path = \"")).map(|p| p.trim_end_matches('"')).filter(|p| p.starts_with("src/")) {
         assert!(stub.1.contains(path), "the dependency layer does not stub {path}");
+    }
+    // A workspace (the crates/ split): every member's manifest and build
+    // script are copied before the dependency build, and its lib.rs stubbed.
+    for member in workspace_members(&manifest) {
+        // Manifests one by one: copying a member's whole directory here would
+        // bring its sources into the dependency layer and void the cache.
+        let copies = |f: &str| copied.contains(&f);
+        assert!(copies(&format!("{member}/Cargo.toml")), "{member}/Cargo.toml is not copied before the dependency build");
+        if common::repo().join(&member).join("build.rs").exists() {
+            assert!(copies(&format!("{member}/build.rs")), "{member}/build.rs is not copied before the dependency build");
+        }
+        if common::repo().join(&member).join("src/lib.rs").exists() {
+            assert!(stub.1.contains(&format!("{member}/src/lib.rs")), "the dependency layer does not stub {member}/src/lib.rs");
+        }
     }
     assert!(stub.1.contains("--locked") && stub.1.contains("--release"), "the stub builds what the final build builds");
     // PID 1 is an init that forwards SIGTERM and reaps, and the command is `serve`.
