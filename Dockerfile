@@ -38,14 +38,16 @@ FROM debian:bookworm-slim AS runtime
 RUN apt-get update \
     && apt-get install -y --no-install-recommends tini=0.19.0-1+b3 \
     && rm -rf /var/lib/apt/lists/* \
-    && useradd --system --uid 10001 --no-create-home --shell /usr/sbin/nologin rulemesh
+    && groupadd --system --gid 10001 rulemesh \
+    && useradd --system --uid 10001 --gid 10001 --no-create-home --shell /usr/sbin/nologin rulemesh
 COPY --from=build /usr/local/bin/rulemesh /usr/local/bin/rulemesh
 # Listen on every interface inside the container (the binary's defaults are loopback).
 ENV RULEMESH_HTTP=0.0.0.0:8080 \
     RULEMESH_GRPC=0.0.0.0:50051 \
     RULEMESH_LOG=info
 EXPOSE 8080 50051
-USER 10001
+# The group too, as deploy/k8s/deployment.yaml (runAsGroup) has it; useradd --system alone picks gid 999.
+USER 10001:10001
 # /healthz over bash's /dev/tcp: the slim image has no curl. The port (and
 # address, unless it is a wildcard) comes from RULEMESH_HTTP, so moving the
 # listener with that variable (host networking) moves the check with it.

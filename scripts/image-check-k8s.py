@@ -43,8 +43,8 @@ status = dict(line.split(":", 1) for line in open(f"/proc/{pid}/status", encodin
 uid, gid = int(status["Uid"].split()[0]), int(status["Gid"].split()[0])
 sc = pod["securityContext"]
 check(sc.get("runAsNonRoot") is True and uid != 0, f"runAsNonRoot, and rulemesh runs as uid {uid}")
-check(sc.get("runAsUser") == uid and str(uid) == image["User"], f"runAsUser {sc.get('runAsUser')} = image USER {image['User']} = running uid {uid}")
-check(sc.get("runAsGroup") == gid, f"runAsGroup {sc.get('runAsGroup')} = running gid {gid}")
+check(f"{sc.get('runAsUser')}:{sc.get('runAsGroup')}" == image["User"] == f"{uid}:{gid}",
+      f"runAsUser:runAsGroup {sc.get('runAsUser')}:{sc.get('runAsGroup')} = image USER {image['User']} = running {uid}:{gid}")
 check(c["securityContext"].get("readOnlyRootFilesystem") is True, "readOnlyRootFilesystem (the container runs --read-only)")
 for probe, want in (("readinessProbe", "/readyz"), ("livenessProbe", "/healthz")):
     get = c[probe]["httpGet"]

@@ -180,7 +180,7 @@ fn compose_nginx_and_kubernetes_match_the_image() {
     assert_eq!(exposed(&instrs), BTreeSet::from([http, grpc]), "EXPOSE = the ports ENV listens on");
     let health = last(&instrs, "HEALTHCHECK");
     assert!(health.contains(&format!("${{RULEMESH_HTTP:-0.0.0.0:{http}}}")) && health.contains("GET /healthz"), "HEALTHCHECK: {health}");
-    let user = last(&instrs, "USER");
+    let (user, group) = last(&instrs, "USER").split_once(':').expect("USER uid:gid");
 
     let compose = read("deploy/compose.yaml");
     for (k, v) in &env {
@@ -200,6 +200,7 @@ fn compose_nginx_and_kubernetes_match_the_image() {
     let dep = read("deploy/k8s/deployment.yaml");
     for needle in [
         format!("runAsUser: {user}"),
+        format!("runAsGroup: {group}"),
         "runAsNonRoot: true".into(),
         "readOnlyRootFilesystem: true".into(),
         "allowPrivilegeEscalation: false".into(),
