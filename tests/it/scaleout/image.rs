@@ -111,6 +111,14 @@ fn dockerfile_parses_and_its_dependency_layer_covers_the_manifest() {
         }
     }
     assert!(stub.1.contains("--locked") && stub.1.contains("--release"), "the stub builds what the final build builds");
+    // The real build touches every stubbed file: the stubs are newer than the
+    // copied sources, and cargo would otherwise keep the stub's empty crates.
+    let build = instrs[copy_src..].iter().find(|(k, a)| k == "RUN" && a.contains("cargo build")).expect("the build after COPY src");
+    let stubbed: Vec<&str> = stub.1.split_whitespace().filter(|w| w.ends_with("/lib.rs") || w.ends_with("/main.rs")).filter(|w| !w.starts_with("tests/")).collect();
+    assert!(stubbed.contains(&"src/lib.rs"), "stubbed: {stubbed:?}");
+    for f in &stubbed {
+        assert!(build.1.contains(&format!("touch {f}")) || build.1.split("touch ").nth(1).is_some_and(|t| t.split("&&").next().unwrap_or("").split_whitespace().any(|w| w == *f)), "the final build does not touch {f}");
+    }
     // PID 1 is an init that forwards SIGTERM and reaps, and the command is `serve`.
     assert_eq!(last(&instrs, "ENTRYPOINT"), r#"["/usr/bin/tini", "--", "/usr/local/bin/rulemesh"]"#);
     assert_eq!(last(&instrs, "CMD"), r#"["serve"]"#);
