@@ -32,17 +32,27 @@ RUN touch src/main.rs src/lib.rs \
     && cp target/release/rulemesh /usr/local/bin/rulemesh
 
 FROM debian:bookworm-slim AS runtime
-RUN useradd --system --uid 10001 --no-create-home --shell /usr/sbin/nologin rulemesh
+# tini as PID 1: it forwards SIGTERM to rulemesh (which drains on it) and reaps
+# orphans, e.g. a HEALTHCHECK's head/grep left behind when its bash is killed
+# on timeout; rulemesh itself never waits on children it did not spawn.
+RUN apt-get update \
+    && apt-get install -y --no-install-recommends tini=0.19.0-1+b3 \
+    && rm -rf /var/lib/apt/lists/* \
+    && groupadd --system --gid 10001 rulemesh \
+    && useradd --system --uid 10001 --gid 10001 --no-create-home --shell /usr/sbin/nologin rulemesh
 COPY --from=build /usr/local/bin/rulemesh /usr/local/bin/rulemesh
 # Listen on every interface inside the container (the binary's defaults are loopback).
 ENV RULEMESH_HTTP=0.0.0.0:8080 \
     RULEMESH_GRPC=0.0.0.0:50051 \
     RULEMESH_LOG=info
 EXPOSE 8080 50051
-USER 10001
-# /healthz over bash's /dev/tcp: the slim image has no curl.
+# The group too, as deploy/k8s/deployment.yaml (runAsGroup) has it; useradd --system alone picks gid 999.
+USER 10001:10001
+# /healthz over bash's /dev/tcp: the slim image has no curl. The port (and
+# address, unless it is a wildcard) comes from RULEMESH_HTTP, so moving the
+# listener with that variable (host networking) moves the check with it.
 HEALTHCHECK --interval=10s --timeout=3s --start-period=5s --retries=3 \
-    CMD ["bash", "-c", "exec 3<>/dev/tcp/127.0.0.1/8080 && printf 'GET /healthz HTTP/1.0\\r\\n\\r\\n' >&3 && head -n 1 <&3 | grep -q ' 200 '"]
+    CMD ["bash", "-c", "a=${RULEMESH_HTTP:-0.0.0.0:8080}; h=${a%:*}; h=${h#[}; h=${h%]}; case $h in 0.0.0.0|::) h=127.0.0.1;; esac; exec 3<>/dev/tcp/$h/${a##*:} && printf 'GET /healthz HTTP/1.0\\r\\n\\r\\n' >&3 && head -n 1 <&3 | grep -q ' 200 '"]
 STOPSIGNAL SIGTERM
-ENTRYPOINT ["/usr/local/bin/rulemesh"]
+ENTRYPOINT ["/usr/bin/tini", "--", "/usr/local/bin/rulemesh"]
 CMD ["serve"]

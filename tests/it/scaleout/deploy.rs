@@ -64,13 +64,13 @@ fn dockerfile_matches_the_binary() {
         instr.iter().filter_map(|l| l.strip_prefix("EXPOSE ")).flat_map(|l| l.split_whitespace()).filter_map(|p| p.parse().ok()).collect();
     assert_eq!(expose, BTreeSet::from([http, grpc]), "EXPOSE must be the default ports");
     assert!(text.contains(&format!("RULEMESH_HTTP=0.0.0.0:{http}")) && text.contains(&format!("RULEMESH_GRPC=0.0.0.0:{grpc}")));
-    assert!(text.contains(&format!("/dev/tcp/127.0.0.1/{http}")) && text.contains("GET /healthz"), "HEALTHCHECK on /healthz");
+    assert!(text.contains(&format!("${{RULEMESH_HTTP:-0.0.0.0:{http}}}")) && text.contains("/dev/tcp/") && text.contains("GET /healthz"), "HEALTHCHECK on /healthz");
     assert!(instr.iter().any(|l| l.starts_with("HEALTHCHECK ")));
     let user = instr.iter().filter_map(|l| l.strip_prefix("USER ")).last().expect("a USER");
     assert!(user.trim() != "root" && user.trim() != "0", "runs as root");
     assert_eq!(instr.iter().filter(|l| l.starts_with("FROM ")).count(), 2, "multi-stage");
     assert!(text.contains("COPY --from=build /usr/local/bin/rulemesh /usr/local/bin/rulemesh"));
-    assert!(text.contains("ENTRYPOINT [\"/usr/local/bin/rulemesh\"]") && text.contains("CMD [\"serve\"]"));
+    assert!(text.contains("ENTRYPOINT [\"/usr/bin/tini\", \"--\", \"/usr/local/bin/rulemesh\"]") && text.contains("CMD [\"serve\"]"));
     // The build copies what the crate needs, and .dockerignore does not hide it.
     let ignore = read(".dockerignore");
     for needed in ["Cargo.toml", "Cargo.lock", "build.rs", "proto", "src", "grammars", "vendor"] {
@@ -86,7 +86,7 @@ fn dockerfile_matches_the_binary() {
 }
 
 /// A PyPI tool: `$var`, else `.tools/venv/bin/NAME` where `scripts/test` installs it.
-fn tool(var: &str, name: &str) -> std::path::PathBuf {
+pub(super) fn tool(var: &str, name: &str) -> std::path::PathBuf {
     std::env::var_os(var).map_or_else(|| common::repo().join(".tools/venv/bin").join(name), Into::into)
 }
 

@@ -1,9 +1,11 @@
 //! Scale-out end to end: a real `redis-server` and two real `rulemesh serve`
 //! processes on loopback sharing it. `scripts/test` installs redis-server
 //! and these tests fail (never skip) where it is missing. The
-//! container image and deployment files are checked in [`deploy`].
+//! container image and deployment files are checked in [`deploy`] and, with
+//! `scripts/image-check`'s recipes, in [`image`].
 
 mod deploy;
+mod image;
 
 use crate::common;
 use serde_json::json;
