@@ -229,6 +229,8 @@ impl Failure {
 }
 
 fn main() -> ExitCode {
+    // Before any thread starts: large blocks go back to the system when freed.
+    rulemesh::service::memory::tune_allocator();
     let matches = Cli::command().get_matches();
     let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     let result = match cli.command {

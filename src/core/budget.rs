@@ -153,6 +153,9 @@ pub struct Budget {
     primitives: u64,
     triangles: u64,
     memory: u64,
+    /// The most accounted memory held at once so far: what the limit
+    /// bounds, compared with the process's real peak in the print tests.
+    memory_peak: u64,
     steps: u64,
     /// Where the current stage's share of the deadline ends, when the
     /// pipeline gave it one (under `on_limit: truncate`, so the stages after
@@ -202,6 +205,7 @@ impl Budget {
             primitives: 0,
             triangles: 0,
             memory: 0,
+            memory_peak: 0,
             steps: 0,
             stage_deadline: None,
         }
@@ -227,6 +231,7 @@ impl Budget {
             primitives: 0,
             triangles: 0,
             memory: 0,
+            memory_peak: 0,
             steps: 0,
             stage_deadline: None,
         }
@@ -320,6 +325,12 @@ impl Budget {
         self.memory
     }
 
+    /// The most accounted memory held at once since the budget was made
+    /// (a rewind does not lower it: the abandoned route's memory was held).
+    pub fn memory_peak(&self) -> u64 {
+        self.memory_peak
+    }
+
     /// Evaluation steps taken so far.
     pub fn steps(&self) -> u64 {
         self.steps
@@ -390,6 +401,7 @@ impl Budget {
             return Err(Self::exceeded(Limit::Memory, self.limits.max_memory, m));
         }
         self.memory = m;
+        self.memory_peak = self.memory_peak.max(m);
         Ok(())
     }
 
@@ -459,6 +471,8 @@ mod tests {
         assert_eq!(b.reserve_memory(41).unwrap_err().reached, 101);
         b.release_memory(60);
         b.reserve_memory(41).unwrap();
+        // The peak is the most held at once, refused reservations not counted.
+        assert_eq!((b.memory(), b.memory_peak()), (41, 60));
         let mut b = Budget::new(limits);
         for _ in 0..3 {
             b.charge_step().unwrap();

@@ -7,6 +7,7 @@ pub mod budget;
 pub mod diagnostic;
 pub mod frame;
 pub mod library;
+pub mod memprobe;
 pub mod mtrand;
 pub mod param;
 pub mod primitive;

@@ -111,6 +111,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let origin = lo - DVec3::splat(pad) - DVec3::splat(h * 0.318_309_886);
     let grid = Grid { origin, h, n };
     let len = grid.len();
+    crate::core::memprobe::note("fuse.samples", len as u64);
     let triangles: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
     let bytes = (len as u64).saturating_mul(BYTES_PER_SAMPLE);
     budget.reserve_memory(bytes)?;
@@ -121,10 +122,12 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let inside = field::inside(parts, &grid, budget)?;
     let band = 2.5 * h;
     let (distance, nearest) = field::near_surface(parts, &grid, band, budget)?;
+    crate::core::memprobe::mark("fuse.field", budget);
     let closed = close(&inside, &grid, closing / h, budget)?;
     budget.check_deadline()?;
     let (bridge, bridges) = bridges(&inside, &closed, &grid, budget)?;
     drop(closed);
+    crate::core::memprobe::mark("fuse.close", budget);
     budget.check_deadline()?;
 
     // The signed distance, positive inside, with each bridge sample's ball.
@@ -146,6 +149,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     drop(bridge);
     budget.check_deadline()?;
     let (positions, indices) = tetra::surface(&value, &grid, budget)?;
+    crate::core::memprobe::mark("fuse.surface", budget);
     drop(value);
     budget.release_memory(bytes);
     // The extracted surface while it is simplified: its positions (and
@@ -161,6 +165,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let mut simplified = None;
     for tolerance in [h / 8.0, h / 16.0] {
         let (p, i) = simplify(&positions, &indices, tolerance, budget)?;
+        crate::core::memprobe::mark("fuse.simplify", budget);
         if components(p.len(), &i) <= pieces {
             simplified = Some((p, i));
             break;
@@ -193,6 +198,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
 /// link condition, and on these surfaces it made edges of four faces.
 /// Cancelled at the deadline.
 fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
+    crate::core::memprobe::note("simplify.triangles", indices.len() as u64 / 3);
     let bytes = (indices.len() as u64 / 3).saturating_mul(200);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(indices.len() as u64 / 3)?;

@@ -133,6 +133,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
         0.0
     };
     let parts = union::split_parts(meshes, wall, budget)?;
+    crate::core::memprobe::mark("print.parts", budget);
     let pieces = union::pieces(&parts.closed);
     let summary = PartSummary { parts: parts.closed.len() as u64, skipped: parts.skipped, thickened: parts.thickened, min_extent: parts.min_extent, wall, fused: None };
     // The exact union first: a model that prints as one watertight shell
@@ -143,6 +144,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     let mark = budget.mark();
     let triangles: usize = pieces.iter().map(|p| p.1.len()).sum();
     let exact = if triangles <= EXACT_MAX_TRIANGLES { exact_union(&pieces, options.size_um, budget)? } else { None };
+    crate::core::memprobe::mark("print.exact_union", budget);
     if let Some((placed, measured)) = exact {
         let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
         return finish(placed, measured, &colours, &summary, options, budget);
@@ -225,7 +227,9 @@ pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptio
     options.profile.validate()?;
     // The flat route charges its own work: what this one did is refunded if it gives up.
     let mark = budget.mark();
-    let Some(united) = subtree::unite_hierarchy(h, detail, budget)? else {
+    let united = subtree::unite_hierarchy(h, detail, budget)?;
+    crate::core::memprobe::mark("print.hierarchy_union", budget);
+    let Some(united) = united else {
         budget.rewind(mark);
         return Ok(None);
     };
@@ -275,6 +279,7 @@ struct PartSummary {
 /// ([`measure`], taken by the caller to decide on it) and the colour of each
 /// of its (unplaced) triangles.
 fn finish(placed: Placed, mut report: PrintReport, colours: &[[u8; 4]], parts: &PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
+    crate::core::memprobe::note("finish.triangles", placed.indices.len() as u64 / 3);
     let Placed { scaled, indices, kept, scale, voids, .. } = placed;
     let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
     let mesh = flat_mesh(&scaled, &indices, &colours);

@@ -106,11 +106,15 @@ pub(super) fn unite_rigid(h: &Hierarchy, leaves: &[Solid], budget: &mut Budget) 
             budget.reserve_memory(held[index])?;
         }
         unions.push(united);
+        crate::core::memprobe::mark("rigid.object", budget);
     }
     let root = unions.pop().flatten();
     budget.release_memory(held.iter().sum());
     let Some((root, _)) = root else { return Ok(None) };
-    Ok(Some(solid_of(&root, &colour_of)))
+    let solid = solid_of(&root, &colour_of);
+    drop(root);
+    crate::core::memprobe::mark("rigid.read_back", budget);
+    Ok(Some(solid))
 }
 
 /// Steps charged per triangle that enters an object's union. An object
@@ -124,6 +128,7 @@ const STEPS_PER_TRIANGLE: u64 = 4;
 /// deadline, and its triangle count; `None` when Manifold refuses a piece
 /// (the result is empty).
 fn unite(pieces: &[manifold_rs::Manifold], input: u64, budget: &mut Budget) -> Result<Option<(manifold_rs::Manifold, u64)>, PrintError> {
+    crate::core::memprobe::note("rigid.union_input", input);
     let bytes = input.saturating_mul(MANIFOLD_TRIANGLE_BYTES);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(input.saturating_mul(STEPS_PER_TRIANGLE))?;

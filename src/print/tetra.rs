@@ -41,8 +41,18 @@ pub(super) fn surface(values: &[f32], grid: &Grid, budget: &Budget) -> Result<(V
     // The vertex on each crossed grid edge, by its two samples' indices.
     let mut on_edge: HashMap<(usize, usize), u32> = HashMap::new();
     let inside = |s: usize| values.get(s).is_some_and(|v| *v > 0.0);
+    let plane = nx * ny;
     for k in 0..nz.saturating_sub(1) {
         budget.check_deadline()?;
+        // Cells of this layer and later ones touch samples of layer k and
+        // above only: the crossings on edges that start below it are never
+        // looked up again. Dropping them keeps the map to about two layers'
+        // crossings instead of the whole surface's (a vertex's index is
+        // still the order of its first appearance, so the result is the same).
+        if k > 0 {
+            let first = k * plane;
+            on_edge.retain(|&(a, _), _| a >= first);
+        }
         for j in 0..ny.saturating_sub(1) {
             for i in 0..nx.saturating_sub(1) {
                 let sample = |c: u8| {

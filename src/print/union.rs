@@ -202,6 +202,7 @@ pub(super) fn snap(q: DVec3, grid: f64) -> DVec3 {
 /// not snapped; [`snap_grid`] says why and `make_printable` when).
 pub(super) fn unite(parts: &[Piece<'_>], grid: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
     let total: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
+    crate::core::memprobe::note("union.input", total);
     // Manifold holds about 200 bytes per triangle while it works (half-edges, collider, properties).
     let bytes = total.saturating_mul(200);
     budget.reserve_memory(bytes)?;

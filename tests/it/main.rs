@@ -34,6 +34,7 @@ mod modifiers;
 mod preview;
 mod provenance;
 mod print;
+mod print_memory;
 mod scene;
 mod selectors;
 mod sheet;
