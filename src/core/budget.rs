@@ -45,7 +45,31 @@ impl Default for Limits {
     }
 }
 
+/// The default memory limit of a print (`print=true`), in bytes: 640 MiB.
+///
+/// Why a default of its own: a print's union and simplification hold
+/// Manifold's data, about 600 bytes a triangle while it unites and 540
+/// while it simplifies (issue 38, docs/print.md "Memory"), and now that the
+/// print stage charges that, the library's heaviest prints need up to
+/// 609 MiB (spiral-rings; the bush 572, plant-e 602). At 256 MiB, twelve
+/// prints that used to succeed (while really holding up to 640 MB against
+/// the 256 MiB they promised) would be refused; 640 MiB keeps every one of
+/// them printing, honestly charged. A server's ceiling still clamps it
+/// (`RULEMESH_CEILING_MEMORY`).
+pub const PRINT_MAX_MEMORY: u64 = 640 * 1024 * 1024;
+
 impl Limits {
+    /// The defaults of a request: [`Limits::default`], with the memory
+    /// limit [`PRINT_MAX_MEMORY`] for a print.
+    pub fn defaults_for(print: bool) -> Limits {
+        let d = Limits::default();
+        if print {
+            Limits { max_memory: PRINT_MAX_MEMORY, ..d }
+        } else {
+            d
+        }
+    }
+
     /// The configured value of `limit` (the deadline in milliseconds).
     pub fn value(&self, limit: Limit) -> u64 {
         match limit {
