@@ -142,7 +142,7 @@ struct RenderArgs {
     /// Most triangles.
     #[arg(long)]
     max_triangles: Option<u64>,
-    /// Most bytes of accounted memory.
+    /// Most bytes of accounted memory (default 268435456, 256 MiB; with --print 671088640, 640 MiB).
     #[arg(long)]
     max_memory: Option<u64>,
     /// Wall-clock limit in milliseconds.
@@ -241,6 +241,8 @@ impl Failure {
 }
 
 fn main() -> ExitCode {
+    // Before any thread starts: large blocks go back to the system when freed.
+    rulemesh::service::memory::tune_allocator();
     let matches = Cli::command().get_matches();
     let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     let result = match cli.command {
@@ -312,7 +314,7 @@ fn printer_profile(args: &RenderArgs) -> Result<rulemesh::print::PrinterProfile,
 }
 
 fn limits_from(args: &RenderArgs) -> Limits {
-    let d = Limits::default();
+    let d = Limits::defaults_for(args.print);
     Limits {
         max_depth: args.max_depth.unwrap_or(d.max_depth),
         max_primitives: args.max_primitives.unwrap_or(d.max_primitives),

@@ -35,6 +35,7 @@ mod modifiers;
 mod preview;
 mod provenance;
 mod print;
+mod print_memory;
 mod scene;
 mod selectors;
 mod sheet;

@@ -9,6 +9,7 @@ mod cache;
 mod conn;
 mod deadline;
 mod input;
+mod memory;
 mod schema;
 mod seeds;
 

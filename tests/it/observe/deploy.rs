@@ -70,7 +70,7 @@ fn alerts_pass_promtool_check_and_their_unit_tests() {
     assert_ok(&promtool(&["check", "rules", "deploy/prometheus/alerts.yaml"], None), "promtool check rules");
     assert_ok(&promtool(&["test", "rules", "deploy/prometheus/alerts.test.yaml"], None), "promtool test rules");
     let text = std::fs::read_to_string(common::repo().join("deploy/prometheus/alerts.yaml")).expect("alerts");
-    for alert in ["RulemeshHighErrorRate", "RulemeshHighRenderLatency", "RulemeshShedding", "RulemeshRedisDown"] {
+    for alert in ["RulemeshHighErrorRate", "RulemeshHighRenderLatency", "RulemeshShedding", "RulemeshRedisDown", "RulemeshMemoryPressure", "RulemeshMemoryNearCeiling"] {
         assert!(text.contains(&format!("alert: {alert}")), "{alert} missing");
     }
 }

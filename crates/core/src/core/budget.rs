@@ -45,7 +45,31 @@ impl Default for Limits {
     }
 }
 
+/// The default memory limit of a print (`print=true`), in bytes: 640 MiB.
+///
+/// Why a default of its own: a print's union and simplification hold
+/// Manifold's data, about 600 bytes a triangle while it unites and 540
+/// while it simplifies (issue 38, docs/print.md "Memory"), and now that the
+/// print stage charges that, the library's heaviest prints need up to
+/// 609 MiB (spiral-rings; the bush 572, plant-e 602). At 256 MiB, twelve
+/// prints that used to succeed (while really holding up to 640 MB against
+/// the 256 MiB they promised) would be refused; 640 MiB keeps every one of
+/// them printing, honestly charged. A server's ceiling still clamps it
+/// (`RULEMESH_CEILING_MEMORY`).
+pub const PRINT_MAX_MEMORY: u64 = 640 * 1024 * 1024;
+
 impl Limits {
+    /// The defaults of a request: [`Limits::default`], with the memory
+    /// limit [`PRINT_MAX_MEMORY`] for a print.
+    pub fn defaults_for(print: bool) -> Limits {
+        let d = Limits::default();
+        if print {
+            Limits { max_memory: PRINT_MAX_MEMORY, ..d }
+        } else {
+            d
+        }
+    }
+
     /// The configured value of `limit` (the deadline in milliseconds).
     pub fn value(&self, limit: Limit) -> u64 {
         match limit {
@@ -155,6 +179,9 @@ pub struct Budget {
     primitives: u64,
     triangles: u64,
     memory: u64,
+    /// The most accounted memory held at once so far: what the limit
+    /// bounds, compared with the process's real peak in the print tests.
+    memory_peak: u64,
     steps: u64,
     /// Where the current stage's share of the deadline ends, when the
     /// pipeline gave it one (under `on_limit: truncate`, so the stages after
@@ -204,6 +231,7 @@ impl Budget {
             primitives: 0,
             triangles: 0,
             memory: 0,
+            memory_peak: 0,
             steps: 0,
             stage_deadline: None,
         }
@@ -229,6 +257,7 @@ impl Budget {
             primitives: 0,
             triangles: 0,
             memory: 0,
+            memory_peak: 0,
             steps: 0,
             stage_deadline: None,
         }
@@ -322,6 +351,12 @@ impl Budget {
         self.memory
     }
 
+    /// The most accounted memory held at once since the budget was made
+    /// (a rewind does not lower it: the abandoned route's memory was held).
+    pub fn memory_peak(&self) -> u64 {
+        self.memory_peak
+    }
+
     /// Evaluation steps taken so far.
     pub fn steps(&self) -> u64 {
         self.steps
@@ -392,6 +427,7 @@ impl Budget {
             return Err(Self::exceeded(Limit::Memory, self.limits.max_memory, m));
         }
         self.memory = m;
+        self.memory_peak = self.memory_peak.max(m);
         Ok(())
     }
 
@@ -461,6 +497,8 @@ mod tests {
         assert_eq!(b.reserve_memory(41).unwrap_err().reached, 101);
         b.release_memory(60);
         b.reserve_memory(41).unwrap();
+        // The peak is the most held at once, refused reservations not counted.
+        assert_eq!((b.memory(), b.memory_peak()), (41, 60));
         let mut b = Budget::new(limits);
         for _ in 0..3 {
             b.charge_step().unwrap();

@@ -8,6 +8,7 @@ pub mod choice;
 pub mod diagnostic;
 pub mod frame;
 pub mod library;
+pub mod memprobe;
 pub mod mtrand;
 pub mod param;
 pub mod primitive;

@@ -400,8 +400,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         frame: req.frame,
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
+    crate::core::memprobe::mark("start", &budget);
     let mut model = build_model(language, source, &build, &mut budget, &mut clock)?;
     clock.lap(Phase::Eval);
+    crate::core::memprobe::mark("eval", &budget);
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut model))?;
     budget.release_memory(model.promised.saturating_add(overhead));
     budget.set_stage_share(truncating.then(|| mesh_share(&budget)));
@@ -418,6 +420,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     if req.on_limit == OnLimit::Error {
         budget.check_deadline()?;
     }
+    crate::core::memprobe::mark("export", &budget);
     Ok(RenderOutput { elapsed: budget.elapsed(), phases: clock.phases, ..out })
 }
 
@@ -491,6 +494,7 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
             }
         };
         clock.lap(Phase::Print);
+        crate::core::memprobe::mark("print", budget);
         if print.report {
             let bytes = serde_json::to_vec_pretty(&report).map_err(|e| RenderError::Export(e.into()))?;
             clock.lap(Phase::Export);

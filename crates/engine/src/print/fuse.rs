@@ -111,6 +111,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let origin = lo - DVec3::splat(pad) - DVec3::splat(h * 0.318_309_886);
     let grid = Grid { origin, h, n };
     let len = grid.len();
+    crate::core::memprobe::note("fuse.samples", len as u64);
     let triangles: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
     let bytes = (len as u64).saturating_mul(BYTES_PER_SAMPLE);
     budget.reserve_memory(bytes)?;
@@ -121,10 +122,12 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let inside = field::inside(parts, &grid, budget)?;
     let band = 2.5 * h;
     let (distance, nearest) = field::near_surface(parts, &grid, band, budget)?;
+    crate::core::memprobe::mark("fuse.field", budget);
     let closed = close(&inside, &grid, closing / h, budget)?;
     budget.check_deadline()?;
     let (bridge, bridges) = bridges(&inside, &closed, &grid, budget)?;
     drop(closed);
+    crate::core::memprobe::mark("fuse.close", budget);
     budget.check_deadline()?;
 
     // The signed distance, positive inside, with each bridge sample's ball.
@@ -144,14 +147,14 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     // is one more shell.
     let voids = fill_voids(&mut value, &inside, &bridge, &grid);
     drop(bridge);
+    drop(inside);
     budget.check_deadline()?;
-    let (positions, indices) = tetra::surface(&value, &grid, budget)?;
+    let (positions, indices, surface_bytes) = tetra::surface(&value, &grid, budget)?;
+    crate::core::memprobe::mark("fuse.surface", budget);
     drop(value);
-    budget.release_memory(bytes);
-    // The extracted surface while it is simplified: its positions (and
-    // their f32 copy for Manifold) and its indices.
-    let surface_bytes = (positions.len() as u64).saturating_mul(24 + 12).saturating_add((indices.len() as u64).saturating_mul(4));
-    budget.reserve_memory(surface_bytes)?;
+    // Of the grid, only each sample's nearest triangle is kept (for the colours).
+    let nearest_bytes = (len as u64).saturating_mul(4);
+    budget.release_memory(bytes.saturating_sub(nearest_bytes));
     budget.check_deadline()?;
     // Simplifying can pinch a neck thinner than the tolerance into a vertex
     // and so split a piece in two: then less, then not at all. (An eighth
@@ -161,6 +164,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
     let mut simplified = None;
     for tolerance in [h / 8.0, h / 16.0] {
         let (p, i) = simplify(&positions, &indices, tolerance, budget)?;
+        crate::core::memprobe::mark("fuse.simplify", budget);
         if components(p.len(), &i) <= pieces {
             simplified = Some((p, i));
             break;
@@ -176,9 +180,18 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
             flat.get(near as usize).or(flat.first()).copied().unwrap_or(super::PLAIN)
         })
         .collect();
-    budget.release_memory(surface_bytes);
+    budget.release_memory(surface_bytes.saturating_add(nearest_bytes));
     Ok(Fused { positions, indices, colours, stats: FuseStats { closing, spacing: h, bridges, voids } })
 }
+
+/// Bytes charged per triangle of a surface Manifold simplifies: the mesh
+/// it imports, the imported manifold, the copy `Simplify` works on (it
+/// leaves its input untouched), their colliders, and the result read back.
+/// Measured (RULEMESH_MEMORY_TRACE, glibc's mmap threshold fixed as `main`
+/// sets it): plant-e's fused surface, 1,062,796 triangles, took the
+/// process from 82 to 563 MiB resident, 474 bytes a triangle; 540 bounds
+/// it (docs/print.md, "Memory"). It was 200 before issue 38.
+pub const SIMPLIFY_BYTES_PER_TRIANGLE: u64 = 540;
 
 /// The surface (shared positions, CCW triangles) simplified by Manifold
 /// within `tolerance` (model units): marching tetrahedra cut every cell the
@@ -193,7 +206,8 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
 /// link condition, and on these surfaces it made edges of four faces.
 /// Cancelled at the deadline.
 fn simplify(positions: &[DVec3], indices: &[u32], tolerance: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
-    let bytes = (indices.len() as u64 / 3).saturating_mul(200);
+    crate::core::memprobe::note("simplify.triangles", indices.len() as u64 / 3);
+    let bytes = (indices.len() as u64 / 3).saturating_mul(SIMPLIFY_BYTES_PER_TRIANGLE);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(indices.len() as u64 / 3)?;
     let verts: Vec<f32> = positions.iter().flat_map(|p| p.as_vec3().to_array()).collect();
@@ -394,7 +408,7 @@ mod tests {
         let meshes: Vec<_> = boxes.iter().map(|(lo, hi)| cuboid(*lo, *hi)).collect();
         let parts: Vec<Piece<'_>> = meshes.iter().map(|(p, t)| (p.as_slice(), t.as_slice())).collect();
         let colours: Vec<Vec<[u8; 4]>> = meshes.iter().map(|m| vec![[255, 0, 0, 255]; m.1.len()]).collect();
-        let fused = fuse(&parts, &colours, closing, &mut Budget::new(Limits::default())).expect("fused");
+        let fused = fuse(&parts, &colours, closing, &mut Budget::new(Limits::defaults_for(true))).expect("fused");
         let tris: Vec<[u32; 3]> = fused.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
         let m = HalfEdgeMesh::new(fused.positions.clone(), tris).expect("manifold");
         assert!(m.is_closed() && m.nonmanifold_vertices().is_empty());

@@ -133,6 +133,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
         0.0
     };
     let parts = union::split_parts(meshes, wall, budget)?;
+    crate::core::memprobe::mark("print.parts", budget);
     let pieces = union::pieces(&parts.closed);
     let summary = PartSummary { parts: parts.closed.len() as u64, skipped: parts.skipped, thickened: parts.thickened, min_extent: parts.min_extent, wall, fused: None };
     // The exact union first: a model that prints as one watertight shell
@@ -143,6 +144,7 @@ pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut
     let mark = budget.mark();
     let triangles: usize = pieces.iter().map(|p| p.1.len()).sum();
     let exact = if triangles <= EXACT_MAX_TRIANGLES { exact_union(&pieces, options.size_um, budget)? } else { None };
+    crate::core::memprobe::mark("print.exact_union", budget);
     if let Some((placed, measured)) = exact {
         let colours = colour::triangle_colours(&pieces, &parts.colours, &placed.united.0, &placed.united.1, budget)?;
         return finish(placed, measured, &colours, &summary, options, budget);
@@ -171,7 +173,7 @@ fn fused(pieces: &[union::Piece<'_>], colours: &[Vec<[u8; 4]>], extent: f64, sum
     let closing = (options.profile.min_wall_mm() / 2.0 / scale).min(CLOSING_FRACTION * extent);
     let fused = fuse::fuse(pieces, colours, closing, budget)?;
     let summary = PartSummary { fused: Some(fused.stats), ..summary };
-    let placed = place((fused.positions, fused.indices), options.size_um);
+    let placed = place_charged((fused.positions, fused.indices), options.size_um, budget)?;
     let measured = measure(&placed.scaled, &placed.indices);
     if measured.shells > 1 && !options.report {
         return Err(PrintError::SeparatePieces { shells: measured.shells, gap_mm: fused.stats.gap() * placed.scale });
@@ -205,12 +207,13 @@ pub const EXACT_MAX_TRIANGLES: usize = crate::model::request::EXACT_UNION_MAX_TR
 fn exact_union(pieces: &[union::Piece<'_>], size_um: u32, budget: &mut Budget) -> Result<Option<(Placed, PrintReport)>, PrintError> {
     for grid in [union::snap_grid(pieces), 0.0] {
         let united = union::unite(pieces, grid, budget)?;
-        let placed = place(united, size_um);
+        let placed = place_charged(united, size_um, budget)?;
         let measured = measure(&placed.scaled, &placed.indices);
         if measured.nonmanifold_edges == 0 {
             // Unsnapped, pieces apart stay apart: no second try.
             return Ok((measured.is_watertight && measured.shells == 1).then_some((placed, measured)));
         }
+        budget.release_memory(placed.charged);
     }
     Ok(None)
 }
@@ -225,13 +228,15 @@ pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptio
     options.profile.validate()?;
     // The flat route charges its own work: what this one did is refunded if it gives up.
     let mark = budget.mark();
-    let Some(united) = subtree::unite_hierarchy(h, detail, budget)? else {
+    let united = subtree::unite_hierarchy(h, detail, budget)?;
+    crate::core::memprobe::mark("print.hierarchy_union", budget);
+    let Some(united) = united else {
         budget.rewind(mark);
         return Ok(None);
     };
     let subtree::United { solid, parts, min_extent } = united;
     let indices: Vec<u32> = solid.tris.iter().flatten().copied().collect();
-    let placed = place((solid.positions, indices), options.size_um);
+    let placed = place_charged((solid.positions, indices), options.size_um, budget)?;
     let measured = measure(&placed.scaled, &placed.indices);
     let summary = PartSummary { parts, skipped: 0, thickened: 0, min_extent, wall: 0.0, fused: None };
     if measured.nonmanifold_edges == 0 && measured.shells == 1 {
@@ -244,7 +249,8 @@ pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptio
         // once written in f32, or it is pieces: fused, as the flat route
         // would fuse its parts, but from the union, whose triangles are a
         // fraction of the parts' (and without expanding the segments).
-        let positions = placed.united.0;
+        let Placed { united: (positions, _), charged, .. } = placed;
+        budget.release_memory(charged);
         let (lo, hi) = bounds(positions.iter().copied());
         let extent = (hi - lo).max_element();
         let tris = solid.tris;
@@ -275,7 +281,8 @@ struct PartSummary {
 /// ([`measure`], taken by the caller to decide on it) and the colour of each
 /// of its (unplaced) triangles.
 fn finish(placed: Placed, mut report: PrintReport, colours: &[[u8; 4]], parts: &PartSummary, options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
-    let Placed { scaled, indices, kept, scale, voids, .. } = placed;
+    crate::core::memprobe::note("finish.triangles", placed.indices.len() as u64 / 3);
+    let Placed { scaled, indices, kept, scale, voids, charged, .. } = placed;
     let colours: Vec<[u8; 4]> = kept.iter().map(|&k| colours.get(k).copied().unwrap_or(PLAIN)).collect();
     let mesh = flat_mesh(&scaled, &indices, &colours);
     report.parts = parts.parts;
@@ -301,6 +308,7 @@ fn finish(placed: Placed, mut report: PrintReport, colours: &[[u8; 4]], parts: &
         report.thin_wall_area_mm2 = walls.thin_area;
         report.judge(&options.profile);
     }
+    budget.release_memory(charged);
     Ok((vec![NamedMesh { name: "print".into(), mesh }], report))
 }
 
@@ -320,6 +328,26 @@ struct Placed {
     scale: f64,
     /// Enclosed voids filled (their walls dropped).
     voids: u64,
+    /// Accounted memory of placing and finishing it ([`FINISH_BYTES_PER_TRIANGLE`]),
+    /// released by [`finish`].
+    charged: u64,
+}
+
+/// Bytes charged per triangle of a union while it is placed, measured and
+/// written as the flat-shaded print mesh: the union read back (f64
+/// positions, triangles, colours), its placed f32 copy, the edge
+/// collapse's and shell search's maps, and the flat mesh (three vertices
+/// with normal and colour per triangle). Measured (RULEMESH_MEMORY_TRACE):
+/// the Sierpinski bush's 1,007,446 triangles take 152 MiB over the union
+/// read back, 158 bytes a triangle; 200 bounds it (docs/print.md, "Memory").
+pub const FINISH_BYTES_PER_TRIANGLE: u64 = 200;
+
+/// Places `united` as [`place`] does, after charging its finishing to
+/// `budget` (refused by the memory limit before anything is allocated).
+fn place_charged(united: (Vec<glam::DVec3>, Vec<u32>), size_um: u32, budget: &mut Budget) -> Result<Placed, LimitExceeded> {
+    let charged = (united.1.len() as u64 / 3).saturating_mul(FINISH_BYTES_PER_TRIANGLE);
+    budget.reserve_memory(charged)?;
+    Ok(Placed { charged, ..place(united, size_um) })
 }
 
 /// Places a union (`size_um` 0: one model unit is a millimetre).
@@ -341,7 +369,7 @@ fn place(united: (Vec<glam::DVec3>, Vec<u32>), size_um: u32) -> Placed {
     // edges shorter than a millionth of the size.
     let (scaled, indices, kept) = collapse_short_edges(scaled, &united.1, (longest * scale) * 1e-6);
     let (indices, kept, voids) = drop_flat_shells(&scaled, indices, kept);
-    Placed { united, scaled, indices, kept, scale, voids }
+    Placed { united, scaled, indices, kept, scale, voids, charged: 0 }
 }
 
 /// Merges the two ends of every edge shorter than `eps` (and vertices at

@@ -28,10 +28,13 @@ use crate::model::hierarchy::{Entry, Hierarchy, Target};
 use glam::DMat3;
 use std::collections::HashMap;
 
-/// Bytes Manifold holds per triangle, while uniting (its input) and for
-/// each kept object's union (half-edges, normals, relations, collider):
-/// as `union::unite` counts.
-const MANIFOLD_TRIANGLE_BYTES: u64 = 200;
+/// Bytes Manifold holds per triangle of each kept object's union between
+/// levels (half-edges, normals, relations, collider): the bush's
+/// 1,007,446-triangle root held 300 MiB resident after its union, under
+/// 300 bytes a triangle. While an object is united, its input is charged
+/// at `union::MANIFOLD_UNION_BYTES` instead (its children's own charge is
+/// released first).
+const MANIFOLD_TRIANGLE_BYTES: u64 = 300;
 
 /// The union of rigid hierarchy `h` (whose shapes are `leaves`, closed and
 /// outward), object by object. `None` when a placement is not finite,
@@ -106,11 +109,15 @@ pub(super) fn unite_rigid(h: &Hierarchy, leaves: &[Solid], budget: &mut Budget) 
             budget.reserve_memory(held[index])?;
         }
         unions.push(united);
+        crate::core::memprobe::mark("rigid.object", budget);
     }
     let root = unions.pop().flatten();
     budget.release_memory(held.iter().sum());
     let Some((root, _)) = root else { return Ok(None) };
-    Ok(Some(solid_of(&root, &colour_of)))
+    let solid = solid_of(&root, &colour_of);
+    drop(root);
+    crate::core::memprobe::mark("rigid.read_back", budget);
+    Ok(Some(solid))
 }
 
 /// Steps charged per triangle that enters an object's union. An object
@@ -124,7 +131,8 @@ const STEPS_PER_TRIANGLE: u64 = 4;
 /// deadline, and its triangle count; `None` when Manifold refuses a piece
 /// (the result is empty).
 fn unite(pieces: &[manifold_rs::Manifold], input: u64, budget: &mut Budget) -> Result<Option<(manifold_rs::Manifold, u64)>, PrintError> {
-    let bytes = input.saturating_mul(MANIFOLD_TRIANGLE_BYTES);
+    crate::core::memprobe::note("rigid.union_input", input);
+    let bytes = input.saturating_mul(super::union::MANIFOLD_UNION_BYTES);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(input.saturating_mul(STEPS_PER_TRIANGLE))?;
     let timeout = budget.time_left().map(|t| u64::try_from(t.as_millis()).unwrap_or(u64::MAX).max(1));

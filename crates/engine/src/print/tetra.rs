@@ -33,16 +33,31 @@ fn corner(c: u8) -> [i64; 3] {
 /// The zero set of `values` (on `grid`, positive inside) as shared
 /// positions and triangles wound counter-clockwise seen from outside (where
 /// the field is negative). Samples that are exactly zero count as outside.
-/// Checks the deadline once per layer of cells.
-pub(super) fn surface(values: &[f32], grid: &Grid, budget: &Budget) -> Result<(Vec<DVec3>, Vec<u32>), LimitExceeded> {
+/// Checks the deadline once per layer of cells, and charges the surface
+/// to `budget` as it grows ([`SURFACE_BYTES_PER_VERTEX`], in steps of
+/// [`CHARGE_STEP`] vertices), so a surface too big for the memory limit is
+/// refused while it is made, not after; the bytes charged are returned
+/// with it, for the caller to release when it lets the surface go.
+pub(super) fn surface(values: &[f32], grid: &Grid, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>, u64), LimitExceeded> {
     let [nx, ny, nz] = grid.n;
+    let mut charged = 0u64;
     let mut positions: Vec<DVec3> = Vec::new();
     let mut indices: Vec<u32> = Vec::new();
     // The vertex on each crossed grid edge, by its two samples' indices.
     let mut on_edge: HashMap<(usize, usize), u32> = HashMap::new();
     let inside = |s: usize| values.get(s).is_some_and(|v| *v > 0.0);
+    let plane = nx * ny;
     for k in 0..nz.saturating_sub(1) {
         budget.check_deadline()?;
+        // Cells of this layer and later ones touch samples of layer k and
+        // above only: the crossings on edges that start below it are never
+        // looked up again. Dropping them keeps the map to about two layers'
+        // crossings instead of the whole surface's (a vertex's index is
+        // still the order of its first appearance, so the result is the same).
+        if k > 0 {
+            let first = k * plane;
+            on_edge.retain(|&(a, _), _| a >= first);
+        }
         for j in 0..ny.saturating_sub(1) {
             for i in 0..nx.saturating_sub(1) {
                 let sample = |c: u8| {
@@ -53,6 +68,11 @@ pub(super) fn surface(values: &[f32], grid: &Grid, budget: &Budget) -> Result<(V
                 let count = corners.iter().filter(|&&s| inside(s)).count();
                 if count == 0 || count == 8 {
                     continue;
+                }
+                // A cell adds at most nineteen vertices (a crossing on each of its edges).
+                if positions.len() as u64 + 19 > charged / SURFACE_BYTES_PER_VERTEX {
+                    budget.reserve_memory(CHARGE_STEP * SURFACE_BYTES_PER_VERTEX)?;
+                    charged += CHARGE_STEP * SURFACE_BYTES_PER_VERTEX;
                 }
                 for tet in TETRAHEDRA {
                     let (ins, outs): (Vec<u8>, Vec<u8>) = tet.iter().partition(|&&c| inside(corners[c as usize]));
@@ -85,8 +105,17 @@ pub(super) fn surface(values: &[f32], grid: &Grid, budget: &Budget) -> Result<(V
             }
         }
     }
-    Ok((positions, indices))
+    Ok((positions, indices, charged))
 }
+
+/// Bytes charged per surface vertex: its f64 position (24) and the f32
+/// copy Manifold imports (12), about two triangles' indices (24), and its
+/// share of the two layers' edge map; a marching-tetrahedra surface has
+/// about two triangles per vertex (plant-e's: 1,062,796 triangles).
+pub const SURFACE_BYTES_PER_VERTEX: u64 = 80;
+
+/// Vertices charged at a time.
+const CHARGE_STEP: u64 = 16_384;
 
 /// The sign of the volume of the tetrahedron of corners (p, a, b, c),
 /// exactly (integer offsets).
@@ -131,8 +160,10 @@ mod tests {
                     }
                 }
             }
-            let budget = Budget::new(crate::core::budget::Limits::default());
-            let (positions, indices) = surface(&values, &grid, &budget).expect("in time");
+            let mut budget = Budget::new(crate::core::budget::Limits::default());
+            let (positions, indices, charged) = surface(&values, &grid, &mut budget).expect("in time");
+            assert_eq!(budget.memory(), charged);
+            assert!(charged >= positions.len() as u64 * SURFACE_BYTES_PER_VERTEX, "{charged} for {} vertices", positions.len());
             let tris: Vec<[u32; 3]> = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
             let m = HalfEdgeMesh::new(positions, tris).expect("manifold");
             assert!(m.is_closed() && m.nonmanifold_vertices().is_empty());

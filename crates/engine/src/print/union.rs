@@ -202,14 +202,25 @@ pub(super) fn snap(q: DVec3, grid: f64) -> DVec3 {
 /// not snapped; [`snap_grid`] says why and `make_printable` when).
 pub(super) fn unite(parts: &[Piece<'_>], grid: f64, budget: &mut Budget) -> Result<(Vec<DVec3>, Vec<u32>), PrintError> {
     let total: u64 = parts.iter().map(|p| p.1.len() as u64).sum();
-    // Manifold holds about 200 bytes per triangle while it works (half-edges, collider, properties).
-    let bytes = total.saturating_mul(200);
+    crate::core::memprobe::note("union.input", total);
+    let bytes = total.saturating_mul(MANIFOLD_UNION_BYTES);
     budget.reserve_memory(bytes)?;
     budget.charge_steps(total.saturating_mul(8))?;
     let (positions, indices) = batch_union(parts, grid, budget)?;
     budget.release_memory(bytes);
     Ok((positions.iter().map(|p| glam::Vec3::from_array(*p).as_dvec3()).collect(), indices))
 }
+
+/// Bytes charged per triangle that enters a Manifold union, for the
+/// whole union: the inputs' Manifolds (half-edges, normals, relations,
+/// collider; a lazily placed copy made real when the boolean reads it),
+/// the boolean's intermediate data and the result. Measured
+/// (RULEMESH_MEMORY_TRACE, glibc's mmap threshold fixed as `main` sets
+/// it): the Sierpinski bush's top union, 999,210 triangles in, took the
+/// process 552 MiB over its idle size, 580 bytes a triangle; 600 bounds
+/// it (docs/print.md, "Memory"). It was 200 before issue 38, a third of
+/// what Manifold really held.
+pub(super) const MANIFOLD_UNION_BYTES: u64 = 600;
 
 /// One batch union of `parts`, their vertices snapped to `grid` (0: not
 /// snapped), cancelled at the budget's deadline.

@@ -53,6 +53,12 @@ pub struct ServeConfig {
     /// Server-side ceiling: longest render, in milliseconds.
     #[arg(long, env = "RULEMESH_CEILING_TIMEOUT_MS", default_value_t = 60_000)]
     pub ceiling_timeout_ms: u64,
+    /// Resident bytes the process keeps under: a render starts only while resident memory plus its memory budget fits (else it waits, then is refused with 503 `memory_pressure`). 0: off. Unset: 15/16 of the cgroup memory limit when there is one, else off.
+    #[arg(long, env = "RULEMESH_MEMORY_CEILING")]
+    pub memory_ceiling: Option<u64>,
+    /// Longest a render waits for memory under the ceiling before it is refused, in milliseconds.
+    #[arg(long, env = "RULEMESH_MEMORY_WAIT_MS", default_value_t = 2_000)]
+    pub memory_wait_ms: u64,
     /// Directory of the disk cache tier (content-addressed files; survives restarts). None: memory only.
     #[arg(long, env = "RULEMESH_CACHE_DIR")]
     pub cache_dir: Option<PathBuf>,
@@ -165,6 +171,10 @@ pub struct ConfigFile {
     pub ceiling_memory: Option<u64>,
     /// [`ServeConfig::ceiling_timeout_ms`]
     pub ceiling_timeout_ms: Option<u64>,
+    /// [`ServeConfig::memory_ceiling`]
+    pub memory_ceiling: Option<u64>,
+    /// [`ServeConfig::memory_wait_ms`]
+    pub memory_wait_ms: Option<u64>,
     /// [`ServeConfig::cache_dir`]
     pub cache_dir: Option<PathBuf>,
     /// [`ServeConfig::cache_dir_bytes`]
@@ -236,6 +246,8 @@ impl Default for ServeConfig {
             ceiling_triangles: 50_000_000,
             ceiling_memory: 2 * 1024 * 1024 * 1024,
             ceiling_timeout_ms: 60_000,
+            memory_ceiling: None,
+            memory_wait_ms: 2_000,
             cache_dir: None,
             cache_dir_bytes: 1024 * 1024 * 1024,
             cache_redis: None,
@@ -283,6 +295,8 @@ impl ServeConfig {
             ceiling_triangles,
             ceiling_memory,
             ceiling_timeout_ms,
+            memory_ceiling,
+            memory_wait_ms,
             cache_dir,
             cache_dir_bytes,
             cache_redis,
@@ -323,6 +337,12 @@ impl ServeConfig {
             ..Limits::ceiling()
         }
         .clamped_to(&Limits::ceiling())
+    }
+
+    /// The memory guard's ceiling in bytes (`None`: off), from the setting
+    /// or the cgroup's limit ([`super::memory::effective_ceiling`]).
+    pub fn memory_ceiling(&self) -> Option<u64> {
+        super::memory::effective_ceiling(self.memory_ceiling, super::memory::cgroup_limit())
     }
 
     /// The longest wait for a render slot.

@@ -35,6 +35,7 @@ pub struct Engine {
     queue_timeout: Duration,
     allow_javascript: bool,
     metrics: Arc<Metrics>,
+    memory: Arc<super::memory::MemoryGuard>,
 }
 
 /// Decrements the waiting count even if the waiting future is dropped.
@@ -65,6 +66,11 @@ impl Engine {
         // observer, so that neither keeps the other alive.
         metrics.attach_cache(cache.clone());
         let cache = cache.with_observer(metrics.clone());
+        let memory = Arc::new(super::memory::MemoryGuard::new(config.memory_ceiling(), Duration::from_millis(config.memory_wait_ms), Box::new(super::memory::Statm)));
+        if let Some(ceiling) = memory.ceiling() {
+            tracing::info!(ceiling, "memory guard on: renders start only while resident memory plus their memory budget fits");
+        }
+        metrics.attach_memory(memory.clone());
         Ok(Engine {
             cache,
             slots: Arc::new(Semaphore::new(slot_count)),
@@ -74,7 +80,13 @@ impl Engine {
             queue_timeout: config.queue_timeout(),
             allow_javascript: config.allow_javascript,
             metrics,
+            memory,
         })
+    }
+
+    /// The process memory guard.
+    pub fn memory(&self) -> &super::memory::MemoryGuard {
+        &self.memory
     }
 
     /// The model cache.
@@ -132,6 +144,23 @@ impl Engine {
                 }
             }
         };
+        // The second line behind the render's own budget: start only while
+        // the process has room for the whole budget (waiting a little for
+        // renders in flight to give memory back), never into the OOM killer.
+        let budget = plan.request.limits.max_memory;
+        match self.memory.admit(budget).await {
+            Ok(waited) => {
+                if waited {
+                    self.metrics.memory_waited();
+                }
+            }
+            Err(p) => {
+                drop(permit);
+                self.metrics.memory_refused();
+                tracing::warn!(resident = p.resident, ceiling = p.ceiling, budget = p.budget, "render refused: memory ceiling");
+                return Err(ServiceError::MemoryPressure { resident: p.resident, ceiling: p.ceiling, budget: p.budget, retry_after_secs: 1 });
+            }
+        }
         let queue = queued_at.elapsed();
         let metrics = self.metrics.clone();
         metrics.queue_wait(queue);

@@ -94,6 +94,22 @@ pub enum ServiceError {
         /// Suggested wait in seconds.
         retry_after_secs: u64,
     },
+    /// The process is too close to its memory ceiling (`--memory-ceiling`)
+    /// for one more render's memory budget, and no render in flight gave
+    /// memory back while this one waited: retry, here later or on another
+    /// worker. The guard behind each render's budget (`memory`), so that
+    /// no sizing mistake reaches the kernel's OOM killer.
+    #[error("memory_pressure: the process holds {} MiB of its {} MiB memory ceiling, too little room for a render with a {} MiB memory budget; retry after {retry_after_secs} s", mib(*resident), mib(*ceiling), mib(*budget))]
+    MemoryPressure {
+        /// Resident bytes when the render gave up waiting.
+        resident: u64,
+        /// The memory ceiling in bytes.
+        ceiling: u64,
+        /// The render's memory budget in bytes.
+        budget: u64,
+        /// Suggested wait in seconds.
+        retry_after_secs: u64,
+    },
     /// The request waited for a render slot longer than its deadline.
     #[error("no render slot within the {ms} ms request deadline")]
     QueueTimeout {
@@ -120,6 +136,11 @@ pub enum ServiceError {
     /// A failure inside the server.
     #[error("internal error: {0}")]
     Internal(String),
+}
+
+/// Bytes in whole MiB, rounded up (so a ceiling is never understated).
+fn mib(bytes: u64) -> u64 {
+    bytes.div_ceil(1024 * 1024)
 }
 
 impl From<RenderError> for ServiceError {
@@ -152,7 +173,7 @@ impl ServiceError {
             ServiceError::Limit(_) | ServiceError::Unprocessable { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             ServiceError::NotFound(_) => StatusCode::NOT_FOUND,
             ServiceError::PayloadTooLarge { .. } => StatusCode::PAYLOAD_TOO_LARGE,
-            ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => StatusCode::SERVICE_UNAVAILABLE,
+            ServiceError::Overloaded { .. } | ServiceError::ShuttingDown | ServiceError::MemoryPressure { .. } => StatusCode::SERVICE_UNAVAILABLE,
             ServiceError::QueueTimeout { .. } => StatusCode::GATEWAY_TIMEOUT,
             ServiceError::Unauthorized => StatusCode::UNAUTHORIZED,
             ServiceError::RateLimited { .. } => StatusCode::TOO_MANY_REQUESTS,
@@ -169,7 +190,7 @@ impl ServiceError {
             ServiceError::Limit(_) => tonic::Code::ResourceExhausted,
             ServiceError::Unprocessable { .. } => tonic::Code::FailedPrecondition,
             ServiceError::NotFound(_) => tonic::Code::NotFound,
-            ServiceError::PayloadTooLarge { .. } => tonic::Code::ResourceExhausted,
+            ServiceError::PayloadTooLarge { .. } | ServiceError::MemoryPressure { .. } => tonic::Code::ResourceExhausted,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => tonic::Code::Unavailable,
             ServiceError::QueueTimeout { .. } => tonic::Code::DeadlineExceeded,
             ServiceError::Unauthorized => tonic::Code::Unauthenticated,
@@ -191,6 +212,7 @@ impl ServiceError {
             ServiceError::NotFound(_) => "not_found",
             ServiceError::PayloadTooLarge { .. } => "payload_too_large",
             ServiceError::Overloaded { .. } => "overloaded",
+            ServiceError::MemoryPressure { .. } => "memory_pressure",
             ServiceError::QueueTimeout { .. } => "queue_timeout",
             ServiceError::ShuttingDown => "shutting_down",
             ServiceError::Unauthorized => "unauthorized",
@@ -203,7 +225,9 @@ impl ServiceError {
     /// Seconds a client should wait before retrying, for overload errors.
     pub fn retry_after(&self) -> Option<u64> {
         match self {
-            ServiceError::Overloaded { retry_after_secs, .. } | ServiceError::RateLimited { retry_after_secs, .. } => Some(*retry_after_secs),
+            ServiceError::Overloaded { retry_after_secs, .. } | ServiceError::RateLimited { retry_after_secs, .. } | ServiceError::MemoryPressure { retry_after_secs, .. } => {
+                Some(*retry_after_secs)
+            }
             ServiceError::ShuttingDown => Some(1),
             _ => None,
         }
@@ -230,9 +254,18 @@ impl ServiceError {
                     ServiceError::Parse(p) => Some(p.diagnostics.clone()),
                     _ => None,
                 },
-                limit: limit.map(|l| l.limit.name()),
-                configured: limit.map(|l| l.configured),
-                reached: limit.map(|l| l.reached),
+                limit: match self {
+                    ServiceError::MemoryPressure { .. } => Some("memory_ceiling"),
+                    _ => limit.map(|l| l.limit.name()),
+                },
+                configured: match self {
+                    ServiceError::MemoryPressure { ceiling, .. } => Some(*ceiling),
+                    _ => limit.map(|l| l.configured),
+                },
+                reached: match self {
+                    ServiceError::MemoryPressure { resident, budget, .. } => Some(resident.saturating_add(*budget)),
+                    _ => limit.map(|l| l.reached),
+                },
                 retry_after: self.retry_after(),
             },
         }
@@ -250,8 +283,14 @@ impl ServiceError {
         let mut status = tonic::Status::with_details(self.grpc_code(), self.to_string(), body.to_string().into_bytes().into());
         let md = status.metadata_mut();
         md.insert("x-rulemesh-error", tonic::metadata::MetadataValue::from_static(self.code()));
-        if let ServiceError::Limit(l) = self {
-            md.insert("x-rulemesh-limit", tonic::metadata::MetadataValue::from_static(l.limit.name()));
+        match self {
+            ServiceError::Limit(l) => {
+                md.insert("x-rulemesh-limit", tonic::metadata::MetadataValue::from_static(l.limit.name()));
+            }
+            ServiceError::MemoryPressure { .. } => {
+                md.insert("x-rulemesh-limit", tonic::metadata::MetadataValue::from_static("memory_ceiling"));
+            }
+            _ => {}
         }
         if let Some(r) = self.retry_after() {
             md.insert("retry-after", tonic::metadata::MetadataValue::from(r));
@@ -278,6 +317,7 @@ impl IntoResponse for ServiceError {
 mod tests {
     use super::*;
     use crate::print::PrintError;
+    use serde_json::json;
 
     #[test]
     fn request_faults_are_typed_and_never_500() {
@@ -293,6 +333,11 @@ mod tests {
         assert!(apart.to_string().contains("separate_shells") && apart.to_string().contains("3 separate pieces"), "{apart}");
         let size: ServiceError = RenderError::Unprintable(PrintError::BadSize(0.0)).into();
         assert_eq!((size.http_status(), size.code()), (StatusCode::BAD_REQUEST, "bad_request"));
+        let pressure = ServiceError::MemoryPressure { resident: 1000 << 20, ceiling: 1536 << 20, budget: 1 << 29, retry_after_secs: 1 };
+        assert_eq!((pressure.http_status(), pressure.code(), pressure.grpc_code()), (StatusCode::SERVICE_UNAVAILABLE, "memory_pressure", tonic::Code::ResourceExhausted));
+        assert_eq!(pressure.to_string(), "memory_pressure: the process holds 1000 MiB of its 1536 MiB memory ceiling, too little room for a render with a 512 MiB memory budget; retry after 1 s");
+        let body = pressure.body();
+        assert_eq!((&body["error"]["limit"], &body["error"]["configured"], &body["error"]["reached"], &body["error"]["retry_after"]), (&json!("memory_ceiling"), &json!(1536u64 << 20), &json!(1512u64 << 20), &json!(1)));
         let wall: ServiceError = RenderError::Unprintable(PrintError::BadMinWall(0.0)).into();
         assert_eq!((wall.http_status(), wall.code(), wall.grpc_code()), (StatusCode::BAD_REQUEST, "bad_request", tonic::Code::InvalidArgument));
     }

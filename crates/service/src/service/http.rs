@@ -480,7 +480,8 @@ async fn model_get(
         }
         let pinned = body.seed.is_some();
         let text = ext == "gltf";
-        let plan = body.plan(&Limits::default().clamped_to(&caller.ceiling), wants_fresh(&headers))?;
+        let print = body.print == Some(true);
+        let plan = body.plan(&Limits::defaults_for(print).clamped_to(&caller.ceiling), wants_fresh(&headers))?;
         let format = plan.request.format;
         let served = st.engine.serve(plan).await?;
         Ok((served, pinned, text, format))

@@ -18,6 +18,7 @@ pub mod http;
 pub mod http_batch;
 pub mod http_schema;
 pub mod library;
+pub mod memory;
 pub mod metrics;
 pub mod playground;
 pub mod request;

@@ -27,7 +27,7 @@ pub struct LimitsBody {
     pub max_primitives: Option<u64>,
     /// [`Limits::max_triangles`]
     pub max_triangles: Option<u64>,
-    /// [`Limits::max_memory`]
+    /// [`Limits::max_memory`] (default 256 MiB; 640 MiB for a print, [`crate::core::budget::PRINT_MAX_MEMORY`])
     pub max_memory: Option<u64>,
     /// [`Limits::timeout_ms`]
     pub timeout_ms: Option<u64>,
@@ -38,9 +38,10 @@ pub struct LimitsBody {
 }
 
 impl LimitsBody {
-    /// The defaults overridden by the given fields, clamped to `ceiling`.
-    pub fn resolve(&self, ceiling: &Limits) -> Limits {
-        let d = Limits::default();
+    /// The defaults (a print's, [`Limits::defaults_for`], when `print`)
+    /// overridden by the given fields, clamped to `ceiling`.
+    pub fn resolve(&self, ceiling: &Limits, print: bool) -> Limits {
+        let d = Limits::defaults_for(print);
         Limits {
             max_depth: self.max_depth.unwrap_or(d.max_depth),
             max_primitives: self.max_primitives.unwrap_or(d.max_primitives),
@@ -325,7 +326,7 @@ impl RenderBody {
             seed: self.seed,
             params: self.params,
             format,
-            limits: self.limits.unwrap_or_default().resolve(ceiling),
+            limits: self.limits.unwrap_or_default().resolve(ceiling, print.enabled),
             on_limit: parse_on_limit(self.on_limit.as_deref())?,
             detail: self.detail.unwrap_or(DEFAULT_DETAIL),
             layout: parse_layout(self.layout.as_deref())?,

@@ -63,3 +63,34 @@ impl Collector for CacheFigures {
         Ok(())
     }
 }
+
+/// Encodes the process's resident bytes (read at each scrape, from
+/// `/proc/self/statm`) and the memory guard's ceiling (0 when it is off),
+/// so that an alert can see a worker near its ceiling before renders are
+/// refused.
+pub(super) struct MemoryFigures {
+    guard: Arc<OnceLock<Arc<crate::service::memory::MemoryGuard>>>,
+}
+
+impl MemoryFigures {
+    pub(super) fn new(guard: Arc<OnceLock<Arc<crate::service::memory::MemoryGuard>>>) -> MemoryFigures {
+        MemoryFigures { guard }
+    }
+}
+
+impl std::fmt::Debug for MemoryFigures {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("MemoryFigures").field("attached", &self.guard.get().is_some()).finish()
+    }
+}
+
+impl Collector for MemoryFigures {
+    fn encode(&self, mut e: DescriptorEncoder) -> Result<(), std::fmt::Error> {
+        let e = &mut e;
+        let resident = self.guard.get().map_or_else(|| crate::service::memory::resident_bytes().unwrap_or(0), |g| g.resident());
+        gauge(e, "process_resident_bytes", "Resident memory of the process now (/proc/self/statm)", resident)?;
+        let ceiling = self.guard.get().and_then(|g| g.ceiling()).unwrap_or(0);
+        gauge(e, "memory_ceiling_bytes", "The memory guard's ceiling (0: off); renders start only while resident memory plus their budget fits under it", ceiling)?;
+        Ok(())
+    }
+}

@@ -122,7 +122,10 @@ pub struct Metrics {
     connections_closed: Family<ReasonLabel, Counter>,
     access_rejections: Family<ReasonLabel, Counter>,
     watchdog: Counter,
+    memory_refusals: Counter,
+    memory_waits: Counter,
     cache: Arc<OnceLock<ModelCache>>,
+    memory: Arc<OnceLock<Arc<crate::service::memory::MemoryGuard>>>,
 }
 
 impl std::fmt::Debug for Metrics {
@@ -164,7 +167,10 @@ impl Metrics {
             connections_closed: Family::default(),
             access_rejections: Family::default(),
             watchdog: Counter::default(),
+            memory_refusals: Counter::default(),
+            memory_waits: Counter::default(),
             cache: Arc::new(OnceLock::new()),
+            memory: Arc::new(OnceLock::new()),
             registry: Registry::default(),
         };
         let r = &mut registry;
@@ -188,7 +194,10 @@ impl Metrics {
         r.register("http_connections_closed", "HTTP connections the server closed, by reason", m.connections_closed.clone());
         r.register("access_rejections", "Requests refused by access control, by reason", m.access_rejections.clone());
         r.register("deadline_watchdog", "Renders the service ended at their deadline because the pipeline ran past it", m.watchdog.clone());
+        r.register("memory_refusals", "Renders refused because resident memory plus their memory budget would pass the memory ceiling (HTTP 503 memory_pressure)", m.memory_refusals.clone());
+        r.register("memory_waits", "Renders that waited for memory under the ceiling and then started", m.memory_waits.clone());
         r.register_collector(Box::new(figures::CacheFigures::new(m.cache.clone())));
+        r.register_collector(Box::new(figures::MemoryFigures::new(m.memory.clone())));
         Metrics { registry, ..m }
     }
 
@@ -197,6 +206,22 @@ impl Metrics {
     /// so that the cache and these metrics do not hold each other.
     pub fn attach_cache(&self, cache: ModelCache) {
         let _ = self.cache.set(cache);
+    }
+
+    /// Lets the scrape read the process's resident bytes and the memory
+    /// guard's ceiling.
+    pub fn attach_memory(&self, guard: Arc<crate::service::memory::MemoryGuard>) {
+        let _ = self.memory.set(guard);
+    }
+
+    /// Counts a render refused by the memory guard.
+    pub fn memory_refused(&self) {
+        self.memory_refusals.inc();
+    }
+
+    /// Counts a render that waited for memory and then started.
+    pub fn memory_waited(&self) {
+        self.memory_waits.inc();
     }
 
     /// Counts one finished request and its latency (`protocol` is `http` or `grpc`).

@@ -1,0 +1,249 @@
+//! The process-level memory guard: a second line behind each render's
+//! memory budget (issue 38).
+//!
+//! A render's budget (`max_memory`) is meant to bound what it allocates,
+//! and `docs/deploy.md` sizes a worker from it. Where a charge falls short
+//! of what a stage really holds (Manifold's C++ data, allocator slack, a
+//! sizing mistake in a manifest), the kernel's OOM killer would end the
+//! whole worker: every render in flight and the in-process cache. So before
+//! a render starts, the engine reads the process's resident memory
+//! (`/proc/self/statm`) and admits the render only if that plus the
+//! render's whole memory budget stays under a ceiling; otherwise it waits a
+//! little for renders in flight to finish and give memory back, then
+//! refuses with a typed `memory_pressure` (HTTP 503, gRPC
+//! RESOURCE_EXHAUSTED) that the balancer can retry on another worker.
+//!
+//! The ceiling is `--memory-ceiling` (`RULEMESH_MEMORY_CEILING`), 0 for
+//! off; unset, it is [`CGROUP_SHARE`] of the cgroup's memory limit
+//! (`/sys/fs/cgroup/memory.max`, or cgroup v1's
+//! `memory/memory.limit_in_bytes`) when the process has one, and off
+//! without one (a developer's machine, where the kernel's own overcommit
+//! rules apply).
+
+use std::path::Path;
+use std::time::Duration;
+
+/// The share of the cgroup's memory limit the guard keeps renders under
+/// when no ceiling is configured: 15/16, so that the kernel's own use in
+/// the cgroup (page tables, socket buffers, the page cache it may not
+/// reclaim at once) has room before the OOM killer is reached.
+pub const CGROUP_SHARE: (u64, u64) = (15, 16);
+
+/// How often a render waiting for memory looks at the resident size again.
+const POLL: Duration = Duration::from_millis(50);
+
+/// Reads the process's resident bytes. A trait so that tests can drive the
+/// guard through exact values.
+pub trait ResidentReader: Send + Sync {
+    /// Resident bytes now; `None` where the system does not say (no `/proc`).
+    fn resident(&self) -> Option<u64>;
+}
+
+/// The real reader: `/proc/self/statm`'s resident pages times the page size.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Statm;
+
+impl ResidentReader for Statm {
+    fn resident(&self) -> Option<u64> {
+        resident_bytes()
+    }
+}
+
+/// The process's resident bytes from `/proc/self/statm`; `None` without it.
+pub fn resident_bytes() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/self/statm").ok()?;
+    Some(parse_statm(&text)?.saturating_mul(page_size()))
+}
+
+/// The resident pages (the second field) of a `statm` line.
+pub fn parse_statm(text: &str) -> Option<u64> {
+    text.split_whitespace().nth(1)?.parse().ok()
+}
+
+fn page_size() -> u64 {
+    // SAFETY: sysconf has no preconditions; it returns -1 on error.
+    let size = unsafe { libc::sysconf(libc::_SC_PAGESIZE) };
+    u64::try_from(size).ok().filter(|&s| s > 0).unwrap_or(4096)
+}
+
+/// A cgroup memory limit file's value: bytes, or `None` for `max` (no
+/// limit) or a value so large it means none (cgroup v1 writes
+/// 9223372036854771712 for "unlimited").
+pub fn parse_cgroup_limit(text: &str) -> Option<u64> {
+    let v: u64 = text.trim().parse().ok()?;
+    (v > 0 && v < 1 << 60).then_some(v)
+}
+
+/// The cgroup's memory limit in bytes, if the process runs under one.
+pub fn cgroup_limit() -> Option<u64> {
+    ["/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"]
+        .iter()
+        .find_map(|p| std::fs::read_to_string(Path::new(p)).ok().and_then(|t| parse_cgroup_limit(&t)))
+}
+
+/// The ceiling the guard enforces: `configured` when given (0: off), else
+/// [`CGROUP_SHARE`] of `cgroup` when there is one, else off.
+pub fn effective_ceiling(configured: Option<u64>, cgroup: Option<u64>) -> Option<u64> {
+    match configured {
+        Some(0) => None,
+        Some(c) => Some(c),
+        None => cgroup.map(|c| c / CGROUP_SHARE.1 * CGROUP_SHARE.0),
+    }
+}
+
+/// Why a render was not let start: the process was too close to its
+/// memory ceiling for one more render's budget.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Pressure {
+    /// Resident bytes when the render gave up waiting.
+    pub resident: u64,
+    /// The ceiling.
+    pub ceiling: u64,
+    /// The render's memory budget, which had to fit under the ceiling.
+    pub budget: u64,
+}
+
+/// Admits renders while the process has room for their memory budget.
+pub struct MemoryGuard {
+    ceiling: Option<u64>,
+    wait: Duration,
+    reader: Box<dyn ResidentReader>,
+}
+
+impl std::fmt::Debug for MemoryGuard {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("MemoryGuard").field("ceiling", &self.ceiling).field("wait", &self.wait).finish_non_exhaustive()
+    }
+}
+
+impl MemoryGuard {
+    /// A guard with `ceiling` (`None`: off) that lets a render wait up to
+    /// `wait` for room, reading the resident size with `reader`.
+    pub fn new(ceiling: Option<u64>, wait: Duration, reader: Box<dyn ResidentReader>) -> MemoryGuard {
+        MemoryGuard { ceiling, wait, reader }
+    }
+
+    /// The ceiling in bytes, if the guard is on.
+    pub fn ceiling(&self) -> Option<u64> {
+        self.ceiling
+    }
+
+    /// Resident bytes now (0 where the system does not say).
+    pub fn resident(&self) -> u64 {
+        self.reader.resident().unwrap_or(0)
+    }
+
+    /// Whether a render of memory budget `budget` fits now; `Err` with the
+    /// figures when it does not. Always fits when the guard is off or the
+    /// resident size cannot be read.
+    pub fn fits(&self, budget: u64) -> Result<(), Pressure> {
+        let (Some(ceiling), Some(resident)) = (self.ceiling, self.reader.resident()) else { return Ok(()) };
+        if resident.saturating_add(budget) <= ceiling {
+            Ok(())
+        } else {
+            Err(Pressure { resident, ceiling, budget })
+        }
+    }
+
+    /// Waits until a render of memory budget `budget` fits, at most the
+    /// guard's wait; the first time it does not fit, asks the allocator to
+    /// give freed memory back to the system (`malloc_trim`: glibc keeps
+    /// freed pages of a finished render's arenas resident otherwise).
+    /// `Ok(true)` if it had to wait.
+    pub async fn admit(&self, budget: u64) -> Result<bool, Pressure> {
+        if self.fits(budget).is_ok() {
+            return Ok(false);
+        }
+        trim();
+        let until = tokio::time::Instant::now() + self.wait;
+        loop {
+            match self.fits(budget) {
+                Ok(()) => return Ok(true),
+                Err(p) if tokio::time::Instant::now() >= until => return Err(p),
+                Err(_) => tokio::time::sleep(POLL).await,
+            }
+        }
+    }
+}
+
+/// The size from which glibc's malloc maps each block on its own (and
+/// unmaps it when freed): 1 MiB, fixed.
+pub const MMAP_THRESHOLD: i32 = 1 << 20;
+
+/// Fixes glibc's mmap threshold at [`MMAP_THRESHOLD`]. By default glibc
+/// raises the threshold to the size of the largest mapped block freed (up
+/// to 32 MiB), after which a print's big vectors (Manifold's half-edges,
+/// the fused route's grids) come from the heap and stay resident after
+/// they are freed, so the next stage's vectors are added on top instead
+/// of reusing the pages: the Sierpinski bush's print peaked at 664 MB
+/// resident with the default and at 573 MB with the threshold fixed, and
+/// plant-e's at 634 and 576 MB, for the same bytes out and the same CPU
+/// time (docs/print.md, "Memory"). Called first thing in `main`, before
+/// any thread starts.
+pub fn tune_allocator() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: mallopt only sets a malloc parameter; called before other threads exist.
+    unsafe {
+        libc::mallopt(libc::M_MMAP_THRESHOLD, MMAP_THRESHOLD);
+    }
+}
+
+/// Returns freed heap memory to the system where the allocator keeps it.
+pub fn trim() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: malloc_trim has no preconditions and may be called from any thread.
+    unsafe {
+        libc::malloc_trim(0);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    use std::sync::Arc;
+
+    struct Fixed(Arc<AtomicU64>);
+
+    impl ResidentReader for Fixed {
+        fn resident(&self) -> Option<u64> {
+            Some(self.0.load(Ordering::SeqCst))
+        }
+    }
+
+    #[test]
+    fn statm_and_cgroup_files_are_read_as_the_kernel_writes_them() {
+        assert_eq!(parse_statm("125013 3261 1850 274 0 9830 0\n"), Some(3261));
+        assert_eq!(parse_statm("12"), None);
+        assert_eq!(parse_cgroup_limit("1610612736\n"), Some(1_610_612_736));
+        assert_eq!(parse_cgroup_limit("max\n"), None);
+        assert_eq!(parse_cgroup_limit("9223372036854771712\n"), None);
+        assert!(resident_bytes().is_some_and(|r| r > 1 << 20), "this test process holds more than a MiB");
+    }
+
+    #[test]
+    fn the_ceiling_is_the_flag_or_fifteen_sixteenths_of_the_cgroup_limit() {
+        let mib = 1024 * 1024;
+        assert_eq!(effective_ceiling(Some(1536 * mib), Some(4096 * mib)), Some(1536 * mib));
+        assert_eq!(effective_ceiling(Some(0), Some(1536 * mib)), None);
+        assert_eq!(effective_ceiling(None, Some(1536 * mib)), Some(1440 * mib));
+        assert_eq!(effective_ceiling(None, None), None);
+    }
+
+    #[tokio::test]
+    async fn a_render_fits_waits_for_room_or_is_refused_with_the_figures() {
+        let resident = Arc::new(AtomicU64::new(600));
+        let guard = MemoryGuard::new(Some(1000), Duration::from_millis(300), Box::new(Fixed(resident.clone())));
+        assert_eq!(guard.admit(400).await, Ok(false), "600 + 400 fits under 1000 exactly");
+        assert_eq!(guard.admit(401).await, Err(Pressure { resident: 600, ceiling: 1000, budget: 401 }));
+        // Memory given back while a render waits lets it start.
+        let later = resident.clone();
+        tokio::spawn(async move {
+            tokio::time::sleep(Duration::from_millis(100)).await;
+            later.store(500, Ordering::SeqCst);
+        });
+        assert_eq!(guard.admit(450).await, Ok(true));
+        let off = MemoryGuard::new(None, Duration::ZERO, Box::new(Fixed(resident)));
+        assert_eq!(off.admit(u64::MAX).await, Ok(false));
+    }
+}
