@@ -13,21 +13,29 @@ RUN apt-get update \
     && apt-get install -y --no-install-recommends cmake=3.25.1-1 ninja-build=1.11.1-2~deb12u1 g++=4:12.2.0-3 \
     && rm -rf /var/lib/apt/lists/*
 WORKDIR /src
-# Dependencies first: a stub crate with the real manifests builds every
-# dependency into this layer, reused until Cargo.toml or Cargo.lock change.
-COPY Cargo.toml Cargo.lock build.rs ./
+# Dependencies first: stub crates with the real manifests build every
+# dependency into this layer, reused until a Cargo.toml or Cargo.lock change.
+# The workspace's members (crates/, ARCHITECTURE.md "Code map") are copied
+# manifest by manifest: their sources would void this layer's cache.
+COPY Cargo.toml Cargo.lock ./
+COPY crates/core/Cargo.toml crates/core/build.rs crates/core/
+COPY crates/lang/Cargo.toml crates/lang/
+COPY crates/engine/Cargo.toml crates/engine/
+COPY crates/service/Cargo.toml crates/service/build.rs crates/service/
 COPY proto ./proto
 COPY grammars ./grammars
 # manifold-rs with the determinism fix to Manifold (vendor/manifold-rs/PATCHES.md).
 COPY vendor ./vendor
-RUN mkdir -p src bench tests/it \
+RUN mkdir -p src bench tests/it crates/core/src crates/lang/src crates/engine/src crates/service/src \
     && echo 'fn main() {}' > src/main.rs \
-    && touch src/lib.rs bench/decode_strips.rs tests/it/main.rs \
+    && touch src/lib.rs bench/decode_strips.rs tests/it/main.rs crates/core/src/lib.rs crates/lang/src/lib.rs crates/engine/src/lib.rs crates/service/src/lib.rs \
     && cargo build --release --locked --bin rulemesh \
-    && rm -rf src
-# Then the crate itself.
+    && rm -rf src crates/core/src crates/lang/src crates/engine/src crates/service/src
+# Then the crates themselves; every stub is touched, or cargo, seeing stubs
+# newer than the copied sources, would keep the stubs' empty crates.
 COPY src ./src
-RUN touch src/main.rs src/lib.rs \
+COPY crates ./crates
+RUN touch src/main.rs src/lib.rs crates/core/src/lib.rs crates/lang/src/lib.rs crates/engine/src/lib.rs crates/service/src/lib.rs \
     && cargo build --release --locked --bin rulemesh \
     && cp target/release/rulemesh /usr/local/bin/rulemesh
 

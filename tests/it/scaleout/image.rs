@@ -90,6 +90,11 @@ fn dockerfile_parses_and_its_dependency_layer_covers_the_manifest() {
     let stub = instrs[..copy_src].iter().find(|(k, a)| k == "RUN" && a.contains("cargo build")).expect("a dependency build before COPY src");
     let copied: Vec<&str> = instrs[..copy_src].iter().filter(|(k, _)| k == "COPY").flat_map(|(_, a)| a.split_whitespace()).collect();
     for f in ["Cargo.toml", "Cargo.lock", "build.rs"] {
+        // The root build script left with the workspace split (the library's
+        // embedding is crates/core/build.rs); a root one, if it returns, is copied too.
+        if f == "build.rs" && !common::repo().join(f).exists() {
+            continue;
+        }
         assert!(copied.contains(&f), "{f} is not copied before the dependency build");
     }
     let manifest = read("Cargo.toml");
