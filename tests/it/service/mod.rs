@@ -15,6 +15,7 @@ mod schema;
 mod icons;
 mod playground;
 mod variations;
+mod print_report;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).
