@@ -16,6 +16,7 @@ mod icons;
 mod playground;
 mod variations;
 mod library;
+mod print_report;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).

@@ -111,6 +111,9 @@ pub struct RenderOutput {
     pub triangles: u64,
     /// Set when a limit cut the model short (only with `on_limit = truncate`).
     pub truncated: Option<LimitExceeded>,
+    /// The print stage's headline figures, for a printed model (STL or 3MF):
+    /// measured once here and kept beside the bytes by every cache tier.
+    pub print: Option<crate::print::PrintSummary>,
     /// Parser warnings.
     pub warnings: Vec<Diagnostic>,
     /// Wall-clock time of the whole pipeline.
@@ -483,6 +486,7 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
     }
     let scene = &model.scene;
     let print = opts.print;
+    let mut print_summary = None;
     let (mut meshes, graph, cut) = if print.enabled {
         let (solid, report) = match printed {
             Some(done) => done,
@@ -500,6 +504,7 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
             clock.lap(Phase::Export);
             return Ok(summary(bytes, &model, report.triangles, scene.truncated));
         }
+        print_summary = Some(report.summary());
         (solid, None, None)
     } else if graph_route {
         let (meshes, graph) = mesh::build_with_graph(scene, req.detail, req.layout, budget)?;
@@ -544,7 +549,7 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         empty_if_late(written, drawn, truncated, meta, req, budget)?
     };
     clock.lap(Phase::Export);
-    Ok(summary(bytes, &model, triangles, truncated))
+    Ok(RenderOutput { print: print_summary, ..summary(bytes, &model, triangles, truncated) })
 }
 
 /// The written model with its triangles and truncation, or — when writing
@@ -641,6 +646,7 @@ fn summary(bytes: Vec<u8>, model: &Model, triangles: u64, truncated: Option<Limi
         primitives: model.primitives,
         triangles,
         truncated,
+        print: None,
         warnings: model.warnings.clone(),
         elapsed: Duration::ZERO,
         phases: PhaseTimes::default(),

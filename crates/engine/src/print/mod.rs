@@ -26,7 +26,7 @@ mod union;
 
 pub use findings::{Finding, FindingCode};
 pub use profile::PrinterProfile;
-pub use report::{measure, measure_stl, PrintReport, ProfileReport};
+pub use report::{measure, PrintReport, PrintSummary, ProfileReport};
 
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh};

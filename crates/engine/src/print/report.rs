@@ -5,7 +5,7 @@ use super::findings::Finding;
 use super::profile::PrinterProfile;
 use crate::geom::halfedge::HalfEdgeMesh;
 use glam::DVec3;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Measurements of the printable solid, in millimetres.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
@@ -91,36 +91,42 @@ impl PrintReport {
         self.warnings = self.findings.iter().map(|f| f.message.clone()).collect();
     }
 
-    /// The report as HTTP header pairs (`X-Print-…`), for responses that carry the model.
+    /// The headline figures, stored beside the model's bytes in every
+    /// cache tier so that each door serves them without measuring again.
+    pub fn summary(&self) -> PrintSummary {
+        PrintSummary { volume_mm3: self.volume_mm3, surface_area_mm2: self.surface_area_mm2, bbox_mm: self.bbox_mm, shells: self.shells, watertight: self.is_watertight }
+    }
+}
+
+/// A printed model's headline figures: what HTTP sends as `X-Print-…`
+/// headers (STL and 3MF alike) and gRPC as `RenderMeta.print`. The print
+/// stage measures them once; the cache keeps them with the bytes (issue 32,
+/// "artifacts travel with the bytes"), so no door re-reads served bytes.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct PrintSummary {
+    /// Enclosed volume (mm³).
+    pub volume_mm3: f64,
+    /// Surface area (mm²).
+    pub surface_area_mm2: f64,
+    /// Bounding-box size (mm).
+    pub bbox_mm: [f64; 3],
+    /// Connected shells (1 for one printable piece).
+    pub shells: u64,
+    /// Every edge has exactly two faces, wound oppositely, and no vertex is pinched.
+    pub watertight: bool,
+}
+
+impl PrintSummary {
+    /// The figures as HTTP header pairs (`X-Print-…`), for responses that carry the model.
     pub fn headers(&self) -> Vec<(&'static str, String)> {
         vec![
             ("x-print-volume-mm3", format!("{:.3}", self.volume_mm3)),
             ("x-print-surface-area-mm2", format!("{:.3}", self.surface_area_mm2)),
             ("x-print-bbox-mm", format!("{:.3} {:.3} {:.3}", self.bbox_mm[0], self.bbox_mm[1], self.bbox_mm[2])),
             ("x-print-shells", self.shells.to_string()),
-            ("x-print-watertight", self.is_watertight.to_string()),
+            ("x-print-watertight", self.watertight.to_string()),
         ]
     }
-}
-
-/// Measures a binary STL (the print output re-read, for response headers:
-/// the cached model is only bytes). `None` if the bytes are not binary STL.
-/// The part-based fields (`parts`, `min_feature_mm`) are not known from an STL and stay 0.
-pub fn measure_stl(bytes: &[u8]) -> Option<PrintReport> {
-    let n = u32::from_le_bytes(bytes.get(80..84)?.try_into().ok()?) as usize;
-    if bytes.len() != 84 + 50 * n {
-        return None;
-    }
-    let mut positions = Vec::with_capacity(3 * n);
-    for i in 0..n {
-        let f = &bytes[84 + 50 * i + 12..84 + 50 * i + 48];
-        for k in 0..3 {
-            let c = |j: usize| f32::from_le_bytes([f[(k * 3 + j) * 4], f[(k * 3 + j) * 4 + 1], f[(k * 3 + j) * 4 + 2], f[(k * 3 + j) * 4 + 3]]);
-            positions.push([c(0), c(1), c(2)]);
-        }
-    }
-    let indices: Vec<u32> = (0..positions.len() as u32).collect();
-    Some(measure(&positions, &indices))
 }
 
 /// Measures a solid given as shared positions and CCW triangles.

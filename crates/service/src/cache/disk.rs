@@ -3,8 +3,9 @@
 //! rename) and read back when the in-process store misses. It survives a
 //! restart; the in-process store does not.
 //!
-//! File layout: the magic `RMCACHE2`, a little-endian `u32` header length,
-//! a JSON header (content type, language, counts, ETag), the model bytes,
+//! File layout: the magic `RMCACHE3`, a little-endian `u32` header length,
+//! a JSON header (content type, language, seed, counts, ETag, and a printed
+//! model's figures: the render's typed results travel with its bytes), the model bytes,
 //! then a 32-byte BLAKE3 content hash of the cache key followed by
 //! everything before the hash. An entry that does not check out (bad magic,
 //! hash mismatch, unknown content type or language, ETag not the BLAKE3 of
@@ -13,6 +14,7 @@
 //! request it answers, so a valid entry copied under another key is refused
 //! too. (A content hash catches damage and careless copies, not a writer who
 //! can compute BLAKE3: Redis and the cache directory must still be private.)
+//! `RMCACHE2` entries, written before print figures were kept, are misses.
 
 use super::{CacheKey, Rendered};
 use crate::export::Format;
@@ -23,7 +25,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
-const MAGIC: &[u8; 8] = b"RMCACHE2";
+const MAGIC: &[u8; 8] = b"RMCACHE3";
 /// Bytes of the trailing content hash.
 const HASH_BYTES: usize = 32;
 /// Largest accepted header, in bytes.
@@ -56,6 +58,8 @@ struct Header {
     primitives: u64,
     triangles: u64,
     etag: String,
+    /// A printed model's figures (`None` for everything else).
+    print: Option<crate::print::PrintSummary>,
 }
 
 /// The disk tier: a directory and a byte budget it never grows past.
@@ -229,6 +233,7 @@ pub(super) fn encode(key: &CacheKey, model: &Rendered) -> Option<Vec<u8>> {
         primitives: model.primitives,
         triangles: model.triangles,
         etag: model.etag.clone(),
+        print: model.print,
     })
     .ok()?;
     let header_len = u32::try_from(header.len()).ok().filter(|&n| n <= MAX_HEADER)?;
@@ -274,6 +279,7 @@ pub(super) fn decode(key: &CacheKey, data: &[u8]) -> Option<Rendered> {
         primitives: header.primitives,
         triangles: header.triangles,
         truncated: None,
+        print: header.print,
     })
 }
 
@@ -292,6 +298,7 @@ mod tests {
             primitives: 1,
             triangles: 0,
             truncated: None,
+            print: None,
         }
     }
 
@@ -300,7 +307,10 @@ mod tests {
         let m = model();
         let k = CacheKey([7; 32]);
         let data = encode(&k, &m).expect("encodes");
-        assert_eq!(decode(&k, &data), Some(m));
+        assert_eq!(decode(&k, &data), Some(m.clone()));
+        // A printed model's figures travel in the header.
+        let printed = Rendered { print: Some(crate::print::PrintSummary { volume_mm3: 1.5, surface_area_mm2: 8.0, bbox_mm: [1.5, 1.0, 1.0], shells: 1, watertight: true }), ..m };
+        assert_eq!(decode(&k, &encode(&k, &printed).expect("encodes")), Some(printed));
         for cut in [0, 7, 11, 20, data.len() - 1] {
             assert_eq!(decode(&k, &data[..cut]), None, "cut at {cut}");
         }

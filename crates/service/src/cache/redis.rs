@@ -493,6 +493,7 @@ mod tests {
                     primitives: 1,
                     triangles: 0,
                     truncated: None,
+                    print: None,
                 })
             })
             .await;

@@ -35,6 +35,9 @@ pub struct Rendered {
     pub triangles: u64,
     /// Set when a limit cut the model short.
     pub truncated: Option<LimitExceeded>,
+    /// A printed model's headline figures (the print stage's, kept with the
+    /// bytes so every door and every tier serves them without measuring).
+    pub print: Option<crate::print::PrintSummary>,
 }
 
 impl Rendered {
@@ -50,6 +53,7 @@ impl Rendered {
             primitives: out.primitives,
             triangles: out.triangles,
             truncated: out.truncated,
+            print: out.print,
         }
     }
 

@@ -93,6 +93,7 @@ pub(super) fn meta(served: &Served) -> pb::RenderMeta {
         truncated: m.truncated.map(|t| pb::Truncation { limit: t.limit.name().to_string(), configured: t.configured, reached: t.reached }),
         size: m.bytes.len() as u64,
         seed: m.seed,
+        print: m.print.map(|p| pb::PrintSummary { volume_mm3: p.volume_mm3, surface_area_mm2: p.surface_area_mm2, bbox_mm: p.bbox_mm.to_vec(), shells: p.shells, watertight: p.watertight }),
     }
 }
 

@@ -313,6 +313,13 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         h.insert("x-rulemesh-truncated-configured", HeaderValue::from(t.configured));
         h.insert("x-rulemesh-truncated-reached", HeaderValue::from(t.reached));
     }
+    // A printed model's figures (STL and 3MF alike), as the print stage
+    // measured them: kept with the bytes, never measured again here.
+    if let Some(print) = &m.print {
+        for (name, value) in print.headers() {
+            h.insert(name, header_value(&value));
+        }
+    }
     match cache_control {
         Some(cc) if m.truncated.is_none() => h.insert(header::CACHE_CONTROL, HeaderValue::from_static(cc)),
         _ => h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store")),
@@ -338,6 +345,11 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
+            ("X-Print-Volume-Mm3" = String, description = "print=true (STL or 3MF): enclosed volume in mm³, three decimals"),
+            ("X-Print-Surface-Area-Mm2" = String, description = "print=true: surface area in mm²"),
+            ("X-Print-Bbox-Mm" = String, description = "print=true: bounding-box size x y z in mm"),
+            ("X-Print-Shells" = u64, description = "print=true: connected shells (1 for one printable piece)"),
+            ("X-Print-Watertight" = bool, description = "print=true: every edge has two oppositely wound faces"),
             ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, preview, export) and the cache lookup, in ms")
         )),
         (status = 400, description = "Malformed request, parse or evaluation error", body = ErrorBody),
@@ -350,29 +362,18 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
         (status = 504, description = "Deadline exceeded", body = ErrorBody)
     ))]
 async fn render_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
-    let result: Result<(Served, bool, bool, Format), ServiceError> = async {
+    let result: Result<(Served, bool, Format), ServiceError> = async {
         let body = body_bytes(body, st.config.body_limit)?;
         let plan = from_json::<RenderBody>(&body)?.plan(&caller.ceiling, wants_fresh(&headers))?;
         let text = is_text(plan.request.format);
-        let p = plan.request.export_options.print;
         let format = plan.request.format;
-        let print_stl = p.enabled && !p.report && plan.request.format == Format::Stl;
-        Ok((st.engine.serve(plan).await?, text, print_stl, format))
+        Ok((st.engine.serve(plan).await?, text, format))
     }
     .await;
     match result {
-        Ok((served, text, print_stl, format)) => {
+        Ok((served, text, format)) => {
             st.metrics.bytes_out("http", format, served.model.bytes.len());
-            let mut resp = model_response(&served, None, text);
-            if print_stl {
-                // The printability report as headers (re-measured from the STL: the cache holds bytes only).
-                if let Some(report) = crate::print::measure_stl(&served.model.bytes) {
-                    for (name, value) in report.headers() {
-                        resp.headers_mut().insert(name, header_value(&value));
-                    }
-                }
-            }
-            resp
+            model_response(&served, None, text)
         }
         Err(e) => e.into_response(),
     }
@@ -417,6 +418,11 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
+            ("X-Print-Volume-Mm3" = String, description = "print=true (STL or 3MF): enclosed volume in mm³, three decimals"),
+            ("X-Print-Surface-Area-Mm2" = String, description = "print=true: surface area in mm²"),
+            ("X-Print-Bbox-Mm" = String, description = "print=true: bounding-box size x y z in mm"),
+            ("X-Print-Shells" = u64, description = "print=true: connected shells (1 for one printable piece)"),
+            ("X-Print-Watertight" = bool, description = "print=true: every edge has two oppositely wound faces"),
             ("Server-Timing" = String, description = "Where the time went: queue, each stage that ran (parse, eval, mesh, print, preview, export) and the cache lookup, in ms")
         )),
         (status = 304, description = "Not modified (If-None-Match matched)"),
