@@ -1,11 +1,12 @@
 //! Local coordinate frames: translation, unit quaternion, uniform scale and
-//! reflection parity (seed 000 §4.2, with the corrections in the seed notes).
+//! reflection parity (Andersson 2015 §3.3 and §4.2, with its misprinted
+//! equations corrected: docs/mdg.md, "Choices").
 //!
 //! A frame maps a local point p to `t + s·σ·R(q)·p`, where σ = −1 when the
 //! parity is odd. A reflection across the plane with unit normal n equals
 //! −Rot(n, π), and −I commutes with every linear map, so reflections are
 //! tracked as a parity bit plus a half-turn in the quaternion. This keeps
-//! the quaternion unit (no s² scaling, decision 1 of the seed notes) and
+//! the quaternion unit (no s² scaling: `s k` scales lengths by k) and
 //! lets exporters flip winding exactly when the determinant is negative.
 
 use glam::{DMat3, DQuat, DVec3};

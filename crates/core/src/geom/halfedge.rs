@@ -1,7 +1,7 @@
 //! A half-edge mesh of triangles: the one connectivity structure every
-//! modifier works on (seed 003 §2.1.1).
+//! modifier works on (Haglund 2009 §2.1.1).
 //!
-//! Seed 003 stores `next`, `face`, `vert` and `pair` per half-edge. For a
+//! Haglund stores `next`, `face`, `vert` and `pair` per half-edge. For a
 //! mesh of triangles three of those are implicit, which halves the memory
 //! and removes a class of dangling-index bugs: half-edge `h` belongs to face
 //! `h / 3`, its `next` is the following corner of that face, and it runs from
@@ -212,7 +212,7 @@ impl HalfEdgeMesh {
         self.tris[(h / 3) as usize][(h % 3) as usize]
     }
 
-    /// The vertex half-edge `h` ends at (seed 003's `vert`).
+    /// The vertex half-edge `h` ends at (Haglund 2009's `vert`).
     pub fn head(&self, h: u32) -> u32 {
         self.tail(Self::next(h))
     }
@@ -323,7 +323,8 @@ impl HalfEdgeMesh {
         (self.positions, self.tris)
     }
 
-    /// Checks the structure's invariants (seed 003 §10 case 8): every pair is
+    /// Checks the structure's invariants (the ones every operator must keep on
+    /// a closed mesh, after Haglund 2009 §2.1.1): every pair is
     /// mutual and joins the same two vertices reversed, and `next³` is the identity.
     pub fn check_invariants(&self) -> bool {
         (0..self.pair.len() as u32).all(|h| {

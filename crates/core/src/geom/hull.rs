@@ -2,7 +2,8 @@
 //!
 //! Written here rather than taken from a crate because the output must be
 //! byte-identical for the same input (it is cached and compared) and the
-//! degenerate inputs seed 004's `ughull` lists — fewer than four points,
+//! degenerate inputs R. Wang's `ughull` lists ("Ughull — A 3D Convex Hull
+//! Utility for the UniGrafix System", in Séquin (ed.) 1992) — fewer than four points,
 //! all points on a line, all points in a plane — must come back as clear,
 //! typed errors instead of a panic or an empty mesh. Points are inserted in
 //! input order; each point outside the current hull removes the faces it

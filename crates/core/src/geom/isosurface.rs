@@ -1,5 +1,6 @@
 //! Isosurfaces: the surface f(x, y, z) = 0 of a scalar field, inside where
-//! f > 0 (seed 000 §4.1, decision 10 of the seed notes), meshed with naive
+//! f > 0 (Andersson 2015 §4.1 fixes neither the level nor the side; this
+//! is rulemesh's choice, docs/mdg.md), meshed with naive
 //! surface nets (the `fast-surface-nets` crate: watertight output, no
 //! ambiguous cases to tabulate, so no hand-written marching-cubes tables).
 //!

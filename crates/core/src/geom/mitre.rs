@@ -1,4 +1,4 @@
-//! Where the rings of a swept line go (seed 000 §4.3, issue 16): the plan
+//! Where the rings of a swept line go (Andersson 2015 §4.3, issue 16): the plan
 //! [`super::sweep`] follows when it places a profile ring at each pen point.
 //!
 //! A line that moves is swept **along its path**: each ring is turned

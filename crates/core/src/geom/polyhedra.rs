@@ -1,7 +1,9 @@
 //! Archimedean solids by name and geodesic spheres by frequency.
 //!
 //! Each Archimedean solid is given by its classical vertex coordinates
-//! (signed permutations, seed 004 §5's "semi-regular polyhedra") and meshed
+//! (signed permutations: the "semi-regular polyhedra" of N. Nathan's
+//! "Icosahedron Transformation by Rotation-Translation Operation", in
+//! Séquin (ed.) 1992) and meshed
 //! as their convex hull, so faces come out exactly planar and the topology
 //! is checked rather than hand-written. Like the built-in primitives, every
 //! solid is centred at the origin and scaled to circumradius 0.5.

@@ -1,4 +1,4 @@
-//! Triangle strips (seed 003, section 2.1.2): a strip of n triangles needs
+//! Triangle strips (Haglund 2009, §2.1.2): a strip of n triangles needs
 //! n + 2 indices instead of 3n, which is what makes the `strips` delivery
 //! format small. The heavy lifting is meshoptimizer's (through the `meshopt`
 //! crate); this module fixes the order of the passes and the conventions

@@ -1,4 +1,4 @@
-//! Swept lines (seed 000 §4.3): a profile ring placed at every pen position,
+//! Swept lines (Andersson 2015 §4.3): a profile ring placed at every pen position,
 //! consecutive rings joined by quad strips, open ends capped so each line is
 //! a closed solid. A line whose last point returns to its first is joined
 //! into a loop instead of capped, so a lathe or a knot closes with no gap.
@@ -27,7 +27,7 @@ pub struct LinePoint {
     pub colour: [f32; 4],
 }
 
-/// A swept line: consecutive points joined by tubes (seed 000 §4.3).
+/// A swept line: consecutive points joined by tubes (Andersson 2015 §4.3).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Polyline {
     /// The pen positions in drawing order; n points make n − 1 segments.

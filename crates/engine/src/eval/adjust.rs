@@ -38,7 +38,8 @@ impl Delta {
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Ctx {
     pub(super) frame: Frame,
-    /// Colour as offsets: RGB start at 0 (black), alpha is 1 + offset (seed 000 L1249).
+    /// Colour as offsets: RGB start at 0 (black), alpha is 1 + offset (as in
+    /// the `1.0 + color.a` of Andersson 2015's shader listing, Appendix C.1).
     pub(super) colour: [f64; 4],
     pub(super) depth: u32,
     pub(super) key: StreamKey,

@@ -27,10 +27,11 @@ pub(super) struct Pen {
 }
 
 /// Turns `point`'s frame orthogonal to the segment from the line's last point
-/// (SLINETO, with the shortest-arc rotation of eq 3.29 as corrected in the
-/// seed notes). A line's first point is turned too. The sweep turns every
-/// moving line's rings onto its path anyway (`geom::mitre`), so what this
-/// still decides is the frame a continuation starts from and the first ring's roll.
+/// (SLINETO, with the shortest-arc rotation Andersson 2015 eq 3.29 means; as
+/// printed, that equation doubles the angle). A line's first point is turned
+/// too. The sweep turns every moving line's rings onto its path anyway
+/// (`geom::mitre`), so what this still decides is the frame a continuation
+/// starts from and the first ring's roll.
 fn orient_along_segment(line: &mut Polyline, point: &mut LinePoint) {
     let Some(prev) = line.points.last_mut() else { return };
     let Some(dir) = (point.frame.translation - prev.frame.translation).try_normalize() else { return };
@@ -52,8 +53,8 @@ const BLEND_STEPS: u32 = 8;
 /// The tangent length factor λ of eq 4.15 (the thesis's Fig 4.2c value).
 const BLEND_LAMBDA: f64 = 0.75;
 
-/// The frame at `w` ∈ [0, 1] of a `BLENDTO` from `a` to `b` (seed 000 eqs
-/// 4.15–4.21, read as the seed notes correct them): positions follow a
+/// The frame at `w` ∈ [0, 1] of a `BLENDTO` from `a` to `b` (Andersson 2015
+/// eqs 4.15–4.21, with eq 4.19 read as ending at u₂, not v₂): positions follow a
 /// curve leaving `a` along its local +Z and arriving at `b` along its local
 /// +Z, with tangent length D = λ·|u₂ − u₁|; the rotation is a shortest-path
 /// slerp and the scale blends with smoothstep.
@@ -80,7 +81,7 @@ pub(super) fn line_sides(scene: &Scene, profile: Option<u32>, detail: u32) -> u6
 }
 
 impl<'p, 'b> Machine<'p, 'b> {
-    /// Moves the pen of the call's namespace (seed 000 §4.3, §4.1.4): every
+    /// Moves the pen of the call's namespace (Andersson 2015 §4.3, §4.1.4): every
     /// operation is a terminal for continuation.
     pub(super) fn draw_line(&mut self, op: LineOp, profile: Option<GroupId>, ctx: &Ctx) -> Result<(), EvalError> {
         let frame = ctx.frame;

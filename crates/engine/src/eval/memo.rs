@@ -1,6 +1,6 @@
 //! Memoised MDG derivation: the object [`Hierarchy`] of a program that
-//! [`super::share::shareable`] accepts, built as the L-system DAG is (seed 001
-//! §2.2): each distinct (rule, depth, inherited colour) is expanded once into
+//! [`super::share::shareable`] accepts, built as the L-system DAG is (Calgary
+//! instancing thesis §2.2): each distinct (rule, depth, inherited colour) is expanded once into
 //! an object whose entries are its rule body's calls, each a primitive leaf
 //! or another object, placed by the call's own adjustment. The binary bush
 //! `rule B { BOX {} B { y 1 rz 25 s 0.8 } B { y 1 rz -25 s 0.8 } }` with

@@ -51,7 +51,7 @@ pub enum Format {
     /// 3MF core package (a zip with the model XML in millimetres), for printing.
     #[serde(rename = "3mf")]
     ThreeMf,
-    /// Berkeley UniGrafix text (seed 004 §1): `def`/`v`/`f`/`c`/`i` statements.
+    /// Berkeley UniGrafix text (Séquin (ed.) 1992): `def`/`v`/`f`/`c`/`i` statements.
     Ug,
     /// A PNG picture of the model (the preview stage, `docs/preview.md`):
     /// drawn on the CPU, for icons and order pages.

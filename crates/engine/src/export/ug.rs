@@ -1,4 +1,4 @@
-//! Berkeley UniGrafix (`format=ug`, seed 004 §1): the exchange format of the
+//! Berkeley UniGrafix (`format=ug`, Séquin (ed.) 1992): the exchange format of the
 //! CS285 tools, so rulemesh models open in that lineage of viewers.
 //!
 //! Each mesh becomes a `def … end;` definition of `v` (vertex) and `f`

@@ -1,5 +1,5 @@
-//! Derivation without the string: a memoised DAG of subtrees (seed 001 §4.1,
-//! §4.3, §5.1).
+//! Derivation without the string: a memoised DAG of subtrees (Calgary
+//! instancing thesis §4.1, §4.3, §5.1).
 //!
 //! In a context-free system a module's future depends only on the module
 //! itself (symbol and parameters) and the number of derivation steps left,

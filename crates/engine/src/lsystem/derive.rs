@@ -172,7 +172,7 @@ pub fn derive_n(sys: &LSystem, seed: u64, iterations: u32, on_limit: OnLimit, bu
     let total = iterations + u32::from(!sys.terminate.is_empty());
     let queries = super::turtle::has_queries(sys);
     for n in 0..=total {
-        // Environment queries see the turtle after every step (seed 001 §3.6).
+        // Environment queries see the turtle after every step (Calgary instancing thesis §3.6).
         let step = if queries { super::turtle::fill_queries(sys, &mut cur, budget) } else { Ok(()) };
         let step = match step {
             Ok(()) if n == total => break,

@@ -1,4 +1,4 @@
-//! From a derivation DAG to an object-instancing [`Hierarchy`] (seed 001 §4.2).
+//! From a derivation DAG to an object-instancing [`Hierarchy`] (Calgary instancing thesis §4.2).
 //!
 //! Each DAG node is read by a turtle in leaf mode that starts at the origin:
 //! its segments become leaf entries and its sub-nodes become entries placing

@@ -3,8 +3,8 @@
 //! front end for `language: "lsystem"` (and ETOL, [`build_etol_model`]):
 //! source → derived string → turtle → [`Model`].
 //!
-//! Context-free systems take the instancing route instead (issue 5, seed 001
-//! ch. 4): source → derivation DAG ([`dag`]) → object hierarchy
+//! Context-free systems take the instancing route instead (issue 5, the
+//! Calgary instancing thesis, ch. 4): source → derivation DAG ([`dag`]) → object hierarchy
 //! ([`instance`]) → a model whose [`Hierarchy`] the stages write as
 //! `format=scene` or `EXT_mesh_gpu_instancing` glTF, with no string in
 //! between; for the flat formats the DAG is walked through the turtle.
@@ -102,7 +102,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     Ok(Model { language: Language::Lsystem, scene: drawing.scene, hierarchy: None, primitives: drawing.segments, warnings: sys.warnings, promised: drawing.promised, seed })
 }
 
-/// Builds the model of an ETOL token stream (seed 003 appendix A): the
+/// Builds the model of an ETOL token stream (Haglund 2009, Appendix A): the
 /// stream is translated into an L-system, built by [`build_model`], and
 /// diagnostics are mapped back into the token stream.
 pub fn build_etol_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {

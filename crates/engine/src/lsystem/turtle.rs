@@ -1,4 +1,4 @@
-//! The 3D turtle (seed 001 §3.2, ABOP p.19): reads a derived string and
+//! The 3D turtle (Calgary instancing thesis §3.2, ABOP p.19): reads a derived string and
 //! draws it into a [`Scene`].
 //!
 //! The turtle starts at the origin heading along +Y with its up vector along
@@ -139,7 +139,7 @@ pub(crate) fn turn_quat(axis: u8, sign: f64, degrees: f64) -> DQuat {
     }
 }
 
-/// What an environment query module (seed 001 §3.6) receives: `?P`, `?Q`,
+/// What an environment query module (Calgary instancing thesis §3.6) receives: `?P`, `?Q`,
 /// `?R` and `?S` the turtle's position (the thesis's topiary uses the last
 /// three like `?P`, L3572), `?H`, `?U` and `?L` its heading, up and left vectors.
 fn query_kind(name: &str) -> Option<u8> {
@@ -462,7 +462,7 @@ impl Turtle<'_> {
         self.state.rot = (self.state.rot * local).normalize();
     }
 
-    /// Bends the heading towards `t` by e·|H×T| about H×T (seed 001 §3.7).
+    /// Bends the heading towards `t` by e·|H×T| about H×T (Calgary instancing thesis §3.7).
     fn tropism(&mut self, t: DVec3, e: f64) {
         let h = self.heading();
         let axis = h.cross(t);

@@ -1,4 +1,4 @@
-//! Animation (seed 000 §4.4): bones, their frame tracks, the camera path,
+//! Animation (Andersson 2015 §4.4): bones, their frame tracks, the camera path,
 //! and the split of a scene into per-bone pieces for exporters that carry a
 //! node hierarchy (glTF).
 //!

@@ -1,4 +1,4 @@
-//! Object-instancing hierarchies (seed 001 §2.2, §4.2): objects that are
+//! Object-instancing hierarchies (Calgary instancing thesis §2.2, §4.2): objects that are
 //! lists of (child object or leaf shape, rigid or similarity transform, colour).
 //!
 //! A [`Hierarchy`] is what an instanced L-system (or a shareable MDG

@@ -1,4 +1,4 @@
-//! The ETOL token format of seed 003 appendix A (`language: "etol"`): a
+//! The ETOL token format of Haglund 2009, Appendix A (`language: "etol"`): a
 //! whitespace-separated token stream
 //!
 //! ```text
@@ -14,7 +14,7 @@
 //! instancing and budgets are shared. Translation keeps, per generated line,
 //! the position of the token it came from, so errors found later still point
 //! into the token stream. Tokens cannot contain spaces, so a successor is one
-//! word (seed-notes 003 §6).
+//! word (as in Haglund 2009's worked example, §4.3).
 
 use super::{Diagnostic, ParseError, Span};
 
@@ -155,7 +155,7 @@ pub fn translate(source: &[u8]) -> Result<Translated, ParseError> {
     Ok(out)
 }
 
-/// A predecessor is one letter (seed 003: "predecessor letter").
+/// A predecessor is one letter (Haglund 2009, Appendix A: "predecessor letter").
 fn symbol(t: Token<'_>) -> Result<Token<'_>, ParseError> {
     if t.text.chars().count() == 1 {
         Ok(t)

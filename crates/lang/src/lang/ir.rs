@@ -32,7 +32,7 @@ pub struct Program {
     pub isosurfaces: Vec<Isosurface>,
     /// `mesh` declarations and named solids; [`Target::Mesh`] indexes this.
     pub meshes: Vec<MeshDecl>,
-    /// Namespaces (seed 000 §4.1.4): each has its own line pen and its own
+    /// Namespaces (Andersson 2015 §4.1.4): each has its own line pen and its own
     /// "last terminal" for continuation.
     pub namespaces: Namespaces,
 }
@@ -66,11 +66,11 @@ pub struct RuleGroup {
     pub name: String,
     /// The alternatives, in source order.
     pub rules: Vec<Rule>,
-    /// How a call picks one alternative (seed 000 §4.2.2; `selector` directive).
+    /// How a call picks one alternative (Andersson 2015 §4.2.2; `selector` directive).
     pub selector: Selector,
 }
 
-/// Rule selection modes (seed 000 §4.2.2). Threshold modes read each rule's
+/// Rule selection modes (Andersson 2015 §4.2.2). Threshold modes read each rule's
 /// weight as a threshold and pick the rule with the smallest weight that is
 /// ≥ the measured value; when no rule qualifies the call draws nothing.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -102,7 +102,7 @@ pub struct Rule {
     pub span: Span,
 }
 
-/// Transform-rule headers (seed 000 §4.4–4.5). The named rules are *paths*:
+/// Transform-rule headers (Andersson 2015 §4.4–4.5). The named rules are *paths*:
 /// evaluated once from the identity frame, their `FRAME {}` calls give a list
 /// of frames.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -125,7 +125,7 @@ pub enum Target {
     Group(GroupId),
     /// A built-in drawable.
     Primitive(PrimitiveKind),
-    /// A line drawable (seed 000 §4.3, Table B.6), with an optional profile
+    /// A line drawable (Andersson 2015 §4.3, Table B.6), with an optional profile
     /// rule whose `VERTEX` calls give the cross-section (else `linerule`, else a round tube).
     Line(LineOp, Option<GroupId>),
     /// `VERTEX {}`: a free vertex (every three make a triangle), or a profile
@@ -221,7 +221,7 @@ pub enum LineOp {
     /// `SLINETO`: like `LINETO`, with the profile turned orthogonal to the segment.
     SLineTo,
     /// `BLENDTO`: like `LINETO`, through interpolated sub-segments that blend
-    /// position, orientation and scale smoothly (seed 000 eqs 4.15–4.21).
+    /// position, orientation and scale smoothly (Andersson 2015 eqs 4.15–4.21).
     BlendTo,
     /// `NEWLINE`: ends the current line and lifts the pen.
     NewLine,
@@ -359,7 +359,7 @@ pub struct Directives {
     /// `normal x y z`: the local normal given to `VERTEX` (default 0 0 1).
     pub normal: Option<[f64; 3]>,
     /// `stacksize N`: calls whose depth (nested rule calls) exceeds N are
-    /// silently not expanded, like `maxdepth` (seed 000 B.1 lists both).
+    /// silently not expanded, like `maxdepth` (Andersson 2015's Table B.1 lists both).
     pub stacksize: Option<u32>,
     /// `fps N`: animation frames per second (transform rules emit one frame per tick).
     pub fps: Option<f64>,
@@ -372,7 +372,7 @@ pub struct Directives {
 }
 
 /// The camera's lens from `camerafov`, `cameranearplane` and `camerafarplane`
-/// (seed 000 B.1 gives the defaults 40°, 0.1 and 1000).
+/// (Andersson 2015's Table B.1 gives the defaults 40°, 0.1 and 1000).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CameraLens {
     /// Vertical field of view in degrees.

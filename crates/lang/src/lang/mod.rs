@@ -18,17 +18,21 @@ pub use crate::core::diagnostic::{Diagnostic, ParseError, Severity, Span};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Language {
-    /// Model Design Grammars (seed 000).
+    /// Model Design Grammars (Mattias Andersson, *Procedural Modeling and
+    /// Animation with Quaternions*, MSc thesis, Chalmers, 2015); see `docs/mdg.md`.
     Mdg,
-    /// L-systems in the notation of *The Algorithmic Beauty of Plants* (seed 001); see `docs/lsystem.md`.
+    /// L-systems in the notation of *The Algorithmic Beauty of Plants* (as used in the
+    /// Calgary instancing thesis, c. 1995); see `docs/lsystem.md`.
     Lsystem,
     /// EisenScript, the language of Structure Synth 1.5; see `docs/eisenscript.md`.
     Eisenscript,
-    /// Seed 003's stacking string: a primitive and a modifier chain (`b1.5s1.4w0.1`); see `docs/modifiers.md`.
+    /// The stacking string of Anton Haglund, *Procedural Modelling* (MSc
+    /// thesis, Umeå University, 2009): a primitive and a modifier chain (`b1.5s1.4w0.1`); see `docs/modifiers.md`.
     Stack,
-    /// Berkeley UniGrafix (seed 004 §1), the safe subset: `v f c def end i`; see `docs/modifiers.md`.
+    /// Berkeley UniGrafix (as in Carlo H. Séquin (ed.), *Generation of
+    /// Time-Varying Geometrical Models*, UC Berkeley, 1992), the safe subset: `v f c def end i`; see `docs/modifiers.md`.
     Ug,
-    /// The ETOL token stream of seed 003 appendix A, read as an L-system; see `docs/lsystem.md`.
+    /// The ETOL token stream of Haglund 2009, Appendix A, read as an L-system; see `docs/lsystem.md`.
     Etol,
 }
 

@@ -1,4 +1,4 @@
-//! The seed 003 stacking string as a language (`language: "stack"`): one
+//! Haglund 2009's stacking string as a language (`language: "stack"`): one
 //! primitive and a modifier chain, e.g. `b1.5s1.4w0.1` (a box of size 1.5,
 //! subdivided once with weight 1.4, spikes of height 0.1).
 //!

@@ -1,5 +1,5 @@
 //! UniGrafix import (`language: "ug"`, `.ug` files): the safe subset of
-//! seed 004 §1 as a drawable mesh.
+//! Berkeley UniGrafix (Séquin (ed.) 1992) as a drawable mesh.
 //!
 //! Accepted: `v id x y z;`, `f (v1 v2 v3 …) [colour];` (convex polygons,
 //! fanned; no holes), `c id r g b;`, `def name; … end;` and

@@ -49,7 +49,7 @@ pub(super) fn randomize(m: &HalfEdgeMesh, amount: f64, seed: u64) -> HalfEdgeMes
 }
 
 /// Moves a random `fraction` of the vertices along their vertex normals by
-/// `amount`·U[0.5, 1.5] (seed 003's components 0.5 + U·1.0).
+/// `amount`·U[0.5, 1.5] (Haglund 2009 §4.3's components 0.5 + U·1.0).
 pub(super) fn displace(m: &HalfEdgeMesh, amount: f64, fraction: f64, seed: u64) -> HalfEdgeMesh {
     let normals = m.vertex_normals();
     let mut out = m.clone();

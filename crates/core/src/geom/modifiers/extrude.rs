@@ -1,4 +1,4 @@
-//! Per-face extrusion (seed 003 L330–335 and the API of L492).
+//! Per-face extrusion (Haglund 2009 §2.2.2, and the `extrude` call of §4.2).
 
 use super::uniform;
 use crate::geom::halfedge::HalfEdgeMesh;
@@ -28,7 +28,7 @@ pub struct Extrude {
     pub length: (f64, f64),
     /// Tilt of the extrusion direction from the normal, in degrees.
     pub tilt: f64,
-    /// Scale of the top face per step (seed 003's `move`), > 0.
+    /// Scale of the top face per step (Haglund 2009's `move`), > 0.
     pub scale: f64,
     /// Extrusions stacked on each selected face.
     pub steps: u32,

@@ -1,4 +1,5 @@
-//! Mesh modifiers: operations stacked on a primitive (seed 003 §2.2.2, the
+//! Mesh modifiers: operations stacked on a primitive (Anton Haglund,
+//! *Procedural Modelling*, MSc thesis, Umeå University, 2009, §2.2.2: the
 //! "stacking" of primitive plus modifier chain).
 //!
 //! Every modifier takes a [`HalfEdgeMesh`] and returns a new one. Each knows
@@ -51,8 +52,8 @@ impl Axis {
 /// One modifier with its parameters (see `docs/modifiers.md`).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Modifier {
-    /// Loop subdivision, `levels` times. `weight` multiplies β of seed 003
-    /// eq 2.4 (1 is plain Loop); `smooth = false` only splits each triangle
+    /// Loop subdivision, `levels` times. `weight` multiplies β of Haglund
+    /// 2009 eq 2.4 (1 is plain Loop); `smooth = false` only splits each triangle
     /// into four at exact edge midpoints.
     Subdivide {
         /// Number of subdivision steps.
@@ -69,17 +70,17 @@ pub enum Modifier {
         height: f64,
     },
     /// Moves every vertex in a random direction by at most `amount` times the
-    /// shortest edge (seed 003 L526); `amount` < 0.5 keeps vertices apart.
+    /// shortest edge (Haglund 2009 §4.3); `amount` < 0.5 keeps vertices apart.
     Randomize {
         /// Fraction of the shortest edge, in [0, 0.5).
         amount: f64,
         /// Random stream seed.
         seed: u64,
     },
-    /// Per-face extrusion (seed 003 L330–335).
+    /// Per-face extrusion (Haglund 2009 §2.2.2).
     Extrude(Extrude),
     /// Moves a random `fraction` of the vertices along their normal by
-    /// `amount` × U[0.5, 1.5] (seed 003's vertex displacer, L558–576).
+    /// `amount` × U[0.5, 1.5] (Haglund 2009 §4.3's vertex displacer).
     Displace {
         /// Base displacement (negative pushes inward).
         amount: f64,
@@ -107,9 +108,9 @@ pub enum Modifier {
         /// Total bend angle over the Y extent.
         degrees: f64,
     },
-    /// Translates every vertex (seed 003 eq 2.1); useful before `mirror`.
+    /// Translates every vertex (Haglund 2009 eq 2.1); useful before `mirror`.
     Translate(DVec3),
-    /// Scales every coordinate (seed 003 eq 2.2); a negative product turns
+    /// Scales every coordinate (Haglund 2009 eq 2.2); a negative product turns
     /// the winding inside out, so it is rejected.
     Scale(DVec3),
 }

@@ -1,12 +1,12 @@
-//! Spikeify (seed 003 L490): every face becomes a spike.
+//! Spikeify (Haglund 2009 §4.2): every face becomes a spike.
 
 use crate::geom::halfedge::HalfEdgeMesh;
 use glam::DVec3;
 
 /// Replaces each triangle by the three sides of a tetrahedron standing on it,
 /// apex `height` above the centroid along the face normal. The base is left
-/// out so the result stays a closed manifold (seed 003 §9, "manifold
-/// reading"): F′ = 3F, V′ = V + F.
+/// out so the result stays a closed manifold (Haglund's "substitute every
+/// face with a tetrahedron" read as three sides, not four): F′ = 3F, V′ = V + F.
 pub(super) fn spikeify(m: &HalfEdgeMesh, height: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let mut positions = m.positions.clone();
     positions.reserve(m.face_count());

@@ -1,10 +1,10 @@
-//! Loop subdivision with seed 003's weight (eqs 2.4–2.6).
+//! Loop subdivision with Haglund 2009's weight (eqs 2.4–2.6).
 
 use crate::geom::halfedge::{HalfEdgeMesh, NO_PAIR};
 use crate::geom::STOP_EVERY;
 use glam::DVec3;
 
-/// β of seed 003 eq 2.6 for a vertex of valence `n`:
+/// β of Haglund 2009 eq 2.6 for a vertex of valence `n`:
 /// (1/n)·(5/8 − (3 + 2·cos(2π/n))²/64). 3/16 at n = 3, 1/16 at n = 6.
 pub fn loop_beta(n: usize) -> f64 {
     if n == 0 {
@@ -17,9 +17,10 @@ pub fn loop_beta(n: usize) -> f64 {
 /// One Loop step: a new vertex per edge, each triangle split into four.
 /// With `smooth`, edge vertices use the 3/8–1/8 mask (eq 2.5) and old
 /// interior vertices move by eq 2.4 with β′ = `weight`·β; boundary edges and
-/// vertices are not smoothed (seed 003 gives no boundary rules), so open
+/// vertices are not smoothed (Haglund 2009 gives no boundary rules), so open
 /// meshes keep their rims. Without `smooth` new vertices are exact midpoints
-/// and old vertices stay put (seed 003 L486, recommendation of §9).
+/// and old vertices stay put (Haglund 2009 §4.2's `subdivide(weight, false)`,
+/// rather than §2.2.2's β = 0, which would still apply the 3/8–1/8 edge mask).
 /// `stop` is asked every [`STOP_EVERY`] edges and faces whether to give up
 /// (`None`): one step of a large mesh takes longer than a deadline may allow.
 pub(super) fn subdivide_once(m: &HalfEdgeMesh, weight: f64, smooth: bool, stop: &dyn Fn() -> bool) -> Option<(Vec<DVec3>, Vec<[u32; 3]>)> {

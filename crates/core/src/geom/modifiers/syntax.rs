@@ -1,5 +1,5 @@
-//! The words of a modifier stage (`subdivide 2 weight 1.4`) and the seed 003
-//! stacking string (`b1.5s1.4w0.1`), turned into [`Modifier`]s.
+//! The words of a modifier stage (`subdivide 2 weight 1.4`) and Haglund
+//! 2009's stacking string (`b1.5s1.4w0.1`), turned into [`Modifier`]s.
 //!
 //! Kept apart from the MDG parser so the MDG side only collects a stage's
 //! words (names and constant numbers) and every front end shares one
@@ -204,9 +204,9 @@ pub struct Stack {
     pub modifiers: Vec<Modifier>,
 }
 
-/// Parses a seed 003 stacking string (Appendix A, L744–755): letters each
+/// Parses a stacking string (Haglund 2009, Appendix A): letters each
 /// followed by an optional real (default 1). Primitives `b` box, `t`
-/// tetrahedron, `o` octahedron, `c` cylinder (seed 003) and `i` icosahedron,
+/// tetrahedron, `o` octahedron, `c` cylinder (Haglund's) and `i` icosahedron,
 /// `d` dodecahedron, `p` sphere (ours) take their size (edge for the box,
 /// circumradius × 2 otherwise, i.e. a uniform scale of the unit primitive) and
 /// must come first, once. Modifiers: `s` subdivide once with the weight,

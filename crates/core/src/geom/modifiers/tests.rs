@@ -1,4 +1,5 @@
-//! Done-when counts of issue #7 and seed 003 §10.
+//! Done-when counts of issue #7, and counts worked out from Haglund 2009
+//! (eq 2.6's β, subdivision, spikeify and extrusion face counts).
 
 use super::syntax::{stack, stage, Word};
 use super::*;

@@ -1,5 +1,6 @@
 //! The L-system front end (`language: "lsystem"`, `.ls` files): the notation
-//! of *The Algorithmic Beauty of Plants* as used in seed 001, with header
+//! of *The Algorithmic Beauty of Plants* as used in the Calgary instancing
+//! thesis (ARCHITECTURE.md, "References"), with header
 //! settings, `#define` constants, parametric, stochastic and
 //! context-sensitive productions and a termination table. See `docs/lsystem.md`.
 //!
@@ -105,7 +106,7 @@ pub struct LSystem {
     /// Susceptibility to tropism e (`elasticity:`; default 0.2 when a tropism is set).
     pub elasticity: f64,
     /// `variety: k`: instance a stochastic system with at most k pseudo-stochastic
-    /// variants per (module, parameters, remaining depth) (seed 001 §5.1), trading
+    /// variants per (module, parameters, remaining depth) (Calgary instancing thesis §5.1), trading
     /// exactness of the distribution for a model whose size does not grow with the
     /// string. `None`: stochastic systems are derived in full.
     pub variety: Option<u32>,

@@ -1,4 +1,4 @@
-//! Model Design Grammars (seed 000, chapter 4, appendices A–B): lexer,
+//! Model Design Grammars (Andersson 2015, chapter 4, appendices A–B): lexer,
 //! preprocessor and parser producing the shared IR. The language as built is
 //! described in `docs/mdg.md`.
 

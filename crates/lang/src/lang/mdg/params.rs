@@ -66,7 +66,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// `@presets a b c`: named presets (seed 000 B.2). Declares the int
+    /// `@presets a b c`: named presets (Andersson 2015, Table B.2). Declares the int
     /// parameter `preset` (0 ..= n − 1, default 0, the first) and each name
     /// as the constant of its index, so a grammar reads e.g. `preset == b`
     /// or `preset * { … }`, and a request picks `preset=b` by name.

@@ -1,4 +1,4 @@
-//! The MDG preprocessor (seed 000, Table B.2): conditionals, macros and
+//! The MDG preprocessor (Andersson 2015, Table B.2): conditionals, macros and
 //! skipped blocks. It works line by line on already-validated UTF-8 text and
 //! produces the text the lexer sees plus a map from output lines back to
 //! source positions.

@@ -129,7 +129,7 @@ impl<'a> Parser<'a> {
         let Tok::Ident(name) = t.tok else {
             return Err(err(t.span, format!("expected a rule call, found {}", t.tok)));
         };
-        // `NS.LINETO` draws with namespace NS's pen (seed 000 §4.1.4).
+        // `NS.LINETO` draws with namespace NS's pen (Andersson 2015 §4.1.4).
         let (prefix, base) = match name.rsplit_once('.') {
             Some((p, b)) => (Some(p), b),
             None => (None, name),
