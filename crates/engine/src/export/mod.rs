@@ -6,8 +6,6 @@ mod gltf_buffer;
 mod gltf_document;
 mod gltf_graph;
 mod gltf_instanced;
-#[cfg(test)]
-mod normalize_tests;
 pub mod instanced;
 pub mod png;
 pub mod provenance;
@@ -352,6 +350,10 @@ pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
         .saturating_add(triangles.saturating_mul(per_triangle))
         .saturating_add(fixed)
 }
+
+// geom::normalize's tests, which export glTF (a layer above geom).
+#[cfg(test)]
+mod normalize_tests;
 
 #[cfg(test)]
 mod tests {
