@@ -398,11 +398,12 @@ fn print_output_does_not_depend_on_earlier_unions_in_the_process() {
     // The exact union (hogeweg) and the fused route (tower) alike.
     for name in ["hogeweg.ls", "tower.mdg"] {
         let source = std::fs::read(repo().join("grammars").join(name)).expect("grammar");
-        let mut req = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
+        // A print's default limits (the CLI's and the service's: 640 MiB of accounted memory).
+        let mut req = RenderRequest { format: Format::Stl, limits: rulemesh::core::Limits::defaults_for(true), ..RenderRequest::default() };
         req.export_options.print.enabled = true;
         let first = render(&source, &req).expect("print").bytes;
         let other = std::thread::spawn(|| {
-            let mut r = RenderRequest { format: Format::Stl, ..RenderRequest::default() };
+            let mut r = RenderRequest { format: Format::Stl, limits: rulemesh::core::Limits::defaults_for(true), ..RenderRequest::default() };
             r.export_options.print.enabled = true;
             render(b"rule R { 5 * { x 0.7 rz 20 } BOX {} }", &r).expect("print boxes").bytes
         });
