@@ -5,11 +5,11 @@ use glam::Vec3;
 use rulemesh::eval::{bind_params, evaluate, EvalOptions};
 use rulemesh::core::{Budget, Limits};
 use rulemesh::model::Scene;
-use rulemesh::lang::{ir::PrimitiveKind, parse, Language};
+use rulemesh::lang::ir::PrimitiveKind;
 use std::collections::BTreeMap;
 
 fn scene_of(source: &str) -> Scene {
-    let program = parse(Language::Mdg, source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
+    let program = rulemesh::lang::mdg::parse(source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
     let params = bind_params(&program, &BTreeMap::new()).expect("params");
     evaluate(&program, &params, &EvalOptions::default(), &mut Budget::new(Limits::default())).expect("evaluate")
 }

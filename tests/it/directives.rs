@@ -6,11 +6,10 @@ use crate::common::run;
 use rulemesh::eval::{bind_params, evaluate, EvalOptions};
 use rulemesh::core::{Budget, Limits, ParamValue};
 use rulemesh::model::Scene;
-use rulemesh::lang::{parse, Language};
 use std::collections::BTreeMap;
 
 fn scene_with(source: &str, params: &[(&str, &str)]) -> Scene {
-    let program = parse(Language::Mdg, source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
+    let program = rulemesh::lang::mdg::parse(source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
     let given: BTreeMap<String, ParamValue> = params.iter().map(|(k, v)| (k.to_string(), ParamValue::Text(v.to_string()))).collect();
     let params = bind_params(&program, &given).unwrap_or_else(|e| panic!("params: {e}"));
     evaluate(&program, &params, &EvalOptions::default(), &mut Budget::new(Limits::default())).expect("evaluate")
@@ -21,7 +20,7 @@ fn scene_of(source: &str) -> Scene {
 }
 
 fn parse_error(source: &str) -> String {
-    match parse(Language::Mdg, source.as_bytes()) {
+    match rulemesh::lang::mdg::parse(source.as_bytes()) {
         Ok(_) => panic!("expected a parse error for:\n{source}"),
         Err(e) => e.to_string(),
     }
@@ -102,7 +101,7 @@ fn import_brings_in_a_built_in_grammar_but_not_its_startshape() {
     // Only library names: paths and unknown names (C.5 imports the thesis's
     // shader project) are ignored with a warning at the @import; nothing is read.
     for src in ["rule A { BOX {} }\n  @import ../../etc/passwd\n", "rule A { BOX {} }\n  @import /etc/passwd\n", "rule A { BOX {} }\n  @import nosuchgrammar\n"] {
-        let p = parse(Language::Mdg, src.as_bytes()).expect("parses");
+        let p = rulemesh::lang::mdg::parse(src.as_bytes()).expect("parses");
         assert_eq!(p.warnings.len(), 1, "{src}");
         assert_eq!((p.warnings[0].span.line, p.warnings[0].span.column), (2, 3));
         assert!(p.warnings[0].to_string().contains("ignored: only built-in grammars"), "{}", p.warnings[0]);
@@ -134,7 +133,7 @@ fn color_and_weight_renaming() {
     assert_eq!(s.instances[0].rotation, glam::Quat::IDENTITY);
     assert!(parse_error("color r g b a\nrule A { BOX { R 1 } }\n").contains("renamed"));
     // `weight` renames u v w q (vertex weights are accepted and ignored with a warning).
-    let p = parse(Language::Mdg, b"weight k1 k2 k3 k4\nrule A { BOX { k1 0.5 } }\n").expect("parses");
+    let p = rulemesh::lang::mdg::parse(b"weight k1 k2 k3 k4\nrule A { BOX { k1 0.5 } }\n").expect("parses");
     assert!(p.warnings.iter().any(|w| w.to_string().contains("vertex weight `k1` ignored")));
 }
 
@@ -155,7 +154,7 @@ fn animation_directives_are_checked() {
 
 #[test]
 fn debug_draws_nothing() {
-    let p = parse(Language::Mdg, b"rule A { DEBUG { x 1 } BOX {} a.DEBUG {} }\n").expect("parses");
+    let p = rulemesh::lang::mdg::parse(b"rule A { DEBUG { x 1 } BOX {} a.DEBUG {} }\n").expect("parses");
     assert_eq!(p.warnings.iter().filter(|w| w.to_string().contains("draws nothing")).count(), 2);
     assert_eq!(scene_of("rule A { DEBUG { x 1 } BOX {} }\n").instances.len(), 1);
 }

@@ -8,7 +8,7 @@ use crate::common::{admesh, decode_stl, signed_volume, tempdir, three_check, val
 use rulemesh::eisen::{build, BuildOptions};
 use rulemesh::core::{Limit, Limits, OnLimit, ParamValue};
 use rulemesh::export::Format;
-use rulemesh::lang::eisen::{parse, ParseOptions};
+use rulemesh::lang::eisen::syntax::{parse, ParseOptions};
 use rulemesh::core::PrimitiveKind;
 use rulemesh::lang::Language;
 use rulemesh::{render, RenderError, RenderRequest};

@@ -5,12 +5,11 @@ use crate::common::{admesh, repo, run, tempdir};
 use rulemesh::eval::{bind_params, evaluate, EvalOptions};
 use rulemesh::core::{Budget, Limits};
 use rulemesh::model::Scene;
-use rulemesh::lang::{parse, Language};
 use std::collections::BTreeMap;
 
 fn scene_of_file(name: &str) -> Scene {
     let src = std::fs::read_to_string(repo().join("grammars").join(name)).expect("grammar");
-    let program = parse(Language::Mdg, src.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
+    let program = rulemesh::lang::mdg::parse(src.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
     let params = bind_params(&program, &BTreeMap::new()).expect("params");
     evaluate(&program, &params, &EvalOptions::default(), &mut Budget::new(Limits::default())).expect("evaluate")
 }
@@ -123,7 +122,7 @@ fn sphereflake_switches_detail_by_scale() {
 #[test]
 fn blendto_inserts_smooth_sub_segments() {
     let src = "rule A { MOVETO {} BLENDTO { x 4 ry 90 s 2 } }";
-    let program = parse(Language::Mdg, src.as_bytes()).expect("parse");
+    let program = rulemesh::lang::mdg::parse(src.as_bytes()).expect("parse");
     let scene = evaluate(&program, &[], &EvalOptions::default(), &mut Budget::new(Limits::default())).expect("evaluate");
     let pts = &scene.lines[0].points;
     assert_eq!(pts.len(), 1 + 8, "start, 7 blended points, end");

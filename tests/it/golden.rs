@@ -32,14 +32,8 @@ pub(crate) fn cases() -> Vec<Case> {
         let mut files: Vec<PathBuf> = std::fs::read_dir(&dir).expect("folder exists").map(|e| e.expect("entry").path()).collect();
         files.sort();
         for f in files {
-            let ext = f.extension().and_then(|e| e.to_str()).unwrap_or("");
-            let language = match ext {
-                "mdg" => Language::Mdg,
-                "ls" => Language::Lsystem,
-                "es" => Language::Eisenscript,
-                "etol" => Language::Etol,
-                _ => continue,
-            };
+            // The registry's extensions: a new language's files join the table.
+            let Some(language) = Language::from_extension(&f) else { continue };
             let name = f.strip_prefix(repo()).expect("under the repo").display().to_string();
             // `frame.es` is what the movie loads; it is a case of its own too.
             out.push(Case { name, language, source: std::fs::read(&f).expect("read"), script_dir: Some(dir.clone()) });

@@ -8,7 +8,7 @@ use rulemesh::model::hierarchy::{Hierarchy, PlacedLeaf};
 use rulemesh::core::{Budget, Limit, Limits, OnLimit};
 use rulemesh::export::scene::{decode_scene, SceneError};
 use rulemesh::export::{ExportOptions, Format, Instancing};
-use rulemesh::lang::lsystem::parse;
+use rulemesh::lang::lsystem::syntax::parse;
 use rulemesh::lang::Language;
 use rulemesh::lsystem::{dag, derive, instance, turtle};
 use rulemesh::{render, RenderError, RenderOutput, RenderRequest};

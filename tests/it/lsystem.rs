@@ -6,7 +6,7 @@
 use crate::common::{grammar_files, run, tempdir, validate_gltf};
 use rulemesh::core::{Budget, Limit, Limits, OnLimit};
 use rulemesh::export::Format;
-use rulemesh::lang::lsystem::parse;
+use rulemesh::lang::lsystem::syntax::parse;
 use rulemesh::lang::Language;
 use rulemesh::lsystem::derive::derive_n;
 use rulemesh::{render, RenderError, RenderRequest};

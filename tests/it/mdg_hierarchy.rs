@@ -40,7 +40,7 @@ const TINTED: &[u8] = b"startshape B\nmaxdepth 6\nrule B { BOX {} B { y 1 rz 25 
 
 /// The library's hierarchy of `src` (None: not shared) and its flat derivation.
 fn both(src: &[u8]) -> (Option<Hierarchy>, Scene) {
-    let program = lang::parse(Language::Mdg, src).expect("parses");
+    let program = lang::mdg::parse(src).expect("parses");
     let params = bind_params(&program, &BTreeMap::new()).expect("params");
     let opts = EvalOptions::default();
     let h = evaluate_hierarchy(&program, &params, &opts, &mut Budget::new(Limits::default())).expect("hierarchy");

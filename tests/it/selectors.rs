@@ -6,12 +6,12 @@ use glam::Vec3;
 use rulemesh::eval::{bind_params, evaluate, EvalOptions};
 use rulemesh::core::{Budget, Limits};
 use rulemesh::model::Scene;
-use rulemesh::lang::{ir::PrimitiveKind, parse, Language};
+use rulemesh::lang::ir::PrimitiveKind;
 use std::collections::BTreeMap;
 use PrimitiveKind::{Box as B, Cone, Icosahedron as Ico, Octahedron as Oct, Sphere, Tetrahedron as Tet};
 
 fn scene_of(source: &str, seed: u64) -> Scene {
-    let program = parse(Language::Mdg, source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
+    let program = rulemesh::lang::mdg::parse(source.as_bytes()).unwrap_or_else(|e| panic!("parse: {e}"));
     let params = bind_params(&program, &BTreeMap::new()).expect("params");
     let options = EvalOptions { seed: Some(seed), ..EvalOptions::default() };
     evaluate(&program, &params, &options, &mut Budget::new(Limits::default())).expect("evaluate")

@@ -14,7 +14,7 @@
 use rulemesh::core::{Limit, Limits, OnLimit, PrimitiveKind};
 use rulemesh::eisen::{build, BuildOptions, Built};
 use rulemesh::export::Format;
-use rulemesh::lang::eisen::{parse, ParseOptions};
+use rulemesh::lang::eisen::syntax::{parse, ParseOptions};
 use rulemesh::lang::Language;
 use rulemesh::{render, RenderError, RenderRequest};
 
@@ -188,7 +188,7 @@ fn colour_pools_draw_as_structure_synth_does() {
         .collect();
     assert_eq!(red_blue, "RBBBRRBBBBRRBRRBRBRR");
     // `randomhue` (the default): integer hues from `getInt(359)` at full saturation and value.
-    use rulemesh::lang::eisen::colour::{hsv_to_rgb, srgb_to_linear};
+    use rulemesh::lang::eisen::syntax::colour::{hsv_to_rgb, srgb_to_linear};
     let hues = [355.0, 189.0, 8.0, 158.0, 80.0, 30.0, 210.0, 179.0, 245.0, 78.0, 144.0, 135.0];
     let want: Vec<[f32; 4]> = hues
         .iter()

@@ -1,28 +1,24 @@
 //! rulemesh-engine: source to bytes under one budget, with no async runtime,
 //! network or command-line code.
 //!
-//! Data flows one way: source → a front end ([`eval`] for MDG, stacking
-//! strings and UniGrafix, [`lsystem`] for L-systems and ETOL, [`eisen`] for
-//! EisenScript) → one [`model::Model`] → the stages ([`print`], [`mesh`],
-//! [`preview`]) → [`export`] → bytes. [`render`] ([`pipeline`]) is the only
-//! orchestrator and runs it all under one `core::Budget`. `ARCHITECTURE.md`
-//! has the code map.
+//! Data flows one way: source → a language's front end (rulemesh-lang,
+//! found through [`lang::Language::front_end`]) → one [`model::Model`] →
+//! the stages ([`print`], [`mesh`], [`preview`]) → [`export`] → bytes.
+//! [`render`] ([`pipeline`]) is the only orchestrator and runs it all under
+//! one `core::Budget`. `ARCHITECTURE.md` has the code map.
 
 #![warn(missing_docs)]
 
 // The layers below, under the names the code has always used (`crate::core`,
-// `crate::geom`, `crate::lang`), so a module's paths do not depend on which
-// crate holds it.
+// `crate::geom`, `crate::lang`, `crate::model`), so a module's paths do not
+// depend on which crate holds it.
 use rulemesh_core::{core, geom};
-use rulemesh_lang::lang;
+use rulemesh_lang as lang;
+use rulemesh_lang::model;
 pub use rulemesh_core::ENGINE_VERSION;
 
-pub mod eisen;
-pub mod eval;
 pub mod export;
-pub mod lsystem;
 pub mod mesh;
-pub mod model;
 pub mod pipeline;
 pub mod preview;
 pub mod print;

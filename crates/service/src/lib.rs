@@ -6,9 +6,10 @@
 
 // The layers below, under the names the code has always used.
 use rulemesh_core::{core, geom};
-use rulemesh_engine::{eisen, export, mesh, model, pipeline, preview, print};
+use rulemesh_engine::{export, mesh, pipeline, preview, print};
 use rulemesh_engine::{render, RenderError, RenderOutput, RenderRequest};
-use rulemesh_lang::lang;
+use rulemesh_lang as lang;
+use rulemesh_lang::model;
 pub use rulemesh_core::ENGINE_VERSION;
 
 pub mod cache;

@@ -6,18 +6,17 @@
 use super::*;
 use std::collections::BTreeMap;
 
-/// (library name, language, file) for every grammar file, from the
+/// (library name, language, file) for every grammar file, read from the
 /// repository itself rather than from the library the server embeds.
 fn library_files() -> BTreeMap<String, (&'static str, std::path::PathBuf)> {
-    const LANGUAGES: [(&str, &str); 5] = [("mdg", "mdg"), ("ls", "lsystem"), ("es", "eisenscript"), ("ug", "ug"), ("etol", "etol")];
     let mut out = BTreeMap::new();
     for (dir, prefix) in [("grammars", ""), ("grammars/icons", "icon-")] {
         for entry in std::fs::read_dir(common::repo().join(dir)).expect("grammar folder") {
             let path = entry.expect("entry").path();
-            let Some(ext) = path.extension().and_then(|x| x.to_str()) else { continue };
-            let Some(&(_, language)) = LANGUAGES.iter().find(|l| l.0 == ext) else { continue };
+            // A file is a grammar when a registered language claims its extension.
+            let Some(language) = rulemesh::lang::Language::from_extension(&path) else { continue };
             let stem = path.file_stem().and_then(|s| s.to_str()).expect("UTF-8 name");
-            out.insert(format!("{prefix}{stem}"), (language, path));
+            out.insert(format!("{prefix}{stem}"), (language.name(), path));
         }
     }
     out

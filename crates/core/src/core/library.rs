@@ -5,12 +5,11 @@
 
 include!(concat!(env!("OUT_DIR"), "/grammars.rs"));
 
-/// The source of built-in grammar `name` (the file stem) written in
-/// `language` (its request name, e.g. `"mdg"`), if there is one. An import
-/// names a grammar of its own language: MDG's `@import "hogeweg"` must not
-/// read an L-system.
-pub fn source(name: &str, language: &str) -> Option<&'static str> {
-    BUILTIN.iter().find(|(n, l, _)| *n == name && *l == language).map(|&(_, _, s)| s)
+/// The source of built-in grammar `name` (the file stem) whose file has
+/// `extension` (e.g. `"mdg"`), if there is one. An import names a grammar
+/// of its own language: MDG's `@import "hogeweg"` must not read an L-system.
+pub fn source(name: &str, extension: &str) -> Option<&'static str> {
+    BUILTIN.iter().find(|(n, x, _)| *n == name && *x == extension).map(|&(_, _, s)| s)
 }
 
 /// The printable collection: library grammars designed to be printed, each

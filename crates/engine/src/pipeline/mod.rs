@@ -3,8 +3,8 @@
 //!
 //! This is the one entry point the CLI and the service share, so the same
 //! request gives the same bytes whichever front door it came through. Front
-//! ends ([`eval`](crate::eval), [`lsystem`](crate::lsystem),
-//! [`eisen`](crate::eisen)) only make models; they never call back here.
+//! ends (rulemesh-lang's [`FrontEnd`](crate::lang::FrontEnd)s, one per
+//! language) only make models; they never call back here.
 //!
 //! Deadlines: under `on_limit: error` every stage fails with the deadline
 //! once it has passed. Under `truncate` the stages get shares of it — the
@@ -209,47 +209,20 @@ fn language_of(source: &[u8], language: Option<Language>) -> Result<Language, Re
         .ok_or_else(|| RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into()))
 }
 
-/// Parses `source` as `language` (or the detected one) into the rule IR,
-/// enforcing the source-size limit (the service's library listing).
-pub fn parse_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, lang::ir::Program), RenderError> {
-    Budget::check_source(limits, source.len() as u64)?;
-    let language = language_of(source, language)?;
-    Ok((language, lang::parse(language, source)?))
-}
-
 /// The parameters `source` declares (MDG `@param`, EisenScript GUI
 /// defines; L-systems and ETOL declare none), for parameter schemas: read
 /// from the parsed source without evaluating it.
 pub fn declared_params(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<lang::ir::ParamDecl>), RenderError> {
     Budget::check_source(limits, source.len() as u64)?;
     let language = language_of(source, language)?;
-    let params = match language {
-        Language::Mdg | Language::Stack | Language::Ug => lang::parse(language, source)?.params,
-        Language::Eisenscript => lang::eisen::parse(source, &Default::default())?
-            .params
-            .into_iter()
-            .map(|p| lang::ir::ParamDecl {
-                name: p.name,
-                kind: if p.integer { lang::ir::ParamKind::Int } else { lang::ir::ParamKind::Float },
-                default: p.default,
-                range: Some(p.range),
-                choices: Vec::new(),
-                span: p.span,
-            })
-            .collect(),
-        Language::Lsystem | Language::Etol => {
-            lang::check(language, source)?;
-            Vec::new()
-        }
-    };
-    Ok((language, params))
+    Ok((language, language.front_end().declared_params(source)?))
 }
 
 /// Parses `source` only to report its diagnostics: the language read and its warnings.
 pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<Diagnostic>), RenderError> {
     Budget::check_source(limits, source.len() as u64)?;
     let language = language_of(source, language)?;
-    Ok((language, lang::check(language, source)?))
+    Ok((language, language.front_end().check(source)?))
 }
 
 /// Rejects a request whose options are out of range before any work.
@@ -325,16 +298,12 @@ fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
 
 /// Calls the front end of `language`.
 fn build_model(language: Language, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
-    if req.frame.is_some() && !(language == Language::Eisenscript && lang::eisen::is_javascript(source)) {
+    let front_end = language.front_end();
+    if req.frame.is_some() && !front_end.plays_frames(source) {
         let message = format!("`frame` picks one picture of a Structure Synth JavaScript movie (a `#javascript` script); this source is {}, not a movie", language.name());
         return Err(EvalError::Frame { message }.into());
     }
-    match language {
-        Language::Mdg | Language::Stack | Language::Ug => crate::eval::build_model(language, source, req, budget, clock),
-        Language::Lsystem => crate::lsystem::build_model(source, req, budget, clock),
-        Language::Etol => crate::lsystem::build_etol_model(source, req, budget, clock),
-        Language::Eisenscript => crate::eisen::build_model(source, req, budget, clock),
-    }
+    front_end.build_model(source, req, budget, clock)
 }
 
 /// The share of the whole deadline at which meshing stops under `truncate`:
@@ -464,7 +433,7 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
                     provenance: Some(provenance.clone()),
                 };
                 // MDG's instances carry their colours, as its flat scenes' do; L-systems' meshes do.
-                let per_instance_colour = !matches!(model.language, Language::Lsystem | Language::Etol);
+                let per_instance_colour = model.language.front_end().colours_per_instance();
                 Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, &meta, per_instance_colour, budget)?)
             }
             _ => None,

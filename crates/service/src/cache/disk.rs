@@ -274,7 +274,7 @@ pub(super) fn decode(key: &CacheKey, data: &[u8]) -> Option<Rendered> {
         bytes: bytes::Bytes::copy_from_slice(bytes),
         etag,
         content_type: static_content_type(&header.content_type)?,
-        language: [Language::Mdg, Language::Lsystem, Language::Eisenscript, Language::Stack, Language::Ug, Language::Etol].into_iter().find(|l| l.name() == header.language)?,
+        language: Language::from_name(&header.language)?,
         seed: header.seed?,
         primitives: header.primitives,
         triangles: header.triangles,

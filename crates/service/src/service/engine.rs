@@ -104,7 +104,7 @@ impl Engine {
         span.record("key", tracing::field::display(key.hex()));
         let language = plan.request.language.or_else(|| Language::detect(&plan.source));
         span.record("language", tracing::field::display(language.map_or("unknown", Language::name)));
-        if !self.allow_javascript && language == Some(Language::Eisenscript) && crate::eisen::js::is_javascript(&plan.source) {
+        if !self.allow_javascript && language == Some(Language::Eisenscript) && crate::lang::eisen::syntax::is_javascript(&plan.source) {
             self.metrics.access_rejected("javascript_disabled");
             return Err(ServiceError::JavaScriptDisabled);
         }

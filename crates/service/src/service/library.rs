@@ -2,7 +2,7 @@
 //! `grammars/icons/`, of every language, embedded at build time so the
 //! server needs no files.
 
-use crate::core::{Choice, Limits};
+use crate::core::Limits;
 use crate::lang::ir::ParamKind;
 use crate::lang::Language;
 use serde::Serialize;
@@ -23,8 +23,8 @@ pub struct Builtin {
 
 /// Every built-in grammar, sorted by name.
 pub fn all() -> impl Iterator<Item = Builtin> {
-    // build.rs writes only languages' request names, so every entry has one.
-    BUILTIN.iter().filter_map(|&(name, language, source)| Some(Builtin { name, language: Language::from_name(language)?, source }))
+    // Files no language claims (by extension) are not grammars.
+    BUILTIN.iter().filter_map(|&(name, extension, source)| Some(Builtin { name, language: Language::from_extension(std::path::Path::new(&format!("x.{extension}")))?, source }))
 }
 
 /// The built-in grammar called `name`, if any.
@@ -36,7 +36,11 @@ pub fn find(name: &str) -> Option<Builtin> {
 /// `gem.mdg`, `hogeweg.ls`), or the 404 that every grammar route answers for
 /// a name the library does not have.
 pub fn find_route_name(name: &str) -> Result<Builtin, super::ServiceError> {
-    let name = [".mdg", ".ls", ".es", ".ug", ".etol"].iter().find_map(|x| name.strip_suffix(x)).unwrap_or(name);
+    let name = Language::ALL
+        .iter()
+        .flat_map(|l| l.front_end().extensions())
+        .find_map(|x| name.strip_suffix(x).and_then(|n| n.strip_suffix('.')))
+        .unwrap_or(name);
     find(name).ok_or_else(|| super::ServiceError::NotFound(format!("no built-in grammar `{name}`")))
 }
 

@@ -118,7 +118,7 @@ impl<'de> Deserialize<'de> for SeedValue {
 pub struct RenderBody {
     /// Grammar source.
     pub source: String,
-    /// `"mdg"`, `"lsystem"` or `"eisenscript"`; detected from the source when absent.
+    /// A language's name (`"mdg"`, `"lsystem"`, `"eisenscript"`, …, `Language::ALL`); detected from the source when absent.
     pub language: Option<String>,
     /// Random seed: any 64-bit unsigned value, as a JSON number or as a
     /// decimal string (JSON numbers lose precision beyond 2^53 in most
@@ -195,7 +195,7 @@ pub struct RenderBody {
 pub struct CheckBody {
     /// Grammar source.
     pub source: String,
-    /// `"mdg"`, `"lsystem"` or `"eisenscript"`; detected from the source when absent.
+    /// A language's name (`"mdg"`, `"lsystem"`, `"eisenscript"`, …, `Language::ALL`); detected from the source when absent.
     pub language: Option<String>,
 }
 
@@ -214,15 +214,16 @@ pub struct RenderPlan {
 
 /// Reads a language name.
 pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceError> {
+    // The registry's names (rulemesh-lang's `languages!` table), case-insensitively.
     match name.map(str::trim) {
         None | Some("") => Ok(None),
-        Some(n) if n.eq_ignore_ascii_case("mdg") => Ok(Some(Language::Mdg)),
-        Some(n) if n.eq_ignore_ascii_case("lsystem") => Ok(Some(Language::Lsystem)),
-        Some(n) if n.eq_ignore_ascii_case("eisenscript") => Ok(Some(Language::Eisenscript)),
-        Some(n) if n.eq_ignore_ascii_case("stack") => Ok(Some(Language::Stack)),
-        Some(n) if n.eq_ignore_ascii_case("ug") => Ok(Some(Language::Ug)),
-        Some(n) if n.eq_ignore_ascii_case("etol") => Ok(Some(Language::Etol)),
-        Some(other) => Err(ServiceError::BadRequest(format!("unknown language `{other}` (known: mdg, lsystem, eisenscript, stack, ug, etol)"))),
+        Some(n) => match Language::ALL.iter().copied().find(|l| l.name().eq_ignore_ascii_case(n)) {
+            Some(l) => Ok(Some(l)),
+            None => {
+                let known: Vec<&str> = Language::ALL.iter().map(|l| l.name()).collect();
+                Err(ServiceError::BadRequest(format!("unknown language `{n}` (known: {})", known.join(", "))))
+            }
+        },
     }
 }
 

@@ -13,7 +13,7 @@
 //! the parser, not of the Rust types utoipa sees; a test keeps the two in
 //! step (every field of [`RenderBody`](super::request::RenderBody) is here).
 
-use crate::eisen::LINE_RADIUS_PARAM;
+use crate::lang::eisen::LINE_RADIUS_PARAM;
 use crate::lang::ir::{ParamDecl, ParamKind};
 use crate::lang::Language;
 use serde_json::{json, Map, Value};
@@ -34,7 +34,7 @@ pub fn render_schema(title: &str, description: &str, language: Language, params:
             LINE_RADIUS_PARAM.to_string(),
             json!({
                 "type": "number", "exclusiveMinimum": 0, "maximum": 0.5,
-                "default": crate::eisen::build::DEFAULT_LINE_RADIUS,
+                "default": crate::lang::eisen::build::DEFAULT_LINE_RADIUS,
                 "description": "Half-thickness of lines, grid edges and dots"
             }),
         );
@@ -110,7 +110,7 @@ fn options() -> Value {
         "additionalProperties": false,
         "properties": {
             "source": { "type": "string", "description": "Grammar source (added by the client; the schema is about the rest)" },
-            "language": { "enum": ["mdg", "lsystem", "eisenscript", "stack", "ug", "etol"] },
+            "language": { "enum": Language::ALL.iter().map(|l| l.name()).collect::<Vec<_>>() },
             "seed": {
                 "description": "Random seed: any 64-bit unsigned value, as a number or (beyond 2^53, where JSON numbers lose precision) a decimal string",
                 "anyOf": [

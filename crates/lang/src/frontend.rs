@@ -1,0 +1,51 @@
+//! The front-end contract: what every language provides so that the
+//! pipeline, the doors and the library can treat languages alike. One
+//! implementation per language folder, registered once in the crate root's
+//! `languages!` table.
+
+use crate::core::budget::Budget;
+use crate::core::timing::StageClock;
+use crate::ir::ParamDecl;
+use crate::model::{BuildError, BuildRequest, Model};
+use crate::{Diagnostic, ParseError};
+
+/// A language's front end: source bytes to diagnostics, declared
+/// parameters, or the one [`Model`] the stages take.
+///
+/// A front end never calls back into the pipeline and never learns which
+/// output is coming: the request says only whether a hierarchy is wanted
+/// ([`BuildRequest::hierarchy`]) and what each primitive will cost
+/// downstream, and the front end charges what it makes to the budget.
+pub trait FrontEnd: Sync {
+    /// The name requests and the CLI use (`"mdg"`, `"lsystem"`, …).
+    fn name(&self) -> &'static str;
+
+    /// File extensions read as this language, lower case, without the dot;
+    /// the first is the one the library's grammars use.
+    fn extensions(&self) -> &'static [&'static str];
+
+    /// Parses `source` only to report its diagnostics (warnings on success).
+    fn check(&self, source: &[u8]) -> Result<Vec<Diagnostic>, ParseError>;
+
+    /// The parameters `source` declares (MDG `@param`, EisenScript GUI
+    /// defines; empty where the language has none), read without evaluating.
+    fn declared_params(&self, source: &[u8]) -> Result<Vec<ParamDecl>, ParseError>;
+
+    /// Whether `source` is a movie whose frames a request may pick one of
+    /// (`frame`): only Structure Synth's `#javascript` scripts are.
+    fn plays_frames(&self, _source: &[u8]) -> bool {
+        false
+    }
+
+    /// Whether the leaves of a [`Hierarchy`](crate::model::Hierarchy) this
+    /// front end builds take their colour per placement (MDG's, as its flat
+    /// scenes do: an instanced writer then gives each placement its colour)
+    /// rather than per mesh (L-systems', whose colour is part of the shape).
+    fn colours_per_instance(&self) -> bool {
+        true
+    }
+
+    /// Builds the model of `source` for `req` under `budget`, lapping
+    /// `clock` at the parse and evaluation boundaries.
+    fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError>;
+}

@@ -1,0 +1,101 @@
+//! The MDG evaluator, which also runs stacking strings and UniGrafix (they
+//! lower into the same rule IR): binds request parameters to a program's
+//! `@param`s and expands the IR depth-first into a [`Scene`](crate::model::Scene).
+//! [`build_model`] is what their front ends ([`crate::mdg::Mdg`],
+//! [`crate::stack::Stack`], [`crate::ug::Ug`]) call once they have parsed.
+
+mod adjust;
+pub mod evaluator;
+mod lines;
+mod machine;
+mod memo;
+pub mod params;
+mod paths;
+mod select;
+mod shapes;
+mod share;
+
+pub use evaluator::{evaluate, evaluate_hierarchy, promised_bytes, EvalOptions};
+pub use params::bind_params;
+
+use crate::core::budget::Budget;
+use crate::core::timing::{Phase, StageClock};
+use crate::ir::Program;
+use crate::Language;
+use crate::core::budget::{Limit, OnLimit};
+use crate::model::scene::Scene;
+use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, HierarchyUse, Model};
+
+/// Binds the request's parameters to `program` (parsed from MDG, a
+/// stacking string or UniGrafix: `language` says which) and evaluates it
+/// into a model under `budget`.
+///
+/// Where the output writes a hierarchy as it is (`format=scene`) or
+/// instances it (GPU-instanced glTF), a program whose derivation can be
+/// memoised is built as an object [`Hierarchy`](crate::model::Hierarchy)
+/// ([`evaluate_hierarchy`], docs/mdg.md); every other output, and every other
+/// program, gets the flat derivation, exactly as before hierarchies existed.
+pub fn build_model(language: Language, program: Program, req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    let params = bind_params(&program, req.params)?;
+    clock.lap(Phase::Parse);
+    let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit, downstream: req.downstream };
+    // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
+    let seed = req.seed.or(program.directives.randseed).unwrap_or(0);
+    if let Some(h) = hierarchy(&program, &params, &options, req, budget)? {
+        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(&program), ..Scene::default() }, hierarchy: Some(h), warnings: program.warnings });
+    }
+    let scene = evaluate(&program, &params, &options, budget)?;
+    Ok(Model {
+        language,
+        seed,
+        primitives: scene.instances.len() as u64,
+        promised: promised_bytes(&scene, &options),
+        scene,
+        hierarchy: None,
+        warnings: program.warnings,
+    })
+}
+
+/// The program's hierarchy when the request's output uses one as it is and
+/// the program shares something, charged as that output materialises it:
+/// `format=scene` its entries and leaf shapes, instanced glTF one transform
+/// per leaf and one mesh per (shape, colour). Under `truncate` a hierarchy
+/// that does not fit is given up (its charges refunded) for the flat
+/// derivation, which stops at the limit.
+fn hierarchy(program: &Program, params: &[f64], options: &EvalOptions, req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Option<Hierarchy>, BuildError> {
+    let wanted = match req.hierarchy {
+        HierarchyUse::Required | HierarchyUse::Union | HierarchyUse::Streamed => true,
+        HierarchyUse::Preferred => req.downstream.per_instance.is_some(),
+        HierarchyUse::Never => false,
+    };
+    if !wanted {
+        return Ok(None);
+    }
+    let mark = budget.mark();
+    let built = evaluate_hierarchy(program, params, options, budget).and_then(|h| {
+        let Some(h) = h else { return Ok(None) };
+        match req.hierarchy {
+            HierarchyUse::Required => budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?,
+            // Streamed strips tessellate every leaf as they write it, and the
+            // union's fallback expands every leaf: charged as the flat derivation would be.
+            HierarchyUse::Streamed | HierarchyUse::Union => {
+                budget.check_total(Limit::Primitives, h.leaves())?;
+                budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
+            }
+            HierarchyUse::Preferred | HierarchyUse::Never => {
+                budget.check_total(Limit::Primitives, h.leaves())?;
+                let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(req.detail))).fold(0u64, u64::saturating_add);
+                budget.check_total(Limit::Triangles, meshes)?;
+            }
+        }
+        Ok(Some(h))
+    });
+    match built {
+        Ok(h) => Ok(h),
+        Err(EvalError::Limit(_)) if req.on_limit == OnLimit::Truncate => {
+            budget.rewind(mark);
+            Ok(None)
+        }
+        Err(e) => Err(e.into()),
+    }
+}

@@ -1,0 +1,30 @@
+//! Haglund 2009's stacking strings (`docs/modifiers.md`): the parser ([`syntax`]) lowers a string into the rule IR, which MDG's evaluator runs.
+
+pub mod syntax;
+
+use crate::core::budget::Budget;
+use crate::core::timing::StageClock;
+use crate::ir::ParamDecl;
+use crate::model::{BuildError, BuildRequest, Model};
+use crate::{Diagnostic, FrontEnd, Language, ParseError};
+
+/// The front end of `language: "stack"`.
+pub struct Stack;
+
+impl FrontEnd for Stack {
+    fn name(&self) -> &'static str {
+        "stack"
+    }
+    fn extensions(&self) -> &'static [&'static str] {
+        &["stack"]
+    }
+    fn check(&self, source: &[u8]) -> Result<Vec<Diagnostic>, ParseError> {
+        syntax::parse(source).map(|p| p.warnings)
+    }
+    fn declared_params(&self, source: &[u8]) -> Result<Vec<ParamDecl>, ParseError> {
+        syntax::parse(source).map(|p| p.params)
+    }
+    fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+        crate::mdg::eval::build_model(Language::Stack, syntax::parse(source)?, req, budget, clock)
+    }
+}
