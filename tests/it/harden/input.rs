@@ -49,13 +49,13 @@ async fn http_request_scene_format_for_a_mesh_language_is_400_not_500() {
     let fuzzed = "#define _nF -6 Fngumessage3333333333333333333330000m00000000000000se~e89161220]()475278678lrystem";
     // Every language renders as a scene (version 2) now: the fuzzed source
     // reads as EisenScript and is answered without an internal error; a bare
-    // `box` is no language the detector knows (a 400 saying that).
+    // `box` is no language the detector knows (a 400 parse_error at 1:1 saying that).
     let r = client().post(format!("{base}/v1/render")).json(&json!({"source": fuzzed, "format": "scene"})).send().await.expect("post");
     assert_ne!(r.status(), 500, "{fuzzed}");
     let r = client().post(format!("{base}/v1/render")).json(&json!({"source": "box\n", "format": "scene"})).send().await.expect("post");
     assert_eq!(r.status(), 400);
     let e = error_of(r).await;
-    assert_eq!(e["code"], "bad_request", "{e}");
+    assert_eq!(e["code"], "parse_error", "{e}");
     assert!(e["message"].as_str().is_some_and(|m| m.contains("cannot detect the language")), "{e}");
     let reply = grpc(&srv)
         .await

@@ -142,12 +142,14 @@ async fn a_failing_member_fails_alone_and_an_oversized_batch_is_refused() {
     assert!(lines[2]["error"]["code"].is_string() && lines[2]["error"]["message"].as_str().is_some_and(|m| m.contains('n')), "{}", lines[2]);
     assert_eq!(lines[2]["seed"], "5");
 
-    // Over the cap of 256, by seeds or by a sweep's product: 400 naming the cap.
+    // Over the cap of 256, by seeds or by a sweep's product: 413 naming the cap
+    // (a request too large to take; the schema cannot bound a product).
     let seeds: Vec<u64> = (0..257).collect();
     for body in [json!({"grammar": "gem", "seeds": seeds}), json!({"grammar": "gem", "sweep": {"a": (0..17).collect::<Vec<u32>>(), "b": (0..17).collect::<Vec<u32>>()}})] {
         let r = post(&base, "/v1/render/batch", &body).await;
-        assert_eq!(r.status(), 400);
+        assert_eq!(r.status(), 413);
         let e = error_body(r).await;
+        assert_eq!(e["code"], "too_many_members", "{e}");
         assert!(e["message"].as_str().is_some_and(|m| m.contains("cap of 256")), "{e}");
     }
     // Exactly the cap is accepted.
@@ -213,7 +215,7 @@ async fn grpc_render_batch_streams_the_same_members_and_bytes_as_http() {
     assert!(stream.message().await.expect("end").is_none());
     let over = pb::RenderBatchRequest { grammar: "gem".into(), seeds: (0..257).collect(), ..Default::default() };
     let err = g.render_batch(over).await.expect_err("over the cap");
-    assert_eq!(err.code(), tonic::Code::InvalidArgument);
+    assert_eq!(err.code(), tonic::Code::ResourceExhausted);
     assert!(err.message().contains("cap of 256"), "{}", err.message());
     let err = g.render_batch(pb::RenderBatchRequest { grammar: "nope".into(), seeds: vec![1], ..Default::default() }).await.expect_err("unknown");
     assert_eq!(err.code(), tonic::Code::NotFound);

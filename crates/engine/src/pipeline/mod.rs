@@ -206,7 +206,10 @@ impl From<PrintError> for RenderError {
 fn language_of(source: &[u8], language: Option<Language>) -> Result<Language, RenderError> {
     language
         .or_else(|| Language::detect(source))
-        .ok_or_else(|| RenderError::BadRequest("cannot detect the language of the source; name it explicitly".into()))
+        // A property of the source, not of the request's shape: reported as
+        // a parse error at its start, so that a client (and the OpenAPI
+        // document's contract) can tell it from a malformed request.
+        .ok_or_else(|| RenderError::Parse(crate::core::ParseError::single(crate::core::Span::new(1, 1), "cannot detect the language of the source; name it explicitly")))
 }
 
 /// The parameters `source` declares (MDG `@param`, EisenScript GUI
@@ -225,8 +228,11 @@ pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) 
     Ok((language, language.front_end().check(source)?))
 }
 
-/// Rejects a request whose options are out of range before any work.
-fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
+/// Rejects a request whose options are out of range before any work: the
+/// one check of a request's options, which [`render`] runs and the service
+/// runs too when it plans a request (so a batch is refused whole, before
+/// any member renders).
+pub fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
         return Err(RenderError::BadRequest(format!("detail must be in {}..={}, got {}", geom::MIN_DETAIL, geom::MAX_DETAIL, req.detail)));
     }

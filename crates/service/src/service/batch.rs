@@ -119,7 +119,9 @@ impl Batch {
 fn check_size(members: usize) -> Result<(), ServiceError> {
     match members {
         0 => Err(ServiceError::BadRequest("a batch needs at least one member (a non-empty `seeds` or `sweep`)".into())),
-        n if n > MAX_MEMBERS => Err(ServiceError::BadRequest(format!("a batch of {n} members is over the cap of {MAX_MEMBERS}"))),
+        // Over the cap is a request too large to take, as a body over the
+        // byte limit is (413): the schema cannot bound a sweep's product.
+        n if n > MAX_MEMBERS => Err(ServiceError::TooManyMembers { members: n, cap: MAX_MEMBERS }),
         _ => Ok(()),
     }
 }

@@ -84,6 +84,16 @@ pub enum ServiceError {
         /// The body limit in bytes.
         limit: usize,
     },
+    /// A batch with more members than a batch may have (its `seeds`, or
+    /// the product of its `sweep`'s lists): too large to take, as a body
+    /// over the byte limit is.
+    #[error("a batch of {members} members is over the cap of {cap}")]
+    TooManyMembers {
+        /// Members asked for.
+        members: usize,
+        /// The cap.
+        cap: usize,
+    },
     /// Too many renders running and waiting; try again later.
     #[error("overloaded: {running} renders running and {waiting} waiting; retry after {retry_after_secs} s")]
     Overloaded {
@@ -172,7 +182,7 @@ impl ServiceError {
             ServiceError::Limit(l) if l.limit == Limit::Deadline => StatusCode::GATEWAY_TIMEOUT,
             ServiceError::Limit(_) | ServiceError::Unprocessable { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             ServiceError::NotFound(_) => StatusCode::NOT_FOUND,
-            ServiceError::PayloadTooLarge { .. } => StatusCode::PAYLOAD_TOO_LARGE,
+            ServiceError::PayloadTooLarge { .. } | ServiceError::TooManyMembers { .. } => StatusCode::PAYLOAD_TOO_LARGE,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown | ServiceError::MemoryPressure { .. } => StatusCode::SERVICE_UNAVAILABLE,
             ServiceError::QueueTimeout { .. } => StatusCode::GATEWAY_TIMEOUT,
             ServiceError::Unauthorized => StatusCode::UNAUTHORIZED,
@@ -190,7 +200,7 @@ impl ServiceError {
             ServiceError::Limit(_) => tonic::Code::ResourceExhausted,
             ServiceError::Unprocessable { .. } => tonic::Code::FailedPrecondition,
             ServiceError::NotFound(_) => tonic::Code::NotFound,
-            ServiceError::PayloadTooLarge { .. } | ServiceError::MemoryPressure { .. } => tonic::Code::ResourceExhausted,
+            ServiceError::PayloadTooLarge { .. } | ServiceError::TooManyMembers { .. } | ServiceError::MemoryPressure { .. } => tonic::Code::ResourceExhausted,
             ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => tonic::Code::Unavailable,
             ServiceError::QueueTimeout { .. } => tonic::Code::DeadlineExceeded,
             ServiceError::Unauthorized => tonic::Code::Unauthenticated,
@@ -211,6 +221,7 @@ impl ServiceError {
             ServiceError::Unprocessable { code, .. } => code,
             ServiceError::NotFound(_) => "not_found",
             ServiceError::PayloadTooLarge { .. } => "payload_too_large",
+            ServiceError::TooManyMembers { .. } => "too_many_members",
             ServiceError::Overloaded { .. } => "overloaded",
             ServiceError::MemoryPressure { .. } => "memory_pressure",
             ServiceError::QueueTimeout { .. } => "queue_timeout",

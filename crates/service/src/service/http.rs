@@ -164,7 +164,11 @@ pub fn openapi() -> utoipa::openapi::OpenApi {
 /// [`openapi`] as JSON, built once.
 pub fn openapi_json_text() -> &'static str {
     static DOC: OnceLock<String> = OnceLock::new();
-    DOC.get_or_init(|| openapi().to_json().unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}")))
+    DOC.get_or_init(|| {
+        let mut doc = serde_json::to_value(openapi()).unwrap_or_default();
+        super::schema::tighten_openapi(&mut doc);
+        serde_json::to_string(&doc).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+    })
 }
 
 /// `GET /openapi.json`.
@@ -483,6 +487,13 @@ async fn model_get(
                     _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, min_wall_mm, build_volume_mm, triangle_ceiling, size, view, background, p.<name>)")),
                 },
             }
+        }
+        if ext != "png" {
+            // The picture's options apply to NAME.png and are ignored for the
+            // other extensions (checked all the same), so one query string
+            // serves every format of a model (docs/service.md).
+            let (size, view, background) = (body.size.take(), body.view.take(), body.background.take());
+            super::request::preview_options(Format::Png, size, view.as_deref(), background.as_deref())?.validate().map_err(ServiceError::BadRequest)?;
         }
         let pinned = body.seed.is_some();
         let text = ext == "gltf";

@@ -147,10 +147,10 @@ fn line(outcome: &MemberOutcome, state: &AppState) -> Bytes {
             `{\"index\", \"seed\" (decimal string), \"params\", \"etag\", \"cache\" (hit or miss), \"content_type\", \"primitives\", \"triangles\", \"truncated\", \"size\", \"bytes_base64\"}`, \
             or for a member that failed alone (a limit, an evaluation error, shed by the concurrency limit) `{\"index\", \"seed\", \"params\", \"error\": {\"code\", \"message\", ...}}`",
             content_type = "application/x-ndjson", body = String),
-        (status = 400, description = "Malformed request (also: no members, or more than 256)", body = ErrorBody),
+        (status = 400, description = "Malformed request (also: no members)", body = ErrorBody),
         (status = 401, description = "API keys are configured and none valid was presented", body = ErrorBody),
         (status = 404, description = "No built-in grammar of that name", body = ErrorBody),
-        (status = 413, description = "Request body too large", body = ErrorBody),
+        (status = 413, description = "Request body too large, or more than 256 members (`too_many_members`)", body = ErrorBody),
         (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
 pub(super) async fn batch_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {

@@ -17,23 +17,57 @@ use utoipa::ToSchema;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
+/// Reads an optional whole number sent as a JSON integer or as a number
+/// with no fraction (`8.0`): JSON Schema's `integer`, which the published
+/// schemas use, admits both, so the server must too. Null reads as absent.
+fn whole<'de, D, T>(d: D) -> Result<Option<T>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: TryFrom<u64>,
+{
+    let Some(n) = Option::<serde_json::Number>::deserialize(d)? else { return Ok(None) };
+    let value = n.as_u64().or_else(|| n.as_f64().filter(|f| f.fract() == 0.0 && *f >= 0.0 && *f < 18_446_744_073_709_551_616.0).map(|f| f as u64));
+    match value.map(T::try_from) {
+        Some(Ok(v)) => Ok(Some(v)),
+        Some(Err(_)) => Err(serde::de::Error::custom(format!("{n} is out of range"))),
+        None => Err(serde::de::Error::custom(format!("{n} is not a whole number ≥ 0"))),
+    }
+}
+
+/// Reads `limits` as a JSON object only: serde would also read a struct
+/// from an array of its fields in order, which the published schema (an
+/// object) does not allow. Null reads as absent.
+fn limits_object<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<LimitsBody>, D::Error> {
+    match Option::<serde_json::Map<String, serde_json::Value>>::deserialize(d)? {
+        None => Ok(None),
+        Some(map) => serde_json::from_value(serde_json::Value::Object(map)).map(Some).map_err(serde::de::Error::custom),
+    }
+}
+
 /// Client-supplied limits: every field optional, missing ones take the defaults.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LimitsBody {
     /// [`Limits::max_depth`]
+    #[serde(default, deserialize_with = "whole")]
     pub max_depth: Option<u32>,
     /// [`Limits::max_primitives`]
+    #[serde(default, deserialize_with = "whole")]
     pub max_primitives: Option<u64>,
     /// [`Limits::max_triangles`]
+    #[serde(default, deserialize_with = "whole")]
     pub max_triangles: Option<u64>,
     /// [`Limits::max_memory`] (default 256 MiB; 640 MiB for a print, [`crate::core::budget::PRINT_MAX_MEMORY`])
+    #[serde(default, deserialize_with = "whole")]
     pub max_memory: Option<u64>,
     /// [`Limits::timeout_ms`]
+    #[serde(default, deserialize_with = "whole")]
     pub timeout_ms: Option<u64>,
     /// [`Limits::max_source_bytes`]
+    #[serde(default, deserialize_with = "whole")]
     pub max_source_bytes: Option<u64>,
     /// [`Limits::max_steps`]
+    #[serde(default, deserialize_with = "whole")]
     pub max_steps: Option<u64>,
 }
 
@@ -88,11 +122,15 @@ fn seed_number_or_text<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<
     #[serde(untagged)]
     enum Raw {
         Number(u64),
+        // An integral float (`5.0`): JSON Schema's `integer` admits it.
+        Float(f64),
         Text(String),
     }
     match Option::<Raw>::deserialize(d) {
         Ok(None) => Ok(None),
         Ok(Some(Raw::Number(n))) => Ok(Some(n)),
+        Ok(Some(Raw::Float(f))) if f.fract() == 0.0 && (0.0..18_446_744_073_709_551_616.0).contains(&f) => Ok(Some(f as u64)),
+        Ok(Some(Raw::Float(f))) => Err(serde::de::Error::custom(format!("seed {f} is not a whole number from 0 to 2^64 - 1"))),
         Ok(Some(Raw::Text(t))) if !t.is_empty() && t.len() <= 20 && t.bytes().all(|b| b.is_ascii_digit()) => {
             t.parse().map(Some).map_err(|_| serde::de::Error::custom(format!("seed `{t}` is beyond 2^64 - 1")))
         }
@@ -135,21 +173,26 @@ pub struct RenderBody {
     /// `"ug"` or `"png"` (a preview picture).
     pub format: Option<String>,
     /// Limits, each clamped to the server's ceiling.
+    #[serde(default, deserialize_with = "limits_object")]
     pub limits: Option<LimitsBody>,
     /// `"error"` (default) or `"truncate"`.
     pub on_limit: Option<String>,
     /// Tessellation detail.
+    #[serde(default, deserialize_with = "whole")]
     pub detail: Option<u32>,
     /// A Structure Synth JavaScript movie only: build its k-th saved
     /// picture alone (0-based), as Structure Synth renders one picture at a
     /// time; absent, the whole movie is one animated model. Any other source
     /// answers 400 `eval_error`.
+    #[serde(default, deserialize_with = "whole")]
     pub frame: Option<u32>,
     /// `"merged"` (default) or `"per-kind"`.
     pub layout: Option<String>,
     /// `strips` only: bits per position axis (8, 10, 12 or 16; default 16).
+    #[serde(default, deserialize_with = "whole")]
     pub position_bits: Option<u8>,
     /// `strips` only: bits per normal component (8 or 16; default 8).
+    #[serde(default, deserialize_with = "whole")]
     pub normal_bits: Option<u8>,
     /// `strips` only: wrap the body in zstd (default false).
     pub zstd: Option<bool>,
@@ -180,8 +223,10 @@ pub struct RenderBody {
     pub build_volume_mm: Option<Vec<f64>>,
     /// With `print`: the most triangles the printer accepts, 1 to 10⁸
     /// (default 1,000,000); more are reported as `too_many_triangles`.
+    #[serde(default, deserialize_with = "whole")]
     pub triangle_ceiling: Option<u64>,
     /// `png` only: width and height in pixels (16–2048, default 256).
+    #[serde(default, deserialize_with = "whole")]
     pub size: Option<u32>,
     /// `png` only: `"three-quarter"` (default), `"front"`, `"top"` or `"iso"`.
     pub view: Option<String>,
@@ -352,6 +397,7 @@ impl RenderBody {
             script_dir: None,
             frame: self.frame,
         };
+        crate::pipeline::check_request(&request).map_err(|e| ServiceError::BadRequest(e.to_string()))?;
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
         let key = cache_key(&source, &request);
         Ok(RenderPlan { source, request, key, no_cache })

@@ -115,7 +115,7 @@ fn options() -> Value {
                 "description": "Random seed: any 64-bit unsigned value, as a number or (beyond 2^53, where JSON numbers lose precision) a decimal string",
                 "anyOf": [
                     { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    { "type": "string", "pattern": "^[0-9]{1,20}$" }
+                    { "type": "string", "pattern": seed_text_pattern() }
                 ]
             },
             "format": { "enum": formats, "default": "glb" },
@@ -125,12 +125,12 @@ fn options() -> Value {
                 "description": "Limits, each clamped to the server's ceiling",
                 "properties": {
                     "max_depth": { "type": "integer", "minimum": 0, "maximum": u32::MAX },
-                    "max_primitives": { "type": "integer", "minimum": 0 },
-                    "max_triangles": { "type": "integer", "minimum": 0 },
-                    "max_memory": { "type": "integer", "minimum": 0 },
-                    "timeout_ms": { "type": "integer", "minimum": 0 },
-                    "max_source_bytes": { "type": "integer", "minimum": 0 },
-                    "max_steps": { "type": "integer", "minimum": 0 }
+                    "max_primitives": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
+                    "max_triangles": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
+                    "max_memory": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
+                    "timeout_ms": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
+                    "max_source_bytes": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
+                    "max_steps": { "type": "integer", "minimum": 0, "maximum": u64::MAX }
                 }
             },
             "on_limit": { "enum": ["error", "truncate"], "default": "error" },
@@ -174,6 +174,115 @@ fn options() -> Value {
             "background": { "properties": { "format": { "const": "png" } }, "required": ["format"] }
         }
     })
+}
+
+/// The decimal strings a seed may be sent as: 1 to 20 ASCII digits whose
+/// value is at most 2^64 − 1 (leading zeros allowed), exactly what
+/// `seed_number_or_text` accepts. Written out digit by digit from
+/// `u64::MAX`, since a JSON Schema cannot compare a string's value.
+pub fn seed_text_pattern() -> String {
+    let max = u64::MAX.to_string();
+    let digits: Vec<u32> = max.chars().filter_map(|c| c.to_digit(10)).collect();
+    // Shorter strings are always in range; a full-length one is when it
+    // matches the maximum up to some digit and is smaller there.
+    let mut branches = vec![format!("[0-9]{{1,{}}}", digits.len() - 1)];
+    for (i, &d) in digits.iter().enumerate() {
+        if d > 0 {
+            let rest = digits.len() - i - 1;
+            let tail = if rest > 0 { format!("[0-9]{{{rest}}}") } else { String::new() };
+            branches.push(format!("{}[0-{}]{tail}", &max[..i], d - 1));
+        }
+    }
+    branches.push(max);
+    format!("^({})$", branches.join("|"))
+}
+
+/// Tightens the request schemas of the OpenAPI document (derived by utoipa
+/// from the request structs, which accept any string where an option has
+/// a fixed set of names) to what the server accepts, from the same
+/// declaration as the per-grammar schemas ([`options`]): enums for names,
+/// ranges for numbers, the seed's exact text form, and the rules that tie
+/// options to `print` and to `format: png`. Each option also accepts
+/// `null` (the server reads it as absent). schemathesis holds the two to
+/// each other (tests/it/harden/schema.rs).
+pub fn tighten_openapi(doc: &mut Value) {
+    let strict = options();
+    let Some(props) = strict.get("properties").and_then(Value::as_object) else { return };
+    let nullable = |s: &Value, old: Option<&Value>| {
+        let mut out = json!({ "anyOf": [s, { "type": "null" }] });
+        if let Some(d) = old.and_then(|o| o.get("description")) {
+            out["description"] = d.clone();
+        }
+        out
+    };
+    // A rule applies when its option is given and not null.
+    let rules: Vec<Value> = strict
+        .get("dependentSchemas")
+        .and_then(Value::as_object)
+        .map(|deps| {
+            deps.iter()
+                .map(|(name, then)| json!({ "if": { "properties": { name: { "not": { "type": "null" } } }, "required": [name] }, "then": then }))
+                .collect()
+        })
+        .unwrap_or_default();
+    let schemas = &mut doc["components"]["schemas"];
+    for body in ["RenderBody", "BatchBody"] {
+        let Some(fields) = schemas[body]["properties"].as_object_mut() else { continue };
+        for (name, schema) in fields.iter_mut() {
+            if name == "source" || name == "params" {
+                continue;
+            }
+            if let Some(s) = props.get(name) {
+                let mut strict = s.clone();
+                // Inside `limits`, each field may be null too (read as absent).
+                if let Some(inner) = strict.get_mut("properties").and_then(Value::as_object_mut) {
+                    for v in inner.values_mut() {
+                        *v = json!({ "anyOf": [v.clone(), { "type": "null" }] });
+                    }
+                }
+                *schema = nullable(&strict, Some(schema));
+            }
+        }
+        schemas[body]["allOf"] = Value::from(rules.clone());
+    }
+    // A batch names its grammar once (`source` or a built-in `grammar`)
+    // and varies it once (`seeds`, not with `seed`, or `sweep`): batch.rs.
+    if let Some(all) = schemas["BatchBody"]["allOf"].as_array_mut() {
+        let given = |name: &str| json!({ "properties": { name: { "not": { "type": "null" } } }, "required": [name] });
+        all.push(json!({ "oneOf": [given("source"), given("grammar")] }));
+        all.push(json!({ "oneOf": [given("seeds"), given("sweep")] }));
+        all.push(json!({ "not": { "allOf": [given("seed"), given("seeds")] } }));
+    }
+    // Every swept parameter has at least one value.
+    if let Some(sweep) = schemas["BatchBody"]["properties"].get_mut("sweep") {
+        sweep["additionalProperties"]["minItems"] = json!(1);
+        sweep["minProperties"] = json!(1);
+    }
+    if let Some(lang) = schemas["CheckBody"]["properties"].get_mut("language") {
+        *lang = nullable(&props["language"], Some(lang));
+    }
+    schemas["Seed"] = json!({
+        "description": "A seed: a whole number from 0 to 2^64 − 1, or the same as decimal digits",
+        "anyOf": [
+            { "type": "integer", "minimum": 0, "maximum": u64::MAX },
+            { "type": "string", "pattern": seed_text_pattern() }
+        ]
+    });
+    // The models route's query: the same ranges and names; a realistic file so generated requests reach a model.
+    if let Some(params) = doc["paths"]["/v1/models/{file}"]["get"]["parameters"].as_array_mut() {
+        for p in params.iter_mut() {
+            let name = p["name"].as_str().unwrap_or("").to_string();
+            match name.as_str() {
+                "file" => {
+                    p["example"] = json!("gem.glb");
+                    p["schema"] = json!({ "type": "string", "examples": ["gem.glb", "hogeweg.stl", "gem.png", "tower.3mf"] });
+                }
+                "seed" => p["schema"] = json!({ "type": "integer", "minimum": 0, "maximum": u64::MAX }),
+                "detail" | "size" | "view" | "background" => p["schema"] = props[name.as_str()].clone(),
+                _ => {}
+            }
+        }
+    }
 }
 
 #[cfg(test)]
