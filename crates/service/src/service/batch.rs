@@ -224,12 +224,12 @@ mod tests {
         let many: Vec<u64> = (0..=MAX_MEMBERS as u64).collect();
         let over = format!(r#"{{"grammar":"gem","seeds":{}}}"#, serde_json::to_string(&many).expect("json"));
         match batch(&over) {
-            Err(ServiceError::BadRequest(m)) => assert!(m.contains("257") && m.contains("cap of 256"), "{m}"),
+            Err(e @ ServiceError::TooManyMembers { members: 257, cap: 256 }) => assert!(e.to_string().contains("cap of 256"), "{e}"),
             other => panic!("{other:?}"),
         }
         let wide: Vec<u32> = (0..17).collect();
         let sweep = format!(r#"{{"grammar":"gem","sweep":{{"a":{w},"b":{w}}}}}"#, w = serde_json::to_string(&wide).expect("json"));
-        assert!(matches!(batch(&sweep), Err(ServiceError::BadRequest(m)) if m.contains("289")));
+        assert!(matches!(batch(&sweep), Err(ServiceError::TooManyMembers { members: 289, .. })));
         for bad in [
             r#"{"grammar":"gem"}"#,
             r#"{"grammar":"gem","seeds":[]}"#,
