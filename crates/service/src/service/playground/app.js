@@ -4,6 +4,10 @@
 // (POST /v1/check) marked at their lines, the response headers and the size
 // of every format. Everything it loads comes from this server.
 //
+// It opens on a library model (DEFAULT_GRAMMAR), and its URL's fragment
+// carries its state (grammar, seed, format, parameters: see "the link"
+// below and docs/service.md, "Links"), so a link shows the same model.
+//
 // For tests (scripts/playground-check/), the page reports its state on
 // <body>: data-state is "busy" while a render is in flight and "idle"
 // after, data-renders counts finished renders, data-outcome says how the
@@ -18,12 +22,32 @@ const $ = (id) => document.getElementById(id);
 const SIZE_FORMATS = ['glb', 'gltf', 'stl', '3mf', 'strips', 'png'];
 /** The languages the server reads (replaced by the schema's list once one arrives). */
 const LANGUAGES = ['mdg', 'lsystem', 'eisenscript', 'stack', 'ug', 'etol'];
+/** How the grammar menu labels each language's group (others by their name). */
+const LANGUAGE_LABELS = { mdg: 'MDG', lsystem: 'L-system', eisenscript: 'EisenScript', stack: 'Stack', ug: 'UG', etol: 'ETOL' };
+/**
+ * The library grammar the page opens on when its URL names none: `gem`, an
+ * icon-sized gem (about 3700 triangles, 33 primitives) in three colours, so
+ * the first model shows quickly on any machine and still shows facets,
+ * colour and a mirrored, repeated structure. A library without it opens on
+ * its first grammar.
+ */
+const DEFAULT_GRAMMAR = 'gem';
+/** The largest seed (2^64 - 1): seeds are 64-bit unsigned everywhere. */
+const MAX_SEED = 18446744073709551615n;
 
 let schemaParams = {};
 let lastSchema = '';
 let seq = 0;
 let renders = 0;
 let changeTimer = null;
+/** The library's grammars by name: { language, description }, in the server's order. */
+const library = new Map();
+/** The text of the library grammar last loaded into the editor (to tell edited source). */
+let librarySource = null;
+/** A link's format and parameters, applied once its grammar's schema is read (then null). */
+let pending = null;
+/** What the note (#note) lists as ignored from the last link opened. */
+let linkProblems = [];
 const viewer = makeViewer();
 const loader = new GLTFLoader();
 loader.setMeshoptDecoder(MeshoptDecoder);
@@ -294,11 +318,14 @@ async function render() {
     setState('idle', outcome);
   };
   try {
-    if (!(await analyse())) {
+    const parsed = await analyse();
+    if (mine !== seq) return;
+    applyPending(parsed);
+    writeLink();
+    if (!parsed) {
       finish('parse-error', 'The source does not parse: see the marked lines.');
       return;
     }
-    if (mine !== seq) return;
     const format = $('format').value || 'glb';
     const response = await post('/v1/render', request(format));
     if (mine !== seq) return;
@@ -353,24 +380,209 @@ async function listSizes(mine) {
 }
 
 function scheduleRender() {
+  writeLink();
   if (!$('auto').checked) return;
   clearTimeout(changeTimer);
   changeTimer = setTimeout(render, 250);
 }
 
-async function pickGrammar() {
-  const name = $('grammar').value;
-  if (!name) return;
+/** Loads the library grammar `name` into the editor, with its language; true when loaded. */
+async function loadGrammar(name) {
   const response = await get(`/v1/grammars/${encodeURIComponent(name)}`);
   if (!response.ok) {
     $('status').textContent = await errorText(response);
-    return;
+    return false;
   }
+  $('grammar').value = name;
   $('source').value = await response.text();
-  $('language').value = $('grammar').selectedOptions[0].dataset.language || '';
+  librarySource = $('source').value;
+  // The library's language is sent with every render of its grammar (no detection).
+  $('language').value = library.get(name)?.language || '';
   $('params').replaceChildren();
   drawGutter();
-  render();
+  return true;
+}
+
+/** The user picked a grammar: load it and render (seed and format stay). */
+async function pickGrammar() {
+  const name = $('grammar').value;
+  if (!name) {
+    writeLink();
+    return;
+  }
+  showNote([]);
+  pending = null;
+  if (await loadGrammar(name)) render();
+}
+
+// ---- the link: the page's state in its URL's fragment --------------------
+//
+// #grammar=NAME&seed=N&format=F&p.NAME=V, the names of GET
+// /v1/models/NAME.EXT?seed=N&p.NAME=V. The fragment, not the query: it never
+// reaches the server, so the page stays one embedded, cached file whatever
+// the link, and the state stays out of access logs and caches. Parameters at
+// their default are left out. Source typed or edited in the editor is not
+// carried: the link then says `edited=1` (beside the grammar it started
+// from), and opening it shows the library grammar with a note. Values a
+// link gets wrong are ignored with a note (#note), never an error.
+
+/** Whether the editor holds something other than the picked library grammar as it is. */
+function edited() {
+  const name = $('grammar').value;
+  return !name || $('source').value !== librarySource || $('language').value !== (library.get(name)?.language || '');
+}
+
+/** The parameters whose value differs from their declared default. */
+function changedParams() {
+  const changed = {};
+  for (const [name, value] of Object.entries(formValues())) {
+    const spec = schemaParams[name];
+    if (spec?.default === undefined || String(spec.default) !== String(value)) changed[name] = value;
+  }
+  return changed;
+}
+
+/** Writes the state into the URL (replacing, not adding, a history entry). */
+function writeLink() {
+  if (pending !== null) return; // a link is being opened: it is the URL already
+  const link = new URLSearchParams();
+  const name = $('grammar').value;
+  if (name) link.set('grammar', name);
+  if (edited()) link.set('edited', '1');
+  const seed = $('seed').value.trim();
+  if (seed !== '') link.set('seed', seed);
+  link.set('format', $('format').value || 'glb');
+  for (const [k, v] of Object.entries(changedParams())) link.set(`p.${k}`, String(v));
+  const hash = `#${link}`;
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
+
+function showNote(problems) {
+  linkProblems = problems;
+  $('note').textContent = problems.length ? `Ignored from the link: ${problems.join('; ')}.` : '';
+  $('note').hidden = problems.length === 0;
+}
+
+/** A seed as the server reads it (a decimal from 0 to 2^64 - 1, normalised), or null. */
+function validSeed(text) {
+  if (!/^[0-9]{1,20}$/.test(text)) return null;
+  const n = BigInt(text);
+  return n <= MAX_SEED ? String(n) : null;
+}
+
+/** Sets the form's input `name` to the link's `text`; a problem's description, or null. */
+function setParam(name, text) {
+  const input = Array.from($('params').elements).find((i) => i.name === name);
+  if (!input) return `p.${name} (the grammar has no parameter ${JSON.stringify(name)})`;
+  switch (input.dataset.kind) {
+    case 'bool':
+      if (text !== 'true' && text !== 'false') return `p.${name}=${text} (not true or false)`;
+      input.checked = text === 'true';
+      return null;
+    case 'number': {
+      const v = text.trim() === '' ? NaN : Number(text);
+      const integer = input.step === '1';
+      const low = input.min === '' ? -Infinity : Number(input.min);
+      const high = input.max === '' ? Infinity : Number(input.max);
+      if (!Number.isFinite(v) || (integer && !Number.isInteger(v)) || v < low || v > high) {
+        const range = `${integer ? 'a whole number' : 'a number'}${input.min !== '' ? ` from ${input.min}` : ''}${input.max !== '' ? ` to ${input.max}` : ''}`;
+        return `p.${name}=${text} (not ${range})`;
+      }
+      input.value = String(v);
+      return null;
+    }
+    case 'preset':
+    case 'enum':
+      if (!Array.from(input.options).some((o) => o.value === text)) return `p.${name}=${text} (not one of its choices)`;
+      input.value = text;
+      return null;
+    default:
+      input.value = text;
+      return null;
+  }
+}
+
+/** Opens the state the URL names (or the default grammar) and renders it. */
+async function openLink() {
+  const problems = [];
+  let name = null;
+  let seed = null;
+  let format = null;
+  let wasEdited = false;
+  const params = new Map();
+  for (const [k, v] of new URLSearchParams(location.hash.replace(/^#/, ''))) {
+    if (k === 'grammar') name = v;
+    else if (k === 'seed') seed = v;
+    else if (k === 'format') format = v;
+    else if (k === 'edited') wasEdited = true;
+    else if (k.startsWith('p.') && k.length > 2) params.set(k.slice(2), v);
+    else problems.push(`${k} (not a setting of the playground)`);
+  }
+  if (name !== null && !library.has(name)) {
+    problems.push(`grammar ${JSON.stringify(name)} (not in the library)`);
+    name = null;
+  }
+  if (wasEdited) problems.push('edited source (links do not carry source: this is the library grammar)');
+  if (name === null && library.size > 0) {
+    name = library.has(DEFAULT_GRAMMAR) ? DEFAULT_GRAMMAR : library.keys().next().value;
+  }
+  // What a link leaves out takes the page's defaults: seed 1, glb.
+  const valid = validSeed(seed ?? '1');
+  if (valid === null) problems.push(`seed ${JSON.stringify(seed)} (not a whole number from 0 to ${MAX_SEED})`);
+  $('seed').value = valid ?? '1';
+  showNote(problems);
+  if (name === null) return;
+  pending = { format: format ?? 'glb', params };
+  if (await loadGrammar(name)) render();
+  else pending = null;
+}
+
+/**
+ * After the opened grammar's schema is read (its formats and its form): the
+ * link's format and parameters, each checked against it.
+ */
+function applyPending(parsed) {
+  if (pending === null) return;
+  const problems = [];
+  const formats = Array.from($('format').options).map((o) => o.value);
+  if (formats.includes(pending.format)) $('format').value = pending.format;
+  else {
+    problems.push(`format ${JSON.stringify(pending.format)} (not one of ${formats.join(', ')})`);
+    $('format').value = 'glb';
+  }
+  for (const [name, text] of pending.params) {
+    const problem = parsed ? setParam(name, text) : `p.${name} (the source does not parse)`;
+    if (problem) problems.push(problem);
+  }
+  pending = null;
+  if (problems.length) showNote([...linkProblems, ...problems]);
+}
+
+/** Lists the library in the grammar menu, one group per language. */
+async function loadLibrary() {
+  const response = await get('/v1/grammars');
+  if (!response.ok) {
+    $('status').textContent = `grammar list: ${await errorText(response)}`;
+    return false;
+  }
+  library.clear();
+  const groups = new Map();
+  for (const g of (await response.json()).grammars) {
+    library.set(g.name, { language: g.language, description: g.description || '' });
+    if (!groups.has(g.language)) {
+      const group = document.createElement('optgroup');
+      group.label = LANGUAGE_LABELS[g.language] || g.language;
+      group.dataset.language = g.language;
+      groups.set(g.language, group);
+    }
+    const option = new Option(g.name, g.name);
+    option.dataset.language = g.language;
+    option.title = g.description || '';
+    groups.get(g.language).append(option);
+  }
+  const own = Array.from($('grammar').options).filter((o) => o.value === '');
+  $('grammar').replaceChildren(...own, ...groups.values());
+  return true;
 }
 
 async function start() {
@@ -384,20 +596,17 @@ async function start() {
   for (const id of ['seed', 'format', 'language']) $(id).addEventListener('change', scheduleRender);
   $('grammar').addEventListener('change', pickGrammar);
   $('render').addEventListener('click', render);
+  // A link pasted into this tab (replaceState, the page's own writes, fires no hashchange).
+  window.addEventListener('hashchange', openLink);
+  // Without the key a keyed server asks for, the library did not load: retry with it.
+  $('api-key').addEventListener('change', async () => {
+    if (library.size === 0 && (await loadLibrary())) openLink();
+  });
   drawGutter();
-  const response = await get('/v1/grammars');
-  if (response.ok) {
-    for (const g of (await response.json()).grammars) {
-      const option = new Option(g.name, g.name);
-      option.dataset.language = g.language;
-      option.title = g.description || '';
-      $('grammar').append(option);
-    }
-  } else {
-    $('status').textContent = `grammar list: ${await errorText(response)}`;
-  }
+  const loaded = await loadLibrary();
   document.body.dataset.renders = '0';
   setState('idle', 'none');
+  if (loaded) await openLink();
 }
 
 start();
