@@ -95,14 +95,15 @@ impl Language {
         self.front_end().name()
     }
 
-    /// The language whose name is `name` (exactly, as [`Language::name`] gives it).
-    pub fn from_name(name: &str) -> Option<Language> {
-        Language::ALL.iter().copied().find(|l| l.name() == name)
+    /// Picks a language from a file's extension (`grammar.mdg` → MDG), case-insensitively.
+    pub fn from_extension(path: &std::path::Path) -> Option<Language> {
+        Language::from_extension_name(path.extension()?.to_str()?)
     }
 
-    /// Picks a language from a file extension (`grammar.mdg` → MDG), case-insensitively.
-    pub fn from_extension(path: &std::path::Path) -> Option<Language> {
-        let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+    /// The language whose front end claims extension `ext` (without the
+    /// dot, case-insensitively): the library's entries are stored by it.
+    pub fn from_extension_name(ext: &str) -> Option<Language> {
+        let ext = ext.to_ascii_lowercase();
         Language::ALL.iter().copied().find(|l| l.front_end().extensions().contains(&ext.as_str()))
     }
 

@@ -18,6 +18,7 @@
 
 use super::{CacheKey, Rendered};
 use crate::export::Format;
+use crate::core::Choice;
 use crate::lang::Language;
 use serde::{Deserialize, Serialize};
 use std::io::Write as _;

@@ -24,7 +24,7 @@ pub struct Builtin {
 /// Every built-in grammar, sorted by name.
 pub fn all() -> impl Iterator<Item = Builtin> {
     // Files no language claims (by extension) are not grammars.
-    BUILTIN.iter().filter_map(|&(name, extension, source)| Some(Builtin { name, language: Language::from_extension(std::path::Path::new(&format!("x.{extension}")))?, source }))
+    BUILTIN.iter().filter_map(|&(name, extension, source)| Some(Builtin { name, language: Language::from_extension_name(extension)?, source }))
 }
 
 /// The built-in grammar called `name`, if any.

@@ -17,6 +17,12 @@ use utoipa::ToSchema;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
+/// `f` as a `u64` when it is a whole number from 0 to 2^64 − 1 (`8.0`):
+/// JSON Schema's `integer` admits such numbers, so the server reads them.
+fn integral_u64(f: f64) -> Option<u64> {
+    (f.fract() == 0.0 && (0.0..18_446_744_073_709_551_616.0).contains(&f)).then_some(f as u64)
+}
+
 /// Reads an optional whole number sent as a JSON integer or as a number
 /// with no fraction (`8.0`): JSON Schema's `integer`, which the published
 /// schemas use, admits both, so the server must too. Null reads as absent.
@@ -26,7 +32,7 @@ where
     T: TryFrom<u64>,
 {
     let Some(n) = Option::<serde_json::Number>::deserialize(d)? else { return Ok(None) };
-    let value = n.as_u64().or_else(|| n.as_f64().filter(|f| f.fract() == 0.0 && *f >= 0.0 && *f < 18_446_744_073_709_551_616.0).map(|f| f as u64));
+    let value = n.as_u64().or_else(|| n.as_f64().and_then(integral_u64));
     match value.map(T::try_from) {
         Some(Ok(v)) => Ok(Some(v)),
         Some(Err(_)) => Err(serde::de::Error::custom(format!("{n} is out of range"))),
@@ -129,8 +135,7 @@ fn seed_number_or_text<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<
     match Option::<Raw>::deserialize(d) {
         Ok(None) => Ok(None),
         Ok(Some(Raw::Number(n))) => Ok(Some(n)),
-        Ok(Some(Raw::Float(f))) if f.fract() == 0.0 && (0.0..18_446_744_073_709_551_616.0).contains(&f) => Ok(Some(f as u64)),
-        Ok(Some(Raw::Float(f))) => Err(serde::de::Error::custom(format!("seed {f} is not a whole number from 0 to 2^64 - 1"))),
+        Ok(Some(Raw::Float(f))) => integral_u64(f).map(Some).ok_or_else(|| serde::de::Error::custom(format!("seed {f} is not a whole number from 0 to 2^64 - 1"))),
         Ok(Some(Raw::Text(t))) if !t.is_empty() && t.len() <= 20 && t.bytes().all(|b| b.is_ascii_digit()) => {
             t.parse().map(Some).map_err(|_| serde::de::Error::custom(format!("seed `{t}` is beyond 2^64 - 1")))
         }
