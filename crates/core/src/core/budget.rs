@@ -58,13 +58,28 @@ impl Default for Limits {
 /// (`RULEMESH_CEILING_MEMORY`).
 pub const PRINT_MAX_MEMORY: u64 = 640 * 1024 * 1024;
 
+/// The default deadline of a print (`print=true`), in milliseconds: 30 s.
+///
+/// Why a deadline of its own, as [`PRINT_MAX_MEMORY`] is a memory limit of
+/// its own: a print unites and simplifies every triangle through Manifold
+/// (Cabiddu et al., *Manifold*, 2022–2026), which on two cores takes
+/// seconds where the other routes take milliseconds. spiral-rings takes
+/// 9.4 s alone against the ordinary 10 s, so issue 38's load run (eight
+/// clients, two renders at a time) ended a third of its prints at the
+/// deadline: a typed 504, but a print that succeeds alone must not fail
+/// because another print shares the cores. 30 s holds the heaviest library
+/// print beside another with room to spare, and a server's ceiling still
+/// clamps it (`RULEMESH_CEILING_TIMEOUT_MS`, 60 s by default).
+pub const PRINT_TIMEOUT_MS: u64 = 30_000;
+
 impl Limits {
     /// The defaults of a request: [`Limits::default`], with the memory
-    /// limit [`PRINT_MAX_MEMORY`] for a print.
+    /// limit [`PRINT_MAX_MEMORY`] and the deadline [`PRINT_TIMEOUT_MS`] for
+    /// a print.
     pub fn defaults_for(print: bool) -> Limits {
         let d = Limits::default();
         if print {
-            Limits { max_memory: PRINT_MAX_MEMORY, ..d }
+            Limits { max_memory: PRINT_MAX_MEMORY, timeout_ms: PRINT_TIMEOUT_MS, ..d }
         } else {
             d
         }
