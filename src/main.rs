@@ -65,6 +65,14 @@ struct ServeArgs {
     /// Log line format: text, or json (one object per line, with each request's stage timings as fields).
     #[arg(long, env = "RULEMESH_LOG_FORMAT", value_enum, default_value = "text")]
     log_format: rulemesh::service::telemetry::LogFormat,
+    /// Per-request log lines: all, sampled (one in 100, and every internal error) or off. The line
+    /// is short (method, route, status, ms, cache, bytes); stage timings are at debug level.
+    #[arg(long, env = "RULEMESH_ACCESS_LOG", value_enum, default_value = "all")]
+    access_log: rulemesh::service::access_log::AccessLog,
+    /// Log lines queued for stderr before further lines are dropped (and counted in
+    /// rulemesh_log_lines_dropped_total) rather than waited for.
+    #[arg(long, env = "RULEMESH_LOG_BUFFER_LINES", default_value_t = rulemesh::service::telemetry::DEFAULT_LOG_BUFFER_LINES)]
+    log_buffer_lines: usize,
     /// Export OpenTelemetry spans (one per request, one per pipeline stage) over OTLP/gRPC to this
     /// collector, e.g. http://127.0.0.1:4317; off when absent.
     #[arg(long, env = "RULEMESH_OTLP_ENDPOINT")]
@@ -617,7 +625,8 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
     let telemetry = {
         // The OTLP exporter's connection is made on this runtime.
         let _entered = runtime.enter();
-        rulemesh::service::telemetry::init(args.log, args.log_format, args.otlp_endpoint.as_deref(), config.worker_id.as_deref())
+        rulemesh::service::access_log::set_mode(args.access_log);
+        rulemesh::service::telemetry::init(args.log, args.log_format, args.otlp_endpoint.as_deref(), config.worker_id.as_deref(), args.log_buffer_lines)
             .map_err(|e| Failure::new(EXIT_FAILURE, format!("serve: {e}")))?
     };
     let served = runtime.block_on(rulemesh::service::serve(config, rulemesh::service::shutdown_signal()));

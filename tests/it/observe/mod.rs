@@ -5,6 +5,7 @@
 //! dashboards and alerts checked by `promtool`, and OTLP traces received by a
 //! real OTLP/gRPC collector the test runs.
 
+mod access_log;
 mod deploy;
 mod metrics;
 mod timing;

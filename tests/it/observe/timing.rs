@@ -101,12 +101,16 @@ async fn every_model_response_says_where_its_time_went() {
     stop(srv).await;
 }
 
+/// The access log (issue 33): at INFO, one short JSON line per request with
+/// exactly method, route, status, milliseconds, cache result and bytes (no
+/// span, no key, no timings); at DEBUG, a second line in the request's span
+/// with the `Server-Timing` numbers as fields, equal to the header's.
 #[test]
-fn the_json_log_line_of_a_request_has_the_same_numbers() {
+fn the_json_log_lines_of_a_request_are_short_at_info_with_the_numbers_at_debug() {
     let http = SocketAddr::from(([127, 0, 0, 1], free_port()));
     let grpc = SocketAddr::from(([127, 0, 0, 1], free_port()));
     let mut child = Command::new(common::bin())
-        .args(["serve", "--http", &http.to_string(), "--grpc", &grpc.to_string(), "--log-format", "json", "--log", "info"])
+        .args(["serve", "--http", &http.to_string(), "--grpc", &grpc.to_string(), "--log-format", "json", "--log", "debug"])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
@@ -118,23 +122,38 @@ fn the_json_log_line_of_a_request_has_the_same_numbers() {
         std::thread::sleep(Duration::from_millis(20));
     }
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().expect("runtime");
-    let value = runtime.block_on(async {
+    let (value, length) = runtime.block_on(async {
         let r = render(&format!("http://{http}"), &json!({"source": mdg("log"), "format": "glb"})).await;
         assert_eq!(r.status(), 200);
-        header(&r, "server-timing").to_string()
+        let value = header(&r, "server-timing").to_string();
+        (value, r.bytes().await.expect("body").len())
     });
-    let line = loop {
-        let line = rx.recv_timeout(Duration::from_secs(10)).expect("a request log line");
+    let (mut short, mut detail) = (None, None);
+    while short.is_none() || detail.is_none() {
+        let line = rx.recv_timeout(Duration::from_secs(10)).expect("the request's log lines");
         let Ok(v) = serde_json::from_str::<Value>(&line) else { panic!("not a JSON log line: {line}") };
-        if v["fields"]["message"] == "request" && v["span"]["route"] == "/v1/render" {
-            break v;
+        if v["fields"]["message"] == "request" && v["fields"]["route"] == "/v1/render" {
+            short = Some((v, line.len()));
+        } else if v["fields"]["message"] == "request detail" && v["span"]["route"] == "/v1/render" {
+            detail = Some(v);
         }
-    };
+    }
     let _ = child.kill();
     let _ = child.wait();
+    let (Some((short, short_len)), Some(line)) = (short, detail) else { unreachable!("both lines were seen") };
+    let mut names: Vec<&str> = short["fields"].as_object().expect("fields").keys().map(String::as_str).collect();
+    names.sort_unstable();
+    assert_eq!(names, ["bytes", "cache", "id", "message", "method", "ms", "route", "status"], "{short}");
+    assert!(short.get("span").is_none() && short.get("spans").is_none(), "the short line carries no span: {short}");
+    assert_eq!(short["fields"]["method"], "POST");
+    assert_eq!(short["fields"]["status"], 200);
+    assert_eq!(short["fields"]["cache"], "miss");
+    assert_eq!(short["fields"]["bytes"].as_u64(), u64::try_from(length).ok(), "{short}");
+    assert!(short_len < 240, "{short_len} bytes: {short}");
     let f = &line["fields"];
     assert_eq!(f["server_timing"], value.as_str(), "{line}");
     assert_eq!(f["status"], 200, "{line}");
+    assert_eq!(f["id"], short["fields"]["id"], "the two lines share the request id");
     let parts = server_timing(&value);
     for (name, dur, _) in parts.iter().filter(|(n, _, _)| n != "cache") {
         let logged = f[format!("{name}_ms")].as_f64().unwrap_or_else(|| panic!("{name}_ms missing: {line}"));

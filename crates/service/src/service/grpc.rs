@@ -1,7 +1,7 @@
 //! The gRPC API (tonic): the same requests, models and errors as HTTP.
 
 use super::request::{CheckBody, LimitsBody, RenderBody};
-use super::timing::log_request;
+use super::access_log::{log_request, Finished};
 use super::{library, AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::core::ParamValue;
@@ -147,13 +147,11 @@ impl GrpcService {
         .await;
         drop(admission);
         self.count(method, &result, started);
-        span.in_scope(|| {
-            let (code, etag, timing) = match &result {
-                Ok((s, _)) => ("ok", Some(s.model.etag.as_str()), Some(&s.timing)),
-                Err(e) => (e.code(), None, None),
-            };
-            log_request(None, Some(code), etag, started.elapsed(), timing);
-        });
+        let (code, etag, timing, bytes) = match &result {
+            Ok((s, _)) => ("ok", Some(s.model.etag.as_str()), Some(&s.timing), u64::try_from(s.model.bytes.len()).ok()),
+            Err(e) => (e.code(), None, None, None),
+        };
+        log_request(&Finished { id, method: "grpc", route: method, status: None, code: Some(code), wall: started.elapsed(), bytes, etag, timing }, &span);
         let (served, format) = result.map_err(|e| e.to_status())?;
         self.state.metrics.bytes_out("grpc", format, served.model.bytes.len());
         Ok(served)

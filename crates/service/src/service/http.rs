@@ -3,7 +3,8 @@
 use super::library::{self, GrammarInfo};
 use super::request::{from_json, parse_format, CheckBody, RenderBody};
 use super::metrics::{wants_openmetrics, OPENMETRICS, PROMETHEUS_TEXT};
-use super::timing::{log_request, RequestTiming};
+use super::access_log::{log_request, Finished};
+use super::timing::RequestTiming;
 use super::{AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::core::{Limits, ParamValue};
@@ -230,10 +231,11 @@ pub fn next_request_id() -> u64 {
 async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -> Response {
     let route = req.extensions().get::<MatchedPath>().map_or_else(|| "unmatched".to_string(), |m| m.as_str().to_string());
     let id = next_request_id();
+    let method = req.method().clone();
     let span = tracing::info_span!(
         "http",
         id,
-        method = %req.method(),
+        method = %method,
         route = %route,
         otel.name = %format!("{} {route}", req.method()),
         otel.kind = "server",
@@ -249,7 +251,9 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
     state.metrics.request("http", &route, status, took);
     let etag = resp.headers().get(header::ETAG).and_then(|v| v.to_str().ok());
     let timing = resp.extensions().get::<RequestTiming>();
-    span.in_scope(|| log_request(Some(status), None, etag, took, timing));
+    let bytes = axum::body::HttpBody::size_hint(resp.body()).exact();
+    let finished = Finished { id, method: method.as_str(), route: &route, status: Some(status), code: None, wall: took, bytes, etag, timing };
+    log_request(&finished, &span);
     if let Ok(v) = HeaderValue::from_str(&id.to_string()) {
         resp.headers_mut().insert("x-request-id", v);
     }

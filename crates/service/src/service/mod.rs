@@ -6,6 +6,7 @@
 //! the cache outlives a request.
 
 pub mod access;
+pub mod access_log;
 pub mod batch;
 pub mod config;
 pub mod conn;

@@ -1,6 +1,6 @@
 //! Where one request's time went, as its `Server-Timing` header (HTTP), its
-//! `server-timing` response metadata (gRPC) and the fields of its log line
-//! all say it: the wait for a render slot, each pipeline stage that ran, and
+//! `server-timing` response metadata (gRPC) and the fields of its DEBUG log
+//! line (`access_log`) all say it: the wait for a render slot, each pipeline stage that ran, and
 //! the cache lookup. The same struct formats all three, so they agree.
 
 use crate::cache::{CacheOutcome, Lookup};
@@ -83,32 +83,6 @@ impl RequestTiming {
         ms(self.lookup.took)
     }
 
-}
-
-/// Logs the one INFO line of a finished request (`request`), in the current
-/// span, with its timing when it answered with a model: the numbers are the
-/// `Server-Timing` header's, as fields (`queue_ms`, `parse_ms`, `eval_ms`,
-/// `mesh_ms`, `print_ms`, `preview_ms`, `export_ms`, `cache_ms`, `tier`) and as the header
-/// text (`server_timing`). `status` is the HTTP status, `code` the gRPC outcome.
-pub fn log_request(status: Option<u16>, code: Option<&str>, etag: Option<&str>, wall: Duration, timing: Option<&RequestTiming>) {
-    let stage = |p| timing.and_then(|t| t.stage_ms(p));
-    tracing::info!(
-        status,
-        code,
-        etag,
-        ms = ms(wall),
-        server_timing = timing.map(|t| tracing::field::display(t.header_value())),
-        queue_ms = timing.and_then(RequestTiming::queue_ms),
-        parse_ms = stage(Phase::Parse),
-        eval_ms = stage(Phase::Eval),
-        mesh_ms = stage(Phase::Mesh),
-        print_ms = stage(Phase::Print),
-        preview_ms = stage(Phase::Preview),
-        export_ms = stage(Phase::Export),
-        cache_ms = timing.map(RequestTiming::cache_ms),
-        tier = timing.and_then(|t| t.lookup.tier.map(|t| t.name())),
-        "request"
-    );
 }
 
 #[cfg(test)]

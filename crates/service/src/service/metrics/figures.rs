@@ -94,3 +94,20 @@ impl Collector for MemoryFigures {
         Ok(())
     }
 }
+
+/// Encodes the log writer's dropped lines (read at each scrape from the
+/// non-blocking writer's own counter, `telemetry::dropped_lines`), so that a
+/// log reader too slow for the service shows as a number, not as latency.
+#[derive(Debug)]
+pub(super) struct LogFigures;
+
+impl Collector for LogFigures {
+    fn encode(&self, mut e: DescriptorEncoder) -> Result<(), std::fmt::Error> {
+        counter(
+            &mut e,
+            "log_lines_dropped",
+            "Log lines dropped because the log writer's queue was full (the service never waits for its log)",
+            crate::service::telemetry::dropped_lines(),
+        )
+    }
+}

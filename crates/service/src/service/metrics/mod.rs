@@ -198,6 +198,7 @@ impl Metrics {
         r.register("memory_waits", "Renders that waited for memory under the ceiling and then started", m.memory_waits.clone());
         r.register_collector(Box::new(figures::CacheFigures::new(m.cache.clone())));
         r.register_collector(Box::new(figures::MemoryFigures::new(m.memory.clone())));
+        r.register_collector(Box::new(figures::LogFigures));
         Metrics { registry, ..m }
     }
 
