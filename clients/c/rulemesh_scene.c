@@ -373,14 +373,18 @@ static rmsc_status room(parser *p, uint32_t v, uint32_t t) {
         return fail(p->err, RMSC_ERR_ARGUMENT, "output arrays too small");
     return RMSC_OK;
 }
-static float *at_pos(parser *p) { return p->out->positions + 3 * (p->mesh_vertex0 + p->mesh_v); }
-static float *at_nrm(parser *p) { return p->out->normals + 3 * (p->mesh_vertex0 + p->mesh_v); }
+/* Where the next vertex goes (NULL-safe: arrays may be NULL when a file
+ * has no vertices, and NULL + 0 is undefined). */
+static float *at_pos(parser *p) { return p->out->positions ? p->out->positions + 3 * (p->mesh_vertex0 + p->mesh_v) : NULL; }
+static float *at_nrm(parser *p) { return p->out->normals ? p->out->normals + 3 * (p->mesh_vertex0 + p->mesh_v) : NULL; }
 
 /* After a prototype's vertices are placed: its triangles (offset, reversed
  * when `flip`) and its colour, as mesh::append_mapped appends them. */
 static void placed(parser *p, const proto *src, int flip, const uint8_t *colour) {
-    uint8_t *c = p->out->colours + 4 * (p->mesh_vertex0 + p->mesh_v);
-    indices(src->idx, 3 * src->t, p->mesh_v, (u32)flip, p->out->indices + p->mesh_index0 + 3 * (size_t)p->mesh_t);
+    uint8_t *c;
+    if (src->v == 0 && src->t == 0) return;
+    c = p->out->colours + 4 * (p->mesh_vertex0 + p->mesh_v);
+    if (src->t) indices(src->idx, 3 * src->t, p->mesh_v, (u32)flip, p->out->indices + p->mesh_index0 + 3 * (size_t)p->mesh_t);
     for (uint32_t k = 0; k < src->v; k++) memcpy(c + 4 * (size_t)k, colour, 4);
     p->mesh_v += src->v;
     p->mesh_t += src->t;
@@ -546,9 +550,10 @@ static rmsc_status copy_mesh(parser *p, size_t start) {
     float *op, *on;
     uint32_t *oi;
     TRY(room(p, v, t));
+    if (v == 0 && t == 0) return RMSC_OK;
     op = at_pos(p);
     on = at_nrm(p);
-    oi = p->out->indices + p->mesh_index0 + 3 * (size_t)p->mesh_t;
+    oi = t ? p->out->indices + p->mesh_index0 + 3 * (size_t)p->mesh_t : NULL;
     for (size_t k = 0; k < 3 * (size_t)v; k++) {
         op[k] = f32_at(pos + 4 * k);
         on[k] = f32_at(nrm + 4 * k);
@@ -648,6 +653,9 @@ static void convert_proto(parser *p, uint32_t i, size_t start) {
     proto *d = &p->natives[i];
     d->v = u32_at(m);
     d->t = u32_at(m + 4);
+    d->pos = d->nrm = NULL;
+    d->idx = NULL;
+    if (d->v == 0 && d->t == 0) return;
     d->pos = (float *)(void *)(p->native_data + p->native_used);
     d->nrm = d->pos + 3 * (size_t)d->v;
     d->idx = (uint32_t *)(void *)(d->nrm + 3 * (size_t)d->v);
