@@ -10,7 +10,8 @@
  * scene_decode.rs), so both accept exactly the same files. The float work
  * is the shared kernel: rulemesh_tessellate.inc, rulemesh_place.inc and
  * rulemesh_shape.inc, also compiled into the JavaScript decoder's
- * WebAssembly.
+ * WebAssembly. rulemesh_text.inc checks UTF-8 and JSON, rulemesh_walk.inc
+ * expands hierarchies.
  */
 #include "rulemesh_scene.h"
 
@@ -390,101 +391,7 @@ static void placed(parser *p, const proto *src, int flip, const uint8_t *colour)
     p->mesh_t += src->t;
 }
 
-/* glam's DQuat * DVec3, DQuat * DQuat and DQuat::normalize, in the
- * operation order of Hierarchy::walk (as clients/js/scene.mjs ports them). */
-static void quat_mul_vec(const double r[4], const double v[3], double out[3]) {
-    const double bx = r[0], by = r[1], bz = r[2], w = r[3];
-    const double b2 = bx * bx + by * by + bz * bz;
-    const double k1 = w * w - b2;
-    const double k2 = (v[0] * bx + v[1] * by + v[2] * bz) * 2.0;
-    const double k3 = w * 2.0;
-    const double cx = by * v[2] - v[1] * bz, cy = bz * v[0] - v[2] * bx, cz = bx * v[1] - v[0] * by;
-    out[0] = v[0] * k1 + bx * k2 + cx * k3;
-    out[1] = v[1] * k1 + by * k2 + cy * k3;
-    out[2] = v[2] * k1 + bz * k2 + cz * k3;
-}
-static void quat_mul_normalize(const double a[4], const double b[4], double out[4]) {
-    const double x0 = a[0], y0 = a[1], z0 = a[2], w0 = a[3], x1 = b[0], y1 = b[1], z1 = b[2], w1 = b[3];
-    const double x = w0 * x1 + x0 * w1 + y0 * z1 - z0 * y1;
-    const double y = w0 * y1 - x0 * z1 + y0 * w1 + z0 * x1;
-    const double z = w0 * z1 + x0 * y1 - y0 * x1 + z0 * w1;
-    const double w = w0 * w1 - x0 * x1 - y0 * y1 - z0 * z1;
-    const double r = 1.0 / sqrt(x * x + y * y + z * z + w * w);
-    out[0] = x * r;
-    out[1] = y * r;
-    out[2] = z * r;
-    out[3] = w * r;
-}
-
-/* One leaf of the expansion: Instance::new (rounded to float, the rotation
- * renormalised in float; dropped when not drawable) over its shape's
- * prototype (the primitive, scaled and offset unless the shape is bare). */
-static rmsc_status leaf(parser *p, uint32_t s, const double tqs[8], const uint8_t *colour) {
-    const uint8_t *r = p->b + p->shapes_at + (size_t)SHAPE_BYTES * s;
-    const proto *raw = &p->combo[2u * r[0] + (r[1] & 1u)];
-    proto src = *raw;
-    if (!shape_is_bare(r)) {
-        if (p->shape_cached != s) {
-            float so[6];
-            for (int i = 0; i < 6; i++) so[i] = f32_at(r + 4 + 4 * i);
-            shape_prototype(raw->pos, raw->nrm, raw->v, so, p->shape_pos, p->shape_nrm);
-            p->shape_cached = s;
-        }
-        src.pos = p->shape_pos;
-        src.nrm = p->shape_nrm;
-    }
-    TRY(room(p, src.v, src.t));
-    if (place_leaf(src.pos, src.nrm, src.v, tqs, at_pos(p), at_nrm(p))) placed(p, &src, 0, colour);
-    return RMSC_OK;
-}
-
-/* The hierarchy's leaves in drawing order (Hierarchy::walk_while), each placed. */
-static rmsc_status walk(parser *p) {
-    frame *st = p->stack;
-    size_t depth = 1;
-    if (p->nobjects == 0) return RMSC_OK;
-    memset(&st[0], 0, sizeof st[0]);
-    st[0].r[3] = 1.0;
-    st[0].s = 1.0;
-    st[0].object = p->nobjects - 1;
-    while (depth) {
-        frame *top = &st[depth - 1];
-        const uint8_t *o = p->b + p->object_at[top->object], *e;
-        double et[3], eq[4], es = 1.0, rv[3], here[8];
-        uint32_t raw;
-        if (top->next >= u32_at(o)) {
-            depth--;
-            continue;
-        }
-        e = o + 4 + (size_t)top->next * p->entry_bytes;
-        top->next++;
-        raw = u32_at(e);
-        for (int i = 0; i < 7; i++) {
-            const double x = p->version == 2 ? f64_at(e + 4 + 8 * i) : (double)f32_at(e + 4 + 4 * i);
-            if (i < 3) et[i] = x;
-            else eq[i - 3] = x;
-        }
-        if (p->entry_bytes == 72) es = f64_at(e + 60);
-        /* Frame::then: t + s·(r·t'), normalize(r·r'), s·s' */
-        quat_mul_vec(top->r, et, rv);
-        for (int i = 0; i < 3; i++) here[i] = top->t[i] + top->s * rv[i];
-        quat_mul_normalize(top->r, eq, here + 3);
-        here[7] = top->s * es;
-        if (raw & SHAPE_BIT) {
-            TRY(leaf(p, raw & ~SHAPE_BIT, here, e + p->entry_bytes - 4));
-        } else if (raw < top->object) {
-            frame *f;
-            if (depth > p->nobjects) return fail(p->err, RMSC_ERR_ARGUMENT, "hierarchy deeper than its objects");
-            f = &st[depth++];
-            memcpy(f->t, here, sizeof f->t);
-            memcpy(f->r, here + 3, sizeof f->r);
-            f->s = here[7];
-            f->object = raw;
-            f->next = 0;
-        }
-    }
-    return RMSC_OK;
-}
+#include "rulemesh_walk.inc"
 
 /* ---- the meshes section ---- */
 
