@@ -89,7 +89,10 @@ static size_t add_size(size_t a, size_t b) { return a > SIZE_MAX - b ? SIZE_MAX 
 /* a·b as size_t, or SIZE_MAX */
 static size_t mul_size(uint64_t a, uint64_t b) {
     const uint64_t p = sat_mul(a, b);
-    return p > (uint64_t)SIZE_MAX ? SIZE_MAX : (size_t)p;
+#if SIZE_MAX < UINT64_MAX
+    if (p > (uint64_t)SIZE_MAX) return SIZE_MAX;
+#endif
+    return (size_t)p;
 }
 
 static rmsc_status fail(rmsc_error *err, rmsc_status status, const char *fmt, ...)
