@@ -35,6 +35,15 @@ fn driver(dir: &Path) -> PathBuf {
     exe
 }
 
+/// The driver built by clang under the same flags: clang's UBSan also
+/// reports pointer arithmetic on NULL (`NULL + 0`), which gcc's does not
+/// (the fuzz target's first finding was one).
+fn clang_driver(dir: &Path) -> PathBuf {
+    let exe = dir.join("scene_dump_clang");
+    compile("clang", &[STRICT, SANITIZE, &["-O1"]].concat(), &["rulemesh_scene.c", "scene_dump.c"], &exe);
+    exe
+}
+
 /// The Rust decoder's meshes in the driver's dump layout (clients/c/scene_dump.c).
 fn rust_dump(d: &DecodedScene) -> Vec<u8> {
     let mut b = b"RMSS".to_vec();
@@ -148,6 +157,18 @@ fn c_scene_decoder_refuses_damage_as_rust_does() {
             accepted += c.iter().filter(|l| l.starts_with("ok")).count();
         }
     }
+    // gem flipped once more under the clang build (its UBSan checks NULL + 0 too).
+    let gem_path = repo().join("clients/js/fixtures/gem.rmscene");
+    let gem_bytes = std::fs::read(&gem_path).expect("fixture");
+    let c = c_lines(&exec(&clang_driver(dir.path()), &["--mutate", gem_path.to_str().expect("utf-8"), "128"]));
+    let rust: Vec<String> = (0..gem_bytes.len())
+        .map(|i| {
+            let mut b = gem_bytes.clone();
+            b[i] ^= 0x80;
+            rust_line(&b)
+        })
+        .collect();
+    assert_same_lines("gem.rmscene xor 0x80 (clang)", &c, &rust);
     // Flips in transforms and colours survive (there is no checksum): both
     // decoders decode them to the same changed meshes.
     assert!(accepted > 100, "{accepted} flipped files decoded: the comparison saw mostly refusals");
@@ -230,4 +251,65 @@ fn c_module_map_imports_both_decoders() {
         .output()
         .unwrap_or_else(|e| panic!("clang cannot run (scripts/test installs it): {e}"));
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// A version 2 scene whose prototype is `proto` (V, T; no data) placed
+/// once, plus a written mesh of `mesh` (V, T; no data): the files of the
+/// fuzzer's first finding (empty pieces made the decoder compute NULL + 0).
+fn empty_pieces(proto: bool, mesh: bool) -> Vec<u8> {
+    let mut b = b"RMSC".to_vec();
+    b.extend_from_slice(&2u16.to_le_bytes());
+    b.extend_from_slice(&0u16.to_le_bytes());
+    b.extend_from_slice(&16u16.to_le_bytes());
+    b.extend_from_slice(&0u16.to_le_bytes());
+    b.extend_from_slice(&1u32.to_le_bytes()); // one colour
+    b.extend_from_slice(&u32::from(proto).to_le_bytes());
+    b.extend_from_slice(&[200, 100, 50, 255]);
+    if proto {
+        b.extend_from_slice(&[0; 8]); // V = 0, T = 0
+    }
+    b.extend_from_slice(&[0; 8]); // no leaf shapes, no objects
+    b.extend_from_slice(&1u32.to_le_bytes()); // one mesh
+    b.extend_from_slice(&1u16.to_le_bytes());
+    b.push(b'm');
+    b.extend_from_slice(&(u32::from(proto) + u32::from(mesh)).to_le_bytes());
+    if proto {
+        b.push(3); // placed
+        b.extend_from_slice(&1u32.to_le_bytes());
+        b.extend_from_slice(&0u32.to_le_bytes());
+        b.extend_from_slice(&[0, 0]); // not mirrored, colour 0
+        for f in [0.0f32, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0] {
+            b.extend_from_slice(&f.to_le_bytes());
+        }
+    }
+    if mesh {
+        b.push(4); // a written mesh
+        b.extend_from_slice(&1u32.to_le_bytes());
+        b.extend_from_slice(&[0; 8]);
+    }
+    b
+}
+
+/// Files with empty prototypes and meshes decode to empty meshes in both
+/// decoders, with no sanitizer report: the regression test of the C scene
+/// fuzz target's first finding (docs/reliability.md).
+#[test]
+fn c_scene_decoder_decodes_empty_pieces_as_rust_does() {
+    let dir = tempdir();
+    let exe = driver(dir.path());
+    // (the gcc build alone would not have caught the finding: see clang_driver)
+    let mut batch = Vec::new();
+    let mut rust = Vec::new();
+    for (proto, mesh) in [(true, false), (false, true), (true, true), (false, false)] {
+        let b = empty_pieces(proto, mesh);
+        batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
+        batch.extend_from_slice(&b);
+        rust.push(rust_line(&b));
+    }
+    assert!(rust.iter().all(|l| l.starts_with("ok")), "{rust:?}");
+    let path = dir.path().join("batch");
+    std::fs::write(&path, &batch).expect("write");
+    let p = path.to_str().expect("utf-8");
+    assert_same_lines("empty pieces", &c_lines(&exec(&exe, &["--batch", p])), &rust);
+    assert_same_lines("empty pieces (clang)", &c_lines(&exec(&clang_driver(dir.path()), &["--batch", p])), &rust);
 }
