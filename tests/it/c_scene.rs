@@ -313,3 +313,69 @@ fn c_scene_decoder_decodes_empty_pieces_as_rust_does() {
     assert_same_lines("empty pieces", &c_lines(&exec(&exe, &["--batch", p])), &rust);
     assert_same_lines("empty pieces (clang)", &c_lines(&exec(&clang_driver(dir.path()), &["--batch", p])), &rust);
 }
+
+/// gem.rmscene with its provenance block replaced by `json`.
+fn with_provenance(gem: &[u8], json: &[u8]) -> Vec<u8> {
+    let m = u32::from_le_bytes(gem[20..24].try_into().expect("4 bytes")) as usize;
+    let mut b = gem[..20].to_vec();
+    b.extend_from_slice(&u32::try_from(json.len()).expect("fits").to_le_bytes());
+    b.extend_from_slice(json);
+    b.extend_from_slice(&gem[24 + m..]);
+    b
+}
+
+/// The provenance check (`clients/c/rulemesh_text.inc`, a port of serde_json's
+/// rules) accepts exactly the blocks the Rust decoder's serde_json accepts:
+/// every byte of gem's provenance replaced by each JSON-significant
+/// character, and hand-made edge cases (numbers at f64's range, surrogate
+/// escapes, nesting at serde_json's limit of 127, control characters, bad
+/// UTF-8, other top-level values).
+#[test]
+fn c_scene_decoder_reads_provenance_as_serde_json_does() {
+    let dir = tempdir();
+    let exe = driver(dir.path());
+    let gem = std::fs::read(repo().join("clients/js/fixtures/gem.rmscene")).expect("fixture");
+    let m = u32::from_le_bytes(gem[20..24].try_into().expect("4 bytes")) as usize;
+    let prov = gem[24..24 + m].to_vec();
+    let mut cases: Vec<Vec<u8>> = Vec::new();
+    for i in 0..prov.len() {
+        for &c in b"{}[]\":,\\ \t\n0159-+.eEutfnrb/aA\x00\x1f\x7f" {
+            let mut p = prov.clone();
+            p[i] = c;
+            cases.push(p);
+        }
+    }
+    let nest = |n: usize| format!("{{\"a\":{}1{}}}", "[".repeat(n), "]".repeat(n)).into_bytes();
+    let big = format!("{{\"n\":1{}}}", "0".repeat(400)).into_bytes();
+    let small = format!("{{\"n\":0.{}1}}", "0".repeat(400)).into_bytes();
+    let manual: Vec<&[u8]> = vec![
+        b"{}", b" {} ", b"{} x", b"[]", b"1", b"\"s\"", b"null", b"",
+        b"{\"n\":1e308}", b"{\"n\":1e309}", b"{\"n\":1.7976931348623157e308}", b"{\"n\":1.7976931348623159e308}",
+        b"{\"n\":-1e400}", b"{\"n\":0e999999999999}", b"{\"n\":1e-999999999999}", b"{\"n\":1e99999999999}",
+        b"{\"n\":18446744073709551615}", b"{\"n\":18446744073709551616}", b"{\"n\":-9223372036854775809}",
+        b"{\"n\":01}", b"{\"n\":1.}", b"{\"n\":.5}", b"{\"n\":1e}", b"{\"n\":-}", b"{\"n\":1E+2}", b"{\"n\":-0}",
+        b"{\"s\":\"\\ud800\"}", b"{\"s\":\"\\ud800\\udc00\"}", b"{\"s\":\"\\udc00\"}", b"{\"s\":\"\\ud800\\u0041\"}",
+        b"{\"s\":\"\\uD83D\\uDE00\"}", b"{\"s\":\"\\u00e9\"}", b"{\"s\":\"\\x\"}", b"{\"s\":\"\t\"}",
+        b"{\"s\":\"\xc3\xa9\"}", b"{\"s\":\"\xc3\"}", b"{\"s\":\"\xed\xa0\x80\"}", b"{\"s\":\"\xf4\x90\x80\x80\"}",
+        b"{\"a\":1,}", b"{\"a\":1,\"a\":2}", b"{\"a\" 1}", b"{,}", b"{\"a\":[1,2,]}", b"{\"a\":tru}", b"{\"a\":nulll}",
+    ];
+    cases.extend(manual.iter().map(|c| c.to_vec()));
+    cases.extend([nest(126), nest(127), nest(128), big, small]);
+    let mut batch = Vec::new();
+    let mut rust = Vec::new();
+    for c in &cases {
+        let b = with_provenance(&gem, c);
+        batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
+        batch.extend_from_slice(&b);
+        rust.push(rust_line(&b));
+    }
+    let ok = rust.iter().filter(|l| l.starts_with("ok")).count();
+    assert!(ok > 100 && ok < rust.len() - 100, "{ok} of {} accepted: the cases should go both ways", rust.len());
+    let path = dir.path().join("batch");
+    std::fs::write(&path, &batch).expect("write");
+    let c = c_lines(&exec(&exe, &["--batch", path.to_str().expect("utf-8")]));
+    assert_eq!(c.len(), rust.len());
+    if let Some(i) = (0..c.len()).find(|&i| c[i] != rust[i]) {
+        panic!("provenance {:?}: C says {}, Rust says {}", String::from_utf8_lossy(&cases[i]), c[i], rust[i]);
+    }
+}
