@@ -12,15 +12,15 @@ use rulemesh::export::strips::{decode_strips_full, DecodedStrips};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-const STRICT: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"];
-const SANITIZE: &[&str] = &["-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"];
+pub(crate) const STRICT: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"];
+pub(crate) const SANITIZE: &[&str] = &["-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"];
 
 fn c_file(name: &str) -> String {
     repo().join("clients/c").join(name).to_str().expect("utf-8").to_string()
 }
 
 /// Runs a compiler; panics with its diagnostics (a warning is an error).
-fn compile(cc: &str, flags: &[&str], sources: &[&str], out: &Path) {
+pub(crate) fn compile(cc: &str, flags: &[&str], sources: &[&str], out: &Path) {
     let o = Command::new(cc)
         .args(flags)
         .args(sources.iter().map(|s| c_file(s)))
@@ -42,7 +42,7 @@ fn driver(dir: &Path) -> PathBuf {
     exe
 }
 
-fn exec(exe: &Path, args: &[&str]) -> Output {
+pub(crate) fn exec(exe: &Path, args: &[&str]) -> Output {
     let o = Command::new(exe).args(args).output().expect("run the C driver");
     let stderr = String::from_utf8_lossy(&o.stderr);
     // A sanitizer report is a failure whatever the exit status says.
@@ -51,7 +51,7 @@ fn exec(exe: &Path, args: &[&str]) -> Output {
 }
 
 /// Every grammar file under `grammars/` (any language), sorted.
-fn every_grammar() -> Vec<PathBuf> {
+pub(crate) fn every_grammar() -> Vec<PathBuf> {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
         for e in std::fs::read_dir(dir).expect("grammars/ exists").flatten() {
             let p = e.path();
@@ -95,7 +95,7 @@ fn rust_dump(d: &DecodedStrips) -> Vec<u8> {
     b
 }
 
-fn fnv1a64(bytes: &[u8]) -> u64 {
+pub(crate) fn fnv1a64(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
 }
 
@@ -109,12 +109,12 @@ fn rust_line(bytes: &[u8]) -> String {
 
 /// The driver's lines with the C error kind dropped (the two decoders' error
 /// types differ; which payloads fail, and what the others decode to, must not).
-fn c_lines(o: &Output) -> Vec<String> {
+pub(crate) fn c_lines(o: &Output) -> Vec<String> {
     assert!(o.status.success(), "driver failed: {}", String::from_utf8_lossy(&o.stderr));
     String::from_utf8_lossy(&o.stdout).lines().map(|l| if l.starts_with("err ") { "err".into() } else { l.to_string() }).collect()
 }
 
-fn assert_same_lines(what: &str, c: &[String], rust: &[String]) {
+pub(crate) fn assert_same_lines(what: &str, c: &[String], rust: &[String]) {
     assert_eq!(c.len(), rust.len(), "{what}: line count");
     if let Some(i) = (0..c.len()).find(|&i| c[i] != rust[i]) {
         panic!("{what}: payload {i}: C says {:?}, Rust says {:?}", c[i], rust[i]);

@@ -7,6 +7,7 @@ mod picture;
 
 mod cli;
 mod c_decoder;
+mod c_scene;
 mod camera;
 mod animation;
 mod compact;
