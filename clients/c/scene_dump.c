@@ -68,7 +68,10 @@ static void put(buf *b, const void *p, size_t n) {
 
 static void put_u32(buf *b, uint32_t v) {
     uint8_t le[4];
-    le[0] = (uint8_t)v, le[1] = (uint8_t)(v >> 8), le[2] = (uint8_t)(v >> 16), le[3] = (uint8_t)(v >> 24);
+    le[0] = (uint8_t)v;
+    le[1] = (uint8_t)(v >> 8);
+    le[2] = (uint8_t)(v >> 16);
+    le[3] = (uint8_t)(v >> 24);
     put(b, le, 4);
 }
 

@@ -25,11 +25,12 @@ use std::process::Command;
 const MAX_TRIANGLES: u64 = 20_000_000;
 const V1_DETAIL: u32 = 16;
 
-/// The driver, built at -O2 without sanitizers (scene_dump_o2) and at -O1
-/// with them; the sanitised one is returned.
+/// The driver, built at -O2 without sanitizers (scene_dump_o2; also with
+/// `-Wconversion -Wshadow`, warning-free as clients/c/README.md says) and at
+/// -O1 with them; the sanitised one is returned.
 fn driver(dir: &Path) -> PathBuf {
     let sources = ["rulemesh_scene.c", "scene_dump.c"];
-    compile("gcc", &[STRICT, &["-O2"]].concat(), &sources, &dir.join("scene_dump_o2"));
+    compile("gcc", &[STRICT, &["-O2", "-Wconversion", "-Wshadow"]].concat(), &sources, &dir.join("scene_dump_o2"));
     let exe = dir.join("scene_dump");
     compile("gcc", &[STRICT, SANITIZE, &["-O1"]].concat(), &sources, &exe);
     exe
