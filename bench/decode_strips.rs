@@ -13,7 +13,7 @@ fn main() -> std::process::ExitCode {
                 return std::process::ExitCode::FAILURE;
             }
         };
-        let triangles = match rulemesh::export::decode_strips(&bytes) {
+        let triangles = match rulemesh::decode::decode_strips(&bytes) {
             Ok(m) => m.triangle_count(),
             Err(e) => {
                 eprintln!("{path}: {e}");
@@ -23,7 +23,7 @@ fn main() -> std::process::ExitCode {
         let start = Instant::now();
         let mut runs = 0u32;
         while start.elapsed() < Duration::from_millis(200) || runs < 5 {
-            let m = rulemesh::export::decode_strips(std::hint::black_box(&bytes));
+            let m = rulemesh::decode::decode_strips(std::hint::black_box(&bytes));
             std::hint::black_box(&m);
             runs += 1;
         }

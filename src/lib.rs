@@ -7,13 +7,13 @@
 //! `rulemesh-lang` ([`lang`]: each language's parser and front end, and the
 //! [`model`] they build; [`eval`], [`lsystem`] and [`eisen`] are its MDG,
 //! L-system and EisenScript front ends under their old names),
-//! `rulemesh-engine` (the stages, [`export`] and [`pipeline`]) and
+//! `rulemesh-engine` (the stages, [`export`], [`decode`] and [`pipeline`]) and
 //! `rulemesh-service` ([`cache`], [`service`]).
 
 #![warn(missing_docs)]
 
 pub use rulemesh_core::{core, geom, ENGINE_VERSION};
-pub use rulemesh_engine::{export, mesh, pipeline, preview, print};
+pub use rulemesh_engine::{decode, export, mesh, pipeline, preview, print};
 pub use rulemesh_engine::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
 pub use rulemesh_lang as lang;
 pub use rulemesh_lang::{eisen, lsystem, mdg::eval, model};

@@ -110,8 +110,8 @@ struct GalleryArgs {
 struct DecodeArgs {
     /// The `.strips` file, or `-` for standard input.
     file: String,
-    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug, .png), or `-` for standard output.
-    #[arg(short, long)]
+    // The extensions are the format registry's (`output_help`).
+    #[arg(short, long, help = output_help())]
     output: String,
     /// Output format (default: from the output extension, else glb).
     #[arg(long, value_parser = choice::<Format>())]
@@ -138,8 +138,8 @@ struct RenderArgs {
     /// Output format (default: from the output extension, else glb).
     #[arg(long, value_parser = choice::<Format>())]
     format: Option<Format>,
-    /// Output file (format from its extension: .glb, .gltf, .stl, .strips, .rmscene, .3mf, .ug, .png), or `-` for standard output.
-    #[arg(short, long, default_value = "-")]
+    // The extensions are the format registry's (`output_help`).
+    #[arg(short, long, default_value = "-", help = output_help())]
     output: String,
     /// Deepest rule nesting.
     #[arg(long)]
@@ -335,6 +335,11 @@ fn limits_from(args: &RenderArgs) -> Limits {
     .clamped_to(&Limits::ceiling())
 }
 
+/// The `--output` help: the extensions come from the format registry.
+fn output_help() -> String {
+    format!("Output file (format from its extension: {}), or `-` for standard output.", Format::known_extensions())
+}
+
 /// The output format: the one given, else the output file's extension, else
 /// (standard output, or a name without an extension) glb. An extension no
 /// format has is a usage error that lists them, rather than glb bytes
@@ -345,10 +350,10 @@ fn output_format(given: Option<Format>, output: &str) -> Result<Format, Failure>
     }
     let path = Path::new(output);
     match path.extension() {
-        _ if output == "-" => Ok(Format::Glb),
-        None => Ok(Format::Glb),
+        _ if output == "-" => Ok(Format::default()),
+        None => Ok(Format::default()),
         Some(ext) => Format::from_extension(path).ok_or_else(|| {
-            let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+            let names = Format::names();
             Failure::new(
                 EXIT_USAGE,
                 format!(
@@ -593,7 +598,7 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
     if bytes.len() as u64 > MAX_STRIPS_BYTES {
         return Err(Failure::new(EXIT_USAGE, format!("{}: larger than {MAX_STRIPS_BYTES} bytes", args.file)));
     }
-    let mesh = rulemesh::export::decode_strips(&bytes).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
+    let mesh = rulemesh::decode::decode_strips(&bytes).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
     let triangles = mesh.triangle_count();
     let meshes = [rulemesh::geom::NamedMesh { name: "model".into(), mesh }];
     let out = rulemesh::pipeline::write_meshes(format, &meshes, &Limits::ceiling()).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;

@@ -8,7 +8,7 @@
 //! installs both); without them these tests fail rather than check nothing.
 
 use crate::common::{repo, run, tempdir};
-use rulemesh::export::strips::{decode_strips_full, DecodedStrips};
+use rulemesh::decode::strips::{decode_strips_full, DecodedStrips};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -560,7 +560,7 @@ fn big_debian_examples_render_as_scenes_at_default_limits() {
         let r = RenderRequest { format: Format::Scene, language: Some(Language::Eisenscript), ..RenderRequest::default() };
         let out = render(&source, &r).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!((out.primitives, out.triangles), (objects, triangles), "{name}");
-        let d = rulemesh::export::scene::decode_scene_meshes(&out.bytes, 16, u64::MAX).expect("decodes");
+        let d = rulemesh::decode::scene::decode_scene_meshes(&out.bytes, 16, u64::MAX).expect("decodes");
         let decoded: u64 = d.meshes.iter().map(|m| m.mesh.indices.len() as u64 / 3).sum();
         assert_eq!(decoded, triangles, "{name}: decoded scene");
     }

@@ -56,8 +56,10 @@ pub(crate) fn cases() -> Vec<Case> {
     out
 }
 
-/// The format variants rendered for a language: (variant name, request).
-fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
+/// The format variants rendered for a language: (variant name, request):
+/// every format of the registry at its defaults, under its request name
+/// (a new format's rows join the table), then the option variants.
+pub(crate) fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
     let base = RenderRequest {
         language: Some(language),
         // Generous: a deadline hit on a loaded machine would make the table flaky.
@@ -69,15 +71,9 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
         f(&mut r);
         r
     };
-    let mut v = vec![
-        ("glb", with(Format::Glb, &|_| {})),
-        ("gltf", with(Format::Gltf, &|_| {})),
-        ("stl", with(Format::Stl, &|_| {})),
-        ("stl-ascii", with(Format::StlAscii, &|_| {})),
-        ("strips", with(Format::Strips, &|_| {})),
+    let mut v: Vec<(&'static str, RenderRequest)> = Format::ALL.iter().map(|&f| (f.name(), with(f, &|_| {}))).collect();
+    v.extend([
         ("strips-zstd", with(Format::Strips, &|r| r.export_options.strips.zstd = true)),
-        ("3mf", with(Format::ThreeMf, &|_| {})),
-        ("ug", with(Format::Ug, &|_| {})),
         ("glb-weld", with(Format::Glb, &|r| r.export_options.gltf.weld = true)),
         ("glb-quantize", with(Format::Glb, &|r| r.export_options.gltf.quantize = true)),
         (
@@ -91,10 +87,7 @@ fn variants(language: Language) -> Vec<(&'static str, RenderRequest)> {
         ("glb-fit", with(Format::Glb, &|r| r.export_options.fit_unit_box = true)),
         ("glb-per-kind", with(Format::Glb, &|r| r.layout = rulemesh::mesh::MeshLayout::PerKind)),
         ("glb-detail-4", with(Format::Glb, &|r| r.detail = 4)),
-        // The preview stage at its defaults (256 px, three-quarter, transparent).
-        ("png", with(Format::Png, &|_| {})),
-        ("scene", with(Format::Scene, &|_| {})),
-    ];
+    ]);
     // glb/gltf instance repeated meshes by default; the flat files are pinned too.
     v.push(("glb-flat", with(Format::Glb, &|r| r.export_options.instancing = Instancing::Flat)));
     v.push(("gltf-flat", with(Format::Gltf, &|r| r.export_options.instancing = Instancing::Flat)));

@@ -6,7 +6,7 @@
 use crate::common::{grammar_files, repo, run, tempdir, validate_gltf};
 use rulemesh::model::hierarchy::{Hierarchy, PlacedLeaf};
 use rulemesh::core::{Budget, Limit, Limits, OnLimit};
-use rulemesh::export::scene::{decode_scene, SceneError};
+use rulemesh::decode::scene::{decode_scene, SceneError};
 use rulemesh::export::{ExportOptions, Format, Instancing};
 use rulemesh::lang::lsystem::syntax::parse;
 use rulemesh::lang::Language;
@@ -142,7 +142,7 @@ fn malformed_scene_files_are_errors_not_panics() {
     assert_eq!(decode_scene(&extra).map(|_| ()), Err(SceneError::Length("followed by trailing bytes")));
     // The provenance block after the header: engine, language, seed, params, model key.
     let block = u32::from_le_bytes(good[20..24].try_into().expect("4 bytes")) as usize;
-    let provenance = rulemesh::export::scene::scene_provenance(&good).expect("reads").expect("present");
+    let provenance = rulemesh::decode::scene::scene_provenance(&good).expect("reads").expect("present");
     assert_eq!((provenance["language"].as_str(), provenance["seed"].as_str()), (Some("lsystem"), Some("0")), "{provenance}");
     assert_eq!(provenance["model_key"].as_str().map(str::len), Some(64), "{provenance}");
     let mut json = good.clone();
@@ -300,7 +300,7 @@ fn systems_that_cannot_instance_still_render_every_format() {
         let scene = ok(src, &req(Format::Scene));
         assert_eq!(scene.primitives, stl.primitives, "{why}");
         // The scene holds the flat model the turtle drew (its swept lines), as the STL does.
-        let d = rulemesh::export::scene::decode_scene_meshes(&scene.bytes, 16, u64::MAX).expect("decodes");
+        let d = rulemesh::decode::scene::decode_scene_meshes(&scene.bytes, 16, u64::MAX).expect("decodes");
         assert_eq!(d.meshes.iter().map(|m| m.mesh.indices.len() as u64 / 3).sum::<u64>(), stl.triangles, "{why}");
         // The unbalanced DAG still instances (its hierarchy comes from the derived string), as in the flat glb.
         assert_eq!(decode_scene(&scene.bytes).expect("decodes").objects.is_empty(), why != "unbalanced", "{why}");
@@ -389,7 +389,7 @@ fn ten_million_segment_scene_stays_small_in_memory_and_hostile_growth_fails_clea
             assert!(ok, "{err}");
             let bytes = std::fs::read(&o).expect("scene written");
             assert!(bytes.len() < 20_000, "{}", bytes.len());
-            let e = rulemesh::export::scene::decode_scene_meshes(&bytes, 16, 1_000_000_000).expect_err("too many triangles");
+            let e = rulemesh::decode::scene::decode_scene_meshes(&bytes, 16, 1_000_000_000).expect_err("too many triangles");
             assert!(matches!(e, SceneError::TooLarge(_)), "{e}");
         } else {
             assert!(!ok && err.contains("limit exceeded"), "{ext}: {err}");

@@ -19,6 +19,7 @@ mod etol;
 mod determinism;
 mod docs;
 mod eisen;
+mod formats;
 mod gallery;
 mod golden;
 mod gpu_instancing;

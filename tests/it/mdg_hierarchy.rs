@@ -8,7 +8,7 @@
 use crate::common::{repo, tempdir, validate_gltf};
 use rulemesh::core::{Budget, Limit, Limits, OnLimit};
 use rulemesh::eval::{bind_params, evaluate, evaluate_hierarchy, EvalOptions};
-use rulemesh::export::scene::{decode_scene, decode_scene_meshes};
+use rulemesh::decode::scene::{decode_scene, decode_scene_meshes};
 use rulemesh::export::{ExportOptions, Format, Instancing};
 use rulemesh::lang::{self, Language};
 use rulemesh::model::hierarchy::Hierarchy;

@@ -58,7 +58,7 @@ fn every_format_with_metadata_carries_a_seed_above_2_63() {
     assert!(stl.starts_with(format!("rulemesh {} mdg seed={SEED}", rulemesh::ENGINE_VERSION).as_bytes()));
     // Scene: the provenance block after the header.
     let scene = render_to("sierpinski-bush.ls", "bush.rmscene", &[]);
-    check_json(&rulemesh::export::scene::scene_provenance(&scene).expect("reads").expect("present"), "lsystem");
+    check_json(&rulemesh::decode::scene::scene_provenance(&scene).expect("reads").expect("present"), "lsystem");
     // Parameters are recorded as the request set them.
     let with = render_to("icosahedron-transformations.mdg", "ico.gltf", &["--param", "phase=0.5"]);
     let v: serde_json::Value = serde_json::from_slice(&with).expect("json");

@@ -7,7 +7,7 @@
 
 use crate::common::{decode_stl, repo, tempdir};
 use crate::golden::{cases, Case};
-use rulemesh::export::scene::{decode_scene, decode_scene_meshes, DecodedScene};
+use rulemesh::decode::scene::{decode_scene, decode_scene_meshes, DecodedScene};
 use rulemesh::export::{ExportOptions, Format, Instancing};
 use rulemesh::pipeline::{render, RenderRequest};
 use serde_json::{json, Value};

@@ -3,7 +3,7 @@
 //! the flat mesh (the binary STL of the same render).
 
 use crate::common::{decode_stl, grammar_files, repo, run, tempdir};
-use rulemesh::export::strips::{decode_strips_full, DecodedStrips};
+use rulemesh::decode::strips::{decode_strips_full, DecodedStrips};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

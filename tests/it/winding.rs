@@ -161,7 +161,7 @@ fn glb_triangles(bytes: &[u8]) -> Vec<Tri> {
 
 /// The triangles of a strips file, by the crate's own decoder.
 fn strips_triangles(bytes: &[u8]) -> Vec<Tri> {
-    let d = rulemesh::export::strips::decode_strips_full(bytes).expect("strips decode");
+    let d = rulemesh::decode::strips::decode_strips_full(bytes).expect("strips decode");
     let m = &d.mesh;
     let p = |i: u32| DVec3::from_array(m.positions[i as usize].map(f64::from));
     let n = |i: u32| DVec3::from_array(m.normals[i as usize].map(f64::from));

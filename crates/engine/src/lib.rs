@@ -17,6 +17,7 @@ use rulemesh_lang as lang;
 use rulemesh_lang::model;
 pub use rulemesh_core::ENGINE_VERSION;
 
+pub mod decode;
 pub mod export;
 pub mod mesh;
 pub mod pipeline;

@@ -63,7 +63,7 @@ async fn http_request_scene_format_for_a_mesh_language_is_400_not_500() {
         .await
         .expect("an EisenScript box renders as a scene")
         .into_inner();
-    let d = rulemesh::export::scene::decode_scene_meshes(&reply.model, 16, 1_000).expect("decodes");
+    let d = rulemesh::decode::scene::decode_scene_meshes(&reply.model, 16, 1_000).expect("decodes");
     assert_eq!(d.meshes.iter().map(|m| m.mesh.indices.len() / 3).sum::<usize>(), 12);
     stop(srv).await;
 }

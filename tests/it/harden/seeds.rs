@@ -40,13 +40,13 @@ fn every_render_seed_replays_without_a_panic() {
 #[test]
 fn every_decoder_seed_replays_without_a_panic() {
     for data in seeds("decode_strips") {
-        if let Ok(d) = rulemesh::export::strips::decode_strips_full(&data) {
+        if let Ok(d) = rulemesh::decode::strips::decode_strips_full(&data) {
             let n = d.mesh.positions.len();
             assert!(d.mesh.indices.iter().all(|&i| (i as usize) < n), "index out of range in a decoded mesh");
         }
     }
     for data in seeds("decode_scene") {
-        if let Ok(h) = rulemesh::export::scene::decode_scene(&data) {
+        if let Ok(h) = rulemesh::decode::scene::decode_scene(&data) {
             let _ = h.leaves();
         }
     }

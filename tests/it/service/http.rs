@@ -67,7 +67,7 @@ async fn lsystems_render_as_scenes_and_instanced_or_flat_gltf() {
     assert_eq!(header(&r, "content-type"), "application/vnd.rulemesh.scene");
     assert_eq!(header(&r, "x-rulemesh-primitives"), "4096");
     let scene = r.bytes().await.expect("body");
-    assert_eq!(rulemesh::export::scene::decode_scene(&scene).expect("decodes").leaves(), 4096);
+    assert_eq!(rulemesh::decode::scene::decode_scene(&scene).expect("decodes").leaves(), 4096);
     let gpu = post(&base, "/v1/render", &json!({"source": source, "format": "glb"})).await.bytes().await.expect("body");
     let flat = post(&base, "/v1/render", &json!({"source": source, "format": "glb", "instancing": "flat"})).await;
     assert_eq!(flat.status(), 200);
@@ -81,7 +81,7 @@ async fn lsystems_render_as_scenes_and_instanced_or_flat_gltf() {
     let mdg = post(&base, "/v1/render", &json!({"source": small("scene"), "format": "scene"})).await;
     assert_eq!(mdg.status(), 200);
     assert_eq!(header(&mdg, "content-type"), "application/vnd.rulemesh.scene");
-    let meshes = rulemesh::export::scene::decode_scene_meshes(&mdg.bytes().await.expect("body"), 16, 1_000_000).expect("decodes").meshes;
+    let meshes = rulemesh::decode::scene::decode_scene_meshes(&mdg.bytes().await.expect("body"), 16, 1_000_000).expect("decodes").meshes;
     assert!(meshes.iter().any(|m| !m.mesh.indices.is_empty()));
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");

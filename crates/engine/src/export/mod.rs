@@ -1,146 +1,32 @@
-//! Exporters: meshes → bytes. They read meshes and scene metadata only; they never parse.
+//! The writers: meshes, a picture or a model → bytes. They read meshes,
+//! scene metadata and the model only; they never parse.
+//!
+//! One folder per format family (`gltf`, `strips`, `scene`, `stl`,
+//! `threemf`, `png`, `ug`), each declaring its formats' descriptors
+//! ([`FormatInfo`]) beside its writers; this file holds what they share
+//! (the errors, the scene-level metadata, the request's format options,
+//! the welding and the deadline cadence), and `formats` is the registry
+//! that lists them. The readers of served bytes are in `crate::decode`.
 
-pub mod compact;
+mod descriptor;
+mod formats;
 pub mod gltf;
-mod gltf_buffer;
-mod gltf_document;
-mod gltf_graph;
-mod gltf_instanced;
-pub mod instanced;
 pub mod png;
 pub mod provenance;
 pub mod scene;
-mod scene_decode;
-mod scene_format;
-mod scene_v2;
 pub mod stl;
 pub mod strips;
-mod strips_chunk;
-mod strips_decode;
-mod strips_format;
 pub mod threemf;
 pub mod ug;
 
-pub use compact::{Compression, GltfOptions};
+pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteMeshes, WriteModel, Writer};
+pub use formats::{estimated_size, export, export_with, Format, FORMATS};
+pub use gltf::compact::{parse_compression, Compression, GltfOptions};
 pub use provenance::Provenance;
-pub use strips::{decode_strips, StripsError, StripsOptions};
+pub use strips::StripsOptions;
 
-use crate::core::budget::{Budget, LimitExceeded};
+use crate::core::budget::LimitExceeded;
 use crate::geom::NamedMesh;
-
-/// Output formats.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Format {
-    /// Binary glTF 2.0 (.glb).
-    Glb,
-    /// glTF 2.0 JSON with the buffer embedded as a data URI (.gltf).
-    Gltf,
-    /// Binary STL.
-    Stl,
-    /// ASCII STL.
-    StlAscii,
-    /// rulemesh's compact triangle-strip format for phone clients
-    /// (`docs/strips-format.md`): quantised, stripified and compressed.
-    Strips,
-    /// rulemesh's object-instancing hierarchy (`docs/scene-format.md`), for
-    /// L-systems: its size grows with the distinct subtrees, not the segments.
-    Scene,
-    /// 3MF core package (a zip with the model XML in millimetres), for printing.
-    #[serde(rename = "3mf")]
-    ThreeMf,
-    /// Berkeley UniGrafix text (Séquin (ed.) 1992): `def`/`v`/`f`/`c`/`i` statements.
-    Ug,
-    /// A PNG picture of the model (the preview stage, `docs/preview.md`):
-    /// drawn on the CPU, for icons and order pages.
-    Png,
-}
-
-impl crate::core::Choice for Format {
-    const ALL: &'static [Self] = &Format::ALL;
-    fn name(self) -> &'static str {
-        Format::name(self)
-    }
-}
-
-impl Format {
-    /// Picks a format from an output file name's extension.
-    pub fn from_extension(path: &std::path::Path) -> Option<Format> {
-        match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
-            "glb" => Some(Format::Glb),
-            "gltf" => Some(Format::Gltf),
-            "stl" => Some(Format::Stl),
-            "strips" => Some(Format::Strips),
-            "rmscene" => Some(Format::Scene),
-            "3mf" => Some(Format::ThreeMf),
-            "ug" => Some(Format::Ug),
-            "png" => Some(Format::Png),
-            _ => None,
-        }
-    }
-
-    /// Every format, in the order they are listed in messages.
-    pub const ALL: [Format; 9] =
-        [Format::Glb, Format::Gltf, Format::Stl, Format::StlAscii, Format::Strips, Format::Scene, Format::ThreeMf, Format::Ug, Format::Png];
-
-    /// The output file extensions [`Format::from_extension`] knows, with a dot
-    /// each, for messages that list them.
-    pub fn known_extensions() -> String {
-        let mut exts: Vec<&str> = Vec::new();
-        for f in Format::ALL {
-            if !exts.contains(&f.extension()) {
-                exts.push(f.extension());
-            }
-        }
-        exts.iter().map(|e| format!(".{e}")).collect::<Vec<_>>().join(", ")
-    }
-
-    /// The MIME type of the format.
-    pub fn content_type(self) -> &'static str {
-        match self {
-            Format::Glb => "model/gltf-binary",
-            Format::Gltf => "model/gltf+json",
-            Format::Stl | Format::StlAscii => "model/stl",
-            Format::Strips => "application/vnd.rulemesh.strips",
-            Format::Scene => "application/vnd.rulemesh.scene",
-            Format::ThreeMf => "model/3mf",
-            Format::Ug => "text/plain; charset=utf-8",
-            Format::Png => "image/png",
-        }
-    }
-
-    /// The format's request name (`"glb"`, `"stl-ascii"`, `"3mf"` …), as
-    /// requests spell it: the one spelling the cache key, metrics labels and
-    /// logs share, so a name cannot drift between them.
-    pub fn name(self) -> &'static str {
-        match self {
-            Format::Glb => "glb",
-            Format::Gltf => "gltf",
-            Format::Stl => "stl",
-            Format::StlAscii => "stl-ascii",
-            Format::Strips => "strips",
-            Format::Scene => "scene",
-            Format::ThreeMf => "3mf",
-            Format::Ug => "ug",
-            Format::Png => "png",
-        }
-    }
-
-    /// The usual file extension (without the dot), so front ends can name outputs.
-    pub fn extension(self) -> &'static str {
-        match self {
-            Format::Glb => "glb",
-            Format::Gltf => "gltf",
-            Format::Stl => "stl",
-            Format::StlAscii => "stl",
-            Format::Strips => "strips",
-            Format::Scene => "rmscene",
-            Format::ThreeMf => "3mf",
-            Format::Ug => "ug",
-            Format::Png => "png",
-        }
-    }
-}
 
 /// How glb/gltf write a model whose meshes repeat (an instancing L-system,
 /// or any scene that places a mesh more than once).
@@ -168,6 +54,21 @@ pub(crate) fn welded(mesh: &crate::geom::Mesh) -> (Vec<[f32; 3]>, Vec<(usize, [u
     let (points, remap) = weld::weld_by(mesh.positions.iter().copied(), weld::f32_key);
     let tris = weld::welded_triangles(&mesh.indices, &remap).collect();
     (points, tris)
+}
+
+/// Drops the normals and colours of `meshes`, which STL never writes (facet
+/// normals are recomputed from the winding, and STL has no colour), so that
+/// the output of a big model is allocated beside positions and indices
+/// only: for a grid of boxes the mesh shrinks from 816 to 432 bytes a box,
+/// and the process's peak memory from 2.5× to under 2× the STL file (see
+/// `docs/benchmarks.md`, big flat outputs). The pipeline calls it between
+/// meshing and export for a format whose writer reads positions and
+/// indices only ([`Capabilities::positions_only`]).
+pub fn keep_positions_only(meshes: &mut [NamedMesh]) {
+    for m in meshes {
+        m.mesh.normals = Vec::new();
+        m.mesh.colours = Vec::new();
+    }
 }
 
 /// Scene-level facts an exporter may record besides geometry.
@@ -271,86 +172,6 @@ pub struct ExportOptions {
 /// enough that the clock costs nothing measurable.
 pub(crate) const DEADLINE_EVERY: usize = 1 << 16;
 
-/// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
-pub fn export(format: Format, meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    export_with(format, meshes, meta, &ExportOptions::default(), budget)
-}
-
-/// Writes `meshes` in `format` with the request's format options, reserving
-/// the output size in `budget` first.
-pub fn export_with(
-    format: Format,
-    meshes: &[NamedMesh],
-    meta: &ExportMeta,
-    options: &ExportOptions,
-    budget: &mut Budget,
-) -> Result<Vec<u8>, ExportError> {
-    // Writing a large model takes a share of the deadline; a model that
-    // arrives here late is not started.
-    budget.check_deadline()?;
-    let (fitted, moved);
-    let (meshes, meta) = if options.fit_unit_box {
-        // The camera moves with the model, so the fitted model is seen as the original was.
-        let map;
-        (fitted, map) = crate::geom::normalize::fit_unit_box(meshes, budget)?;
-        moved = ExportMeta { camera: meta.camera.as_ref().map(|c| map.map_or_else(|| c.clone(), |(centre, scale)| c.fitted(centre, scale))), ..meta.clone() };
-        (&fitted[..], &moved)
-    } else {
-        (meshes, meta)
-    };
-    let g = &options.gltf;
-    match format {
-        Format::Strips => strips::write_strips(meshes, &options.strips, budget),
-        Format::Glb if !g.is_plain() => compact::write_glb(meshes, meta, g, budget),
-        Format::Gltf if !g.is_plain() => compact::write_gltf(meshes, meta, g, budget),
-        Format::Glb => gltf::write_glb(meshes, meta, budget),
-        Format::Gltf => gltf::write_gltf(meshes, meta, budget),
-        Format::Stl => stl::write_binary_titled(meshes, &stl::title(meta.provenance.as_ref()), budget),
-        Format::StlAscii => stl::write_ascii(meshes, budget),
-        Format::Scene => Err(ExportError::InvalidOptions {
-            format: "scene",
-            detail: "the scene format is written from the model (instances, hierarchy), not from meshes".into(),
-        }),
-        Format::ThreeMf => threemf::write_3mf(meshes, meta.provenance.as_ref(), budget),
-        Format::Ug => ug::write_ug(meshes, budget),
-        // The pipeline runs the preview stage itself (to time it) and then
-        // `png::write_png` with the same text chunks; this arm serves meshes
-        // from outside a render (a decoded strips file) and library callers.
-        Format::Png => self::png::write_png(&crate::preview::render(meshes, &options.preview, budget)?, &self::png::text_chunks(meta.provenance.as_ref()), budget),
-    }
-}
-
-/// An upper bound on the encoded size of a model with this many vertices and
-/// triangles in `format`, so the budget can be checked before encoding.
-/// `estimated_size(format, 0, 0)` is the fixed per-file overhead.
-pub fn estimated_size(format: Format, vertices: u64, triangles: u64) -> u64 {
-    let (fixed, per_vertex, per_triangle) = match format {
-        Format::Glb => (64 * 1024, 28, 12),
-        // base64 inflates the buffer by 4/3.
-        Format::Gltf => (64 * 1024, 38, 16),
-        Format::Stl => (84, 0, 50),
-        Format::StlAscii => (1024, 0, 300),
-        // Header, CRC and palette, plus meshoptimizer's worst cases: a vertex
-        // block costs at most 4164 bytes per 256 16-byte vertices (and one
-        // partial block), a strip at most 5 indices per triangle at 5 bytes
-        // each; zstd's worst-case growth fits in the per-vertex slack.
-        Format::Strips => (16 * 1024, 20, 25),
-        // The hierarchy is sized exactly when written; no meshes are made.
-        Format::Scene => (1024, 0, 0),
-        // XML text (about 60 bytes a vertex, 45 a triangle) before compression.
-        Format::ThreeMf => (4 * 1024, 64, 48),
-        // `v vN x y z;` and `f (va vb vc) cN;` lines with shortest-round-trip floats.
-        Format::Ug => (4 * 1024, 64, 48),
-        // The picture's size depends on the preview options, not the model;
-        // the preview stage reserves its framebuffer and output itself.
-        Format::Png => (1024, 0, 0),
-    };
-    vertices
-        .saturating_mul(per_vertex)
-        .saturating_add(triangles.saturating_mul(per_triangle))
-        .saturating_add(fixed)
-}
-
 // geom::normalize's tests, which export glTF (a layer above geom).
 #[cfg(test)]
 mod normalize_tests;
@@ -358,7 +179,7 @@ mod normalize_tests;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::core::budget::Limits;
+    use crate::core::budget::{Budget, Limits};
     use crate::export::gltf::tests::{all_nine, meshes_of};
     use crate::mesh::tests::{inst, scene};
     use crate::mesh::MeshLayout;
@@ -403,14 +224,14 @@ mod tests {
         let mut gltf_files = Vec::new();
         for (name, meshes, meta) in samples() {
             let (v, t) = counts(&meshes);
-            for (format, ext) in
-                [(Format::Glb, "glb"), (Format::Gltf, "gltf"), (Format::Stl, "stl"), (Format::StlAscii, "ascii.stl"), (Format::Strips, "strips")]
-            {
+            // Every format written from meshes, as the registry lists them.
+            for &format in Format::ALL.iter().filter(|f| matches!(f.info().writer, Writer::Meshes(_))) {
+                let ext = format!("{}.{}", format.name(), format.extension());
                 let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
                 assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());
                 let path = dir.join(format!("{name}.{ext}"));
                 std::fs::write(&path, &bytes).unwrap();
-                if matches!(format, Format::Glb | Format::Gltf) {
+                if format.info().caps.node_graph {
                     gltf_files.push(path);
                 }
             }

@@ -240,7 +240,7 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget, cutoff: &mut Cutoff) -> Res
 
 /// Triangles from free `VERTEX` calls: every three consecutive vertices, in
 /// the order and winding the grammar gave (a trailing one or two are dropped).
-/// Public so the scene writer (`export::scene_v2`) ships the very mesh the
+/// Public so the scene writer (`export::scene`) ships the very mesh the
 /// flat formats write.
 pub fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
     let t = vertices.len() / 3;
@@ -356,7 +356,7 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, cutoff: 
 }
 
 /// Appends `proto` transformed by `inst` to `mesh`. Public so the scene
-/// decoder (`export::scene_v2`) places primitives with the same arithmetic as
+/// decoder (`decode::scene`) places primitives with the same arithmetic as
 /// the flat formats, triangle for triangle.
 pub fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
     append_mapped(mesh, proto, instance_map(inst), inst.colour, inst.parity);

@@ -2,7 +2,7 @@
 //! that determines a model's bytes.
 
 use crate::core::{Limits, ParamValue};
-use crate::export::Format;
+use crate::export::OptionGroup;
 use crate::mesh::MeshLayout;
 use crate::lang::Language;
 use crate::RenderRequest;
@@ -122,22 +122,28 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
         e.u64("frame", k.into());
     }
     e.field("format", req.format.name().as_bytes());
-    if req.format == Format::Strips {
-        let o = &req.export_options.strips;
-        e.field("strips", &[o.position_bits, o.normal_bits, u8::from(o.zstd)]);
-    }
-    let g = &req.export_options.gltf;
-    if matches!(req.format, Format::Glb | Format::Gltf) && !g.is_plain() {
-        e.field("gltf", &[u8::from(g.weld), u8::from(g.quantize), g.compress as u8]);
-    }
-    if matches!(req.format, Format::Glb | Format::Gltf) && req.export_options.instancing == crate::export::Instancing::Flat {
-        e.field("instancing", b"flat");
-    }
-    if req.format == Format::Png {
-        let o = &req.export_options.preview;
-        e.u64("preview.size", o.size.into());
-        e.field("preview.view", o.view.name().as_bytes());
-        e.field("preview.background", crate::preview::background_name(o.background).as_bytes());
+    // The options of the format's own group (the registry's), each only when it can change the bytes.
+    match req.format.info().options {
+        OptionGroup::Strips => {
+            let o = &req.export_options.strips;
+            e.field("strips", &[o.position_bits, o.normal_bits, u8::from(o.zstd)]);
+        }
+        OptionGroup::Gltf => {
+            let g = &req.export_options.gltf;
+            if !g.is_plain() {
+                e.field("gltf", &[u8::from(g.weld), u8::from(g.quantize), g.compress as u8]);
+            }
+            if req.export_options.instancing == crate::export::Instancing::Flat {
+                e.field("instancing", b"flat");
+            }
+        }
+        OptionGroup::Preview => {
+            let o = &req.export_options.preview;
+            e.u64("preview.size", o.size.into());
+            e.field("preview.view", o.view.name().as_bytes());
+            e.field("preview.background", crate::preview::background_name(o.background).as_bytes());
+        }
+        OptionGroup::None => {}
     }
     if req.export_options.fit_unit_box {
         e.field("fit", b"unit");
@@ -164,6 +170,7 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::export::Format;
 
     #[test]
     fn crlf_is_normalised() {

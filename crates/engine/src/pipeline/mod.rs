@@ -16,7 +16,7 @@
 use crate::core::budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
 use crate::core::timing::{Phase, StageClock};
 use crate::core::{Diagnostic, ParamValue, ParseError};
-use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instancing, Provenance};
+use crate::export::{self, ExportError, ExportMeta, ExportOptions, Format, Instancing, OptionGroup, Provenance, Writer};
 use crate::geom;
 use crate::lang::{self, Language};
 use crate::mesh::{self, MeshLayout};
@@ -82,7 +82,7 @@ impl Default for RenderRequest {
             language: None,
             seed: None,
             params: BTreeMap::new(),
-            format: Format::Glb,
+            format: Format::default(),
             limits: Limits::default(),
             on_limit: OnLimit::Error,
             detail: geom::DEFAULT_DETAIL,
@@ -236,47 +236,54 @@ pub fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
         return Err(RenderError::BadRequest(format!("detail must be in {}..={}, got {}", geom::MIN_DETAIL, geom::MAX_DETAIL, req.detail)));
     }
-    if req.format == Format::Strips {
-        req.export_options.strips.validate().map_err(RenderError::BadRequest)?;
+    match req.format.info().options {
+        OptionGroup::Strips => req.export_options.strips.validate().map_err(RenderError::BadRequest),
+        OptionGroup::Preview => req.export_options.preview.validate().map_err(RenderError::BadRequest),
+        OptionGroup::Gltf | OptionGroup::None => Ok(()),
     }
-    if req.format == Format::Png {
-        req.export_options.preview.validate().map_err(RenderError::BadRequest)?;
-    }
-    Ok(())
 }
 
 /// True when the request's output carries a node hierarchy with animation
-/// (plain glTF, not printed); everything else shows time 0.
+/// (a format with a node graph, plain, not fitted or printed: glTF);
+/// everything else shows time 0.
 fn graph_capable(req: &RenderRequest) -> bool {
-    matches!(req.format, Format::Glb | Format::Gltf) && req.export_options.gltf.is_plain() && !req.export_options.fit_unit_box && !req.export_options.print.enabled
+    req.format.info().caps.node_graph && req.export_options.gltf.is_plain() && !req.export_options.fit_unit_box && !req.export_options.print.enabled
 }
 
 /// Whether the request's output can use an instancing hierarchy.
 fn hierarchy_use(req: &RenderRequest) -> HierarchyUse {
-    match req.format {
-        Format::Scene => HierarchyUse::Required,
+    let info = req.format.info();
+    match info.writer {
+        // Written from the model as made (scene).
+        Writer::Model(_) => HierarchyUse::Required,
         // Printing unites once per distinct subtree where there is a hierarchy.
         _ if req.export_options.print.enabled => HierarchyUse::Union,
-        Format::Glb | Format::Gltf => HierarchyUse::Preferred,
-        Format::Strips if streamed_strips(req) => HierarchyUse::Streamed,
+        _ if info.caps.instancing => HierarchyUse::Preferred,
+        _ if streamed(req) => HierarchyUse::Streamed,
         _ => HierarchyUse::Never,
     }
 }
 
-/// Whether glb/gltf output writes each repeated mesh once with
-/// `EXT_mesh_gpu_instancing` (`instancing: gpu`, the default): plain glTF
-/// only — compact (welded, quantised, meshopt), fitted and printed output
-/// is flat.
+/// Whether the output writes each repeated mesh once with
+/// `EXT_mesh_gpu_instancing` (a format that can, glTF, under `instancing:
+/// gpu`, the default): plain glTF only — compact (welded, quantised,
+/// meshopt), fitted and printed output is flat.
 fn gpu_instancing(req: &RenderRequest) -> bool {
     let opts = &req.export_options;
-    matches!(req.format, Format::Glb | Format::Gltf) && opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled
+    req.format.info().caps.instancing && opts.instancing == Instancing::Gpu && opts.gltf.is_plain() && !opts.fit_unit_box && !opts.print.enabled
 }
 
-/// Whether strips are written from the model a chunk at a time (no merged
-/// mesh, a hierarchy walked rather than expanded): every strips request but
-/// printed or unit-box-fitted ones, which need the whole mesh first.
-fn streamed_strips(req: &RenderRequest) -> bool {
-    req.format == Format::Strips && !req.export_options.print.enabled && !req.export_options.fit_unit_box
+/// Whether the output is written from the model a chunk at a time (no
+/// merged mesh, a hierarchy walked rather than expanded): every request
+/// for a streamed format (strips) but printed or unit-box-fitted ones,
+/// which need the whole mesh first.
+fn streamed(req: &RenderRequest) -> bool {
+    req.format.info().caps.streamed && !req.export_options.print.enabled && !req.export_options.fit_unit_box
+}
+
+/// Whether instanced glTF is written as .glb (binary) rather than .gltf (text).
+fn binary(format: Format) -> bool {
+    !format.info().caps.text
 }
 
 /// Bytes the mesh buffers and the encoded output need per vertex and per
@@ -288,13 +295,12 @@ fn streamed_strips(req: &RenderRequest) -> bool {
 fn downstream(req: &RenderRequest, overhead: u64) -> Downstream {
     let est = |v, t| export::estimated_size(req.format, v, t).saturating_sub(overhead);
     // Streamed strips build no mesh: only the output is promised.
-    let mesh_bytes = |v, t| if streamed_strips(req) { 0 } else { geom::mesh::mesh_bytes(v, t) };
-    let per_instance = match req.format {
-        Format::Scene => Some(export::scene::MAX_RECORD_BYTES),
-        // A .gltf holds its buffer as base64 (4/3) after building it raw.
-        Format::Gltf => gpu_instancing(req).then_some(3 * export::instanced::SCENE_INSTANCE_BYTES),
-        _ => gpu_instancing(req).then_some(export::instanced::SCENE_INSTANCE_BYTES),
-    };
+    let mesh_bytes = |v, t| if streamed(req) { 0 } else { geom::mesh::mesh_bytes(v, t) };
+    // Placements written as instances: every one from the model (scene),
+    // the repeats under GPU instancing; each at the format's bound.
+    let info = req.format.info();
+    let instances = matches!(info.writer, Writer::Model(_)) || gpu_instancing(req);
+    let per_instance = instances.then_some(info.size.per_instance);
     Downstream {
         per_vertex: mesh_bytes(1, 0).saturating_add(est(1, 0)),
         per_triangle: mesh_bytes(0, 1).saturating_add(est(0, 1)),
@@ -406,15 +412,15 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
 /// written as it is or expanded, then printing or meshing, then export.
 fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     let opts = &req.export_options;
-    if req.format == Format::Scene {
+    if let Writer::Model(write) = req.format.info().writer {
         // Instances, hierarchy and the meshes that are not instances, as made (docs/scene-format.md).
         let h = model.hierarchy.take();
-        let (bytes, triangles) = export::scene::write_scene(&model.scene, h.as_ref(), req.detail, req.layout, Some(&provenance), budget)?;
+        let (bytes, triangles) = write(&model.scene, h.as_ref(), req.detail, req.layout, Some(&provenance), budget)?;
         clock.lap(Phase::Export);
         let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
         return Ok(summary(bytes, &model, triangles, truncated));
     }
-    if streamed_strips(req) {
+    if streamed(req) {
         return strips_from_model(model, provenance, req, budget, clock);
     }
     // A print of a hierarchy unites once per distinct subtree, or (a leaf
@@ -428,8 +434,8 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         }
     }
     if let Some(h) = model.hierarchy.take() {
-        let bytes = match req.format {
-            Format::Glb | Format::Gltf if gpu_instancing(req) => {
+        let bytes = match gpu_instancing(req) {
+            true => {
                 let meta = ExportMeta {
                     background: model.scene.background,
                     truncated: h.truncated.is_some(),
@@ -440,9 +446,9 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
                 };
                 // MDG's instances carry their colours, as its flat scenes' do; L-systems' meshes do.
                 let per_instance_colour = model.language.front_end().colours_per_instance();
-                Some(export::instanced::write_instanced(&h, req.detail, req.format == Format::Glb, &meta, per_instance_colour, budget)?)
+                Some(export::gltf::instanced::write_instanced(&h, req.detail, binary(req.format), &meta, per_instance_colour, budget)?)
             }
-            _ => None,
+            false => None,
         };
         match bytes {
             Some(bytes) => {
@@ -498,9 +504,9 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         clock.lap(Phase::Mesh);
     }
     let truncated = scene.truncated.or(cut);
-    if matches!(req.format, Format::Stl | Format::StlAscii) {
+    if req.format.info().caps.positions_only {
         // Before the output is allocated, so a big model's peak stays under 2× the file.
-        export::stl::keep_positions_only(&mut meshes);
+        export::keep_positions_only(&mut meshes);
     }
     budget.set_stage_share(None);
     let in_graph = graph.is_some();
@@ -514,11 +520,11 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         provenance: Some(provenance),
     };
     let drawn: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
-    let (bytes, triangles, truncated) = if req.format == Format::Png {
+    let (bytes, triangles, truncated) = if let Writer::Picture(encode) = req.format.info().writer {
         // The preview stage, then its encoding: a picture needs no fitting or metadata.
         let image = crate::preview::render(&meshes, &opts.preview, budget).map_err(ExportError::from)?;
         clock.lap(Phase::Preview);
-        (export::png::write_png(&image, &export::png::text_chunks(meta.provenance.as_ref()), budget)?, drawn, truncated)
+        (encode(&image, meta.provenance.as_ref(), budget)?, drawn, truncated)
     } else {
         let written = export::export_with(req.format, &meshes, &meta, opts, budget);
         empty_if_late(written, drawn, truncated, meta, req, budget)?
@@ -559,7 +565,7 @@ fn instanced_scene(model: &mut Model, provenance: &Provenance, req: &RenderReque
     if plan.is_empty() {
         return Ok(None);
     }
-    let prototypes = export::instanced::prototypes(&plan, &model.scene, req.detail, budget)?;
+    let prototypes = export::gltf::instanced::prototypes(&plan, &model.scene, req.detail, budget)?;
     let residual = plan.residual(&mut model.scene, budget)?;
     let (meshes, cut) = mesh::build_meshes_until(&residual, req.detail, req.layout, req.on_limit, budget)?;
     budget.release_memory(instancing::residual_bytes(instancing::residual_counts(&residual)));
@@ -579,7 +585,7 @@ fn instanced_scene(model: &mut Model, provenance: &Provenance, req: &RenderReque
         provenance: Some(provenance.clone()),
     };
     let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| {
-        export::instanced::write_scene(scene, &plan, prototypes, meshes, &meta, req.format == Format::Glb, budget)
+        export::gltf::instanced::write_scene(scene, &plan, prototypes, meshes, &meta, binary(req.format), budget)
     });
     let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req, budget)?;
     clock.lap(Phase::Export);

@@ -1,14 +1,14 @@
 //! The HTTP API (axum): JSON in, model bytes out.
 
 use super::library::{self, GrammarInfo};
-use super::request::{from_json, parse_format, CheckBody, RenderBody};
+use super::request::{from_json, CheckBody, RenderBody};
 use super::metrics::{wants_openmetrics, OPENMETRICS, PROMETHEUS_TEXT};
 use super::access_log::{log_request, Finished};
 use super::timing::RequestTiming;
 use super::{AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::core::{Limits, ParamValue};
-use crate::export::Format;
+use crate::export::{Format, OptionGroup};
 use crate::core::{Diagnostic, Severity};
 use axum::body::{Body, Bytes};
 use axum::extract::rejection::BytesRejection;
@@ -284,9 +284,9 @@ fn header_value(s: &str) -> HeaderValue {
     HeaderValue::from_str(s).unwrap_or_else(|_| HeaderValue::from_static("invalid"))
 }
 
-/// Whether `format`'s bytes are text (and worth compressing).
+/// Whether `format`'s bytes are text (and worth compressing): the registry's capability.
 fn is_text(format: Format) -> bool {
-    matches!(format, Format::Gltf | Format::StlAscii | Format::Ug)
+    format.is_text()
 }
 
 /// A model response with its ETag, cache and count headers.
@@ -451,20 +451,22 @@ async fn model_get(
     headers: HeaderMap,
 ) -> Response {
     let result = async {
+        // Every extension of the registry's formats (the first format that claims one).
+        let known = || Format::extensions().join(", ");
         let Some((name, ext)) = file.rsplit_once('.') else {
-            return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.glb, NAME.gltf, NAME.stl, NAME.3mf or NAME.png")));
+            return Err(ServiceError::NotFound(format!("`{file}`: expected NAME.EXT, EXT one of {}", known())));
         };
-        if !matches!(ext, "glb" | "gltf" | "stl" | "3mf" | "png") {
-            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension (glb, gltf, stl, 3mf, png)")));
-        }
+        // Exactly as the published pattern spells them (lower case).
+        let Some(format) = Format::from_extension_name(ext).filter(|f| f.info().extensions.contains(&ext)) else {
+            return Err(ServiceError::NotFound(format!("`{file}`: unknown extension ({})", known())));
+        };
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let mut body = RenderBody {
             source: builtin.source.to_string(),
             language: Some(builtin.language.name().to_string()),
-            format: Some(ext.to_string()),
+            format: Some(format.name().to_string()),
             ..RenderBody::default()
         };
-        parse_format(Some(ext))?;
         let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.as_deref().unwrap_or(""))?;
         for (k, v) in pairs {
             let bad = |what: &str| ServiceError::BadRequest(format!("query `{k}={v}`: {what}"));
@@ -492,15 +494,16 @@ async fn model_get(
                 },
             }
         }
-        if ext != "png" {
+        if format.info().options != OptionGroup::Preview {
             // The picture's options apply to NAME.png and are ignored for the
             // other extensions (checked all the same), so one query string
             // serves every format of a model (docs/service.md).
             let (size, view, background) = (body.size.take(), body.view.take(), body.background.take());
-            super::request::preview_options(Format::Png, size, view.as_deref(), background.as_deref())?.validate().map_err(ServiceError::BadRequest)?;
+            let picture = Format::reading(OptionGroup::Preview).first().copied().unwrap_or(format);
+            super::request::preview_options(picture, size, view.as_deref(), background.as_deref())?.validate().map_err(ServiceError::BadRequest)?;
         }
         let pinned = body.seed.is_some();
-        let text = ext == "gltf";
+        let text = is_text(format);
         let print = body.print == Some(true);
         let plan = body.plan(&Limits::defaults_for(print).clamped_to(&caller.ceiling), wants_fresh(&headers))?;
         let format = plan.request.format;

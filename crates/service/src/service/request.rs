@@ -6,7 +6,7 @@ use super::ServiceError;
 use crate::pipeline::key::{cache_key, normalize_source};
 use crate::cache::CacheKey;
 use crate::core::{Limits, OnLimit, ParamValue};
-use crate::export::{compact::parse_compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};
+use crate::export::{parse_compression, ExportOptions, Format, GltfOptions, Instancing, OptionGroup, StripsOptions};
 use crate::geom::DEFAULT_DETAIL;
 use crate::mesh::MeshLayout;
 use crate::lang::Language;
@@ -277,30 +277,22 @@ pub fn parse_language(name: Option<&str>) -> Result<Option<Language>, ServiceErr
     }
 }
 
-/// Reads a format name (also a URL extension).
+/// Reads a format: a name or an extension of the registry's
+/// (`crate::export::Format::parse`), case-insensitively; absent, the default.
 pub fn parse_format(name: Option<&str>) -> Result<Format, ServiceError> {
-    match name.map(|s| s.trim().to_ascii_lowercase()).as_deref() {
-        None | Some("") | Some("glb") => Ok(Format::Glb),
-        Some("gltf") => Ok(Format::Gltf),
-        Some("stl") => Ok(Format::Stl),
-        Some("stl-ascii") => Ok(Format::StlAscii),
-        Some("strips") => Ok(Format::Strips),
-        Some("scene") | Some("rmscene") => Ok(Format::Scene),
-        Some("3mf") => Ok(Format::ThreeMf),
-        Some("ug") => Ok(Format::Ug),
-        Some("png") => Ok(Format::Png),
-        Some(other) => {
-            let known: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
-            Err(ServiceError::BadRequest(format!("unknown format `{other}` (known: {})", known.join(", "))))
-        }
+    match name.map(str::trim) {
+        None | Some("") => Ok(Format::default()),
+        Some(n) => Format::parse(n).ok_or_else(|| ServiceError::BadRequest(format!("unknown format `{n}` (known: {})", Format::names().join(", ")))),
     }
 }
 
-/// Reads the `png` fields; they need `format=png`. The size range is checked here too,
-/// so a bad size is refused before the request is queued.
+/// Reads the `png` fields; they need a format that reads them (the
+/// registry's [`OptionGroup::Preview`]: `png`). The size range is checked
+/// here too, so a bad size is refused before the request is queued.
 pub fn preview_options(format: Format, size: Option<u32>, view: Option<&str>, background: Option<&str>) -> Result<PreviewOptions, ServiceError> {
-    if format != Format::Png && (size.is_some() || view.is_some() || background.is_some()) {
-        return Err(ServiceError::BadRequest("size, view and background need format=png".into()));
+    if format.info().options != OptionGroup::Preview && (size.is_some() || view.is_some() || background.is_some()) {
+        let pictures: Vec<String> = Format::reading(OptionGroup::Preview).iter().map(|f| format!("format={}", f.name())).collect();
+        return Err(ServiceError::BadRequest(format!("size, view and background need {}", pictures.join(" or "))));
     }
     let view = match view.map(str::trim) {
         None | Some("") => View::default(),

@@ -15,6 +15,7 @@
 
 use crate::lang::eisen::LINE_RADIUS_PARAM;
 use crate::lang::ir::{ParamDecl, ParamKind};
+use crate::export::{Format, OptionGroup};
 use crate::lang::Language;
 use serde_json::{json, Map, Value};
 
@@ -103,7 +104,10 @@ fn number(v: f64) -> Value {
 /// The render options of `POST /v1/render` (every field but `source`,
 /// `language` and `params`), with the values the parser accepts.
 fn options() -> Value {
-    let formats = ["glb", "gltf", "stl", "stl-ascii", "strips", "scene", "3mf", "ug", "png"];
+    // The registry's names; the preview options apply to the formats that read them.
+    let formats = Format::names();
+    let pictures: Vec<&str> = Format::reading(OptionGroup::Preview).iter().map(|f| f.name()).collect();
+    let picture = json!({ "properties": { "format": { "enum": pictures } }, "required": ["format"] });
     let views: Vec<&str> = crate::preview::View::ALL.iter().map(|v| v.name()).collect();
     json!({
         "type": "object",
@@ -118,7 +122,7 @@ fn options() -> Value {
                     { "type": "string", "pattern": seed_text_pattern() }
                 ]
             },
-            "format": { "enum": formats, "default": "glb" },
+            "format": { "enum": formats, "default": Format::default().name() },
             "limits": {
                 "type": "object",
                 "additionalProperties": false,
@@ -168,10 +172,10 @@ fn options() -> Value {
             "min_wall_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
             "build_volume_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
             "triangle_ceiling": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            // `size`, `view` and `background` only with `format: png`.
-            "size": { "properties": { "format": { "const": "png" } }, "required": ["format"] },
-            "view": { "properties": { "format": { "const": "png" } }, "required": ["format"] },
-            "background": { "properties": { "format": { "const": "png" } }, "required": ["format"] }
+            // `size`, `view` and `background` only with a picture format (`png`).
+            "size": picture,
+            "view": picture,
+            "background": picture
         }
     })
 }
@@ -268,14 +272,34 @@ pub fn tighten_openapi(doc: &mut Value) {
             { "type": "string", "pattern": seed_text_pattern() }
         ]
     });
-    // The models route's query: the same ranges and names; a realistic file so generated requests reach a model.
-    if let Some(params) = doc["paths"]["/v1/models/{file}"]["get"]["parameters"].as_array_mut() {
+    // The models route: the registry's extensions and MIME types; the
+    // query's ranges and names as above; a realistic file so generated
+    // requests reach a model.
+    let models = &mut doc["paths"]["/v1/models/{file}"]["get"];
+    let extensions = Format::extensions();
+    if let Some(content) = models["responses"]["200"]["content"].as_object_mut() {
+        let served = |ext: &&str| Format::from_extension_name(ext).map(Format::content_type);
+        let mimes: Vec<&str> = extensions.iter().filter_map(served).fold(Vec::new(), |mut v, m| {
+            if !v.contains(&m) {
+                v.push(m);
+            }
+            v
+        });
+        let body = content.values().next().cloned().unwrap_or_else(|| json!({}));
+        *content = mimes.into_iter().map(|m| (m.to_string(), body.clone())).collect();
+    }
+    if let Some(params) = models["parameters"].as_array_mut() {
         for p in params.iter_mut() {
             let name = p["name"].as_str().unwrap_or("").to_string();
             match name.as_str() {
                 "file" => {
+                    p["description"] = json!(format!("NAME.EXT: NAME a built-in grammar, EXT one of {}", extensions.join(", ")));
                     p["example"] = json!("gem.glb");
-                    p["schema"] = json!({ "type": "string", "examples": ["gem.glb", "hogeweg.stl", "gem.png", "tower.3mf"] });
+                    p["schema"] = json!({
+                        "type": "string",
+                        "pattern": format!("^[^/]+\\.({})$", extensions.join("|")),
+                        "examples": ["gem.glb", "hogeweg.stl", "gem.png", "tower.3mf"]
+                    });
                 }
                 "seed" => p["schema"] = json!({ "type": "integer", "minimum": 0, "maximum": u64::MAX }),
                 "detail" | "size" | "view" | "background" => p["schema"] = props[name.as_str()].clone(),

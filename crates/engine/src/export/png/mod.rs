@@ -5,9 +5,28 @@
 //! level 2; the crate versions are pinned by `Cargo.lock`) and it runs on one thread, so the same picture gives
 //! the same bytes everywhere; nothing time-dependent is written.
 
-use super::ExportError;
+use crate::export::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use crate::export::{ExportError, Provenance};
 use crate::core::budget::Budget;
 use crate::preview::Image;
+
+/// `png`: the picture's size depends on the preview options, not the
+/// model; the preview stage reserves its framebuffer and [`write_png`] its
+/// output itself, so only a fixed overhead is promised up front.
+pub const PNG: FormatInfo = FormatInfo {
+    name: "png",
+    extensions: &["png"],
+    mime: "image/png",
+    caps: Capabilities::NONE,
+    options: OptionGroup::Preview,
+    size: SizeBound { fixed: 1024, per_vertex: 0, per_triangle: 0, per_instance: 0 },
+    writer: Writer::Picture(encode),
+};
+
+/// Encodes the preview stage's picture with the model's provenance as text chunks.
+fn encode(image: &Image, provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    write_png(image, &text_chunks(provenance), budget)
+}
 
 /// `tEXt` keywords and values to write (each under 80 Latin-1 bytes; a
 /// handful, so a phone icon stays small).
@@ -17,9 +36,9 @@ pub type TextChunks = Vec<(&'static str, String)>;
 /// keyword) and, for a rendered model, its provenance (`rulemesh:seed`, …),
 /// so a picture found on its own can be traced to its request. All values
 /// are ASCII ([`Provenance::params_json`] escapes the rest), as `tEXt` needs.
-pub fn text_chunks(provenance: Option<&super::Provenance>) -> TextChunks {
-    let mut text = vec![("Software", super::Provenance::engine())];
-    text.extend(provenance.map(super::Provenance::pairs).unwrap_or_default());
+pub fn text_chunks(provenance: Option<&Provenance>) -> TextChunks {
+    let mut text = vec![("Software", Provenance::engine())];
+    text.extend(provenance.map(Provenance::pairs).unwrap_or_default());
     text
 }
 

@@ -11,8 +11,11 @@
 //! colours the bytes it writes, so nothing is lost; a palette keeps colours
 //! to one byte a record for most models.
 
-use super::scene_format::{put_hierarchy, ENTRY_BYTES, ENTRY_BYTES_SCALED, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION};
-use super::{ExportError, Provenance};
+use super::format::{
+    index_width, put_hierarchy, ENTRY_BYTES, ENTRY_BYTES_SCALED, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY,
+    RUN_MESH, RUN_PLACED, RUN_PRIMITIVES, SHAPE_BIT, SHAPE_BYTES, VERSION,
+};
+use crate::export::{ExportError, Provenance};
 use crate::core::budget::Budget;
 use crate::core::PrimitiveKind;
 use crate::geom::primitives::{self, Prototype};
@@ -22,18 +25,6 @@ use crate::model::hierarchy::Hierarchy;
 use crate::model::scene::{AffineInstance, Instance, Scene};
 use std::collections::BTreeMap;
 
-/// Run type: primitive instances placed by similarities.
-pub const RUN_PRIMITIVES: u8 = 1;
-/// Run type: primitive instances placed by general affine maps.
-pub const RUN_AFFINE: u8 = 2;
-/// Run type: placements of the file's prototype meshes.
-pub const RUN_PLACED: u8 = 3;
-/// Run type: meshes written out (swept lines, free triangles).
-pub const RUN_MESH: u8 = 4;
-/// Run type: the file's hierarchy, expanded here.
-pub const RUN_HIERARCHY: u8 = 5;
-/// Bit of a primitive record's kind byte that marks a mirrored placement.
-pub const PARITY_BIT: u8 = 0x80;
 /// Bytes of the largest instance record (an affine one with a 4-byte colour
 /// index, see `run_bytes`): what a front end promises per placement of a
 /// scene after a mesh's first, before it knows which runs it lands in.
@@ -141,14 +132,6 @@ fn affine_members(scene: &Scene, class: u32) -> impl Iterator<Item = &AffineInst
     scene.affine.iter().filter(move |a| a.class == class && a.is_drawable())
 }
 
-/// Bytes of a colour index for a palette of `n` colours.
-pub fn index_width(n: usize) -> usize {
-    match n {
-        0..=256 => 1,
-        257..=65_536 => 2,
-        _ => 4,
-    }
-}
 
 /// Bytes of one record of `run` (meshes: the whole mesh) with colour indices of `w` bytes.
 fn run_bytes(scene: &Scene, run: &Run, w: u64) -> (u64, u64) {

@@ -4,8 +4,9 @@
 //! byte by byte; this module is the reference encoder's container (header,
 //! body, CRC) and its two ways in: meshes ([`write_strips`]) and the model
 //! itself, streamed ([`survey_model`], [`write_strips_model`]).
-//! `export::strips_chunk` codes the chunks and `export::strips_decode` is the
-//! reference decoder (`clients/js/strips.mjs` and `clients/c/` its twins).
+//! `chunk` codes the chunks, `format` holds what the encoder and the
+//! decoder share, and `crate::decode::strips` is the reference decoder
+//! (`clients/js/strips.mjs` and `clients/c/` its twins).
 //!
 //! Encoding: a first pass finds the bounding box and palette of the whole
 //! model; the second cuts the model's triangles into chunks of
@@ -16,17 +17,39 @@
 //! buffer codecs on its own → optional zstd → header and CRC32. A model of
 //! one chunk is written as version 2 (one mesh), anything larger as version 3.
 
-pub use super::strips_chunk::CHUNK_TRIANGLES;
-use super::strips_chunk::{encode_chunk, weld_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
-pub use super::strips_decode::{decode_strips, decode_strips_full};
-pub use super::strips_format::*;
-use super::ExportError;
+mod chunk;
+pub mod format;
+
+pub use chunk::CHUNK_TRIANGLES;
+use chunk::{encode_chunk, weld_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
+pub use format::*;
+use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use super::{ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::{Budget, LimitExceeded, OnLimit};
 use crate::geom::strip::RESTART;
 use crate::geom::NamedMesh;
 use crate::mesh::pieces::{for_each_piece, Piece};
 use crate::mesh::MeshLayout;
 use crate::model::{Hierarchy, Scene};
+
+/// `strips`: the header, CRC and palette, plus meshoptimizer's worst
+/// cases: a vertex block costs at most 4164 bytes per 256 16-byte vertices
+/// (and one partial block), a strip at most 5 indices per triangle at 5
+/// bytes each; zstd's worst-case growth fits in the per-vertex slack.
+pub const STRIPS: FormatInfo = FormatInfo {
+    name: "strips",
+    extensions: &["strips"],
+    mime: "application/vnd.rulemesh.strips",
+    caps: Capabilities { streamed: true, ..Capabilities::NONE },
+    options: OptionGroup::Strips,
+    size: SizeBound { fixed: 16 * 1024, per_vertex: 20, per_triangle: 25, per_instance: 0 },
+    writer: Writer::Meshes(write_strips_with),
+};
+
+/// [`write_strips`] with the request's strips options.
+fn write_strips_with(meshes: &[NamedMesh], _: &ExportMeta, options: &ExportOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    write_strips(meshes, &options.strips, budget)
+}
 
 /// Checks every mesh (in order, so the first bad one is named) before any is read.
 fn check_meshes(meshes: &[NamedMesh]) -> Result<(), ExportError> {
@@ -178,7 +201,7 @@ fn mesh_chunks(meshes: &[NamedMesh], chunk: &mut dyn FnMut(&[Part<'_>]) -> Resul
 pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     opts.validate().map_err(|detail| ExportError::InvalidOptions { format: "strips", detail })?;
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
-    budget.reserve_memory(super::estimated_size(super::Format::Strips, v, t))?;
+    budget.reserve_memory(STRIPS.size.of(v, t))?;
     check_meshes(meshes)?;
     let mut survey = Survey::default();
     mesh_chunks(meshes, &mut |parts| survey.add(parts))?;
@@ -291,7 +314,7 @@ pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &St
     // A second chunk is in flight while its codecs run (below): its welded
     // vertices and triangles, at most half a working set.
     let working_set = CHUNK_WORKING_SET + CHUNK_WORKING_SET / 2;
-    budget.reserve_memory(working_set + super::estimated_size(super::Format::Strips, 0, 0))?;
+    budget.reserve_memory(working_set + STRIPS.size.fixed)?;
     let mut body = Body::new(survey.survey.chunks(), palette.as_deref());
     let append = |body: &mut Body, c: EncodedChunk, budget: &mut Budget| -> Result<(), ExportError> {
         // The output grows by what the chunk adds (its capacity may double: reserve that too).
@@ -332,6 +355,7 @@ mod tests {
     use super::*;
     use crate::core::budget::Limits;
     use crate::geom::strip::RESTART;
+    use crate::decode::strips::{decode_strips, decode_strips_full, oct_decode, StripsError};
 
     fn cube() -> Vec<NamedMesh> {
         use crate::export::gltf::tests::{all_nine, meshes_of};

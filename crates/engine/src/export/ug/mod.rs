@@ -6,11 +6,28 @@
 //! and one `i` (instance) statement places it. Vertices are welded by exact
 //! position so faces share them, as UG faces name vertices by id.
 
-use super::ExportError;
+use crate::export::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use crate::export::{ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::collections::HashMap;
 use std::fmt::Write as _;
+
+/// `ug`: `v vN x y z;` and `f (va vb vc) cN;` lines with shortest-round-trip floats.
+pub const UG: FormatInfo = FormatInfo {
+    name: "ug",
+    extensions: &["ug"],
+    mime: "text/plain; charset=utf-8",
+    caps: Capabilities { text: true, ..Capabilities::NONE },
+    options: OptionGroup::None,
+    size: SizeBound { fixed: 4 * 1024, per_vertex: 64, per_triangle: 48, per_instance: 0 },
+    writer: Writer::Meshes(write_ug_with),
+};
+
+/// [`write_ug`] (UniGrafix has no metadata).
+fn write_ug_with(meshes: &[NamedMesh], _: &ExportMeta, _: &ExportOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    write_ug(meshes, budget)
+}
 
 /// A UG identifier from a mesh name: letters, digits and `_` only.
 fn ident(name: &str, k: usize) -> String {
@@ -22,7 +39,7 @@ fn ident(name: &str, k: usize) -> String {
 pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let v: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
-    let bytes = super::estimated_size(super::Format::Ug, v, t);
+    let bytes = UG.size.of(v, t);
     budget.reserve_memory(bytes)?;
     let mut s = String::from("{ UniGrafix written by rulemesh }\n");
     let mut colours: HashMap<[u8; 4], String> = HashMap::new();
@@ -30,12 +47,12 @@ pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, Ex
     for (k, m) in meshes.iter().enumerate() {
         let name = ident(&m.name, k);
         let _ = writeln!(s, "def {name};");
-        let (points, tris) = super::welded(&m.mesh);
+        let (points, tris) = crate::export::welded(&m.mesh);
         for (n, p) in points.iter().enumerate() {
             let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
         }
         for (k, [a, b, c]) in tris {
-            if k % super::DEADLINE_EVERY == 0 {
+            if k % crate::export::DEADLINE_EVERY == 0 {
                 budget.check_deadline()?;
             }
             // The colour of the triangle's first corner (flat per face in rulemesh meshes).

@@ -29,9 +29,9 @@
 //! within half a grid step per axis. Normals are within 0.5/127 per
 //! component, so under 0.5° off. Output is deterministic.
 
-use super::gltf_buffer::{accessor, view};
-use super::gltf_document::{Attributes, Doc, MeshoptView, EXT_MESHOPT, KHR_QUANT};
-use super::{ExportError, ExportMeta};
+use super::buffer::{accessor, view};
+use super::document::{Attributes, Doc, MeshoptView, EXT_MESHOPT, KHR_QUANT};
+use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use gltf_json as json;
@@ -220,7 +220,7 @@ fn index_stream(list: &[u32], vertices: usize) -> Stream {
 }
 
 fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Prepared>, ExportError> {
-    super::gltf::check_mesh(m)?;
+    super::buffer::check_mesh(m)?;
     let mesh = &m.mesh;
     if mesh.indices.is_empty() {
         return Ok(None);
@@ -451,8 +451,8 @@ pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, b
     let mut built = build(meshes, meta, opts)?;
     budget.check_deadline()?;
     if let Some(b0) = built.root.buffers.get_mut(DATA_BUFFER as usize) {
-        let mut uri = super::gltf_buffer::DATA_URI.as_bytes().to_vec();
-        uri.extend_from_slice(&super::gltf::base64(&built.bin));
+        let mut uri = super::buffer::DATA_URI.as_bytes().to_vec();
+        uri.extend_from_slice(&super::buffer::base64(&built.bin));
         // Base64 text is ASCII.
         b0.uri = Some(String::from_utf8_lossy(&uri).into_owned());
     }

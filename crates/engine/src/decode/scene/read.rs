@@ -1,44 +1,14 @@
-//! What the scene format's writer and reader share (`docs/scene-format.md`):
-//! the constants, the errors, the byte reader, the header of either version
-//! and the hierarchy section. Version 1 (an L-system hierarchy alone,
-//! entries in f32) is still read.
+//! Reading a scene file's parts: the byte cursor, the header of either
+//! version (with its provenance block) and the hierarchy section, and the
+//! decoder's error. The layout is `docs/scene-format.md`'s; the constants
+//! are the writer's (`crate::export::scene::format`).
 
 use crate::core::PrimitiveKind;
+use crate::export::scene::format::{
+    ENTRY_BYTES, ENTRY_BYTES_SCALED, ENTRY_BYTES_V1, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION, VERSION_1,
+};
 use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
 use glam::{DQuat, DVec3};
-
-/// The first four bytes of every scene file.
-pub const MAGIC: &[u8; 4] = b"RMSC";
-/// The format version this module writes.
-pub const VERSION: u16 = 2;
-/// The first version (an L-system hierarchy alone), still read.
-pub const VERSION_1: u16 = 1;
-/// Header flag: the model was cut short by a limit.
-pub const FLAG_TRUNCATED: u16 = 1;
-/// Header flag: a provenance block follows the header (a `u32` byte length,
-/// then that many bytes of UTF-8 JSON: engine, language, seed, parameters,
-/// model key; see [`Provenance::json`](super::Provenance::json)).
-pub const FLAG_PROVENANCE: u16 = 2;
-/// Header flag (version 2): every hierarchy entry carries a uniform scale
-/// (an `f64` after its rotation, [`ENTRY_BYTES_SCALED`] bytes an entry), as
-/// MDG hierarchies need; set only when some entry's scale is not 1, so a
-/// rigid (L-system) hierarchy is written exactly as before the flag existed.
-pub const FLAG_SCALED: u16 = 4;
-/// Bytes of the version 1 header.
-pub const HEADER_BYTES_V1: usize = 24;
-/// Bytes of the version 2 header.
-pub const HEADER_BYTES: usize = 20;
-/// Bytes per leaf shape record (both versions).
-pub const SHAPE_BYTES: u64 = 28;
-/// Bytes per hierarchy entry in version 1 (f32 transform).
-pub const ENTRY_BYTES_V1: u64 = 36;
-/// Bytes per hierarchy entry in version 2 (f64 transform, so a reader walks
-/// the very numbers the server walked).
-pub const ENTRY_BYTES: u64 = 64;
-/// Bytes per hierarchy entry in version 2 under [`FLAG_SCALED`].
-pub const ENTRY_BYTES_SCALED: u64 = 72;
-/// Bit of an entry's reference that marks a leaf shape (else an object).
-pub const SHAPE_BIT: u32 = 1 << 31;
 
 /// Why bytes are not a scene file.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -80,41 +50,41 @@ pub enum SceneError {
 }
 
 /// A cursor over the input that fails with [`SceneError::Length`] at the end.
-pub(super) struct Reader<'a> {
-    pub(super) bytes: &'a [u8],
-    pub(super) at: usize,
+pub(crate) struct Reader<'a> {
+    pub(crate) bytes: &'a [u8],
+    pub(crate) at: usize,
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn take<const N: usize>(&mut self) -> Result<[u8; N], SceneError> {
+    pub(crate) fn take<const N: usize>(&mut self) -> Result<[u8; N], SceneError> {
         let s = self.slice(N)?;
         let mut a = [0u8; N];
         a.copy_from_slice(s);
         Ok(a)
     }
-    pub(super) fn slice(&mut self, n: usize) -> Result<&'a [u8], SceneError> {
+    pub(crate) fn slice(&mut self, n: usize) -> Result<&'a [u8], SceneError> {
         let end = self.at.checked_add(n).ok_or(SceneError::Length("truncated"))?;
         let s = self.bytes.get(self.at..end).ok_or(SceneError::Length("truncated"))?;
         self.at = end;
         Ok(s)
     }
-    pub(super) fn u8(&mut self) -> Result<u8, SceneError> {
+    pub(crate) fn u8(&mut self) -> Result<u8, SceneError> {
         Ok(self.take::<1>()?[0])
     }
-    pub(super) fn u16(&mut self) -> Result<u16, SceneError> {
+    pub(crate) fn u16(&mut self) -> Result<u16, SceneError> {
         Ok(u16::from_le_bytes(self.take()?))
     }
-    pub(super) fn u32(&mut self) -> Result<u32, SceneError> {
+    pub(crate) fn u32(&mut self) -> Result<u32, SceneError> {
         Ok(u32::from_le_bytes(self.take()?))
     }
-    pub(super) fn f32s<const N: usize>(&mut self) -> Result<[f32; N], SceneError> {
+    pub(crate) fn f32s<const N: usize>(&mut self) -> Result<[f32; N], SceneError> {
         let mut v = [0f32; N];
         for x in &mut v {
             *x = f32::from_le_bytes(self.take()?);
         }
         Ok(v)
     }
-    pub(super) fn f64s<const N: usize>(&mut self) -> Result<[f64; N], SceneError> {
+    pub(crate) fn f64s<const N: usize>(&mut self) -> Result<[f64; N], SceneError> {
         let mut v = [0f64; N];
         for x in &mut v {
             *x = f64::from_le_bytes(self.take()?);
@@ -122,12 +92,12 @@ impl<'a> Reader<'a> {
         Ok(v)
     }
     /// Bytes left to read.
-    pub(super) fn left(&self) -> u64 {
+    pub(crate) fn left(&self) -> u64 {
         self.bytes.len().saturating_sub(self.at) as u64
     }
     /// Fails unless `count` records of at least `each` bytes can still follow,
     /// so a count is never an allocation the payload does not justify.
-    pub(super) fn room(&self, count: u64, each: u64) -> Result<(), SceneError> {
+    pub(crate) fn room(&self, count: u64, each: u64) -> Result<(), SceneError> {
         if count.saturating_mul(each.max(1)) > self.left() {
             return Err(SceneError::Length("truncated"));
         }
@@ -136,21 +106,21 @@ impl<'a> Reader<'a> {
 }
 
 /// A scene file's header, either version.
-pub(super) struct Header {
+pub(crate) struct Header {
     /// 1 or 2.
-    pub(super) version: u16,
+    pub(crate) version: u16,
     /// Header flags.
-    pub(super) flags: u16,
+    pub(crate) flags: u16,
     /// Tessellation detail (version 2; `None` in version 1, which does not say).
-    pub(super) detail: Option<u32>,
+    pub(crate) detail: Option<u32>,
     /// Version 1: leaf shape and object counts. Version 2: palette and prototype counts.
-    pub(super) counts: (u32, u32),
+    pub(crate) counts: (u32, u32),
     /// The provenance block, when the flag says there is one.
-    pub(super) provenance: Option<serde_json::Value>,
+    pub(crate) provenance: Option<serde_json::Value>,
 }
 
 /// Reads the header (and the provenance block) of either version.
-pub(super) fn read_header(r: &mut Reader<'_>) -> Result<Header, SceneError> {
+pub(crate) fn read_header(r: &mut Reader<'_>) -> Result<Header, SceneError> {
     if &r.take::<4>()? != MAGIC {
         return Err(SceneError::NotScene);
     }
@@ -197,40 +167,10 @@ pub fn scene_provenance(bytes: &[u8]) -> Result<Option<serde_json::Value>, Scene
     Ok(read_header(&mut Reader { bytes, at: 0 })?.provenance)
 }
 
-/// Writes the hierarchy section's body (leaf shapes, then objects with f64
-/// entries, each with its scale when `scaled`, which the header's
-/// [`FLAG_SCALED`] says); the caller writes the two counts first.
-pub(super) fn put_hierarchy(out: &mut Vec<u8>, h: &Hierarchy, scaled: bool) {
-    for s in &h.shapes {
-        out.extend_from_slice(&[s.kind as u8, u8::from(s.tube), 0, 0]);
-        for x in s.scale.iter().chain(&s.offset) {
-            out.extend_from_slice(&x.to_le_bytes());
-        }
-    }
-    for o in &h.objects {
-        // Fits: the writer checked every count against 2³¹.
-        out.extend_from_slice(&(o.entries.len() as u32).to_le_bytes());
-        for e in &o.entries {
-            let r = match e.target {
-                Target::Object(i) => i,
-                Target::Shape(i) => i | SHAPE_BIT,
-            };
-            out.extend_from_slice(&r.to_le_bytes());
-            for x in e.translation.to_array().iter().chain(&e.rotation.to_array()) {
-                out.extend_from_slice(&x.to_le_bytes());
-            }
-            if scaled {
-                out.extend_from_slice(&e.scale.to_le_bytes());
-            }
-            out.extend_from_slice(&e.colour);
-        }
-    }
-}
-
 /// Reads `nshapes` leaf shapes and `nobjects` objects; `wide` entries (version
 /// 2) hold f64 transforms, narrow ones (version 1) f32; `scaled` ones (the
 /// header's [`FLAG_SCALED`]) also a positive f64 scale.
-pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wide: bool, scaled: bool) -> Result<Hierarchy, SceneError> {
+pub(crate) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wide: bool, scaled: bool) -> Result<Hierarchy, SceneError> {
     r.room(u64::from(nshapes), SHAPE_BYTES)?;
     r.room(u64::from(nobjects), 4)?;
     let mut h = Hierarchy { shapes: Vec::with_capacity(nshapes as usize), objects: Vec::with_capacity(nobjects as usize), truncated: None };
@@ -280,6 +220,6 @@ pub(super) fn read_hierarchy(r: &mut Reader<'_>, nshapes: u32, nobjects: u32, wi
 
 /// The truncation placeholder a decoded file carries: the file says a limit
 /// cut the model short, not which, so the memory limit stands for it.
-pub(super) fn truncation(flags: u16) -> Option<crate::core::LimitExceeded> {
+pub(crate) fn truncation(flags: u16) -> Option<crate::core::LimitExceeded> {
     (flags & FLAG_TRUNCATED != 0).then(|| crate::core::LimitExceeded::recorded(crate::core::Limit::Memory))
 }

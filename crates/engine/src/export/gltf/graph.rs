@@ -4,7 +4,7 @@
 //! animated grammars and camera paths have a graph, so it is kept apart from
 //! the meshes and materials of `gltf_document`.
 
-use super::gltf_buffer::{accessor, Mover, Tracks};
+use super::buffer::{accessor, Mover, Tracks};
 use crate::model::graph::{NodeGraph, Trs};
 use gltf_json as json;
 use json::validation::{Checked::Valid, USize64};

@@ -10,8 +10,8 @@
 //!   rotation, per-axis scale and colour, beside the plain meshes of
 //!   everything else.
 
-use super::gltf::{InstanceData, InstanceLayout};
-use super::{ExportError, ExportMeta};
+use super::{InstanceData, InstanceLayout};
+use crate::export::{ExportError, ExportMeta};
 use crate::core::Budget;
 use crate::geom::mesh::mesh_bytes;
 use crate::geom::{Mesh, NamedMesh};
@@ -82,7 +82,7 @@ pub fn write_scene(
     layouts.resize(counts.len(), InstanceLayout::default());
     let mut meshes = prototypes;
     meshes.extend(plain);
-    super::gltf::write_instanced(&meshes, &counts, &layouts, meta, glb, budget, &mut |sink| {
+    super::write_instanced(&meshes, &counts, &layouts, meta, glb, budget, &mut |sink| {
         plan.walk(scene, &mut |slot, p| {
             let [r, g, b, _] = p.colour.map(|c| f32::from(c) / 255.0);
             sink(slot, &InstanceData { translation: p.translation.to_array(), rotation: p.rotation.to_array(), scale: p.scale.to_array(), colour: [r, g, b] });
@@ -171,9 +171,9 @@ pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta,
         // Nothing is drawn (an axiom of symbols no turtle command draws): an
         // empty model, written as the flat writers write one — the instanced
         // writer needs a buffer to point its instances into (fuzz finding).
-        return if glb { super::gltf::write_glb(&[], meta, budget) } else { super::gltf::write_gltf(&[], meta, budget) };
+        return if glb { super::write_glb(&[], meta, budget) } else { super::write_gltf(&[], meta, budget) };
     }
-    super::gltf::write_instanced(&meshes, &mesh_counts, &layouts, meta, glb, budget, &mut |sink| {
+    super::write_instanced(&meshes, &mesh_counts, &layouts, meta, glb, budget, &mut |sink| {
         h.walk(&mut |leaf| {
             if let Some(mesh) = mesh_of(leaf) {
                 sink(mesh, &placement(leaf));

@@ -6,7 +6,8 @@
 //! STL readers take the winding and the facet normal to agree. Output bytes
 //! are accounted in the [`Budget`] before they are allocated.
 
-use super::ExportError;
+use crate::export::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use crate::export::{ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::fmt::Write as _;
@@ -15,9 +16,43 @@ use std::fmt::Write as _;
 const HEADER: usize = 80;
 /// Bytes per binary STL triangle: normal, three vertices (12 f32), attribute u16.
 const TRIANGLE_BYTES: u64 = 50;
-/// Upper bound on one ASCII facet's length (see [`write_ascii`]); matches
-/// [`estimated_size`](super::estimated_size).
+/// Upper bound on one ASCII facet's length (see [`write_ascii`]), the
+/// per-triangle size bound of [`STL_ASCII`].
 const ASCII_FACET_MAX: u64 = 300;
+
+/// `stl`: binary STL, 84 bytes of header and count and 50 a triangle.
+pub const STL: FormatInfo = FormatInfo {
+    name: "stl",
+    extensions: &["stl"],
+    mime: "model/stl",
+    caps: Capabilities { positions_only: true, ..Capabilities::NONE },
+    options: OptionGroup::None,
+    size: SizeBound { fixed: 84, per_vertex: 0, per_triangle: TRIANGLE_BYTES, per_instance: 0 },
+    writer: Writer::Meshes(write_binary_with),
+};
+
+/// `stl-ascii`: ASCII STL, at most [`ASCII_FACET_MAX`] bytes a facet. It
+/// shares `.stl` with binary STL, which claims it first: an `.stl` file is
+/// binary unless the format is named.
+pub const STL_ASCII: FormatInfo = FormatInfo {
+    name: "stl-ascii",
+    extensions: &["stl"],
+    mime: "model/stl",
+    caps: Capabilities { text: true, positions_only: true, ..Capabilities::NONE },
+    options: OptionGroup::None,
+    size: SizeBound { fixed: 1024, per_vertex: 0, per_triangle: ASCII_FACET_MAX, per_instance: 0 },
+    writer: Writer::Meshes(write_ascii_with),
+};
+
+/// Binary STL titled with the model's provenance.
+fn write_binary_with(meshes: &[NamedMesh], meta: &ExportMeta, _: &ExportOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    write_binary_titled(meshes, &title(meta.provenance.as_ref()), budget)
+}
+
+/// ASCII STL (it has no room for metadata).
+fn write_ascii_with(meshes: &[NamedMesh], _: &ExportMeta, _: &ExportOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    write_ascii(meshes, budget)
+}
 
 /// Total triangles, rejecting meshes with indices out of range (which would
 /// otherwise make the writer panic).
@@ -31,20 +66,6 @@ fn triangle_total(meshes: &[NamedMesh]) -> Result<u64, ExportError> {
         total = total.saturating_add(m.mesh.triangle_count() as u64);
     }
     Ok(total)
-}
-
-/// Drops the normals and colours of `meshes`, which STL never writes (facet
-/// normals are recomputed from the winding, and STL has no colour), so that
-/// the output of a big model is allocated beside positions and indices
-/// only: for a grid of boxes the mesh shrinks from 816 to 432 bytes a box,
-/// and the process's peak memory from 2.5× to under 2× the STL file (see
-/// `docs/benchmarks.md`, big flat outputs). The pipeline calls it between
-/// meshing and export; the writers read positions and indices only.
-pub fn keep_positions_only(meshes: &mut [NamedMesh]) {
-    for m in meshes {
-        m.mesh.normals = Vec::new();
-        m.mesh.colours = Vec::new();
-    }
 }
 
 /// Every triangle as (facet normal, three corners), in mesh order.
@@ -85,9 +106,9 @@ pub fn write_binary(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>
 /// The 80-byte header has no room for the parameters and the model key;
 /// the formats with metadata (glTF, 3MF, PNG, scene) carry those. Never starts with `solid`, which
 /// would make readers take the file for ASCII STL.
-pub fn title(provenance: Option<&super::Provenance>) -> String {
+pub fn title(provenance: Option<&crate::export::Provenance>) -> String {
     match provenance {
-        Some(p) => format!("{} {} seed={}", super::Provenance::engine(), p.language.name(), p.seed),
+        Some(p) => format!("{} {} seed={}", crate::export::Provenance::engine(), p.language.name(), p.seed),
         None => format!("rulemesh {} binary STL", crate::ENGINE_VERSION),
     }
 }
@@ -106,7 +127,7 @@ pub fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budge
     out.extend_from_slice(&header);
     out.extend_from_slice(&count32.to_le_bytes());
     for (k, (normal, corners)) in triangles(meshes).enumerate() {
-        if k % super::DEADLINE_EVERY == 0 {
+        if k % crate::export::DEADLINE_EVERY == 0 {
             budget.check_deadline()?;
         }
         for v in std::iter::once(normal).chain(corners) {
@@ -137,7 +158,7 @@ pub fn write_ascii(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>,
     let mut out = String::with_capacity(cap);
     out.push_str(HEAD);
     for (k, (n, [a, b, c])) in triangles(meshes).enumerate() {
-        if k % super::DEADLINE_EVERY == 0 {
+        if k % crate::export::DEADLINE_EVERY == 0 {
             budget.check_deadline()?;
         }
         // Writing into a String cannot fail.
@@ -255,7 +276,7 @@ mod tests {
     fn positions_only_meshes_write_the_same_bytes() {
         let meshes = meshes_of(&all_nine(), 12, MeshLayout::Merged);
         let mut lean = meshes.clone();
-        keep_positions_only(&mut lean);
+        crate::export::keep_positions_only(&mut lean);
         assert!(lean.iter().all(|m| m.mesh.normals.is_empty() && m.mesh.colours.is_empty()));
         let write = |m: &[NamedMesh], ascii: bool| if ascii { write_ascii(m, &mut Budget::new(Limits::default())) } else { write_binary(m, &mut Budget::new(Limits::default())) }.unwrap();
         for ascii in [false, true] {

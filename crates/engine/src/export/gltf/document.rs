@@ -11,9 +11,9 @@
 //! (`EXT_meshopt_compression`, `EXT_mesh_gpu_instancing`) are typed structs
 //! here, serialised into the extension maps with serde.
 
-use super::gltf_buffer::{accessor, view, Placement, Tracks};
-use super::gltf_graph::add_graph;
-use super::{ExportError, ExportMeta};
+use super::buffer::{accessor, view, Placement, Tracks};
+use super::graph::add_graph;
+use crate::export::{ExportError, ExportMeta};
 use gltf_json as json;
 use json::validation::{Checked::Valid, USize64};
 use json::Index;
@@ -273,7 +273,7 @@ impl Doc {
         let ext = Instancing { attributes };
         let others = extension(EXT_INSTANCING, ext)?;
         let Some(n) = self.root.nodes.get_mut(node.value()) else {
-            return Err(super::gltf_buffer::invalid("model", "an instanced node is missing from the document"));
+            return Err(super::buffer::invalid("model", "an instanced node is missing from the document"));
         };
         n.extensions = Some(json::extensions::scene::Node { others });
         self.require(EXT_INSTANCING);
@@ -290,7 +290,7 @@ impl Doc {
         let mut nodes = vec![self.root_node];
         if let Some(c) = &meta.camera {
             let at = c.first();
-            let camera = self.root.push(super::gltf_graph::perspective(c.name.clone(), c.yfov, c.znear, c.zfar));
+            let camera = self.root.push(super::graph::perspective(c.name.clone(), c.yfov, c.znear, c.zfar));
             nodes.push(self.root.push(json::Node {
                 camera: Some(camera),
                 name: Some("camera".to_string()),

@@ -7,8 +7,8 @@
 //! `docs/strips-format.md` ("Chunks") states the rules; the container
 //! (header, body, CRC) is `export::strips`.
 
-use super::strips_format::{oct_encode, quantise_unit, MAX_PALETTE};
-use super::ExportError;
+use super::format::{oct_encode, quantise_unit, MAX_PALETTE};
+use crate::export::ExportError;
 use crate::geom::strip;
 use crate::geom::Mesh;
 use crate::mesh::pieces::{append_piece, Piece};

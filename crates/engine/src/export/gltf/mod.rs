@@ -22,23 +22,76 @@
 //! Output is deterministic: every map is ordered and nothing time-dependent
 //! is written.
 //!
-//! This module holds the two container writers ([`write_glb`],
-//! [`write_gltf`]) and keeps the paths other code uses; the parts are in
-//! sibling modules: `gltf_buffer` (buffer layout, limits, sinks),
-//! `gltf_document` (the one document builder: meshes, materials, cameras,
-//! scene, extensions; also behind `compact` and instancing), `gltf_graph`
-//! (bones, camera node, animation) and `gltf_instanced` ([`write_instanced`]).
+//! This module holds the two formats' descriptors ([`GLB`], [`GLTF`]) and
+//! the two container writers ([`write_glb`], [`write_gltf`]); the parts are
+//! in the modules beside it: `buffer` (buffer layout, limits, sinks),
+//! `document` (the one document builder: meshes, materials, cameras,
+//! scene, extensions; also behind `compact` and instancing), `graph`
+//! (bones, camera node, animation), `gpu_instancing` (the
+//! `EXT_mesh_gpu_instancing` writer, [`write_instanced`]), `instanced`
+//! (a flat scene's repeated meshes or a hierarchy as instanced glTF) and
+//! `compact` (welded, quantised and meshopt output).
 
-use super::gltf_buffer::{
-    align4, animation_tracks, base64_len, find, invalid, place, write_buffer_until, Base64, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
-};
-use super::gltf_document::document;
-use super::{ExportError, ExportMeta};
+mod buffer;
+pub mod compact;
+mod document;
+mod gpu_instancing;
+mod graph;
+pub mod instanced;
+
+use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use super::{ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
+use buffer::{align4, animation_tracks, base64_len, find, invalid, place, write_buffer_until, Base64, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES};
+use document::document;
 
-pub(super) use super::gltf_buffer::{base64, check_mesh};
-pub use super::gltf_instanced::{write_instanced, InstanceData, InstanceLayout, InstanceSink, EXT_INSTANCING};
+pub use gpu_instancing::{write_instanced, InstanceData, InstanceLayout, InstanceSink, EXT_INSTANCING};
+
+/// What both glTF containers carry: GPU instancing of repeated meshes and
+/// hierarchies, and a node graph (bones, animation, a camera path).
+const CAPS: Capabilities = Capabilities { instancing: true, node_graph: true, ..Capabilities::NONE };
+
+/// `glb`: binary glTF 2.0.
+pub const GLB: FormatInfo = FormatInfo {
+    name: "glb",
+    extensions: &["glb"],
+    mime: "model/gltf-binary",
+    caps: CAPS,
+    options: OptionGroup::Gltf,
+    size: SizeBound { fixed: 64 * 1024, per_vertex: 28, per_triangle: 12, per_instance: instanced::SCENE_INSTANCE_BYTES },
+    writer: Writer::Meshes(write_glb_with),
+};
+
+/// `gltf`: glTF 2.0 JSON with the buffer as a data URI. base64 inflates
+/// the buffer by 4/3; instanced, it is built raw and then encoded, so an
+/// instance costs its raw and its base64 bytes.
+pub const GLTF: FormatInfo = FormatInfo {
+    name: "gltf",
+    extensions: &["gltf"],
+    mime: "model/gltf+json",
+    caps: Capabilities { text: true, ..CAPS },
+    options: OptionGroup::Gltf,
+    size: SizeBound { fixed: 64 * 1024, per_vertex: 38, per_triangle: 16, per_instance: 3 * instanced::SCENE_INSTANCE_BYTES },
+    writer: Writer::Meshes(write_gltf_with),
+};
+
+/// `glb` with the request's options: the plain writer when every compact
+/// option is off (byte for byte the plain export), else `compact`.
+fn write_glb_with(meshes: &[NamedMesh], meta: &ExportMeta, options: &ExportOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    match options.gltf.is_plain() {
+        true => write_glb(meshes, meta, budget),
+        false => compact::write_glb(meshes, meta, &options.gltf, budget),
+    }
+}
+
+/// `gltf` with the request's options, as [`write_glb_with`].
+fn write_gltf_with(meshes: &[NamedMesh], meta: &ExportMeta, options: &ExportOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    match options.gltf.is_plain() {
+        true => write_gltf(meshes, meta, budget),
+        false => compact::write_gltf(meshes, meta, &options.gltf, budget),
+    }
+}
 
 /// Writes a binary glTF (.glb): 12-byte header, JSON chunk padded with spaces,
 /// BIN chunk padded with zeros (omitted when there is no geometry).
@@ -116,7 +169,7 @@ pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) 
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::export::gltf_buffer::BASE64_ALPHABET;
+    use crate::export::gltf::buffer::BASE64_ALPHABET;
     use crate::core::budget::{Limit, Limits};
     use crate::model::scene::Scene;
     use crate::export::{estimated_size, Format};

@@ -1,11 +1,8 @@
 //! What every part of the `strips` format shares: the constants of the
-//! container, the request options, the decoder's errors and result, and the
-//! octahedral normal code (`docs/strips-format.md`). The encoder
-//! (`export::strips`, `export::strips_chunk`) and the decoder
-//! (`export::strips_decode`) both build on it, and `export::strips`
-//! re-exports it.
-
-use crate::geom::Mesh;
+//! container, the request options and the octahedral normal's encoding
+//! (`docs/strips-format.md`). The encoder (`export::strips` and its
+//! `chunk`) and the decoder (`crate::decode::strips`) both build on it, and
+//! `export::strips` re-exports it.
 
 /// The four bytes every strips file starts with.
 pub const MAGIC: [u8; 4] = *b"RMST";
@@ -14,7 +11,7 @@ pub const MAGIC: [u8; 4] = *b"RMST";
 /// ever holds more than one chunk's working arrays. The decoders read it and
 /// [`VERSION_ONE_MESH`].
 pub const VERSION: u8 = 3;
-/// The format version of a model of one chunk (at most [`CHUNK_TRIANGLES`](super::strips_chunk::CHUNK_TRIANGLES)
+/// The format version of a model of one chunk (at most [`CHUNK_TRIANGLES`](super::chunk::CHUNK_TRIANGLES)
 /// triangles): the body is that chunk's two streams, byte for byte what
 /// version 2 always was (so icons did not change). Version 2 stores the
 /// strip as its triangles (index buffer codec) where version 1 stored the
@@ -83,70 +80,6 @@ impl StripsOptions {
     }
 }
 
-/// Why a strips payload was rejected. Every message says what was wrong,
-/// so a client can tell a truncated download from a wrong file.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum StripsError {
-    /// Fewer bytes than the fixed header and trailer.
-    #[error("strips payload truncated: {len} bytes, the header and CRC alone need {min}")]
-    TooShort {
-        /// Bytes received.
-        len: usize,
-        /// Bytes needed.
-        min: usize,
-    },
-    /// The first four bytes are not `RMST`.
-    #[error("not a strips payload (bad magic)")]
-    BadMagic,
-    /// The total length disagrees with the header's body length.
-    #[error("strips payload truncated or padded: the header promises {expected} bytes, got {actual}")]
-    Length {
-        /// Bytes the header promises.
-        expected: u64,
-        /// Bytes received.
-        actual: usize,
-    },
-    /// The CRC32 at the end does not match the bytes before it.
-    #[error("strips payload corrupted: CRC32 is {computed:08x}, the file says {stored:08x}")]
-    Checksum {
-        /// The CRC stored in the file.
-        stored: u32,
-        /// The CRC of the bytes received.
-        computed: u32,
-    },
-    /// A version this decoder does not know.
-    #[error("unsupported strips version {0} (this decoder reads versions 2 and 3)")]
-    Version(u8),
-    /// Any other header field out of range.
-    #[error("invalid strips header: {0}")]
-    Header(String),
-    /// The body (or one of its streams) does not decode.
-    #[error("invalid strips body: {0}")]
-    Body(String),
-}
-
-/// A decoded strips file, with the strip itself and the quantisation facts
-/// (for clients and tests that want more than a triangle list).
-#[derive(Debug, Clone, PartialEq)]
-pub struct DecodedStrips {
-    /// The mesh; `indices` is the triangle list as stored (in strip order,
-    /// each triangle possibly rotated by the index codec, winding kept).
-    pub mesh: Mesh,
-    /// The strip index sequence rebuilt from the triangles by
-    /// [`strip::restrip`], with [`RESTART`] between strips.
-    pub strip: Vec<u32>,
-    /// Bounding box minimum (the quantisation origin).
-    pub bbox_min: [f32; 3],
-    /// Bounding box maximum.
-    pub bbox_max: [f32; 3],
-    /// Bits per position axis.
-    pub position_bits: u8,
-    /// Bits per normal component.
-    pub normal_bits: u8,
-    /// The palette, when colours are palette indices.
-    pub palette: Option<Vec<[u8; 4]>>,
-}
-
 /// Octahedral encoding of a normal to two values in `0..=max` (zero normals
 /// encode as +Z, so decoding always yields a unit vector).
 pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
@@ -160,24 +93,6 @@ pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
     }
     [quantise_unit(u * 0.5 + 0.5, max), quantise_unit(v * 0.5 + 0.5, max)]
 }
-
-/// Decodes an octahedral normal; the arithmetic (in f64, rounded to f32 at
-/// the end) is the one the spec and the JavaScript decoder use, so both
-/// decoders produce identical floats.
-pub fn oct_decode(q: [u16; 2], max: u32) -> [f32; 3] {
-    let m = f64::from(max);
-    let mut x = f64::from(q[0]) / m * 2.0 - 1.0;
-    let mut y = f64::from(q[1]) / m * 2.0 - 1.0;
-    let z = 1.0 - x.abs() - y.abs();
-    if z < 0.0 {
-        let (ox, oy) = (x, y);
-        x = (1.0 - oy.abs()) * if ox >= 0.0 { 1.0 } else { -1.0 };
-        y = (1.0 - ox.abs()) * if oy >= 0.0 { 1.0 } else { -1.0 };
-    }
-    let len = (x * x + y * y + z * z).sqrt();
-    [(x / len) as f32, (y / len) as f32, (z / len) as f32]
-}
-
 
 /// Quantises `v` in `[0, 1]` to `0..=max`.
 pub fn quantise_unit(v: f64, max: u32) -> u16 {

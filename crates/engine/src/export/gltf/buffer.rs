@@ -6,7 +6,7 @@
 //! Everything here is about bytes and offsets; the JSON document that
 //! points into the buffer is built in `gltf_document` and `gltf_graph`.
 
-use super::{ExportError, ExportMeta};
+use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::{NamedMesh, STOP_EVERY};
 use crate::model::graph::{NodeGraph, Trs};

@@ -7,12 +7,12 @@
 //! `format=glb`/`gltf` of instancing L-systems and of every scene with a
 //! repeated mesh (`super::instanced`).
 
-use super::gltf_buffer::{
+use super::buffer::{
     accessor, align4, base64_len, find, invalid, place, view, write_buffer, Base64, Sink, Tracks, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
 };
-use super::gltf_document::{plain, InstanceAccessors};
-pub use super::gltf_document::EXT_INSTANCING;
-use super::{ExportError, ExportMeta};
+use super::document::{plain, InstanceAccessors};
+pub use super::document::EXT_INSTANCING;
+use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use gltf_json as json;

@@ -8,8 +8,11 @@
 //! flat formats' meshes bit for bit. `clients/js/scene.mjs` does the same in
 //! JavaScript.
 
-use super::scene_format::{read_header, FLAG_SCALED, read_hierarchy, truncation, Header, Reader, SceneError, VERSION_1};
-use super::scene_v2::{index_width, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY, RUN_MESH, RUN_PLACED, RUN_PRIMITIVES};
+mod read;
+
+pub use read::{scene_provenance, SceneError};
+use read::{read_header, read_hierarchy, truncation, Header, Reader};
+use crate::export::scene::format::{index_width, FLAG_SCALED, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY, RUN_MESH, RUN_PLACED, RUN_PRIMITIVES, VERSION_1};
 use crate::core::PrimitiveKind;
 use crate::geom::primitives::{self, Prototype};
 use crate::geom::{Mesh, NamedMesh};
@@ -34,7 +37,7 @@ pub struct DecodedScene {
 
 /// One placement record (primitive, affine or prototype).
 #[derive(Debug, Clone, Copy)]
-pub(super) enum Record {
+enum Record {
     /// A primitive kind placed by a similarity.
     Primitive(Instance),
     /// A primitive kind placed by an affine map.
@@ -45,7 +48,7 @@ pub(super) enum Record {
 
 /// A run of a mesh as read.
 #[derive(Debug, Clone)]
-pub(super) enum Run {
+enum Run {
     /// Placement records.
     Records(Vec<Record>),
     /// A mesh written out.
@@ -55,13 +58,13 @@ pub(super) enum Run {
 }
 
 /// A version 2 file, read but not tessellated.
-pub(super) struct Parsed {
+struct Parsed {
     /// Prototype meshes.
-    pub(super) protos: Vec<Prototype>,
+    protos: Vec<Prototype>,
     /// The hierarchy section (empty when absent).
-    pub(super) hierarchy: Hierarchy,
+    hierarchy: Hierarchy,
     /// The meshes: names and runs.
-    pub(super) meshes: Vec<(String, Vec<Run>)>,
+    meshes: Vec<(String, Vec<Run>)>,
 }
 
 fn colour_of(palette: &[[u8; 4]], r: &mut Reader<'_>, w: usize, mesh: u32) -> Result<[f32; 4], SceneError> {
