@@ -272,22 +272,19 @@ pub fn tighten_openapi(doc: &mut Value) {
             { "type": "string", "pattern": seed_text_pattern() }
         ]
     });
-    // The models route: the registry's extensions and MIME types; the
-    // query's ranges and names as above; a realistic file so generated
-    // requests reach a model.
+    // What a model answer may be: every format's MIME type (the
+    // registry's), and the printability report's JSON.
+    for (path, method) in [("/v1/render", "post"), ("/v1/models/{file}", "get")] {
+        if let Some(content) = doc["paths"][path][method]["responses"]["200"]["content"].as_object_mut() {
+            let model = content.values().next().cloned().unwrap_or_else(|| json!({ "schema": { "type": "string", "format": "binary" } }));
+            *content = model_media_types().into_iter().map(|m| (m.to_string(), model.clone())).collect();
+            content.insert("application/json".into(), json!({ "schema": { "type": "object", "description": "print_report=true: the printability report" } }));
+        }
+    }
+    // The models route: the registry's extensions; the query's ranges and
+    // names as above; a realistic file so generated requests reach a model.
     let models = &mut doc["paths"]["/v1/models/{file}"]["get"];
     let extensions = Format::extensions();
-    if let Some(content) = models["responses"]["200"]["content"].as_object_mut() {
-        let served = |ext: &&str| Format::from_extension_name(ext).map(Format::content_type);
-        let mimes: Vec<&str> = extensions.iter().filter_map(served).fold(Vec::new(), |mut v, m| {
-            if !v.contains(&m) {
-                v.push(m);
-            }
-            v
-        });
-        let body = content.values().next().cloned().unwrap_or_else(|| json!({}));
-        *content = mimes.into_iter().map(|m| (m.to_string(), body.clone())).collect();
-    }
     if let Some(params) = models["parameters"].as_array_mut() {
         for p in params.iter_mut() {
             let name = p["name"].as_str().unwrap_or("").to_string();
@@ -307,6 +304,17 @@ pub fn tighten_openapi(doc: &mut Value) {
             }
         }
     }
+}
+
+/// Every format's MIME type, each once, in the registry's order.
+fn model_media_types() -> Vec<&'static str> {
+    let mut types: Vec<&'static str> = Vec::new();
+    for f in Format::ALL {
+        if !types.contains(&f.content_type()) {
+            types.push(f.content_type());
+        }
+    }
+    types
 }
 
 #[cfg(test)]
