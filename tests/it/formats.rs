@@ -119,7 +119,7 @@ fn the_cli_knows_every_format_by_name_and_by_extension() {
         assert!(help.contains(info.name), "render --help does not list {}:\n{help}", info.name);
     }
     // An extension no format has is a usage error listing the registry's.
-    let out = run(&["render", grammar, "-o", dir.path().join("x.obj").to_str().expect("utf-8")], None);
+    let out = run(&["render", grammar, "-o", dir.path().join("x.nope").to_str().expect("utf-8")], None);
     assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);
     for ext in Format::extensions() {
@@ -178,7 +178,7 @@ async fn the_service_serves_every_format_with_its_mime_type_and_lists_it_in_its_
             assert_eq!(r.bytes().await.expect("body").to_vec(), library_render(owner), "/v1/models/{GRAMMAR}.{ext}");
         }
     }
-    assert_eq!(get(format!("{base}/v1/models/{GRAMMAR}.obj")).await.status(), 404);
+    assert_eq!(get(format!("{base}/v1/models/{GRAMMAR}.nope")).await.status(), 404);
 
     // The per-grammar schema's enum and its rule for the picture options.
     let schema: Value = get(format!("{base}/v1/grammars/{GRAMMAR}/schema")).await.json().await.expect("schema");
