@@ -3,7 +3,9 @@
 //!
 //! Data flows one way: source → a language's front end (rulemesh-lang,
 //! found through [`lang::Language::front_end`]) → one [`model::Model`] →
-//! the stages ([`print`], [`mesh`], [`preview`]) → [`export`] → bytes.
+//! the stages ([`print`], [`mesh`], [`preview`]) → [`export`] → bytes,
+//! each format written as the registry in [`export`] (`formats.rs`) says;
+//! [`decode`] reads rulemesh's own formats back, for clients and tests.
 //! [`render`] ([`pipeline`]) is the only orchestrator and runs it all under
 //! one `core::Budget`. `ARCHITECTURE.md` has the code map.
 

@@ -45,7 +45,11 @@ pub struct FormatInfo {
 
 /// What a format can carry beyond triangles. Each flag is read by one
 /// decision of the pipeline or the service, named in its comment; a format
-/// sets only those its writer implements.
+/// sets only those its writer implements. `instancing`, `node_graph` and
+/// `streamed` choose routes whose writers are glTF's (`gltf::instanced`)
+/// and strips' (`strips::write_strips_model`), which the pipeline calls by
+/// name: only those formats set them, until the routes take their writers
+/// from the descriptor too.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Capabilities {
     /// The bytes are UTF-8 text (JSON, STL ASCII, UniGrafix), not binary:
