@@ -6,8 +6,8 @@
  * One parser (`parse`) reads the file twice over: rmsc_inspect runs it to
  * validate and count, rmsc_decode runs it to validate and count again (into
  * the caller's scratch), then to place. The order of its checks follows
- * the Rust reference decoder (crates/engine/src/export/scene_format.rs and
- * scene_decode.rs), so both accept exactly the same files. The float work
+ * the Rust reference decoder (crates/engine/src/decode/scene/read.rs and
+ * mod.rs), so both accept exactly the same files. The float work
  * is the shared kernel: rulemesh_tessellate.inc, rulemesh_place.inc and
  * rulemesh_shape.inc, also compiled into the JavaScript decoder's
  * WebAssembly. rulemesh_text.inc checks UTF-8 and JSON, rulemesh_walk.inc

@@ -651,7 +651,7 @@ rms_status rms_inspect(const uint8_t *data, size_t size, rms_info *info, rms_err
     return s;
 }
 
-/* Octahedral decode in double, rounded once (Rust's export::strips::oct_decode). */
+/* Octahedral decode in double, rounded once (Rust's decode::strips::oct_decode). */
 static void oct_decode(unsigned qx, unsigned qy, double m, float *out) {
     double x = (double)qx / m * 2.0 - 1.0;
     double y = (double)qy / m * 2.0 - 1.0;

@@ -11,7 +11,7 @@
  * JavaScript decoder refuses them: this file has no zstd.
  *
  * Decoded values are bit-identical to rulemesh's Rust reference decoder
- * (rulemesh::export::strips::decode_strips_full): positions and normals are
+ * (rulemesh::decode::strips::decode_strips_full): positions and normals are
  * computed in double and rounded once to float, exactly as the spec says.
  * tests/it/c_decoder.rs checks this on every grammar.
  *

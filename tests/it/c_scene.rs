@@ -17,7 +17,7 @@
 
 use crate::c_decoder::{assert_same_lines, c_lines, compile, every_grammar, exec, fnv1a64, SANITIZE, STRICT};
 use crate::common::{repo, run, tempdir};
-use rulemesh::export::scene::{decode_scene_meshes, DecodedScene};
+use rulemesh::decode::scene::{decode_scene_meshes, DecodedScene};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

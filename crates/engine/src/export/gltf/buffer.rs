@@ -4,7 +4,7 @@
 //! buffer-view and accessor records that describe those regions, and how
 //! the bytes are streamed ([`Sink`]: raw for GLB, [`Base64`] for `.gltf`).
 //! Everything here is about bytes and offsets; the JSON document that
-//! points into the buffer is built in `gltf_document` and `gltf_graph`.
+//! points into the buffer is built in `document` and `graph`.
 
 use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;

@@ -19,7 +19,7 @@
 //!    fallback buffer (buffer 1, no data, `"fallback": true`) that only
 //!    gives the decoded layout; the extension is then required.
 //!
-//! The document is built by the one glTF builder (`gltf_document::Doc`),
+//! The document is built by the one glTF builder (`document::Doc`),
 //! as the plain writer's is: same asset, root node, material, camera and
 //! scene `extras`; this module only lays out its buffers and views.
 //!

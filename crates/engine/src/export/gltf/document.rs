@@ -1,13 +1,13 @@
 //! The one glTF document builder, on typed `gltf-json`, behind every glTF
 //! writer: plain ([`document`]), compact (`super::compact`: quantised,
-//! meshopt), animated (the node graph of `gltf_graph`) and GPU-instanced
-//! (`gltf_instanced`). [`Doc`] owns the asset, the root node `"rulemesh"`,
+//! meshopt), animated (the node graph of `graph`) and GPU-instanced
+//! (`gpu_instancing`). [`Doc`] owns the asset, the root node `"rulemesh"`,
 //! the material (shared, or one per mesh), the meshes with their nodes
 //! (hung under their bone when there is a node graph), the extensions the
 //! document uses, and at [`Doc::finish`] the still camera and the scene
 //! with its `extras`. Writers describe their buffers, views and accessors
 //! through it; the bytes those point at are laid out elsewhere
-//! (`gltf_buffer`, `compact`). Extensions gltf-json does not model
+//! (`buffer`, `compact`). Extensions gltf-json does not model
 //! (`EXT_meshopt_compression`, `EXT_mesh_gpu_instancing`) are typed structs
 //! here, serialised into the extension maps with serde.
 

@@ -2,7 +2,7 @@
 //! its parent), the animated camera, and the `"rulemesh"` animation whose
 //! channels read the samples [`Tracks`] laid out after the meshes. Only
 //! animated grammars and camera paths have a graph, so it is kept apart from
-//! the meshes and materials of `gltf_document`.
+//! the meshes and materials of `document`.
 
 use super::buffer::{accessor, Mover, Tracks};
 use crate::model::graph::{NodeGraph, Trs};
