@@ -23,4 +23,4 @@ pub mod pipeline;
 pub mod preview;
 pub mod print;
 
-pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
+pub use pipeline::{render, PhaseTimes, RenderError, RenderOptions, RenderOutput, RenderRequest};
