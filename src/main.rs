@@ -161,7 +161,7 @@ fn cli_fields() -> Vec<(Option<&'static str>, &'static OptionField)> {
 /// A field's help: its doc, the values its schema names and its default.
 fn flag_help(f: &OptionField) -> String {
     let mut help = f.doc.clone();
-    if let Some(values) = f.schema.get("enum").and_then(|v| v.as_array()) {
+    if let Some(values) = f.schema.get("enum").and_then(|v| v.as_array()).filter(|_| f.cli_flag.is_none()) {
         let names: Vec<String> = values.iter().map(|v| v.as_str().map_or_else(|| v.to_string(), str::to_string)).collect();
         help.push_str(&format!(" [possible values: {}]", names.join(", ")));
     }

@@ -28,6 +28,8 @@ pub mod field;
 pub mod read;
 pub mod schema;
 mod validate;
+#[cfg(test)]
+mod tests;
 
 pub(crate) use field::declare_options;
 pub use field::{Doors, Key, Kind, OptionField};
