@@ -14,7 +14,7 @@
 
 pub use rulemesh_core::{core, geom, ENGINE_VERSION};
 pub use rulemesh_engine::{decode, export, mesh, pipeline, preview, print};
-pub use rulemesh_engine::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
+pub use rulemesh_engine::{render, PhaseTimes, RenderError, RenderOptions, RenderOutput, RenderRequest};
 pub use rulemesh_lang as lang;
 pub use rulemesh_lang::{eisen, lsystem, mdg::eval, model};
 pub use rulemesh_service::{cache, service};

@@ -3,14 +3,12 @@
 //! Exit codes: 0 ok, 2 parse or usage error, 3 limit exceeded, 1 any other failure.
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use rulemesh::core::{Limits, OnLimit, ParamValue};
-use rulemesh::export::{Compression, ExportOptions, Format, GltfOptions, Instancing, StripsOptions};
-use rulemesh::geom::DEFAULT_DETAIL;
-use rulemesh::mesh::MeshLayout;
+use rulemesh::core::Limits;
+use rulemesh::export::Format;
 use rulemesh::lang::Language;
 use rulemesh::core::Diagnostic;
-use rulemesh::{render, RenderError, RenderRequest};
-use std::collections::BTreeMap;
+use rulemesh::pipeline::options::{Doors, Kind, OptionField};
+use rulemesh::{render, RenderError, RenderOptions, RenderRequest};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -122,109 +120,117 @@ struct DecodeArgs {
 struct RenderArgs {
     /// Grammar file, or `-` for standard input.
     file: String,
-    /// Source language (default: from the file extension, then from the content).
-    #[arg(long, value_parser = choice::<Language>())]
-    language: Option<Language>,
-    /// Random seed (default: the grammar's `randseed`, else 0).
-    #[arg(long, conflicts_with = "seeds")]
-    seed: Option<u64>,
     /// Render once per seed: `A..B` (both ends included) or `1,5,9`; the
     /// output must name each file with `{seed}`, e.g. `-o out/{seed}.glb`.
-    #[arg(long, value_name = "LIST")]
+    #[arg(long, value_name = "LIST", conflicts_with = "seed")]
     seeds: Option<String>,
-    /// A grammar parameter, `name=value`; repeatable.
-    #[arg(long = "param", value_name = "NAME=VALUE")]
-    params: Vec<String>,
-    /// Output format (default: from the output extension, else glb).
-    #[arg(long, value_parser = choice::<Format>())]
-    format: Option<Format>,
     // The extensions are the format registry's (`output_help`).
     #[arg(short, long, default_value = "-", help = output_help())]
     output: String,
-    /// Deepest rule nesting.
+    /// Print the request's cache key (hex; the key the service's cache would
+    /// store this model under) instead of rendering.
     #[arg(long)]
-    max_depth: Option<u32>,
-    /// Most primitives.
-    #[arg(long)]
-    max_primitives: Option<u64>,
-    /// Most triangles.
-    #[arg(long)]
-    max_triangles: Option<u64>,
-    /// Most bytes of accounted memory (default 268435456, 256 MiB; with --print 671088640, 640 MiB).
-    #[arg(long)]
-    max_memory: Option<u64>,
-    /// Wall-clock limit in milliseconds.
-    #[arg(long)]
-    timeout: Option<u64>,
-    /// Most evaluation steps.
-    #[arg(long)]
-    max_steps: Option<u64>,
-    /// Largest source in bytes.
-    #[arg(long)]
-    max_source_bytes: Option<u64>,
-    /// What to do when a limit runs out.
-    #[arg(long, value_parser = choice::<OnLimit>(), default_value = "error")]
-    on_limit: OnLimit,
-    /// Tessellation detail (segments around round primitives).
-    #[arg(long, default_value_t = DEFAULT_DETAIL)]
-    detail: u32,
-    /// One merged mesh or one mesh per primitive kind.
-    #[arg(long, value_parser = choice::<MeshLayout>(), default_value = "merged")]
-    layout: MeshLayout,
-    /// A Structure Synth JavaScript movie only: build its K-th saved picture alone (0-based), as Structure Synth renders one picture at a time.
-    #[arg(long, value_name = "K")]
-    frame: Option<u32>,
-    /// strips format: bits per position axis (8, 10, 12 or 16).
-    #[arg(long, default_value_t = StripsOptions::default().position_bits)]
-    position_bits: u8,
-    /// strips format: bits per octahedral normal component (8 or 16).
-    #[arg(long, default_value_t = StripsOptions::default().normal_bits)]
-    normal_bits: u8,
-    /// strips format: wrap the body in zstd (the JavaScript decoder cannot read it).
-    #[arg(long)]
-    zstd: bool,
-    /// glb/gltf: weld identical vertices and drop degenerate triangles.
-    #[arg(long)]
-    weld: bool,
-    /// glb/gltf: KHR_mesh_quantization (16-bit positions, 8-bit normals; implies --weld).
-    #[arg(long)]
-    quantize: bool,
-    /// glb/gltf: buffer compression (meshopt = EXT_meshopt_compression; implies --weld).
-    #[arg(long, value_parser = choice::<Compression>(), default_value = "none")]
-    compress: Compression,
-    /// Scale and move the model into a unit box centred at the origin (every format).
-    #[arg(long)]
-    fit_unit_box: bool,
-    /// glb/gltf: gpu (each mesh placed more than once written once, EXT_mesh_gpu_instancing) or flat (plain meshes).
-    #[arg(long, value_parser = choice::<Instancing>(), default_value = "gpu")]
-    instancing: Instancing,
-    /// Merge every part into one watertight, outward-oriented solid in millimetres for 3D printing (docs/print.md).
-    #[arg(long)]
-    print: bool,
-    /// With --print: scale so the longest side is this many millimetres.
-    #[arg(long, value_name = "N", requires = "print")]
-    size_mm: Option<f64>,
-    /// With --print: write the JSON printability report instead of the model.
-    #[arg(long, requires = "print")]
-    print_report: bool,
-    /// With --print: the printer's thinnest wall or feature in mm (default 0.8); thinner walls are reported as thin_wall.
-    #[arg(long, value_name = "MM", requires = "print")]
-    min_wall_mm: Option<f64>,
-    /// With --print: the printer's build volume XxYxZ in mm (default 250x210x210); a larger model is reported as too_big.
-    #[arg(long, value_name = "XxYxZ", requires = "print")]
-    build_volume_mm: Option<String>,
-    /// With --print: the most triangles the printer accepts (default 1000000); more are reported as too_many_triangles.
-    #[arg(long, value_name = "N", requires = "print")]
-    triangle_ceiling: Option<u64>,
-    /// png: width and height in pixels (16-2048).
-    #[arg(long, default_value_t = rulemesh::preview::DEFAULT_SIZE)]
-    size: u32,
-    /// png: where the camera looks from.
-    #[arg(long, value_parser = choice::<rulemesh::preview::View>(), default_value = "three-quarter")]
-    view: rulemesh::preview::View,
-    /// png: `transparent`, or an opaque background colour `#rrggbb`.
-    #[arg(long, default_value = "transparent")]
-    background: String,
+    cache_key: bool,
+    /// The render options: one flag per field of the pipeline's declaration.
+    #[command(flatten)]
+    options: OptionFlags,
+}
+
+/// The render options as flags, one per field of the pipeline's one
+/// declaration ([`RenderOptions::fields`]; the limits' fields are flags of
+/// their own, `--max-depth`), read into the JSON object an HTTP body would
+/// be, so the one deserializer and the one validator
+/// ([`RenderOptions::plan`]) read the command line as they read the body.
+/// Written by hand (clap's derive needs a field per flag): the flags come
+/// from the declaration at run time.
+struct OptionFlags(serde_json::Map<String, serde_json::Value>);
+
+/// The declaration's fields offered on the command line, each with the
+/// group it sits in (`limits`), if any.
+fn cli_fields() -> Vec<(Option<&'static str>, &'static OptionField)> {
+    let mut out = Vec::new();
+    for f in RenderOptions::fields().iter().filter(|f| f.doors.has(Doors::CLI)) {
+        match f.group() {
+            Some(inner) => out.extend(inner.iter().filter(|g| g.doors.has(Doors::CLI)).map(|g| (Some(f.name), g))),
+            None => out.push((None, f)),
+        }
+    }
+    out
+}
+
+/// A field's help: its doc, the values its schema names and its default.
+fn flag_help(f: &OptionField) -> String {
+    let mut help = f.doc.clone();
+    if let Some(values) = f.schema.get("enum").and_then(|v| v.as_array()).filter(|_| f.cli_flag.is_none()) {
+        let names: Vec<String> = values.iter().map(|v| v.as_str().map_or_else(|| v.to_string(), str::to_string)).collect();
+        help.push_str(&format!(" [possible values: {}]", names.join(", ")));
+    }
+    if let Some(d) = f.schema.get("default").filter(|_| f.cli_flag.is_none()) {
+        help.push_str(&format!(" [default: {}]", d.as_str().map_or_else(|| d.to_string(), str::to_string)));
+    }
+    help
+}
+
+impl clap::Args for OptionFlags {
+    fn augment_args(mut cmd: clap::Command) -> clap::Command {
+        use clap::{Arg, ArgAction};
+        for (_, f) in cli_fields() {
+            let flag = f.flag();
+            let arg = Arg::new(flag.clone()).long(flag).help(flag_help(f));
+            cmd = cmd.arg(match (&f.cli_flag, f.kind) {
+                (Some(_), _) => arg.action(ArgAction::SetTrue),
+                (None, Kind::Params) => arg.action(ArgAction::Append).value_name("NAME=VALUE"),
+                (None, _) => arg.action(ArgAction::Set).value_name(f.name.to_ascii_uppercase()),
+            });
+        }
+        cmd
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+impl FromArgMatches for OptionFlags {
+    fn from_arg_matches(m: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        use serde_json::{Map, Value};
+        let bad = |msg: String| clap::Error::raw(clap::error::ErrorKind::ValueValidation, format!("{msg}\n"));
+        let mut top = Map::new();
+        for (group, f) in cli_fields() {
+            let id = f.flag();
+            let value = match (&f.cli_flag, f.kind) {
+                (Some(v), _) => m.get_flag(&id).then(|| v.clone()),
+                (None, Kind::Params) => match m.get_many::<String>(&id) {
+                    None => None,
+                    Some(pairs) => {
+                        let mut params = Map::new();
+                        for p in pairs {
+                            match p.split_once('=') {
+                                Some((k, v)) if !k.is_empty() => params.insert(k.to_string(), Value::from(v)),
+                                _ => return Err(bad(format!("--param expects NAME=VALUE, got `{p}`"))),
+                            };
+                        }
+                        Some(Value::Object(params))
+                    }
+                },
+                (None, kind) => match m.get_one::<String>(&id) {
+                    None => None,
+                    Some(text) => Some(kind.read_text(text).map_err(|e| bad(format!("--{id} `{text}`: {e}")))?),
+                },
+            };
+            let Some(value) = value else { continue };
+            match group {
+                None => top.insert(f.name.to_string(), value),
+                Some(g) => top.entry(g).or_insert_with(|| Value::Object(Map::new())).as_object_mut().and_then(|o| o.insert(f.name.to_string(), value)),
+            };
+        }
+        Ok(OptionFlags(top))
+    }
+
+    fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
+        *self = Self::from_arg_matches(m)?;
+        Ok(())
+    }
 }
 
 #[derive(Args)]
@@ -304,37 +310,6 @@ fn diagnostic_lines(file: &str, diags: &[Diagnostic]) -> Vec<String> {
     diags.iter().map(|d| format!("{file}:{d}")).collect()
 }
 
-fn parse_params(raw: &[String]) -> Result<BTreeMap<String, ParamValue>, Failure> {
-    raw.iter()
-        .map(|p| match p.split_once('=') {
-            Some((k, v)) if !k.is_empty() => Ok((k.to_string(), ParamValue::Text(v.to_string()))),
-            _ => Err(Failure::new(EXIT_USAGE, format!("--param expects NAME=VALUE, got `{p}`"))),
-        })
-        .collect()
-}
-
-/// The printer profile of `--min-wall-mm`, `--build-volume-mm` and
-/// `--triangle-ceiling` (each checked; a bad one is a usage error).
-fn printer_profile(args: &RenderArgs) -> Result<rulemesh::print::PrinterProfile, Failure> {
-    let usage = |e: rulemesh::print::PrintError| Failure::new(EXIT_USAGE, e.to_string());
-    let build = args.build_volume_mm.as_deref().map(rulemesh::print::profile::parse_build_volume).transpose().map_err(usage)?;
-    rulemesh::print::PrinterProfile::from_request(args.min_wall_mm, build.as_deref(), args.triangle_ceiling).map_err(usage)
-}
-
-fn limits_from(args: &RenderArgs) -> Limits {
-    let d = Limits::defaults_for(args.print);
-    Limits {
-        max_depth: args.max_depth.unwrap_or(d.max_depth),
-        max_primitives: args.max_primitives.unwrap_or(d.max_primitives),
-        max_triangles: args.max_triangles.unwrap_or(d.max_triangles),
-        max_memory: args.max_memory.unwrap_or(d.max_memory),
-        timeout_ms: args.timeout.unwrap_or(d.timeout_ms),
-        max_source_bytes: args.max_source_bytes.unwrap_or(d.max_source_bytes),
-        max_steps: args.max_steps.unwrap_or(d.max_steps),
-    }
-    .clamped_to(&Limits::ceiling())
-}
-
 /// The `--output` help: the extensions come from the format registry.
 fn output_help() -> String {
     format!("Output file (format from its extension: {}), or `-` for standard output.", Format::known_extensions())
@@ -368,46 +343,35 @@ fn output_format(given: Option<Format>, output: &str) -> Result<Format, Failure>
 }
 
 fn run_render(args: RenderArgs) -> Result<(), Failure> {
-    let limits = limits_from(&args);
-    // A printability report is JSON whatever the file is called (`report.json`);
-    // the format only names the model it reports on (STL unless given).
-    let format = match args.print_report {
-        true => args.format.unwrap_or(Format::Stl),
-        false => output_format(args.format, &args.output)?,
-    };
-    let req = RenderRequest {
-        language: language_for(&args.file, args.language),
-        seed: args.seed,
-        params: parse_params(&args.params)?,
-        format,
-        limits,
-        on_limit: args.on_limit,
-        detail: args.detail,
-        layout: args.layout,
-        export_options: ExportOptions {
-            strips: StripsOptions { position_bits: args.position_bits, normal_bits: args.normal_bits, zstd: args.zstd },
-            gltf: GltfOptions { weld: args.weld, quantize: args.quantize, compress: args.compress },
-            fit_unit_box: args.fit_unit_box,
-            instancing: args.instancing,
-            print: rulemesh::print::PrintOptions {
-                enabled: args.print,
-                size_um: match args.size_mm {
-                    Some(mm) => rulemesh::print::size_um(mm).map_err(|e| Failure::new(EXIT_USAGE, e.to_string()))?,
-                    None => 0,
-                },
-                report: args.print_report,
-                profile: printer_profile(&args)?,
-            },
-            preview: rulemesh::preview::PreviewOptions {
-                size: args.size,
-                view: args.view,
-                background: rulemesh::preview::parse_background(&args.background).map_err(|e| Failure::new(EXIT_USAGE, e))?,
-            },
-        },
-        script_dir: Some(script_dir_of(&args.file)),
-        frame: args.frame,
-    };
-    let source = read_source(&args.file, limits.max_source_bytes)?;
+    let usage = |e: String| Failure::new(EXIT_USAGE, format!("{}: {e}", args.file));
+    let mut fields = args.options.0;
+    // The language: as given, else from the file's extension (else the
+    // pipeline detects it from the content).
+    if !fields.contains_key("language") {
+        if let Some(l) = Language::from_extension(Path::new(&args.file)) {
+            fields.insert("language".into(), l.name().into());
+        }
+    }
+    // The format: as given, else from the output's extension. A
+    // printability report is JSON whatever the file is called
+    // (`report.json`); the format only names the model it reports on (STL
+    // unless given).
+    if !fields.contains_key("format") {
+        let format = match fields.get("print_report") == Some(&serde_json::Value::Bool(true)) {
+            true => Format::Stl,
+            false => output_format(None, &args.output)?,
+        };
+        fields.insert("format".into(), format.name().into());
+    }
+    let options: RenderOptions = serde_json::from_value(serde_json::Value::Object(fields)).map_err(|e| usage(e.to_string()))?;
+    let mut req = options.plan(&Limits::ceiling()).map_err(|e| usage(e.to_string()))?;
+    req.script_dir = Some(script_dir_of(&args.file));
+    let source = read_source(&args.file, req.limits.max_source_bytes)?;
+    if args.cache_key {
+        let key = rulemesh::pipeline::key::cache_key(&rulemesh::pipeline::key::normalize_source(&source), &req);
+        println!("{}", key.hex());
+        return Ok(());
+    }
     let Some(list) = &args.seeds else {
         return render_one(&args.file, &source, &req, &args.output);
     };

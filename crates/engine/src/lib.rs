@@ -26,4 +26,4 @@ pub mod pipeline;
 pub mod preview;
 pub mod print;
 
-pub use pipeline::{render, PhaseTimes, RenderError, RenderOutput, RenderRequest};
+pub use pipeline::{render, PhaseTimes, RenderError, RenderOptions, RenderOutput, RenderRequest};

@@ -5,8 +5,8 @@
 #![warn(missing_docs)]
 
 // The layers below, under the names the code has always used.
-use rulemesh_core::{core, geom};
-use rulemesh_engine::{export, mesh, pipeline, preview, print};
+use rulemesh_core::core;
+use rulemesh_engine::{export, pipeline, preview, print};
 use rulemesh_engine::{render, RenderError, RenderOutput, RenderRequest};
 use rulemesh_lang as lang;
 use rulemesh_lang::model;

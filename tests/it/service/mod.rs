@@ -17,6 +17,7 @@ mod playground;
 mod variations;
 mod library;
 mod print_report;
+mod options;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).

@@ -9,7 +9,7 @@ use super::*;
 
 /// `jsonschema`'s verdicts on `instances` against `schema`, after checking
 /// the schema itself against the 2020-12 meta-schema.
-fn validator_verdicts(schema: &Value, instances: &[Value]) -> Vec<bool> {
+pub(super) fn validator_verdicts(schema: &Value, instances: &[Value]) -> Vec<bool> {
     let python = std::env::var("TRIMESH_PYTHON").unwrap_or_else(|_| common::repo().join(".tools/venv/bin/python").display().to_string());
     let code = "import json, sys, jsonschema\n\
         doc = json.load(sys.stdin)\n\

@@ -2,7 +2,9 @@
 //! that determines a model's bytes.
 
 use crate::core::{Limits, ParamValue};
-use crate::export::OptionGroup;
+use crate::export::{ExportOptions, GltfOptions, Instancing, OptionGroup, StripsOptions};
+use crate::preview::PreviewOptions;
+use crate::print::{PrintOptions, PrinterProfile};
 use crate::mesh::MeshLayout;
 use crate::lang::Language;
 use crate::RenderRequest;
@@ -67,12 +69,13 @@ fn layout_name(l: MeshLayout) -> &'static str {
 /// the same model under any longer timeout, and deadline-truncated models are
 /// never cached.
 fn encode_limits(e: &mut Encoder, l: &Limits) {
-    e.u64("limits.max_depth", l.max_depth.into());
-    e.u64("limits.max_primitives", l.max_primitives);
-    e.u64("limits.max_triangles", l.max_triangles);
-    e.u64("limits.max_memory", l.max_memory);
-    e.u64("limits.max_source_bytes", l.max_source_bytes);
-    e.u64("limits.max_steps", l.max_steps);
+    let Limits { max_depth, max_primitives, max_triangles, max_memory, timeout_ms: _, max_source_bytes, max_steps } = *l;
+    e.u64("limits.max_depth", max_depth.into());
+    e.u64("limits.max_primitives", max_primitives);
+    e.u64("limits.max_triangles", max_triangles);
+    e.u64("limits.max_memory", max_memory);
+    e.u64("limits.max_source_bytes", max_source_bytes);
+    e.u64("limits.max_steps", max_steps);
 }
 
 /// The key of rendering `source` (already normalised with
@@ -97,14 +100,40 @@ pub fn model_key(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
 
 /// Everything but the limits and the `on_limit` mode, encoded, with
 /// `params` as the parameters.
+///
+/// The request is taken apart field by field, with no `..`: a field added
+/// to [`RenderRequest`] or to one of its option structs does not compile
+/// until it is encoded here or left out with its reason. Options are
+/// encoded only where they apply and only when they differ from what a
+/// request had before they existed, so older requests keep their keys (and
+/// the golden table its rows).
 fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, ParamValue>) -> Encoder {
+    let RenderRequest {
+        language,
+        seed,
+        // Given separately, in their canonical spelling for the model key.
+        params: _,
+        format,
+        // `cache_key` adds the limits and the mode; the model key leaves them out.
+        limits: _,
+        on_limit: _,
+        detail,
+        layout,
+        export_options,
+        // Where the CLI's scripts load files from. The service, whose cache
+        // the key serves, always has none (it reads library grammars only).
+        script_dir: _,
+        frame,
+    } = req;
+    let ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview } = export_options;
+    let format = *format;
     let mut e = Encoder(blake3::Hasher::new());
     e.field("engine", crate::ENGINE_VERSION.as_bytes());
-    let language = req.language.or_else(|| Language::detect(source));
+    let language = language.or_else(|| Language::detect(source));
     e.field("language", language.map_or("unknown", Language::name).as_bytes());
     e.field("source", source);
-    match req.seed {
-        Some(s) => e.u64("seed", s),
+    match seed {
+        Some(s) => e.u64("seed", *s),
         None => e.field("seed", b"grammar"),
     }
     e.u64("params", params.len() as u64);
@@ -118,52 +147,53 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
         }
     }
     // Only when given, so every other request keeps its key.
-    if let Some(k) = req.frame {
-        e.u64("frame", k.into());
+    if let Some(k) = frame {
+        e.u64("frame", (*k).into());
     }
-    e.field("format", req.format.name().as_bytes());
-    // The options of the format's own group (the registry's), each only when it can change the bytes.
-    match req.format.info().options {
-        OptionGroup::Strips => {
-            let o = &req.export_options.strips;
-            e.field("strips", &[o.position_bits, o.normal_bits, u8::from(o.zstd)]);
-        }
+    e.field("format", format.name().as_bytes());
+    // The options of the format's own group (the registry's), each only
+    // when it can change the bytes; destructured, so a new option field
+    // does not compile until it is encoded here.
+    let StripsOptions { position_bits, normal_bits, zstd } = *strips;
+    let GltfOptions { weld, quantize, compress } = *gltf;
+    let PreviewOptions { size, view, background } = *preview;
+    match format.info().options {
+        OptionGroup::Strips => e.field("strips", &[position_bits, normal_bits, u8::from(zstd)]),
         OptionGroup::Gltf => {
-            let g = &req.export_options.gltf;
-            if !g.is_plain() {
-                e.field("gltf", &[u8::from(g.weld), u8::from(g.quantize), g.compress as u8]);
+            if !gltf.is_plain() {
+                e.field("gltf", &[u8::from(weld), u8::from(quantize), compress as u8]);
             }
-            if req.export_options.instancing == crate::export::Instancing::Flat {
+            if *instancing == Instancing::Flat {
                 e.field("instancing", b"flat");
             }
         }
         OptionGroup::Preview => {
-            let o = &req.export_options.preview;
-            e.u64("preview.size", o.size.into());
-            e.field("preview.view", o.view.name().as_bytes());
-            e.field("preview.background", crate::preview::background_name(o.background).as_bytes());
+            e.u64("preview.size", size.into());
+            e.field("preview.view", view.name().as_bytes());
+            e.field("preview.background", crate::preview::background_name(background).as_bytes());
         }
         OptionGroup::None => {}
     }
-    if req.export_options.fit_unit_box {
+    if *fit_unit_box {
         e.field("fit", b"unit");
     }
-    let p = &req.export_options.print;
-    if p.enabled {
-        e.u64("print.size_um", p.size_um.into());
-        e.field("print.report", &[u8::from(p.report)]);
+    let PrintOptions { enabled, size_um, report, profile } = *print;
+    if enabled {
+        e.u64("print.size_um", size_um.into());
+        e.field("print.report", &[u8::from(report)]);
         // Only a profile other than the default: requests that name none
         // (or name the default) keep the keys they had before profiles.
-        if p.profile != crate::print::PrinterProfile::default() {
-            e.u64("print.min_wall_um", p.profile.min_wall_um.into());
-            for side in p.profile.build_um {
+        if profile != PrinterProfile::default() {
+            let PrinterProfile { min_wall_um, build_um, triangle_ceiling } = profile;
+            e.u64("print.min_wall_um", min_wall_um.into());
+            for side in build_um {
                 e.u64("print.build_um", side.into());
             }
-            e.u64("print.triangle_ceiling", p.profile.triangle_ceiling.into());
+            e.u64("print.triangle_ceiling", triangle_ceiling.into());
         }
     }
-    e.u64("detail", req.detail.into());
-    e.field("layout", layout_name(req.layout).as_bytes());
+    e.u64("detail", (*detail).into());
+    e.field("layout", layout_name(*layout).as_bytes());
     e
 }
 

@@ -26,6 +26,9 @@ use std::collections::BTreeMap;
 use std::time::Duration;
 
 pub mod key;
+pub mod options;
+
+pub use options::{InvalidOptions, LimitsOptions, RenderOptions};
 
 pub use crate::core::timing::PhaseTimes;
 

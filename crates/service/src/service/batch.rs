@@ -69,11 +69,11 @@ impl Batch {
         base.clone().plan(ceiling, false)?;
         let members = match variation {
             Variation::Seeds(seeds) => {
-                if base.seed.is_some() {
+                if base.options.seed.is_some() {
                     return Err(ServiceError::BadRequest("a batch takes `seed` or `seeds`, not both".into()));
                 }
                 check_size(seeds.len())?;
-                seeds.into_iter().enumerate().map(|(index, seed)| Member { index, seed: Some(seed), params: base.params.clone() }).collect()
+                seeds.into_iter().enumerate().map(|(index, seed)| Member { index, seed: Some(seed), params: base.options.params.clone() }).collect()
             }
             Variation::Sweep(sweep) => sweep_members(&base, &sweep)?,
         };
@@ -98,8 +98,8 @@ impl Batch {
                 let (state, base) = (state.clone(), base.clone());
                 async move {
                     let mut body = RenderBody::clone(&base);
-                    body.seed = member.seed;
-                    body.params = member.params.clone();
+                    body.options.seed = member.seed;
+                    body.options.params = member.params.clone();
                     let result = match body.plan(&ceiling, no_cache) {
                         Ok(plan) => {
                             let format = plan.request.format;
@@ -136,7 +136,7 @@ fn sweep_members(base: &RenderBody, sweep: &BTreeMap<String, Vec<ParamValue>>) -
     check_size(if sweep.is_empty() { 0 } else { total })?;
     let mut members = Vec::with_capacity(total);
     for index in 0..total {
-        let mut params = base.params.clone();
+        let mut params = base.options.params.clone();
         // Mixed radix, the last name the lowest digit.
         let mut rest = index;
         for (name, values) in sweep.iter().rev() {
@@ -145,7 +145,7 @@ fn sweep_members(base: &RenderBody, sweep: &BTreeMap<String, Vec<ParamValue>>) -
             }
             rest /= values.len();
         }
-        members.push(Member { index, seed: base.seed, params });
+        members.push(Member { index, seed: base.options.seed, params });
     }
     Ok(members)
 }

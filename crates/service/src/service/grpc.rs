@@ -1,7 +1,8 @@
 //! The gRPC API (tonic): the same requests, models and errors as HTTP.
 
-use super::request::{CheckBody, LimitsBody, RenderBody};
+use super::request::{CheckBody, RenderBody};
 use super::access_log::{log_request, Finished};
+use crate::pipeline::{LimitsOptions, RenderOptions};
 use super::{library, AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
 use crate::core::ParamValue;
@@ -37,47 +38,75 @@ pub fn server(state: Arc<AppState>) -> RulemeshServer<GrpcService> {
 }
 
 impl From<pb::RenderRequest> for RenderBody {
+    /// Field by field, with no `..`: an option added to the declaration
+    /// ([`RenderOptions`]) does not compile here until gRPC carries it.
     fn from(r: pb::RenderRequest) -> Self {
         let non_empty = |s: String| if s.is_empty() { None } else { Some(s) };
-        RenderBody {
-            source: r.source,
-            language: non_empty(r.language),
-            seed: r.seed,
-            params: r.params.into_iter().map(|(k, v)| (k, ParamValue::Text(v))).collect(),
-            format: non_empty(r.format),
-            limits: r.limits.map(|l| LimitsBody {
-                max_depth: l.max_depth,
-                max_primitives: l.max_primitives,
-                max_triangles: l.max_triangles,
-                max_memory: l.max_memory,
-                timeout_ms: l.timeout_ms,
-                max_source_bytes: l.max_source_bytes,
-                max_steps: l.max_steps,
+        let pb::RenderRequest {
+            source,
+            language,
+            seed,
+            params,
+            format,
+            limits,
+            on_limit,
+            detail,
+            // Not an option of the render: how the server looks it up (`GrpcService::serve`).
+            no_cache: _,
+            layout,
+            position_bits,
+            normal_bits,
+            zstd,
+            weld,
+            quantize,
+            compress,
+            fit,
+            instancing,
+            print,
+            size_mm,
+            print_report,
+            min_wall_mm,
+            build_volume_mm,
+            triangle_ceiling,
+            size,
+            view,
+            background,
+            frame,
+        } = r;
+        let options = RenderOptions {
+            language: non_empty(language),
+            seed,
+            params: params.into_iter().map(|(k, v)| (k, ParamValue::Text(v))).collect(),
+            format: non_empty(format),
+            limits: limits.map(|l| {
+                let pb::Limits { max_depth, max_primitives, max_triangles, max_memory, timeout_ms, max_source_bytes, max_steps } = l;
+                LimitsOptions { max_depth, max_primitives, max_triangles, max_memory, timeout_ms, max_source_bytes, max_steps }
             }),
-            on_limit: non_empty(r.on_limit),
-            detail: r.detail,
-            frame: r.frame,
-            layout: non_empty(r.layout),
+            on_limit: non_empty(on_limit),
+            detail,
+            frame,
+            layout: non_empty(layout),
             // Out-of-range values become 0, which validation rejects with a message.
-            position_bits: r.position_bits.map(|b| u8::try_from(b).unwrap_or(0)),
-            normal_bits: r.normal_bits.map(|b| u8::try_from(b).unwrap_or(0)),
-            zstd: r.zstd,
-            weld: r.weld,
-            quantize: r.quantize,
-            compress: non_empty(r.compress),
-            fit: non_empty(r.fit),
-            instancing: non_empty(r.instancing),
-            print: r.print,
-            size_mm: r.size_mm,
-            print_report: r.print_report,
-            min_wall_mm: r.min_wall_mm,
+            position_bits: position_bits.map(|b| u8::try_from(b).unwrap_or(0)),
+            normal_bits: normal_bits.map(|b| u8::try_from(b).unwrap_or(0)),
+            zstd,
+            weld,
+            quantize,
+            compress: non_empty(compress),
+            fit: non_empty(fit),
+            instancing: non_empty(instancing),
+            print,
+            size_mm,
+            print_report,
+            min_wall_mm,
             // Absent and empty are the same on the wire: the default volume.
-            build_volume_mm: if r.build_volume_mm.is_empty() { None } else { Some(r.build_volume_mm) },
-            triangle_ceiling: r.triangle_ceiling,
-            size: r.size,
-            view: non_empty(r.view),
-            background: non_empty(r.background),
-        }
+            build_volume_mm: if build_volume_mm.is_empty() { None } else { Some(build_volume_mm) },
+            triangle_ceiling,
+            size,
+            view: non_empty(view),
+            background: non_empty(background),
+        };
+        RenderBody { source, options }
     }
 }
 

@@ -27,7 +27,7 @@ pub fn batch_of(request: pb::RenderBatchRequest, ceiling: &crate::core::Limits) 
         }
         let builtin = library::find_route_name(&request.grammar)?;
         base.source = builtin.source.to_string();
-        base.language = base.language.or_else(|| Some(builtin.language.name().to_string()));
+        base.options.language = base.options.language.or_else(|| Some(builtin.language.name().to_string()));
     }
     let variation = match (request.seeds.is_empty(), request.sweep.is_empty()) {
         (false, false) => return Err(ServiceError::BadRequest("a batch takes seeds or sweep, not both".into())),

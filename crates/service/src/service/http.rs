@@ -7,8 +7,8 @@ use super::access_log::{log_request, Finished};
 use super::timing::RequestTiming;
 use super::{AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
-use crate::core::{Limits, ParamValue};
-use crate::export::{Format, OptionGroup};
+use crate::core::Limits;
+use crate::export::Format;
 use crate::core::{Diagnostic, Severity};
 use axum::body::{Body, Bytes};
 use axum::extract::rejection::BytesRejection;
@@ -398,15 +398,12 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
     })
 }
 
-/// `GET /v1/models/{name}.{glb|gltf|stl|3mf|png}?seed=N&p.<param>=V&detail=D` (a png also `size`, `view`, `background`).
+/// `GET /v1/models/{name}.{glb|gltf|stl|3mf|png}?seed=N&p.<param>=V&detail=D&…`: the
+/// declaration's query options (`request::query_body`); a png also `size`, `view`, `background`.
 #[utoipa::path(get, path = "/v1/models/{file}", tag = "render",
     params(
         ("file" = String, Path, description = "NAME.glb, NAME.gltf, NAME.stl, NAME.3mf or NAME.png, NAME a built-in grammar"),
-        ("seed" = Option<u64>, Query, description = "Random seed; pinning it makes the response immutable"),
-        ("detail" = Option<u32>, Query, description = "Tessellation detail"),
-        ("size" = Option<u32>, Query, description = "png only: width and height in pixels (16–2048, default 256)"),
-        ("view" = Option<String>, Query, description = "png only: three-quarter (default), front, top or iso"),
-        ("background" = Option<String>, Query, description = "png only: transparent (default) or an opaque #rrggbb"),
+        // The other query options are the declaration's (`pipeline::options`), listed by `schema::tighten_openapi`.
         ("p.<param>" = Option<String>, Query, description = "A grammar parameter, e.g. p.size=3"),
         ("If-None-Match" = Option<String>, Header, description = "ETags the client holds"),
         ("Cache-Control" = Option<String>, Header, description = "`no-cache` renders afresh")
@@ -461,50 +458,11 @@ async fn model_get(
             return Err(ServiceError::NotFound(format!("`{file}`: unknown extension ({})", known())));
         };
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
-        let mut body = RenderBody {
-            source: builtin.source.to_string(),
-            language: Some(builtin.language.name().to_string()),
-            format: Some(format.name().to_string()),
-            ..RenderBody::default()
-        };
         let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.as_deref().unwrap_or(""))?;
-        for (k, v) in pairs {
-            let bad = |what: &str| ServiceError::BadRequest(format!("query `{k}={v}`: {what}"));
-            match k.as_str() {
-                "seed" => body.seed = Some(v.parse().map_err(|_| bad("seed must be a whole number ≥ 0"))?),
-                "detail" => body.detail = Some(v.parse().map_err(|_| bad("detail must be a whole number"))?),
-                "quantize" => body.quantize = Some(v.parse().map_err(|_| bad("quantize must be true or false"))?),
-                "weld" => body.weld = Some(v.parse().map_err(|_| bad("weld must be true or false"))?),
-                "compress" => body.compress = Some(v.clone()),
-                "fit" => body.fit = Some(v.clone()),
-                "print" => body.print = Some(v.parse().map_err(|_| bad("print must be true or false"))?),
-                "size_mm" => body.size_mm = Some(v.parse().map_err(|_| bad("size_mm must be a number"))?),
-                "print_report" => body.print_report = Some(v.parse().map_err(|_| bad("print_report must be true or false"))?),
-                "min_wall_mm" => body.min_wall_mm = Some(v.parse().map_err(|_| bad("min_wall_mm must be a number"))?),
-                "build_volume_mm" => body.build_volume_mm = Some(crate::print::profile::parse_build_volume(&v).map_err(|e| bad(&e.to_string()))?),
-                "triangle_ceiling" => body.triangle_ceiling = Some(v.parse().map_err(|_| bad("triangle_ceiling must be a whole number"))?),
-                "size" => body.size = Some(v.parse().map_err(|_| bad("size must be a whole number of pixels"))?),
-                "view" => body.view = Some(v.clone()),
-                "background" => body.background = Some(v.clone()),
-                _ => match k.strip_prefix("p.") {
-                    Some(p) if !p.is_empty() => {
-                        body.params.insert(p.to_string(), ParamValue::Text(v.clone()));
-                    }
-                    _ => return Err(bad("unknown query parameter (seed, detail, quantize, weld, compress, fit, print, size_mm, print_report, min_wall_mm, build_volume_mm, triangle_ceiling, size, view, background, p.<name>)")),
-                },
-            }
-        }
-        if format.info().options != OptionGroup::Preview {
-            // The picture's options apply to NAME.png and are ignored for the
-            // other extensions (checked all the same), so one query string
-            // serves every format of a model (docs/service.md).
-            let (size, view, background) = (body.size.take(), body.view.take(), body.background.take());
-            let picture = Format::reading(OptionGroup::Preview).first().copied().unwrap_or(format);
-            super::request::preview_options(picture, size, view.as_deref(), background.as_deref())?.validate().map_err(ServiceError::BadRequest)?;
-        }
-        let pinned = body.seed.is_some();
+        let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?;
+        let pinned = body.options.seed.is_some();
         let text = is_text(format);
-        let print = body.print == Some(true);
+        let print = body.options.print == Some(true);
         let plan = body.plan(&Limits::defaults_for(print).clamped_to(&caller.ceiling), wants_fresh(&headers))?;
         let format = plan.request.format;
         let served = st.engine.serve(plan).await?;

@@ -8,15 +8,18 @@
 //! is a `POST /v1/render` body the server accepts as far as parameters and
 //! options go: the bounds here are the ones the request parser and the
 //! pipeline enforce (`tests/it/schema.rs` checks both sides with a JSON
-//! Schema validator). Written by hand with `serde_json::json!` because the
-//! options' allowed values (format names, bit depths, ranges) are rules of
-//! the parser, not of the Rust types utoipa sees; a test keeps the two in
-//! step (every field of [`RenderBody`](super::request::RenderBody) is here).
+//! Schema validator). The options' part is the pipeline's one declaration
+//! of them ([`RenderOptions`], `pipeline::options`), each field's schema
+//! written beside the field, so the schema, the validator and every door
+//! read one list; this module adds the grammar's parameters and tightens
+//! the OpenAPI document with it.
 
 use crate::lang::eisen::LINE_RADIUS_PARAM;
 use crate::lang::ir::{ParamDecl, ParamKind};
 use crate::export::{Format, OptionGroup};
 use crate::lang::Language;
+use crate::pipeline::options::schema::options_schema;
+use crate::pipeline::options::{Doors, RenderOptions};
 use serde_json::{json, Map, Value};
 
 /// The dialect every schema declares.
@@ -101,105 +104,17 @@ fn number(v: f64) -> Value {
     }
 }
 
-/// The render options of `POST /v1/render` (every field but `source`,
-/// `language` and `params`), with the values the parser accepts.
+/// The render options of `POST /v1/render`, with the values the validator
+/// accepts: the pipeline's one declaration ([`options_schema`]) and `source`.
 fn options() -> Value {
-    // The registry's names; the preview options apply to the formats that read them.
-    let formats = Format::names();
-    let pictures: Vec<&str> = Format::reading(OptionGroup::Preview).iter().map(|f| f.name()).collect();
-    let picture = json!({ "properties": { "format": { "enum": pictures } }, "required": ["format"] });
-    let views: Vec<&str> = crate::preview::View::ALL.iter().map(|v| v.name()).collect();
-    json!({
-        "type": "object",
-        "additionalProperties": false,
-        "properties": {
-            "source": { "type": "string", "description": "Grammar source (added by the client; the schema is about the rest)" },
-            "language": { "enum": Language::ALL.iter().map(|l| l.name()).collect::<Vec<_>>() },
-            "seed": {
-                "description": "Random seed: any 64-bit unsigned value, as a number or (beyond 2^53, where JSON numbers lose precision) a decimal string",
-                "anyOf": [
-                    { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    { "type": "string", "pattern": seed_text_pattern() }
-                ]
-            },
-            "format": { "enum": formats, "default": Format::default().name() },
-            "limits": {
-                "type": "object",
-                "additionalProperties": false,
-                "description": "Limits, each clamped to the server's ceiling",
-                "properties": {
-                    "max_depth": { "type": "integer", "minimum": 0, "maximum": u32::MAX },
-                    "max_primitives": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    "max_triangles": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    "max_memory": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    "timeout_ms": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    "max_source_bytes": { "type": "integer", "minimum": 0, "maximum": u64::MAX },
-                    "max_steps": { "type": "integer", "minimum": 0, "maximum": u64::MAX }
-                }
-            },
-            "on_limit": { "enum": ["error", "truncate"], "default": "error" },
-            "detail": { "type": "integer", "minimum": crate::geom::MIN_DETAIL, "maximum": crate::geom::MAX_DETAIL, "default": crate::geom::DEFAULT_DETAIL },
-            "layout": { "enum": ["merged", "per-kind"], "default": "merged" },
-            "frame": { "type": "integer", "minimum": 0, "maximum": u32::MAX },
-            "position_bits": { "enum": [8, 10, 12, 16], "default": 16 },
-            "normal_bits": { "enum": [8, 16], "default": 8 },
-            "zstd": { "type": "boolean", "default": false },
-            "weld": { "type": "boolean", "default": false },
-            "quantize": { "type": "boolean", "default": false },
-            "compress": { "enum": ["none", "meshopt"], "default": "none" },
-            "fit": { "enum": ["none", "unit"], "default": "none" },
-            "instancing": { "enum": ["gpu", "flat"], "default": "gpu" },
-            "print": { "type": "boolean", "default": false },
-            "size_mm": { "type": "number", "exclusiveMinimum": 0, "maximum": 10000 },
-            "print_report": { "type": "boolean", "default": false },
-            "min_wall_mm": { "type": "number", "exclusiveMinimum": 0, "maximum": crate::print::profile::MAX_MIN_WALL_MM, "default": f64::from(crate::print::profile::DEFAULT_MIN_WALL_UM) / 1000.0 },
-            "build_volume_mm": {
-                "type": "array",
-                "items": { "type": "number", "exclusiveMinimum": 0, "maximum": crate::print::profile::MAX_BUILD_MM },
-                "minItems": 3,
-                "maxItems": 3,
-                "default": crate::print::profile::DEFAULT_BUILD_UM.map(|v| f64::from(v) / 1000.0)
-            },
-            "triangle_ceiling": { "type": "integer", "minimum": 1, "maximum": crate::print::profile::MAX_TRIANGLE_CEILING, "default": crate::print::profile::DEFAULT_TRIANGLE_CEILING },
-            "size": { "type": "integer", "minimum": crate::preview::MIN_SIZE, "maximum": crate::preview::MAX_SIZE, "default": crate::preview::DEFAULT_SIZE },
-            "view": { "enum": views, "default": crate::preview::View::default().name() },
-            "background": { "type": "string", "pattern": "^\\s*(|[Tt][Rr][Aa][Nn][Ss][Pp][Aa][Rr][Ee][Nn][Tt]|#?[0-9A-Fa-f]{6})\\s*$", "default": "transparent" }
-        },
-        // `size_mm`, `print_report` and the printer profile only with `print: true`.
-        "dependentSchemas": {
-            "size_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            "print_report": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            "min_wall_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            "build_volume_mm": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            "triangle_ceiling": { "properties": { "print": { "const": true } }, "required": ["print"] },
-            // `size`, `view` and `background` only with a picture format (`png`).
-            "size": picture,
-            "view": picture,
-            "background": picture
-        }
-    })
+    let mut options = options_schema();
+    if let Some(props) = options.get_mut("properties").and_then(Value::as_object_mut) {
+        props.insert("source".into(), json!({ "type": "string", "description": "Grammar source (added by the client; the schema is about the rest)" }));
+    }
+    options
 }
 
-/// The decimal strings a seed may be sent as: 1 to 20 ASCII digits whose
-/// value is at most 2^64 − 1 (leading zeros allowed), exactly what
-/// `seed_number_or_text` accepts. Written out digit by digit from
-/// `u64::MAX`, since a JSON Schema cannot compare a string's value.
-pub fn seed_text_pattern() -> String {
-    let max = u64::MAX.to_string();
-    let digits: Vec<u32> = max.chars().filter_map(|c| c.to_digit(10)).collect();
-    // Shorter strings are always in range; a full-length one is when it
-    // matches the maximum up to some digit and is smaller there.
-    let mut branches = vec![format!("[0-9]{{1,{}}}", digits.len() - 1)];
-    for (i, &d) in digits.iter().enumerate() {
-        if d > 0 {
-            let rest = digits.len() - i - 1;
-            let tail = if rest > 0 { format!("[0-9]{{{rest}}}") } else { String::new() };
-            branches.push(format!("{}[0-{}]{tail}", &max[..i], d - 1));
-        }
-    }
-    branches.push(max);
-    format!("^({})$", branches.join("|"))
-}
+use crate::pipeline::options::schema::seed_text_pattern;
 
 /// Tightens the request schemas of the OpenAPI document (derived by utoipa
 /// from the request structs, which accept any string where an option has
@@ -248,6 +163,7 @@ pub fn tighten_openapi(doc: &mut Value) {
             }
         }
         schemas[body]["allOf"] = Value::from(rules.clone());
+        schemas[body]["additionalProperties"] = json!(false);
     }
     // A batch names its grammar once (`source` or a built-in `grammar`)
     // and varies it once (`seeds`, not with `seed`, or `sweep`): batch.rs.
@@ -261,6 +177,10 @@ pub fn tighten_openapi(doc: &mut Value) {
     if let Some(sweep) = schemas["BatchBody"]["properties"].get_mut("sweep") {
         sweep["additionalProperties"]["minItems"] = json!(1);
         sweep["minProperties"] = json!(1);
+    }
+    // The limits' component, as strict as the body's `limits`.
+    if let Some(limits) = schemas["RenderBody"]["properties"]["limits"]["anyOf"].get(0).cloned() {
+        schemas["LimitsBody"] = limits;
     }
     if let Some(lang) = schemas["CheckBody"]["properties"].get_mut("language") {
         *lang = nullable(&props["language"], Some(lang));
@@ -281,27 +201,40 @@ pub fn tighten_openapi(doc: &mut Value) {
             content.insert("application/json".into(), json!({ "schema": { "type": "object", "description": "print_report=true: the printability report" } }));
         }
     }
-    // The models route: the registry's extensions; the query's ranges and
-    // names as above; a realistic file so generated requests reach a model.
-    let models = &mut doc["paths"]["/v1/models/{file}"]["get"];
+    // The models route's query: the declaration's query options, with the
+    // same ranges and names, and a realistic file (of the registry's
+    // extensions) so generated requests reach a model. The print options
+    // are read from a query too but not listed: a query cannot say that
+    // `size_mm` needs `print=true`, and a model may be unprintable, so a
+    // generator would be told that requests the server refuses are valid.
     let extensions = Format::extensions();
-    if let Some(params) = models["parameters"].as_array_mut() {
+    if let Some(params) = doc["paths"]["/v1/models/{file}"]["get"]["parameters"].as_array_mut() {
+        let listed = RenderOptions::fields().iter().filter(|f| {
+            let print = f.name == "print" || f.needs.as_ref().is_some_and(|(other, _)| *other == "print");
+            f.doors.has(Doors::QUERY) && f.name != "params" && !print
+        });
+        let mut generated: Vec<Value> = listed
+            .map(|f| {
+                // A seed in a query is its decimal digits, read as a whole number.
+                let schema = if f.name == "seed" { json!({ "type": "integer", "minimum": 0, "maximum": u64::MAX }) } else { f.schema.clone() };
+                json!({ "name": f.name, "in": "query", "required": false, "description": f.doc, "schema": schema })
+            })
+            .collect();
         for p in params.iter_mut() {
-            let name = p["name"].as_str().unwrap_or("").to_string();
-            match name.as_str() {
-                "file" => {
-                    p["description"] = json!(format!("NAME.EXT: NAME a built-in grammar, EXT one of {}", extensions.join(", ")));
-                    p["example"] = json!("gem.glb");
-                    p["schema"] = json!({
-                        "type": "string",
-                        "pattern": format!("^[^/]+\\.({})$", extensions.join("|")),
-                        "examples": ["gem.glb", "hogeweg.stl", "gem.png", "tower.3mf"]
-                    });
-                }
-                "seed" => p["schema"] = json!({ "type": "integer", "minimum": 0, "maximum": u64::MAX }),
-                "detail" | "size" | "view" | "background" => p["schema"] = props[name.as_str()].clone(),
-                _ => {}
+            if p["name"] == "file" {
+                p["description"] = json!(format!("NAME.EXT: NAME a built-in grammar, EXT one of {}", extensions.join(", ")));
+                p["example"] = json!("gem.glb");
+                p["schema"] = json!({
+                    "type": "string",
+                    "pattern": format!("^[^/]+\\.({})$", extensions.join("|")),
+                    "examples": ["gem.glb", "hogeweg.stl", "gem.png", "tower.3mf"]
+                });
             }
+        }
+        params.retain(|p| p["in"] != "query" || p["name"] == "p.<param>");
+        let at = params.iter().position(|p| p["name"] == "file").map_or(0, |i| i + 1);
+        for (i, g) in generated.drain(..).enumerate() {
+            params.insert(at + i, g);
         }
     }
 }
