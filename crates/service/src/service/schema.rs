@@ -16,7 +16,7 @@
 
 use crate::lang::eisen::LINE_RADIUS_PARAM;
 use crate::lang::ir::{ParamDecl, ParamKind};
-use crate::export::{Format, OptionGroup};
+use crate::export::Format;
 use crate::lang::Language;
 use crate::pipeline::options::schema::options_schema;
 use crate::pipeline::options::{Doors, RenderOptions};
