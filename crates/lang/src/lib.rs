@@ -25,6 +25,7 @@ pub mod frontend;
 pub mod ir;
 pub mod model;
 
+pub mod cfdg;
 pub mod eisen;
 pub mod etol;
 pub mod lsystem;
@@ -74,6 +75,8 @@ languages! {
     Ug => ug::Ug,
     /// The ETOL token stream of Haglund 2009, Appendix A, read as an L-system; see `docs/lsystem.md`.
     Etol => etol::Etol,
+    /// Context Free Design Grammar (CFDG 2.x and 3.x, as cfdg 3.4 reads and draws it); see `docs/cfdg.md`.
+    Cfdg => cfdg::Cfdg,
 }
 
 impl crate::core::Choice for Language {
