@@ -43,8 +43,8 @@ fn recursion_ends_at_minimum_size() {
 
 #[test]
 fn hostile_inputs_end_in_typed_errors() {
-    // Grows without end: ends at the step or primitive limit.
-    let e = render("startshape A\nshape A {\n SQUARE []\n A [x 1 s 1.5]\n}\n", "A").unwrap_err();
+    // Never draws, so never has bounds to stop by: ends at the step limit.
+    let e = render("startshape A\nshape A {\n A [x 1]\n A [x -1]\n}\n", "A").unwrap_err();
     assert!(matches!(e, EvalError::Limit(_)), "{e:?}");
     let e = render("startshape A\nshape A {\n loop 1e15 [] SQUARE []\n}\n", "A").unwrap_err();
     assert!(matches!(e, EvalError::Limit(_)), "{e:?}");

@@ -109,6 +109,21 @@ pub fn polygon(kind: usize) -> &'static [(f64, f64)] {
     }
 }
 
+/// The polygon cfdg measures a primitive's bounds by: its outline stroked
+/// with cfdg's default width 0.1 and miter joins (the primitives'
+/// `CommandInfo` has no fill flag at bounds time, `pathIterator::boundingRect`
+/// strokes it, `agg_vcgen_stroke`), which for these regular polygons moves
+/// each vertex out along its bisector by `0.05 / sin(half angle)`.
+pub fn bounds_polygon(kind: usize) -> Vec<(f64, f64)> {
+    let (r, half_angle) = match kind {
+        0 => (0.5, 67.5f64),
+        1 => (std::f64::consts::FRAC_1_SQRT_2, 45.0),
+        _ => (0.577_350_269_189_625_8, 30.0),
+    };
+    let k = (r + 0.05 / half_angle.to_radians().sin()) / r;
+    polygon(kind).iter().map(|&(x, y)| (x * k, y * k)).collect()
+}
+
 /// libstdc++'s `__push_heap`: sifts `value` up from `hole` to no higher than `top`.
 fn push_up<T>(v: &mut [T], mut hole: usize, top: usize, value: T, less: &impl Fn(&T, &T) -> bool)
 where

@@ -3,7 +3,7 @@
 //! and its loop, transform, if and switch forms), charging the [`Budget`].
 
 use super::expr::{scalar, Scope};
-use super::frame::{polygon, pop_heap, push_heap, Bounds};
+use super::frame::{bounds_polygon, pop_heap, push_heap, Bounds};
 use super::state::{Hsba, State};
 use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
 use crate::cfdg::rand64::Rand64;
@@ -33,6 +33,7 @@ struct Renderer<'g> {
     shape_count: u64,
     max_shapes: u64,
     budget: &'g mut Budget,
+    polygons: [Vec<(f64, f64)>; 3],
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Vec<Term>, Rand64)>, key: usize, make: impl FnOnce() -> (Vec<Term>, Rand64)) -> &'a (Vec<Term>, Rand64) {
@@ -84,6 +85,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         shape_count: 0,
         max_shapes,
         budget,
+        polygons: [bounds_polygon(0), bounds_polygon(1), bounds_polygon(2)],
     };
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
@@ -153,7 +155,7 @@ impl Renderer<'_> {
             }
             return Ok(());
         }
-        let b = Bounds::of_polygon(&state.transform, polygon(shape));
+        let b = Bounds::of_polygon(&state.transform, &self.polygons[shape]);
         if !b.valid() {
             return Ok(());
         }
