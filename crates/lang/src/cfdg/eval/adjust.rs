@@ -42,6 +42,67 @@ pub fn ordered(adj: &Adjustment) -> Vec<Term> {
     out
 }
 
+/// An adjustment ready to apply: its constant geometric terms folded into
+/// one map, as cfdg folds them at compile time (`ASTmodification::simplify`:
+/// a constant term is folded unless a non-constant term of its class came
+/// before it), and the rest in evaluation order. Folding changes rounding,
+/// and rounding decides ties between equal areas in the expansion order, so
+/// it is done exactly as cfdg does it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Prepared {
+    /// The folded constant geometry, applied first.
+    pub folded: Option<Affine>,
+    /// The terms applied after it, in order.
+    pub rest: Vec<Term>,
+}
+
+fn is_constant(e: &crate::cfdg::syntax::Expr) -> bool {
+    use crate::cfdg::syntax::Expr;
+    match e {
+        Expr::Num(..) => true,
+        Expr::Var(..) => false,
+        Expr::Unary(_, a) | Expr::Paren(a) => is_constant(a),
+        Expr::Binary(_, a, b) => is_constant(a) && is_constant(b),
+        Expr::Cons(v) => v.iter().all(is_constant),
+        Expr::Call(name, args, _) => !name.starts_with("rand") && args.as_ref().as_ref().map_or(true, is_constant),
+    }
+}
+
+fn geometric(k: TermKind) -> bool {
+    matches!(k, TermKind::X | TermKind::Y | TermKind::Size | TermKind::Rotate | TermKind::Skew | TermKind::Flip | TermKind::Transform)
+}
+
+/// Prepares `adj` for repeated application.
+pub fn prepare(adj: &Adjustment) -> Prepared {
+    let terms = ordered(adj);
+    let mut folded: Option<State> = None;
+    let mut rest = Vec::new();
+    let mut blocked = false;
+    let scope = Scope::default();
+    let mut rand = Rand64::default();
+    for t in terms {
+        if geometric(t.kind) && !blocked && is_constant(&t.args) && t.kind != TermKind::X || (t.kind == TermKind::X && !blocked && is_constant(&t.args) && !matches!(&t.args, crate::cfdg::syntax::Expr::Cons(v) if v.len() == 3)) {
+            let s = folded.get_or_insert_with(State::initial);
+            if apply(std::slice::from_ref(&t), s, &scope, &mut rand).is_ok() {
+                continue;
+            }
+        }
+        if geometric(t.kind) {
+            blocked = true;
+        }
+        rest.push(t);
+    }
+    Prepared { folded: folded.map(|s| s.transform), rest }
+}
+
+/// Applies a prepared adjustment to `s`.
+pub fn apply_prepared(p: &Prepared, s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
+    if let Some(m) = &p.folded {
+        s.transform.premultiply(m);
+    }
+    apply(&p.rest, s, scope, rand)
+}
+
 /// Applies `terms` to `s`, drawing random numbers from `rand`.
 pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
     let mut a = Vec::with_capacity(6);

@@ -4,10 +4,11 @@
 
 use super::expr::{scalar, Scope};
 use super::frame::{bounds_polygon, pop_heap, push_heap, Bounds};
+use super::adjust::{apply_prepared, prepare, Prepared};
 use super::state::{Hsba, State};
 use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
 use crate::cfdg::rand64::Rand64;
-use crate::cfdg::syntax::{self, define_seed, loop_seed, term_seed, Adjustment, Element, Grammar, Term, Value};
+use crate::cfdg::syntax::{self, define_seed, loop_seed, term_seed, Adjustment, Element, Grammar, Value};
 use crate::core::budget::Budget;
 use crate::model::EvalError;
 use std::collections::HashMap;
@@ -20,7 +21,7 @@ const FIXED_BORDER: f64 = 8.0;
 struct Renderer<'g> {
     rules: Rules<'g>,
     opts: Options,
-    cache: HashMap<usize, (Vec<Term>, Rand64)>,
+    cache: HashMap<usize, (Prepared, Rand64)>,
     scope: Scope,
     current: Rand64,
     unfinished: Vec<Unfinished>,
@@ -36,7 +37,7 @@ struct Renderer<'g> {
     polygons: [Vec<(f64, f64)>; 3],
 }
 
-fn cached<'a>(cache: &'a mut HashMap<usize, (Vec<Term>, Rand64)>, key: usize, make: impl FnOnce() -> (Vec<Term>, Rand64)) -> &'a (Vec<Term>, Rand64) {
+fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
     cache.entry(key).or_insert_with(make)
 }
 
@@ -103,8 +104,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     };
     r.current.xor(seed);
     r.current.next_u64();
-    let terms = terms_of(&start.adjust);
-    super::adjust::apply(&terms, &mut init, &r.scope, &mut r.current)?;
+    apply_prepared(&prepare(&start.adjust), &mut init, &r.scope, &mut r.current)?;
     init.seed = r.current;
     r.process(start_shape, init)?;
     let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
@@ -170,9 +170,9 @@ impl Renderer<'_> {
         Ok(())
     }
 
-    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str) -> (Vec<Term>, Rand64) {
+    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str) -> (Prepared, Rand64) {
         let key = adj as *const Adjustment as usize;
-        cached(&mut self.cache, key, || (terms_of(adj), term_seed(adj, shape))).clone()
+        cached(&mut self.cache, key, || (prepare(adj), term_seed(adj, shape))).clone()
     }
 
     fn body(&mut self, body: &[Element], parent: &State) -> Result<(), EvalError> {
@@ -192,7 +192,7 @@ impl Renderer<'_> {
                 let mut child = *parent;
                 self.current.xor(seed);
                 self.current.next_u64();
-                super::adjust::apply(&terms, &mut child, &self.scope, &mut self.current)?;
+                apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
                 child.seed = self.current;
                 child.seed.next_u64();
                 self.process(shape, child)
@@ -200,7 +200,7 @@ impl Renderer<'_> {
             Element::Loop(l) => {
                 let key = l as *const syntax::Loop as usize;
                 let var = l.var.clone().unwrap_or_else(|| "~~inaccessiblevar~~".into());
-                let (terms, seed) = cached(&mut self.cache, key, || (terms_of(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).clone();
+                let (terms, seed) = cached(&mut self.cache, key, || (prepare(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).clone();
                 self.current.xor(seed);
                 let mut a = Vec::new();
                 super::expr::eval(&l.args, &self.scope, &mut self.current, &mut a)?;
@@ -224,7 +224,7 @@ impl Renderer<'_> {
                     self.budget.charge_step()?;
                     self.scope.vars[slot].1[0] = index;
                     self.body(&l.body, &child)?;
-                    super::adjust::apply(&terms, &mut child, &self.scope, &mut self.current)?;
+                    apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
                     index += step;
                 }
                 self.scope.vars[slot].1[0] = index;
@@ -245,8 +245,7 @@ impl Renderer<'_> {
                 let clone_seed = self.current;
                 for adj in adjusts {
                     let mut child = *parent;
-                    let terms = terms_of(adj);
-                    super::adjust::apply(&terms, &mut child, &self.scope, &mut self.current)?;
+                    apply_prepared(&prepare(adj), &mut child, &self.scope, &mut self.current)?;
                     self.current.next_u64();
                     let depth = self.scope.vars.len();
                     for e in body {
