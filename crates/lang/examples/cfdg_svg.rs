@@ -1,0 +1,36 @@
+//! Renders a CFDG file to SVG as `cfdg -V` would (`scripts/cfdg-compat`):
+//! `cfdg_svg FILE VARIATION SIZE OUT.svg`. Exit status 2 on a parse error,
+//! 3 on an evaluation error, with the message on stderr.
+
+use rulemesh_core::core::budget::{Budget, Limits};
+use rulemesh_lang::cfdg::{eval, parse_checked, svg, variation};
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    if args.len() != 5 {
+        eprintln!("usage: cfdg_svg FILE VARIATION SIZE OUT.svg");
+        std::process::exit(1);
+    }
+    let src = std::fs::read(&args[1]).unwrap_or_default();
+    let g = match parse_checked(&src) {
+        Ok(g) => g,
+        Err(e) => {
+            eprintln!("parse: {e}");
+            std::process::exit(2);
+        }
+    };
+    let size: u32 = args[3].parse().unwrap_or(200);
+    let opts = eval::Options { width: size, height: size, variation: variation::from_code(&args[2]).unwrap_or(1), ..eval::Options::default() };
+    let mut budget = Budget::new(Limits::default());
+    match eval::render(&g, &opts, &mut budget) {
+        Ok(p) => {
+            if std::fs::write(&args[4], svg::write(&p)).is_err() {
+                std::process::exit(1);
+            }
+        }
+        Err(e) => {
+            eprintln!("eval: {e}");
+            std::process::exit(3);
+        }
+    }
+}
