@@ -3,7 +3,7 @@
 //! 3 on an evaluation error, with the message on stderr.
 
 use rulemesh_core::core::budget::{Budget, Limits};
-use rulemesh_lang::cfdg::{eval, parse_checked, svg, variation};
+use rulemesh_lang::cfdg::{eval, parse_checked_in, svg, variation};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -12,7 +12,8 @@ fn main() {
         std::process::exit(1);
     }
     let src = std::fs::read(&args[1]).unwrap_or_default();
-    let g = match parse_checked(&src) {
+    let dir = std::path::Path::new(&args[1]).parent().map(|d| d.to_path_buf()).unwrap_or_default();
+    let g = match parse_checked_in(&src, Some(&dir)) {
         Ok(g) => g,
         Err(e) => {
             eprintln!("parse: {e}");

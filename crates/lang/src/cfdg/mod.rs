@@ -31,9 +31,28 @@ pub const VARIATION_PARAM: &str = "variation";
 /// The front end of `language: "cfdg"`.
 pub struct Cfdg;
 
-/// Parses and checks `source` (every shape named has rules).
+/// Parses and checks `source` (every shape named has rules); `import` is an error.
 pub fn parse_checked(source: &[u8]) -> Result<syntax::Grammar, ParseError> {
-    let g = syntax::parse(source)?;
+    parse_checked_in(source, None)
+}
+
+/// Reads an imported file `name` from `dir`: a bare file name only (no
+/// folder, no `..`), so a design reads nothing but the files beside it.
+pub fn read_beside(dir: &std::path::Path, name: &str) -> Option<Vec<u8>> {
+    let ok = !name.is_empty() && !name.contains(['/', '\\']) && !name.starts_with('.');
+    if !ok {
+        return None;
+    }
+    std::fs::read(dir.join(name)).ok()
+}
+
+/// Parses and checks `source`, importing files from `dir` when given (the
+/// CLI's folder of the design; the service gives none).
+pub fn parse_checked_in(source: &[u8], dir: Option<&std::path::Path>) -> Result<syntax::Grammar, ParseError> {
+    let g = match dir {
+        Some(d) => syntax::parse_with(source, &|name: &str| read_beside(d, name))?,
+        None => syntax::parse(source)?,
+    };
     eval::check(&g)?;
     Ok(g)
 }
@@ -73,7 +92,7 @@ impl FrontEnd for Cfdg {
         parse_checked(source).map(|_| Vec::new())
     }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
-        let g = parse_checked(source)?;
+        let g = parse_checked_in(source, req.script_dir)?;
         clock.lap(Phase::Parse);
         let var = variation_of(req)?;
         let opts = eval::Options { variation: var, ..eval::Options::default() };

@@ -107,8 +107,10 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
     }
     let mut by_shape: Vec<Vec<(f64, f64, bool, &[Element])>> = vec![Vec::new(); 3];
     for r in &g.rules {
-        if r.name == "FILL" || PRIMITIVES.contains(&r.name.as_str()) {
-            return Err(ParseError::single(r.span, format!("`{}` is a primitive and cannot have rules", r.name)));
+        // A rule for a primitive's name replaces the primitive (cfdg's shape
+        // type becomes a rule type, `CFDGImpl::addRule`); FILL cannot have rules.
+        if r.name == "FILL" {
+            return Err(ParseError::single(r.span, "`FILL` is a path command and cannot have rules"));
         }
         let n = index.len();
         let i = *index.entry(r.name.as_str()).or_insert(n);

@@ -59,6 +59,13 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
             scope.vars.push((d.name.clone(), v));
         }
     }
+    // Settings that change the picture's framing or copy its shapes are not
+    // rendered yet; refusing them beats drawing something cfdg does not.
+    for d in &g.defines {
+        if matches!(d.name.as_str(), "CF::Tile" | "CF::Size" | "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
+            return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
+        }
+    }
     let min_size = setting(g, "CF::MinimumSize", &scope)?.unwrap_or(opts.min_size);
     let min_size = if min_size > 0.0 { min_size } else { 0.3 };
     let mut max_shapes = setting(g, "CF::MaxShapes", &scope)?.map(|v| v.max(1.0) as u64).unwrap_or(opts.max_shapes);
@@ -146,7 +153,7 @@ impl Renderer<'_> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
-        if shape >= 3 {
+        if shape >= 3 || !self.rules.by_shape[shape].is_empty() {
             let area = state.area();
             if !self.bounds.valid() || area * self.scale_area >= self.min_area {
                 self.budget.reserve_memory(SHAPE_BYTES)?;

@@ -30,11 +30,18 @@ pub struct Token {
     pub tok: Tok,
     /// Where it starts.
     pub span: Span,
+    /// Whether its file is written in the 3.x syntax (each file is read in its own).
+    pub v3: bool,
+    /// Whether it comes from an `import`ed or `include`d file.
+    pub included: bool,
 }
 
 const PUNCTS: &[&str] = &[
     "+/-", "..", "<=", ">=", "==", "<>", "!=", "&&", "||", "^^", "--", "[", "]", "{", "}", "(", ")", ",", "*", "/", "+", "-", "^", "<", ">", "=", "!", "|", ":", ";",
 ];
+
+/// The Unicode spellings of operators, which end a name.
+const UNICODE_OPS: [&str; 6] = ["\u{2026}", "\u{b1}", "\u{2264}", "\u{2265}", "\u{2260}", "\u{221e}"];
 
 /// Splits `src` into tokens; an unknown character or an unterminated
 /// comment or string is a [`ParseError`] at its position.
@@ -79,21 +86,25 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             if b[i + 1 + n] != b'"' {
                 return Err(ParseError::single(span, "unterminated string"));
             }
-            out.push(Token { tok: Tok::Str(src[i + 1..i + 1 + n].to_string()), span });
+            out.push(Token { v3: false, included: false, tok: Tok::Str(src[i + 1..i + 1 + n].to_string()), span });
             adv(&mut i, &mut line, &mut col, n + 2);
             continue;
         }
         if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)) {
             let n = number_len(&b[i..]);
-            out.push(Token { tok: Tok::Num(src[i..i + n].to_string()), span });
+            out.push(Token { v3: false, included: false, tok: Tok::Num(src[i..i + n].to_string()), span });
             adv(&mut i, &mut line, &mut col, n);
             continue;
         }
-        if c.is_ascii_alphabetic() || c >= 0x80 || (c == b'|' && b.get(i + 1).is_some_and(u8::is_ascii_alphabetic)) {
+        if c.is_ascii_alphabetic() || (c >= 0x80 && !UNICODE_OPS.iter().any(|op| src[i..].starts_with(op))) || (c == b'|' && b.get(i + 1).is_some_and(u8::is_ascii_alphabetic)) {
             let start = i;
             let mut j = i + 1;
             loop {
                 while j < b.len() && (b[j].is_ascii_alphanumeric() || b[j] == b'_' || b[j] >= 0x80) {
+                    // cfdg's scanner splits a name at the Unicode operators (… ± ≤ ≥ ≠ ∞).
+                    if b[j] >= 0x80 && UNICODE_OPS.iter().any(|op| src[j..].starts_with(op)) {
+                        break;
+                    }
                     j += 1;
                 }
                 if b[j..].starts_with(b"::") && b.get(j + 2).is_some_and(|c| c.is_ascii_alphabetic()) {
@@ -109,16 +120,16 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             let word = &src[start..j];
             // `|hue` etc. are single tokens only for the adjustment words.
             if c == b'|' && !matches!(word, "|hue" | "|h" | "|saturation" | "|sat" | "|brightness" | "|b" | "|alpha" | "|a") {
-                out.push(Token { tok: Tok::Punct("|"), span });
+                out.push(Token { v3: false, included: false, tok: Tok::Punct("|"), span });
                 adv(&mut i, &mut line, &mut col, 1);
                 continue;
             }
-            out.push(Token { tok: Tok::Word(word.to_string()), span });
+            out.push(Token { v3: false, included: false, tok: Tok::Word(word.to_string()), span });
             adv(&mut i, &mut line, &mut col, j - start);
             continue;
         }
         if let Some(p) = PUNCTS.iter().find(|p| b[i..].starts_with(p.as_bytes())) {
-            out.push(Token { tok: Tok::Punct(p), span });
+            out.push(Token { v3: false, included: false, tok: Tok::Punct(p), span });
             adv(&mut i, &mut line, &mut col, p.len());
             continue;
         }
@@ -132,14 +143,14 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             ("\u{221e}", Tok::Word("infinity".into())),
         ];
         if let Some((s, t)) = uni.iter().find(|(s, _)| src[i..].starts_with(s)) {
-            out.push(Token { tok: t.clone(), span });
+            out.push(Token { v3: false, included: false, tok: t.clone(), span });
             adv(&mut i, &mut line, &mut col, s.len());
             continue;
         }
         let ch = src[i..].chars().next().unwrap_or('?');
         return Err(ParseError::single(span, format!("unexpected character `{ch}`")));
     }
-    out.push(Token { tok: Tok::Eof, span: Span::new(line, col) });
+    out.push(Token { v3: false, included: false, tok: Tok::Eof, span: Span::new(line, col) });
     Ok(out)
 }
 

@@ -15,7 +15,7 @@ pub mod lexer;
 mod parser;
 
 pub use entropy::{define_seed, loop_seed, term_seed};
-pub use parser::parse;
+pub use parser::{parse, parse_with, Loader};
 
 use crate::Span;
 

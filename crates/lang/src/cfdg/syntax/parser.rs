@@ -11,28 +11,55 @@ use crate::{ParseError, Span};
 /// input is an error, never a stack overflow.
 pub const MAX_NESTING: usize = 200;
 
-/// Parses CFDG `source` (UTF-8; invalid UTF-8 is an error at its position).
+/// Reads the file an `import`/`include` names (a bare file name); `None`
+/// when it cannot be read or no files may be read.
+pub type Loader<'a> = &'a dyn Fn(&str) -> Option<Vec<u8>>;
+
+/// Most files one design may import, counting repeats (an import cycle ends here).
+pub const MAX_IMPORTS: usize = 64;
+
+/// Parses CFDG `source` (UTF-8; invalid UTF-8 is an error at its position);
+/// `import`/`include` are errors.
 pub fn parse(source: &[u8]) -> Result<Grammar, ParseError> {
+    parse_with(source, &|_| None)
+}
+
+fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
     let text = std::str::from_utf8(source).map_err(|e| {
         let before = &source[..e.valid_up_to()];
         let line = before.iter().filter(|&&c| c == b'\n').count() as u32 + 1;
         let col = before.iter().rev().take_while(|&&c| c != b'\n').count() as u32 + 1;
         ParseError::single(Span::new(line, col), "invalid UTF-8")
     })?;
-    let toks = lex(text)?;
+    let mut toks = lex(text)?;
+    // The version is decided per file, as cfdg decides it when it restarts
+    // a parse: a `shape`, a `loop` or a `CF::` setting makes it 3.x.
     let v3 = toks.iter().any(|t| match &t.tok {
         Tok::Word(w) => w == "shape" || w == "loop" || w.starts_with("CF::"),
         _ => false,
     });
-    let mut p = Parser { toks, pos: 0, version: if v3 { Version::V3 } else { Version::V2 }, depth: 0 };
+    for t in &mut toks {
+        t.v3 = v3;
+        t.included = included;
+    }
+    Ok(toks)
+}
+
+/// Parses CFDG `source`, reading imported files through `load`.
+pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
+    let toks = tokens(source, false)?;
+    let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0 };
     p.grammar()
 }
 
-struct Parser {
+struct Parser<'a> {
     toks: Vec<Token>,
     pos: usize,
     version: Version,
     depth: usize,
+    load: Loader<'a>,
+    imports: usize,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -58,7 +85,10 @@ fn term_kind(word: &str) -> Option<TermKind> {
     })
 }
 
-impl Parser {
+impl Parser<'_> {
+    fn v3(&self) -> bool {
+        self.toks[self.pos.min(self.toks.len() - 1)].v3
+    }
     fn peek(&self) -> &Tok {
         &self.toks[self.pos.min(self.toks.len() - 1)].tok
     }
@@ -131,10 +161,31 @@ impl Parser {
                         return self.err("shape parameters are not supported yet");
                     }
                     let adjust = if self.is_punct("[") { self.adjustment()? } else { Adjustment { canonical: true, terms: Vec::new() } };
-                    g.start = Some(Replacement { shape: name, adjust, span: nspan });
+                    // The design's own startshape wins over an imported file's.
+                    if !self.toks[self.pos.saturating_sub(1)].included || g.start.is_none() {
+                        g.start = Some(Replacement { shape: name, adjust, span: nspan });
+                    }
                 }
                 Tok::Word(w) if w == "include" || w == "import" => {
-                    return self.err("`include`/`import` of other files is not supported yet");
+                    self.bump();
+                    let name = match self.bump().tok {
+                        Tok::Word(n) | Tok::Str(n) => n,
+                        _ => return Err(ParseError::single(span, "expected a file name after `import`")),
+                    };
+                    self.imports += 1;
+                    if self.imports > MAX_IMPORTS {
+                        return Err(ParseError::single(span, format!("more than {MAX_IMPORTS} imports (a cycle?)")));
+                    }
+                    let Some(bytes) = (self.load)(&name) else {
+                        return Err(ParseError::single(span, format!("cannot import `{name}` (only files beside the design can be imported)")));
+                    };
+                    let mut more = tokens(&bytes, true).map_err(|e| {
+                        let d = &e.diagnostics[0];
+                        ParseError::single(span, format!("in `{name}` at {}:{}: {}", d.span.line, d.span.column, d.message))
+                    })?;
+                    more.pop(); // its end of input
+                    let at = self.pos;
+                    self.toks.splice(at..at, more);
                 }
                 Tok::Word(w) if w == "path" => return self.err("paths (`path`) are not supported yet"),
                 Tok::Word(w) if w == "shape" => {
@@ -153,7 +204,7 @@ impl Parser {
                 }
                 Tok::Word(w) if w == "rule" => {
                     self.bump();
-                    let name = if self.version == Version::V2 {
+                    let name = if !self.v3() {
                         self.name("a rule name after `rule`")?.0
                     } else {
                         match &current_shape {
@@ -169,11 +220,11 @@ impl Parser {
                     } else {
                         (1.0, false)
                     };
-                    let body = if self.version == Version::V2 { self.body_v2()? } else { self.body()? };
+                    let body = if !self.v3() { self.body_v2()? } else { self.body()? };
                     let weight = if weight > 0.0 && weight.is_finite() { weight } else { 1.0 };
                     g.rules.push(Rule { name, weight, percent, body, is_path: false, span });
                 }
-                Tok::Word(w) if self.version == Version::V2 && matches!(w.as_str(), "background" | "tile" | "size") => {
+                Tok::Word(w) if !self.v3() && matches!(w.as_str(), "background" | "tile" | "size") => {
                     self.bump();
                     let adj = self.adjustment()?;
                     match w.as_str() {
@@ -200,7 +251,7 @@ impl Parser {
 
     fn define(&mut self) -> Result<Define, ParseError> {
         let (name, span) = match self.bump() {
-            Token { tok: Tok::Word(w), span } => (w, span),
+            Token { tok: Tok::Word(w), span, .. } => (w, span),
             _ => return self.err("expected a name"),
         };
         self.expect("=")?;
@@ -393,7 +444,7 @@ impl Parser {
 
     /// An adjustment: 3.x `[ ]` canonical, `[[ ]]` ordered; 2.x `{ }` canonical, `[ ]` ordered.
     fn adjustment(&mut self) -> Result<Adjustment, ParseError> {
-        let (canonical, close): (bool, &[&str]) = if self.version == Version::V3 {
+        let (canonical, close): (bool, &[&str]) = if self.v3() {
             if self.is_punct("[") && matches!(self.peek_at(1), Tok::Punct("[")) {
                 self.bump();
                 self.bump();
@@ -521,8 +572,25 @@ impl Parser {
                 self.bump();
                 if self.is_punct("(") {
                     self.bump();
-                    let args = if self.is_punct(")") { None } else { Some(self.expr(0)?) };
+                    // Each argument is held in parentheses and the list is
+                    // always a list, as cfdg's arglist builds it (its entropy
+                    // shows it); rand() and rand(x) get cfdg's textless bounds.
+                    let mut items = Vec::new();
+                    while !self.is_punct(")") {
+                        items.push(Expr::Paren(Box::new(self.expr(1)?)));
+                        if !self.is_punct(",") {
+                            break;
+                        }
+                        self.bump();
+                    }
                     self.expect(")")?;
+                    let zero = || Expr::Num(0.0, String::new());
+                    let args = match (w.as_str(), items.len()) {
+                        ("rand" | "rand_static" | "randint", 0) => Some(Expr::Cons(vec![zero(), Expr::Num(if w == "randint" { 2.0 } else { 1.0 }, String::new())])),
+                        ("rand" | "rand_static" | "randint", 1) => Some(Expr::Cons(vec![zero(), items.remove(0)])),
+                        (_, 0) => None,
+                        _ => Some(Expr::Cons(items)),
+                    };
                     Ok(Expr::Call(w, Box::new(args), span))
                 } else {
                     Ok(Expr::Var(w, span))
