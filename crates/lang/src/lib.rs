@@ -115,7 +115,9 @@ impl Language {
     /// Detection is a precedence across languages, so it is written here
     /// rather than per front end: EisenScript shares `rule ` with MDG and
     /// `#define` with L-systems, so it wins only without their unambiguous
-    /// markers; then MDG's words; then an L-system's settings lines. The
+    /// markers; then CFDG, whose `startshape` MDG shares, only with a 3.x
+    /// `shape` line, a `CF::` setting or a 2D primitive and no MDG-only word
+    /// ([`cfdg::looks_like_cfdg`]); then MDG's words; then an L-system's settings lines. The
     /// other languages are named or known by extension.
     pub fn detect(source: &[u8]) -> Option<Language> {
         let text = String::from_utf8_lossy(&source[..source.len().min(64 * 1024)]);
@@ -129,6 +131,8 @@ impl Language {
             && !["startshape", "@param", "@define"].iter().any(|w| text.contains(w));
         if eisen {
             Some(Language::Eisenscript)
+        } else if cfdg::looks_like_cfdg(&text) {
+            Some(Language::Cfdg)
         } else if mdg_words.iter().any(|w| text.contains(w)) {
             Some(Language::Mdg)
         } else if text.lines().any(lsystem_line) {

@@ -28,6 +28,23 @@ use crate::{Diagnostic, FrontEnd, Language, ParseError};
 /// The request parameter naming a variation code (`"ABC"`), as cfdg's `-v`.
 pub const VARIATION_PARAM: &str = "variation";
 
+/// Whether unnamed source reads as CFDG rather than MDG (which shares
+/// `startshape` and `rule`): it has `startshape` and a 3.x `shape` line, a
+/// `CF::` setting or one of Context Free's 2D primitives as a whole word,
+/// and none of MDG's own words (`@param`, `@define`, `selector`, `linerule`).
+pub fn looks_like_cfdg(text: &str) -> bool {
+    let word = |w: &str| {
+        text.match_indices(w).any(|(i, _)| {
+            let before = text[..i].chars().next_back().is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
+            let after = text[i + w.len()..].chars().next().is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
+            before && after
+        })
+    };
+    let shape_line = text.lines().any(|l| l.trim_start().starts_with("shape ") || l.trim_start().starts_with("shape\t"));
+    let mdg = ["@param", "@define", "selector ", "linerule", "camerarule"].iter().any(|w| text.contains(w));
+    text.contains("startshape") && !mdg && (shape_line || text.contains("CF::") || ["SQUARE", "CIRCLE", "TRIANGLE"].iter().any(|w| word(w)))
+}
+
 /// The front end of `language: "cfdg"`.
 pub struct Cfdg;
 

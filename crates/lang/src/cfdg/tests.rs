@@ -69,3 +69,14 @@ fn dump_svg() {
     let p = eval::render(&g, &opts, &mut Budget::new(Limits::default())).unwrap_or_else(|e| panic!("{e}"));
     let _ = std::fs::write(std::env::var("CFDG_OUT").unwrap_or("/tmp/out.svg".into()), svg::write(&p));
 }
+
+/// Regression: a name with multi-byte characters made the lexer slice
+/// inside a character (found by scripts/cfdg-compat on `unicodetest.cfdg`).
+#[test]
+fn unicode_names_do_not_panic() {
+    let g = syntax::parse("startshape ⬛\nshape ⬛ { SQUARE [x 1…2] }\n".as_bytes()).unwrap();
+    assert_eq!(g.rules[0].name, "⬛");
+    for src in ["é…", "…é", "x±é", "⬛∞", "a\u{2026}\u{2026}b"] {
+        let _ = syntax::parse(src.as_bytes());
+    }
+}

@@ -96,13 +96,13 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             adv(&mut i, &mut line, &mut col, n);
             continue;
         }
-        if c.is_ascii_alphabetic() || (c >= 0x80 && !UNICODE_OPS.iter().any(|op| src[i..].starts_with(op))) || (c == b'|' && b.get(i + 1).is_some_and(u8::is_ascii_alphabetic)) {
+        if c.is_ascii_alphabetic() || (c >= 0x80 && !UNICODE_OPS.iter().any(|op| b[i..].starts_with(op.as_bytes()))) || (c == b'|' && b.get(i + 1).is_some_and(u8::is_ascii_alphabetic)) {
             let start = i;
             let mut j = i + 1;
             loop {
                 while j < b.len() && (b[j].is_ascii_alphanumeric() || b[j] == b'_' || b[j] >= 0x80) {
                     // cfdg's scanner splits a name at the Unicode operators (… ± ≤ ≥ ≠ ∞).
-                    if b[j] >= 0x80 && UNICODE_OPS.iter().any(|op| src[j..].starts_with(op)) {
+                    if b[j] >= 0x80 && UNICODE_OPS.iter().any(|op| b[j..].starts_with(op.as_bytes())) {
                         break;
                     }
                     j += 1;
