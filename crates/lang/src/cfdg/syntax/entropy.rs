@@ -178,7 +178,10 @@ pub fn loop_seed(adj: &Adjustment, var: &str, args: &Expr, v2: bool) -> Rand64 {
         let mut seed = Rand64::default();
         let mut index = 0;
         seed.xor_bytes(&ent, &mut index);
-        let mut held = Rand64::raw(0);
+        // The held adjustment starts from the default seed too (it was never
+        // grabbed into a replacement's zeroed modification); found against
+        // the seeds `cfdg -J` prints.
+        let mut held = Rand64::default();
         let mut hindex = 0;
         adjust_entropy(adj, &mut held, &mut hindex);
         seed.xor(held);
