@@ -25,6 +25,7 @@ pub fn ordered(adj: &Adjustment) -> Vec<Term> {
         TermKind::Z => Some(2),
         TermKind::Rotate => Some(3),
         TermKind::Size => Some(4),
+        TermKind::ZSize => Some(5),
         TermKind::Skew => Some(6),
         TermKind::Flip => Some(7),
         TermKind::Transform => Some(8),
@@ -147,6 +148,10 @@ fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> {
             if n == 3 {
                 s.sz *= a[2];
             }
+        }
+        TermKind::ZSize => {
+            arity(&[1])?;
+            s.sz *= a[0];
         }
         TermKind::Rotate => {
             arity(&[1])?;

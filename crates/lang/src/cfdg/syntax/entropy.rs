@@ -84,7 +84,7 @@ fn term_bytes(kind: TermKind) -> &'static [u8] {
         TermKind::Y => b"\x84\x2B\xF3\xBB\x93\x59",
         TermKind::Z => b"\xC8\x3A\x12\x32\x36\x71",
         TermKind::Transform => b"\x88\x90\x54\xC5\xD3\x20",
-        TermKind::Size => b"\x64\xEC\x5B\x4B\xEE\x2B",
+        TermKind::Size | TermKind::ZSize => b"\x64\xEC\x5B\x4B\xEE\x2B",
         TermKind::Rotate => b"\x84\xB0\x92\x26\x59\xE2",
         TermKind::Skew => b"\xFF\x2D\x84\x01\xA0\x0A",
         TermKind::Flip => b"\x43\x5A\x17\xEA\x12\x05",

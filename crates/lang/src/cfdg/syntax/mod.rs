@@ -178,6 +178,8 @@ pub enum TermKind {
     Z,
     /// `size`/`s` (one or two arguments; three also scales z).
     Size,
+    /// The z part of a three-number `size` (`zsize`).
+    ZSize,
     /// `rotate`/`r`.
     Rotate,
     /// `flip`/`f`.

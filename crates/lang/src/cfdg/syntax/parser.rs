@@ -504,6 +504,17 @@ impl Parser<'_> {
                     }
                 }
             }
+            // `x a b c` and `size a b c` split into a z term, placed first,
+            // and a two-number term (ASTmodification::compile's xyz split).
+            if let (TermKind::X | TermKind::Size, Expr::Cons(v)) = (kind, &args) {
+                if v.len() == 3 {
+                    let mut v = v.clone();
+                    let z = v.pop().unwrap_or(Expr::Cons(Vec::new()));
+                    terms.push(Term { kind: if kind == TermKind::X { TermKind::Z } else { TermKind::ZSize }, args: z, span });
+                    terms.push(Term { kind, args: Expr::Cons(v), span });
+                    continue;
+                }
+            }
             terms.push(Term { kind, args, span });
         }
         for c in close {
