@@ -167,8 +167,12 @@ pub fn loop_seed(adj: &Adjustment, var: &str, args: &Expr, v2: bool) -> Rand64 {
     let mut ent = var.as_bytes().to_vec();
     expr_entropy(args, &mut ent);
     if v2 {
+        // A 2.x loop's adjustment is compiled twice (as a replacement's and
+        // again as the loop's), so its terms are hashed twice before the
+        // index; found against the seeds `cfdg -J` prints.
         let mut seed = Rand64::raw(0);
         let mut index = 0;
+        adjust_entropy(adj, &mut seed, &mut index);
         adjust_entropy(adj, &mut seed, &mut index);
         seed.xor_bytes(&ent, &mut index);
         seed
