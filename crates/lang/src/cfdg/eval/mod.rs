@@ -91,6 +91,7 @@ struct Unfinished {
     shape: usize,
     state: State,
     area: f64,
+    params: Vec<f64>,
 }
 
 /// A compiled rule set: rules of each shape with cumulative weights.
@@ -98,6 +99,8 @@ struct Rules<'g> {
     index: HashMap<&'g str, usize>,
     /// Per shape number (primitives first): (cumulative weight, body).
     by_shape: Vec<Vec<(f64, &'g [Element])>>,
+    /// Per shape number: its parameters' names.
+    params: Vec<&'g [String]>,
 }
 
 fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
@@ -106,6 +109,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
         index.insert(p, i);
     }
     let mut by_shape: Vec<Vec<(f64, f64, bool, &[Element])>> = vec![Vec::new(); 3];
+    let mut params: Vec<&[String]> = vec![&[]; 3];
     for r in &g.rules {
         // A rule for a primitive's name replaces the primitive (cfdg's shape
         // type becomes a rule type, `CFDGImpl::addRule`); FILL cannot have rules.
@@ -116,6 +120,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
         let i = *index.entry(r.name.as_str()).or_insert(n);
         if i == by_shape.len() {
             by_shape.push(Vec::new());
+            params.push(&r.params);
         }
         by_shape[i].push((r.weight, 0.0, r.percent, &r.body));
     }
@@ -145,7 +150,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
                 .collect()
         })
         .collect();
-    Ok(Rules { index, by_shape })
+    Ok(Rules { index, by_shape, params })
 }
 
 /// Checks that every shape a design names exists, so a missing rule is a
@@ -155,11 +160,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
     fn walk(body: &[Element], rules: &Rules<'_>) -> Result<(), ParseError> {
         for e in body {
             match e {
-                Element::Replace(r) => {
-                    if !rules.index.contains_key(r.shape.as_str()) {
-                        return Err(ParseError::single(r.span, format!("shape `{}` has no rules", r.shape)));
-                    }
-                }
+                Element::Replace(r) => arity(r, rules)?,
                 Element::Loop(l) => {
                     walk(&l.body, rules)?;
                     walk(&l.finally, rules)?;
@@ -180,8 +181,27 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
         }
         Ok(())
     }
+    fn arity(r: &syntax::Replacement, rules: &Rules<'_>) -> Result<(), ParseError> {
+        let Some(&i) = rules.index.get(r.shape.as_str()) else {
+            return Err(ParseError::single(r.span, format!("shape `{}` has no rules", r.shape)));
+        };
+        let wanted = rules.params[i].len();
+        if matches!(&r.args, Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE) {
+            return Ok(());
+        }
+        let given = r.args.as_ref().map_or(0, |a| a.items().len());
+        if given != wanted {
+            return Err(ParseError::single(r.span, format!("shape `{}` takes {wanted} arguments, given {given}", r.shape)));
+        }
+        Ok(())
+    }
     for r in &g.rules {
         walk(&r.body, &rules)?;
+    }
+    if let Some(s) = &g.start {
+        if rules.index.contains_key(s.shape.as_str()) {
+            arity(s, &rules)?;
+        }
     }
     match &g.start {
         None => Err(ParseError::single(Span::new(1, 1), "no `startshape`")),

@@ -35,6 +35,8 @@ struct Renderer<'g> {
     max_shapes: u64,
     budget: &'g mut Budget,
     polygons: [Vec<(f64, f64)>; 3],
+    /// The parameters of the shape being expanded.
+    params: Vec<f64>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -94,12 +96,18 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         max_shapes,
         budget,
         polygons: [bounds_polygon(0), bounds_polygon(1), bounds_polygon(2)],
+        params: Vec::new(),
     };
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
         return Err(EvalError::BadParam { name: "startshape".into(), message: format!("shape `{}` has no rules", start.shape) });
     };
     let mut init = State::initial();
+    // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
+    let mut start_params = Vec::new();
+    if let Some(a) = &start.args {
+        super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
+    }
     let seed = if start.adjust.terms.is_empty() {
         // A start shape without adjustment has an empty modification, seeded with the default seed.
         let mut s = Rand64::default();
@@ -107,13 +115,13 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         s.xor_bytes(start.shape.as_bytes(), &mut i);
         s
     } else {
-        term_seed(&start.adjust, &start.shape)
+        term_seed(&start.adjust, &start.shape, None)
     };
     r.current.xor(seed);
     r.current.next_u64();
     apply_prepared(&prepare(&start.adjust), &mut init, &r.scope, &mut r.current)?;
     init.seed = r.current;
-    r.process(start_shape, init)?;
+    r.process(start_shape, init, start_params)?;
     let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
     while !r.unfinished.is_empty() {
         if r.shape_count.max(r.unfinished.len() as u64) >= r.max_shapes {
@@ -121,13 +129,20 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         }
         pop_heap(&mut r.unfinished, &less);
         let Some(mut s) = r.unfinished.pop() else { break };
-        r.budget.release_memory(SHAPE_BYTES);
+        r.budget.release_memory(SHAPE_BYTES + 8 * s.params.len() as u64);
         r.budget.charge_step()?;
         let choice = s.state.seed.next_double();
         let rules = &r.rules.by_shape[s.shape];
         let Some(&(_, body)) = rules.iter().find(|(w, _)| *w >= choice).or(rules.last()) else { continue };
         r.current = s.state.seed;
+        let names = r.rules.params[s.shape];
+        let depth = r.scope.vars.len();
+        for (n, v) in names.iter().zip(&s.params) {
+            r.scope.vars.push((n.clone(), vec![*v]));
+        }
+        r.params = std::mem::take(&mut s.params);
         r.body(body, &s.state)?;
+        r.scope.vars.truncate(depth);
     }
     Ok(r.finish(background))
 }
@@ -149,7 +164,7 @@ fn background(g: &Grammar, scope: &Scope) -> Result<[f64; 4], EvalError> {
 }
 
 impl Renderer<'_> {
-    fn process(&mut self, shape: usize, state: State) -> Result<(), EvalError> {
+    fn process(&mut self, shape: usize, state: State, params: Vec<f64>) -> Result<(), EvalError> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
@@ -157,7 +172,8 @@ impl Renderer<'_> {
             let area = state.area();
             if !self.bounds.valid() || area * self.scale_area >= self.min_area {
                 self.budget.reserve_memory(SHAPE_BYTES)?;
-                self.unfinished.push(Unfinished { shape, state, area });
+                self.budget.reserve_memory(8 * params.len() as u64)?;
+                self.unfinished.push(Unfinished { shape, state, area, params });
                 push_heap(&mut self.unfinished, &|a: &Unfinished, b: &Unfinished| a.area < b.area);
             }
             return Ok(());
@@ -177,9 +193,9 @@ impl Renderer<'_> {
         Ok(())
     }
 
-    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str) -> (Prepared, Rand64) {
+    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> (Prepared, Rand64) {
         let key = adj as *const Adjustment as usize;
-        cached(&mut self.cache, key, || (prepare(adj), term_seed(adj, shape))).clone()
+        cached(&mut self.cache, key, || (prepare(adj), term_seed(adj, shape, args))).clone()
     }
 
     fn body(&mut self, body: &[Element], parent: &State) -> Result<(), EvalError> {
@@ -195,14 +211,25 @@ impl Renderer<'_> {
         match e {
             Element::Replace(rep) => {
                 let shape = *self.rules.index.get(rep.shape.as_str()).ok_or_else(|| EvalError::BadParam { name: rep.shape.clone(), message: "shape has no rules".into() })?;
-                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape);
+                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let mut params = Vec::new();
+                match &rep.args {
+                    Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE => {
+                        params = self.params.clone();
+                        if params.len() != self.rules.params[shape].len() {
+                            return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: `(=)` needs a parent with the same parameters", rep.span.line, rep.span.column) });
+                        }
+                    }
+                    Some(a) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
+                    None => {}
+                }
                 let mut child = *parent;
                 self.current.xor(seed);
                 self.current.next_u64();
                 apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
                 child.seed = self.current;
                 child.seed.next_u64();
-                self.process(shape, child)
+                self.process(shape, child, params)
             }
             Element::Loop(l) => {
                 let key = l as *const syntax::Loop as usize;

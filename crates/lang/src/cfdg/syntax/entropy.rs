@@ -151,11 +151,17 @@ pub fn adjust_entropy(adj: &Adjustment, seed: &mut Rand64, index: &mut u32) {
 
 /// The seed a replacement of `shape` with `adj` xors into the random state
 /// (`mChildChange.modData.mRand64Seed`): its terms, then the shape's name.
-pub fn term_seed(adj: &Adjustment, shape: &str) -> Rand64 {
+/// A shape given arguments hashes them after its name (`ASTruleSpecifier::compile`).
+pub fn term_seed(adj: &Adjustment, shape: &str, args: Option<&Expr>) -> Rand64 {
     let mut seed = Rand64::raw(0);
     let mut index = 0;
     adjust_entropy(adj, &mut seed, &mut index);
-    seed.xor_bytes(shape.as_bytes(), &mut index);
+    let mut name = shape.as_bytes().to_vec();
+    // Reused parent parameters hash nothing (SimpleParentArgs).
+    if let Some(a) = args.filter(|a| !matches!(a, Expr::Var(v, _) if v == super::REUSE)) {
+        expr_entropy(a, &mut name);
+    }
+    seed.xor_bytes(&name, &mut index);
     seed
 }
 

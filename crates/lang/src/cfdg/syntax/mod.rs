@@ -15,7 +15,7 @@ pub mod lexer;
 mod parser;
 
 pub use entropy::{define_seed, loop_seed, term_seed};
-pub use parser::{parse, parse_with, Loader};
+pub use parser::{parse, parse_with, Loader, REUSE};
 
 use crate::Span;
 
@@ -58,6 +58,8 @@ pub struct Rule {
     pub body: Vec<Element>,
     /// Whether it is a `path` (drawn as a path, not expanded).
     pub is_path: bool,
+    /// The names of its shape's numeric parameters, in order.
+    pub params: Vec<String>,
     /// Where it starts.
     pub span: Span,
 }
@@ -91,6 +93,9 @@ pub struct Replacement {
     pub shape: String,
     /// Its adjustment.
     pub adjust: Adjustment,
+    /// Its arguments, when the shape takes parameters (a list of
+    /// parenthesised expressions, as cfdg builds and hashes it).
+    pub args: Option<Expr>,
     /// Where it is written.
     pub span: Span,
 }

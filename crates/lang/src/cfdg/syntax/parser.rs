@@ -7,6 +7,9 @@ use super::lexer::{lex, Tok, Token};
 use super::{Adjustment, Define, Element, Expr, Grammar, Loop, Replacement, Rule, Term, TermKind, Value, Version};
 use crate::{ParseError, Span};
 
+/// The argument list `(=)` stands for: the parent shape's parameters.
+pub const REUSE: &str = "(=)";
+
 /// Deepest nesting of bodies and expressions the parser follows; deeper
 /// input is an error, never a stack overflow.
 pub const MAX_NESTING: usize = 200;
@@ -150,6 +153,7 @@ impl Parser<'_> {
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
         let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new() };
         let mut current_shape: Option<String> = None;
+        let mut current_params: Vec<String> = Vec::new();
         loop {
             let span = self.span();
             match self.peek().clone() {
@@ -157,13 +161,11 @@ impl Parser<'_> {
                 Tok::Word(w) if w == "startshape" => {
                     self.bump();
                     let (name, nspan) = self.name("a shape name after `startshape`")?;
-                    if self.is_punct("(") {
-                        return self.err("shape parameters are not supported yet");
-                    }
+                    let args = if self.is_punct("(") { self.call_args(&name)? } else { None };
                     let adjust = if self.is_punct("[") { self.adjustment()? } else { Adjustment { canonical: true, terms: Vec::new() } };
                     // The design's own startshape wins over an imported file's.
                     if !self.toks[self.pos.saturating_sub(1)].included || g.start.is_none() {
-                        g.start = Some(Replacement { shape: name, adjust, span: nspan });
+                        g.start = Some(Replacement { shape: name, adjust, args, span: nspan });
                     }
                 }
                 Tok::Word(w) if w == "include" || w == "import" => {
@@ -191,12 +193,10 @@ impl Parser<'_> {
                 Tok::Word(w) if w == "shape" => {
                     self.bump();
                     let (name, _) = self.name("a shape name after `shape`")?;
-                    if self.is_punct("(") {
-                        return self.err("shape parameters are not supported yet");
-                    }
+                    current_params = if self.is_punct("(") { self.param_list()? } else { Vec::new() };
                     if self.is_punct("{") {
                         let body = self.body()?;
-                        g.rules.push(Rule { name, weight: 1.0, percent: false, body, is_path: false, span });
+                        g.rules.push(Rule { name, weight: 1.0, percent: false, body, is_path: false, params: current_params.clone(), span });
                         current_shape = None;
                     } else {
                         current_shape = Some(name);
@@ -222,7 +222,8 @@ impl Parser<'_> {
                     };
                     let body = if !self.v3() { self.body_v2()? } else { self.body()? };
                     let weight = if weight > 0.0 && weight.is_finite() { weight } else { 1.0 };
-                    g.rules.push(Rule { name, weight, percent, body, is_path: false, span });
+                    let params = if self.v3() { current_params.clone() } else { Vec::new() };
+                    g.rules.push(Rule { name, weight, percent, body, is_path: false, params, span });
                 }
                 Tok::Word(w) if !self.v3() && matches!(w.as_str(), "background" | "tile" | "size") => {
                     self.bump();
@@ -237,7 +238,7 @@ impl Parser<'_> {
                     let d = self.define()?;
                     if d.name == "CF::StartShape" {
                         if let Value::Shape(s) = &d.value {
-                            g.start = Some(Replacement { shape: s.clone(), adjust: Adjustment { canonical: true, terms: Vec::new() }, span: d.span });
+                            g.start = Some(Replacement { shape: s.clone(), adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span: d.span });
                         }
                     }
                     current_shape = None;
@@ -381,11 +382,9 @@ impl Parser<'_> {
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
             _ => {
                 let (shape, span) = self.name("a shape name")?;
-                if self.is_punct("(") {
-                    return self.err("shape parameters are not supported yet");
-                }
+                let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
                 let adjust = self.adjustment()?;
-                Ok(Element::Replace(Replacement { shape, adjust, span }))
+                Ok(Element::Replace(Replacement { shape, adjust, args, span }))
             }
         }
     }
@@ -436,7 +435,7 @@ impl Parser<'_> {
             Tok::Word(_) => {
                 let (shape, span) = self.name("a shape name")?;
                 let adjust = self.adjustment()?;
-                Ok(Element::Replace(Replacement { shape, adjust, span }))
+                Ok(Element::Replace(Replacement { shape, adjust, args: None, span }))
             }
             _ => self.err("expected a replacement"),
         }
@@ -582,26 +581,7 @@ impl Parser<'_> {
             Tok::Word(w) if term_kind(&w).is_none() => {
                 self.bump();
                 if self.is_punct("(") {
-                    self.bump();
-                    // Each argument is held in parentheses and the list is
-                    // always a list, as cfdg's arglist builds it (its entropy
-                    // shows it); rand() and rand(x) get cfdg's textless bounds.
-                    let mut items = Vec::new();
-                    while !self.is_punct(")") {
-                        items.push(Expr::Paren(Box::new(self.expr(1)?)));
-                        if !self.is_punct(",") {
-                            break;
-                        }
-                        self.bump();
-                    }
-                    self.expect(")")?;
-                    let zero = || Expr::Num(0.0, String::new());
-                    let args = match (w.as_str(), items.len()) {
-                        ("rand" | "rand_static" | "randint", 0) => Some(Expr::Cons(vec![zero(), Expr::Num(if w == "randint" { 2.0 } else { 1.0 }, String::new())])),
-                        ("rand" | "rand_static" | "randint", 1) => Some(Expr::Cons(vec![zero(), items.remove(0)])),
-                        (_, 0) => None,
-                        _ => Some(Expr::Cons(items)),
-                    };
+                    let args = self.call_args(&w)?;
                     Ok(Expr::Call(w, Box::new(args), span))
                 } else {
                     Ok(Expr::Var(w, span))
@@ -609,6 +589,62 @@ impl Parser<'_> {
             }
             _ => self.err("expected a number, a name or `(`"),
         }
+    }
+
+    /// `( a, b, … )` after a function or shape name: each argument held in
+    /// parentheses and the list always a list, as cfdg's arglist builds it
+    /// (its entropy shows it); `rand()` and `rand(x)` get cfdg's textless bounds.
+    fn call_args(&mut self, name: &str) -> Result<Option<Expr>, ParseError> {
+        self.expect("(")?;
+        // `NAME(=)`: the parent's parameters, reused (cfdg's SimpleParentArgs).
+        if self.is_punct("=") && matches!(self.peek_at(1), Tok::Punct(")")) {
+            self.bump();
+            self.bump();
+            return Ok(Some(Expr::Var(REUSE.into(), self.span())));
+        }
+        let mut items = Vec::new();
+        while !self.is_punct(")") {
+            items.push(Expr::Paren(Box::new(self.expr(1)?)));
+            if !self.is_punct(",") {
+                break;
+            }
+            self.bump();
+        }
+        self.expect(")")?;
+        let zero = || Expr::Num(0.0, String::new());
+        Ok(match (name, items.len()) {
+            ("rand" | "rand_static" | "randint", 0) => Some(Expr::Cons(vec![zero(), Expr::Num(if name == "randint" { 2.0 } else { 1.0 }, String::new())])),
+            ("rand" | "rand_static" | "randint", 1) => Some(Expr::Cons(vec![zero(), items.remove(0)])),
+            (_, 0) => None,
+            _ => Some(Expr::Cons(items)),
+        })
+    }
+
+    /// `(number a, natural b, …)` after `shape NAME`: numeric parameters only.
+    fn param_list(&mut self) -> Result<Vec<String>, ParseError> {
+        self.expect("(")?;
+        let mut names = Vec::new();
+        while !self.is_punct(")") {
+            let ty = match self.peek().clone() {
+                Tok::Word(w) => w,
+                _ => return self.err("expected a parameter type"),
+            };
+            if !matches!(ty.as_str(), "number" | "natural") {
+                return self.err("only `number` and `natural` parameters are supported yet");
+            }
+            self.bump();
+            let (n, _) = self.name("a parameter name")?;
+            if self.is_punct("=") {
+                return self.err("parameter defaults are not supported yet");
+            }
+            names.push(n);
+            if !self.is_punct(",") {
+                break;
+            }
+            self.bump();
+        }
+        self.expect(")")?;
+        Ok(names)
     }
 
     /// A full expression (`exp2`/`exp3`) by precedence climbing; `,` makes a list.
