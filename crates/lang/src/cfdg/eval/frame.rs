@@ -68,6 +68,12 @@ impl Bounds {
     /// canvas size it implies, and the map from design to pixels
     /// (`Bounds::computeScale` with `modify` and a transform; `exact` off).
     pub fn compute_scale(&self, width: i64, height: i64, border_x: f64, border_y: f64) -> (f64, i64, i64, super::state::Affine) {
+        self.compute_scale_exact(width, height, border_x, border_y, false)
+    }
+
+    /// [`Bounds::compute_scale`], with `exact` as cfdg passes it for sized
+    /// and tiled designs (the implied size is not rounded to the canvas's parity).
+    pub fn compute_scale_exact(&self, width: i64, height: i64, border_x: f64, border_y: f64, exact: bool) -> (f64, i64, i64, super::state::Affine) {
         let (mut vw, mut vh) = (self.max_x - self.min_x, self.max_y - self.min_y);
         if !self.valid() {
             vw = 1.0;
@@ -79,11 +85,15 @@ impl Bounds {
         if vw / tw > vh / th {
             scale = tw / vw;
             nh = (scale * vh + 2.0 * border_y + 0.5).floor() as i64;
-            nh += (nh ^ height) & 1;
+            if !exact {
+                nh += (nh ^ height) & 1;
+            }
         } else {
             scale = th / vh;
             nw = (scale * vw + 2.0 * border_x + 0.5).floor() as i64;
-            nw += (nw ^ width) & 1;
+            if !exact {
+                nw += (nw ^ width) & 1;
+            }
         }
         let ox = scale * (self.max_x + self.min_x) / 2.0 - nw as f64 / 2.0;
         let oy = scale * (self.max_y + self.min_y) / 2.0 - nh as f64 / 2.0;

@@ -37,6 +37,8 @@ struct Renderer<'g> {
     polygons: [Vec<(f64, f64)>; 3],
     /// The parameters of the shape being expanded.
     params: Vec<f64>,
+    /// The fixed bounds of a `CF::Size` design.
+    sized: Option<Bounds>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -64,7 +66,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     // Settings that change the picture's framing or copy its shapes are not
     // rendered yet; refusing them beats drawing something cfdg does not.
     for d in &g.defines {
-        if matches!(d.name.as_str(), "CF::Tile" | "CF::Size" | "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
+        if matches!(d.name.as_str(), "CF::Tile" | "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
             return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
         }
     }
@@ -79,6 +81,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     let fixed_border = if 2.0 * fixed_border.abs().floor() >= f64::from(opts.width.min(opts.height)) { 0.0 } else { fixed_border };
     let shape_border = if border <= 1.0 { 1.0 } else { border };
     let background = background(g, &scope)?;
+    let sized = sized(g, &scope)?;
     let mut r = Renderer {
         rules,
         opts: *opts,
@@ -97,7 +100,20 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         budget,
         polygons: [bounds_polygon(0), bounds_polygon(1), bounds_polygon(2)],
         params: Vec::new(),
+        sized: None,
     };
+    // CF::Size fixes the bounds (centred on the origin) and the scale, and
+    // offsets the start shape (RendererImpl::initBounds, getInitialShape).
+    let mut offset = (0.0, 0.0);
+    if let Some((w, h, x, y)) = sized {
+        r.fixed_border = 0.0;
+        r.shape_border = 0.0;
+        r.bounds = Bounds { min_x: -w / 2.0, max_x: w / 2.0, min_y: -h / 2.0, max_y: h / 2.0 };
+        let (scale, ..) = r.bounds.compute_scale_exact(i64::from(opts.width), i64::from(opts.height), 0.0, 0.0, true);
+        r.scale_area = scale * scale;
+        r.sized = Some(r.bounds);
+        offset = (x, y);
+    }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
         return Err(EvalError::BadParam { name: "startshape".into(), message: format!("shape `{}` has no rules", start.shape) });
@@ -120,6 +136,8 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     r.current.xor(seed);
     r.current.next_u64();
     apply_prepared(&prepare(&start.adjust), &mut init, &r.scope, &mut r.current)?;
+    init.transform.tx += offset.0;
+    init.transform.ty += offset.1;
     init.seed = r.current;
     r.process(start_shape, init, start_params)?;
     let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
@@ -145,6 +163,20 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         r.scope.vars.truncate(depth);
     }
     Ok(r.finish(background))
+}
+
+/// The `CF::Size` (or 2.x `size { }`) adjustment's size and offset.
+fn sized(g: &Grammar, scope: &Scope) -> Result<Option<(f64, f64, f64, f64)>, EvalError> {
+    let Some(d) = g.defines.iter().rev().find(|d| d.name == "CF::Size") else { return Ok(None) };
+    let Value::Adjust(a) = &d.value else { return Ok(None) };
+    let mut s = State::initial();
+    let mut rand = Rand64::default();
+    super::adjust::apply(&terms_of(a), &mut s, scope, &mut rand)?;
+    let t = s.transform;
+    if t.shx != 0.0 || t.shy != 0.0 || !(t.sx > 0.0 && t.sy > 0.0) {
+        return Err(EvalError::BadParam { name: "CF::Size".into(), message: format!("{}:{}: a size must be positive and not rotated or skewed", d.span.line, d.span.column) });
+    }
+    Ok(Some((t.sx, t.sy, t.tx, t.ty)))
 }
 
 fn background(g: &Grammar, scope: &Scope) -> Result<[f64; 4], EvalError> {
@@ -182,9 +214,19 @@ impl Renderer<'_> {
         if !b.valid() {
             return Ok(());
         }
-        self.bounds.merge(&b.dilate(self.shape_border));
-        let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border);
-        self.scale_area = scale * scale;
+        match &self.sized {
+            // Off-canvas shapes are dropped from a sized design.
+            Some(fixed) => {
+                if b.min_x > fixed.max_x || b.max_x < fixed.min_x || b.min_y > fixed.max_y || b.max_y < fixed.min_y {
+                    return Ok(());
+                }
+            }
+            None => {
+                self.bounds.merge(&b.dilate(self.shape_border));
+                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border);
+                self.scale_area = scale * scale;
+            }
+        }
         self.shape_count += 1;
         self.budget.charge_primitive(2)?;
         self.budget.reserve_memory(SHAPE_BYTES)?;
@@ -306,7 +348,7 @@ impl Renderer<'_> {
 
     /// Sorts, frames and drops what cfdg would not draw (`outputFinal`, `drawShape`).
     fn finish(mut self, background: [f64; 4]) -> Picture {
-        let (scale, w, h, to_pixels) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border);
+        let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border, self.sized.is_some());
         let area = scale * scale;
         let finished = self.finished.len() as u64;
         self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
