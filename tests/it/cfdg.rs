@@ -105,6 +105,12 @@ fn a_dozen_examples_match_cfdg() {
         ("tree_number_5.cfdg", "ABC"),
         ("tests/mergexytest1.cfdg", "ABC"),
         ("tests/sattargtest.cfdg", "ABC"),
+        ("tests/sizetest.cfdg", "ABC"),
+        ("tests/curves.cfdg", "ABC"),
+        // Other variation codes, letters and a number, give cfdg's shapes too.
+        ("mtree.cfdg", "XYZ"),
+        ("demo1.cfdg", "12345"),
+        ("weighting_demo_v2.cfdg", "ABCDEF"),
     ];
     for (name, var) in named {
         let file = example(name);
