@@ -85,6 +85,23 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
                 _ => f64::NAN,
             });
         }
+        Expr::Call(name, args, span) if name == "if" || name == "select" => {
+            // Only the chosen argument is evaluated (ASTselect::evaluate), so
+            // only its random numbers are drawn.
+            let items = args.as_ref().as_ref().map(|a| a.items()).unwrap_or_default();
+            if items.len() < 3 || (name == "if" && items.len() != 3) {
+                return Err(EvalError::BadParam { name: name.clone(), message: format!("{}:{}: expected a selector and at least two choices", span.line, span.column) });
+            }
+            let sel = scalar(items[0], scope, rand)?;
+            let i = if name == "if" {
+                usize::from(sel == 0.0)
+            } else if sel < 0.0 || sel.is_nan() {
+                0
+            } else {
+                (sel as usize).min(items.len() - 2)
+            };
+            eval(items[1 + i], scope, rand, out)?;
+        }
         Expr::Call(name, args, span) => {
             let mut a = Vec::new();
             if let Some(x) = args.as_ref() {
@@ -203,13 +220,20 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span) -> Result<f64, Eva
         }
         "min" => a.iter().copied().fold(f64::INFINITY, f64::min),
         "max" => a.iter().copied().fold(f64::NEG_INFINITY, f64::max),
-        "if" => {
-            want(3)?;
-            if a[0] != 0.0 {
-                a[1]
-            } else {
-                a[2]
-            }
+        "bitnot" | "bitor" | "bitand" | "bitxor" | "bitleft" | "bitright" => {
+            // On 64-bit integers, kept to 52 bits (ASTfunction::evaluate).
+            let n = if name == "bitnot" { 1 } else { 2 };
+            want(n)?;
+            let (x, y) = (a[0] as u64, if n == 2 { a[1] as u64 } else { 0 });
+            let v = match name {
+                "bitnot" => !x,
+                "bitor" => x | y,
+                "bitand" => x & y,
+                "bitxor" => x ^ y,
+                "bitleft" => x.checked_shl(y.min(64) as u32).unwrap_or(0),
+                _ => x.checked_shr(y.min(64) as u32).unwrap_or(0),
+            };
+            (v & 0x000F_FFFF_FFFF_FFFF) as f64
         }
         _ => return Err(EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: unknown or unsupported function", span.line, span.column) }),
     })

@@ -73,6 +73,15 @@ fn func_bytes(name: &str) -> &'static [u8] {
         "rand" | "rand." => b"\xDA\x18\x5B\xE2\xDB\x79",
         "rand+/-" => b"\xDC\x8D\x09\x15\x8A\xC4",
         "randint" => b"\x48\x14\x4E\x27\x35\x2E",
+        "bitnot" => b"\x79\x19\x1A\x9F\x4D\xA0",
+        "bitor" => b"\xF2\x77\xAB\x5C\x33\x43",
+        "bitand" => b"\xC3\x56\x9E\x75\xE0\x44",
+        "bitxor" => b"\xBB\xFA\x2B\xD2\x91\x55",
+        "bitleft" => b"\x91\x47\xE5\xE5\x0D\xAA",
+        // cfdg appends these as C strings, so this one stops at its zero byte.
+        "bitright" => b"\xF1\xAB\x17",
+        // if() and select() (ASTselect): the selector's list, then these bytes.
+        "if" | "select" => b"\xB5\xA2\x4A\x74\xA9\xDF",
         _ => b"",
     }
 }

@@ -602,6 +602,12 @@ impl Parser<'_> {
             self.bump();
             return Ok(Some(Expr::Var(REUSE.into(), self.span())));
         }
+        // `if` is a keyword whose parentheses hold a bare list (`IF '(' exp2 ')'`).
+        if name == "if" {
+            let e = if self.is_punct(")") { None } else { Some(self.expr(0)?) };
+            self.expect(")")?;
+            return Ok(e);
+        }
         let mut items = Vec::new();
         while !self.is_punct(")") {
             items.push(Expr::Paren(Box::new(self.expr(1)?)));
