@@ -389,22 +389,12 @@ impl Parser<'_> {
         }
     }
 
+    /// A case value: a constant expression above the range operator, floored.
     fn case_value(&mut self) -> Result<i64, ParseError> {
-        let neg = if self.is_punct("-") {
-            self.bump();
-            true
-        } else {
-            false
-        };
-        match self.peek().clone() {
-            Tok::Num(n) => {
-                self.bump();
-                let v: f64 = n.trim_end_matches('%').parse().unwrap_or(0.0);
-                let v = v.floor().clamp(-1e15, 1e15) as i64;
-                Ok(if neg { -v } else { v })
-            }
-            _ => self.err("expected a case number"),
-        }
+        let span = self.span();
+        let e = self.expr(7)?;
+        let v = const_value(&e).ok_or_else(|| ParseError::single(span, "a case value must be a constant number"))?;
+        Ok(v.floor().clamp(-1e15, 1e15) as i64)
     }
 
     /// A 2.x rule body: `{ replacements }`.
@@ -728,4 +718,42 @@ impl Parser<'_> {
 
 fn is_path_op(w: &str) -> bool {
     matches!(w, "MOVETO" | "LINETO" | "ARCTO" | "CURVETO" | "MOVEREL" | "LINEREL" | "ARCREL" | "CURVEREL" | "CLOSEPOLY" | "STROKE" | "FILL")
+}
+
+/// The value of a constant case expression: numbers, signs, arithmetic,
+/// parentheses and a few pure functions (kept here, below the evaluator).
+fn const_value(e: &Expr) -> Option<f64> {
+    let v = match e {
+        Expr::Num(v, _) => *v,
+        Expr::Paren(a) => const_value(a)?,
+        Expr::Unary('N', a) => -const_value(a)?,
+        Expr::Unary('P', a) => const_value(a)?,
+        Expr::Binary(op, a, b) => {
+            let (x, y) = (const_value(a)?, const_value(b)?);
+            match op {
+                '+' => x + y,
+                '-' => x - y,
+                '*' => x * y,
+                '/' => x / y,
+                '^' => x.powf(y),
+                _ => return None,
+            }
+        }
+        Expr::Call(name, args, _) => {
+            let items = args.as_ref().as_ref()?.items();
+            let x = match items.as_slice() {
+                [a] => const_value(a)?,
+                _ => return None,
+            };
+            match name.as_str() {
+                "abs" => x.abs(),
+                "floor" => x.floor(),
+                "ceiling" => x.ceil(),
+                "sqrt" => x.sqrt(),
+                _ => return None,
+            }
+        }
+        _ => return None,
+    };
+    v.is_finite().then_some(v)
 }
