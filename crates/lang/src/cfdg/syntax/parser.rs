@@ -154,6 +154,7 @@ impl Parser<'_> {
         let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new() };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
+        let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
         loop {
             let span = self.span();
             match self.peek().clone() {
@@ -193,7 +194,15 @@ impl Parser<'_> {
                 Tok::Word(w) if w == "shape" => {
                     self.bump();
                     let (name, _) = self.name("a shape name after `shape`")?;
-                    current_params = if self.is_punct("(") { self.param_list()? } else { Vec::new() };
+                    // A shape declared with parameters keeps them when its
+                    // body comes later under `shape NAME` alone (paramtest6).
+                    current_params = if self.is_punct("(") {
+                        let p = self.param_list()?;
+                        declared.insert(name.clone(), p.clone());
+                        p
+                    } else {
+                        declared.get(&name).cloned().unwrap_or_default()
+                    };
                     if self.is_punct("{") {
                         let body = self.body()?;
                         g.rules.push(Rule { name, weight: 1.0, percent: false, body, is_path: false, params: current_params.clone(), span });
