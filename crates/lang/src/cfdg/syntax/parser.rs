@@ -634,11 +634,16 @@ impl Parser<'_> {
                 Tok::Word(w) => w,
                 _ => return self.err("expected a parameter type"),
             };
-            if !matches!(ty.as_str(), "number" | "natural") {
-                return self.err("only `number` and `natural` parameters are supported yet");
-            }
-            self.bump();
-            let (n, _) = self.name("a parameter name")?;
+            // An untyped parameter is a number.
+            let n = if matches!(self.peek_at(1), Tok::Punct(",") | Tok::Punct(")")) {
+                self.name("a parameter name")?.0
+            } else {
+                if !matches!(ty.as_str(), "number" | "natural") {
+                    return self.err("only `number` and `natural` parameters are supported yet");
+                }
+                self.bump();
+                self.name("a parameter name")?.0
+            };
             if self.is_punct("=") {
                 return self.err("parameter defaults are not supported yet");
             }
