@@ -1,9 +1,10 @@
 //! Renders a CFDG file to SVG as `cfdg -V` would (`scripts/cfdg-compat`):
-//! `cfdg_svg FILE VARIATION SIZE OUT.svg`. Exit status 2 on a parse error,
+//! `cfdg_svg FILE VARIATION SIZE OUT.svg`. A development tool beside the
+//! tests (like `bench/`'s), so it makes its own budget. Exit status 2 on a parse error,
 //! 3 on an evaluation error, with the message on stderr.
 
-use rulemesh_core::core::budget::{Budget, Limits};
-use rulemesh_lang::cfdg::{eval, parse_checked_in, svg, variation};
+use rulemesh::core::{Budget, Limits};
+use rulemesh::lang::cfdg::{eval, parse_checked_in, svg, variation};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
