@@ -57,7 +57,7 @@ pub struct Prepared {
     pub rest: Vec<Term>,
 }
 
-fn is_constant(e: &crate::cfdg::syntax::Expr) -> bool {
+pub(crate) fn is_constant(e: &crate::cfdg::syntax::Expr) -> bool {
     use crate::cfdg::syntax::Expr;
     match e {
         Expr::Num(..) => true,

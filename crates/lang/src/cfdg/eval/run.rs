@@ -57,7 +57,9 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     let mut global_rand = current;
     for d in &g.defines {
         if let (false, Value::Expr(e)) = (d.name.starts_with("CF::"), &d.value) {
-            global_rand.xor(define_seed(&d.name));
+            if !super::adjust::is_constant(e) {
+                global_rand.xor(define_seed(&d.name));
+            }
             let mut v = Vec::new();
             super::expr::eval(e, &scope, &mut global_rand, &mut v)?;
             scope.vars.push((d.name.clone(), v));
@@ -335,7 +337,11 @@ impl Renderer<'_> {
                 Ok(())
             }
             Element::Define(d) => {
-                self.current.xor(define_seed(&d.name));
+                // A constant definition is folded at compile time and never
+                // traversed (ASTdefine::traverse returns for non-stack defines).
+                if !matches!(&d.value, Value::Expr(e) if super::adjust::is_constant(e)) {
+                    self.current.xor(define_seed(&d.name));
+                }
                 if let Value::Expr(e) = &d.value {
                     let mut v = Vec::new();
                     super::expr::eval(e, &self.scope, &mut self.current, &mut v)?;
