@@ -107,6 +107,8 @@ fn a_dozen_examples_match_cfdg() {
         ("tests/sattargtest.cfdg", "ABC"),
         ("tests/sizetest.cfdg", "ABC"),
         ("tests/curves.cfdg", "ABC"),
+        // A start shape with an adjustment and parameters passed on with (=).
+        ("tests/grass.cfdg", "ABC"),
         // Other variation codes, letters and a number, give cfdg's shapes too.
         ("mtree.cfdg", "XYZ"),
         ("demo1.cfdg", "12345"),

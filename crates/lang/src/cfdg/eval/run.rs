@@ -133,7 +133,16 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         s.xor_bytes(start.shape.as_bytes(), &mut i);
         s
     } else {
-        term_seed(&start.adjust, &start.shape, None)
+        // The start shape's adjustment is hashed in its own modification
+        // (from the default seed), grabbed into the start replacement's
+        // (xored with the default seed), then the name is hashed on
+        // (CFDGImpl's mInitShape, ASTmodification::grab).
+        let mut s = Rand64::default();
+        let mut i = 0;
+        crate::cfdg::syntax::adjust_entropy(&start.adjust, &mut s, &mut i);
+        s.xor(Rand64::default());
+        s.xor_bytes(start.shape.as_bytes(), &mut i);
+        s
     };
     r.current.xor(seed);
     r.current.next_u64();

@@ -14,7 +14,7 @@ mod entropy;
 pub mod lexer;
 mod parser;
 
-pub use entropy::{define_seed, loop_seed, term_seed};
+pub use entropy::{adjust_entropy, define_seed, loop_seed, term_seed};
 pub use parser::{parse, parse_with, Loader, REUSE};
 
 use crate::Span;
