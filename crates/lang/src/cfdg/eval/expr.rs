@@ -10,10 +10,19 @@ use crate::Span;
 
 /// Variables in scope: globals first, then the locals pushed by loops and
 /// definitions (searched from the top).
-#[derive(Debug, Default, Clone)]
+#[derive(Debug, Clone)]
 pub struct Scope {
     /// Name and value (a tuple) of each variable.
     pub vars: Vec<(String, Vec<f64>)>,
+    /// The largest natural number `isNatural` accepts (`CF::MaxNatural`,
+    /// cfdg's default 1000); infinite under `CF::Impure`.
+    pub max_natural: f64,
+}
+
+impl Default for Scope {
+    fn default() -> Self {
+        Scope { vars: Vec::new(), max_natural: 1000.0 }
+    }
 }
 
 impl Scope {
@@ -107,7 +116,7 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             if let Some(x) = args.as_ref() {
                 eval(x, scope, rand, &mut a)?;
             }
-            out.push(call(name, &a, rand, *span)?);
+            out.push(call(name, &a, rand, *span, scope.max_natural)?);
         }
     }
     Ok(())
@@ -126,7 +135,7 @@ pub fn scalar(e: &Expr, scope: &Scope, rand: &mut Rand64) -> Result<f64, EvalErr
 const DEG: f64 = 0.0174532925199;
 const RAD: f64 = 57.29577951308;
 
-fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span) -> Result<f64, EvalError> {
+fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, max_natural: f64) -> Result<f64, EvalError> {
     let arg = |i: usize| a.get(i).copied().unwrap_or(0.0);
     let want = |n: usize| -> Result<(), EvalError> {
         if a.len() == n {
@@ -200,7 +209,7 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span) -> Result<f64, Eva
             }
             (1..=n as u32).map(f64::from).product()
         }
-        "isNatural" => f64::from(arg(0) >= 0.0 && arg(0).fract() == 0.0 && arg(0) < 9_007_199_254_740_992.0),
+        "isNatural" => f64::from(arg(0) >= 0.0 && arg(0) <= max_natural && arg(0) == arg(0).floor()),
         "div" => {
             want(2)?;
             (a[0] / a[1]).floor()

@@ -72,6 +72,16 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
             return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
         }
     }
+    // RendererImpl::init: CF::MaxNatural must be ≥ 1 and < 2⁵³; CF::Impure lifts it.
+    if let Some(m) = setting(g, "CF::MaxNatural", &scope)? {
+        if !(1.0..9_007_199_254_740_992.0).contains(&m) {
+            return Err(EvalError::BadParam { name: "CF::MaxNatural".into(), message: "must be >= 1 and < 9007199254740992".into() });
+        }
+        scope.max_natural = m;
+    }
+    if setting(g, "CF::Impure", &scope)?.is_some_and(|v| v != 0.0) {
+        scope.max_natural = f64::INFINITY;
+    }
     let min_size = setting(g, "CF::MinimumSize", &scope)?.unwrap_or(opts.min_size);
     let min_size = if min_size > 0.0 { min_size } else { 0.3 };
     let mut max_shapes = setting(g, "CF::MaxShapes", &scope)?.map(|v| v.max(1.0) as u64).unwrap_or(opts.max_shapes);
