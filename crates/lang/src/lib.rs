@@ -25,6 +25,7 @@ pub mod frontend;
 pub mod ir;
 pub mod model;
 
+pub mod cfdg;
 pub mod eisen;
 pub mod etol;
 pub mod lsystem;
@@ -74,6 +75,8 @@ languages! {
     Ug => ug::Ug,
     /// The ETOL token stream of Haglund 2009, Appendix A, read as an L-system; see `docs/lsystem.md`.
     Etol => etol::Etol,
+    /// Context Free Design Grammar (CFDG 2.x and 3.x, as cfdg 3.4 reads and draws it); see `docs/cfdg.md`.
+    Cfdg => cfdg::Cfdg,
 }
 
 impl crate::core::Choice for Language {
@@ -112,7 +115,9 @@ impl Language {
     /// Detection is a precedence across languages, so it is written here
     /// rather than per front end: EisenScript shares `rule ` with MDG and
     /// `#define` with L-systems, so it wins only without their unambiguous
-    /// markers; then MDG's words; then an L-system's settings lines. The
+    /// markers; then CFDG, whose `startshape` MDG shares, only with a 3.x
+    /// `shape` line, a `CF::` setting or a 2D primitive and no MDG-only word
+    /// ([`cfdg::looks_like_cfdg`]); then MDG's words; then an L-system's settings lines. The
     /// other languages are named or known by extension.
     pub fn detect(source: &[u8]) -> Option<Language> {
         let text = String::from_utf8_lossy(&source[..source.len().min(64 * 1024)]);
@@ -126,6 +131,8 @@ impl Language {
             && !["startshape", "@param", "@define"].iter().any(|w| text.contains(w));
         if eisen {
             Some(Language::Eisenscript)
+        } else if cfdg::looks_like_cfdg(&text) {
+            Some(Language::Cfdg)
         } else if mdg_words.iter().any(|w| text.contains(w)) {
             Some(Language::Mdg)
         } else if text.lines().any(lsystem_line) {
