@@ -25,6 +25,7 @@ pub mod frontend;
 pub mod ir;
 pub mod model;
 
+pub mod cpfg;
 pub mod eisen;
 pub mod etol;
 pub mod lsystem;
@@ -74,6 +75,8 @@ languages! {
     Ug => ug::Ug,
     /// The ETOL token stream of Haglund 2009, Appendix A, read as an L-system; see `docs/lsystem.md`.
     Etol => etol::Etol,
+    /// L-systems written for cpfg, the L-system program of L-studio and vlab (`AlgorithmicBotany/vlab`); see `docs/cpfg.md`.
+    Cpfg => cpfg::Cpfg,
 }
 
 impl crate::core::Choice for Language {

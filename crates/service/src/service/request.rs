@@ -401,6 +401,8 @@ impl RenderBody {
             // The service reads no files: Builder.load takes library grammars only.
             script_dir: None,
             frame: self.frame,
+            // Files beside the source are not accepted over HTTP yet (issue 35).
+            files: Default::default(),
         };
         crate::pipeline::check_request(&request).map_err(|e| ServiceError::BadRequest(e.to_string()))?;
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
