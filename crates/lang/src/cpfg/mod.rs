@@ -16,6 +16,7 @@
 //! block and every module the turtle reads is a step; strings are charged
 //! to memory before they grow; every segment and sphere is a primitive.
 
+pub mod companions;
 pub mod derive;
 pub mod eval;
 pub mod lower;

@@ -292,6 +292,7 @@ impl<'a> Cur<'a> {
     }
 
     fn unary(&mut self) -> Result<Expr, ParseError> {
+        self.blanks();
         let s = self.i;
         match self.tok()? {
             Tok::Op("-") => {

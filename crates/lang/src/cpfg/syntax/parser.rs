@@ -284,7 +284,6 @@ fn modules(cur: &mut Cur<'_>) -> Result<Vec<Module>, ParseError> {
         cur.blanks();
         if cur.peek() == Some('(') {
             cur.i += 1;
-            cur.braces += 1;
             if !cur.eat(")")? {
                 loop {
                     args.push(cur.expr()?);
@@ -294,7 +293,6 @@ fn modules(cur: &mut Cur<'_>) -> Result<Vec<Module>, ParseError> {
                     cur.expect(",")?;
                 }
             }
-            cur.braces -= 1;
         }
         out.push(Module { sym: ch, args, span });
     }
