@@ -115,10 +115,19 @@ impl Language {
     /// Detection is a precedence across languages, so it is written here
     /// rather than per front end: EisenScript shares `rule ` with MDG and
     /// `#define` with L-systems, so it wins only without their unambiguous
-    /// markers; then MDG's words; then an L-system's settings lines. The
-    /// other languages are named or known by extension.
+    /// markers; then MDG's words; then an L-system's settings lines. A
+    /// cpfg L-system comes first of all: its `Lsystem:` line (as cpfg's
+    /// lexer reads it, `[Ll]system:`) is in no other language. The other
+    /// languages are named or known by extension.
     pub fn detect(source: &[u8]) -> Option<Language> {
         let text = String::from_utf8_lossy(&source[..source.len().min(64 * 1024)]);
+        let cpfg_line = |l: &str| {
+            let l = l.trim_start();
+            l.starts_with("Lsystem:") || l.starts_with("lsystem:")
+        };
+        if text.lines().any(cpfg_line) {
+            return Some(Language::Cpfg);
+        }
         let mdg_words = ["startshape", "rule ", "rule\t", "@param", "@define"];
         let lsystem_line = |l: &str| {
             let l = l.trim_start();

@@ -121,6 +121,15 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
     if let Some(k) = req.frame {
         e.u64("frame", k.into());
     }
+    // The files sent with the source (cpfg's view, colour map, includes),
+    // in name order; only when there are some, so other keys are unchanged.
+    if !req.files.is_empty() {
+        e.u64("files", req.files.len() as u64);
+        for (name, bytes) in &req.files {
+            e.field("file.name", name.as_bytes());
+            e.field("file.bytes", bytes);
+        }
+    }
     e.field("format", req.format.name().as_bytes());
     if req.format == Format::Strips {
         let o = &req.export_options.strips;

@@ -90,9 +90,16 @@ impl<'a> Deriver<'a> {
         Ok(s)
     }
 
-    /// Derives `steps` steps from the axiom (then runs `end:`).
-    pub fn derive(&mut self, steps: u32, on_limit: OnLimit, budget: &mut Budget) -> Result<Derived, EvalError> {
+    /// Derives `steps` steps from the axiom (then runs `end:`); with a
+    /// view, a system that queries the turtle has its queries filled in
+    /// after the axiom and every step (on the derived string: a
+    /// homomorphism is not applied first).
+    pub fn derive(&mut self, steps: u32, view: Option<&super::view::View>, on_limit: OnLimit, budget: &mut Budget) -> Result<Derived, EvalError> {
+        let queries = view.filter(|_| super::lower::has_queries(self.sys));
         let mut cur = self.axiom(budget)?;
+        if let Some(v) = queries {
+            super::lower::fill_queries(&mut cur, v, budget)?;
+        }
         let mut done = 0;
         let mut truncated = None;
         let mut locals = vec![0.0; self.sys.block_locals as usize];
@@ -100,8 +107,11 @@ impl<'a> Deriver<'a> {
             let mark = cur.bytes();
             let r = self.machine.run(&self.sys.start_each, &mut locals, budget).and_then(|()| self.step(&cur, budget));
             match r {
-                Ok(next) => {
+                Ok(mut next) => {
                     budget.release_memory(mark);
+                    if let Some(v) = queries {
+                        super::lower::fill_queries(&mut next, v, budget)?;
+                    }
                     cur = next;
                 }
                 Err(EvalError::Limit(l)) if on_limit == OnLimit::Truncate => {

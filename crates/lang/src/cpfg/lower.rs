@@ -83,6 +83,9 @@ pub struct Lowered {
     pub string: ModuleString,
     /// Spheres and discs (`@O`, `@o`, `@c`) as instances.
     pub spheres: Vec<Instance>,
+    /// The environmental queries met (`?P`, `?H`, `?U`, `?L`): the index of
+    /// the queried module in the string read and what the turtle saw there.
+    pub queries: Vec<(usize, [f64; 3])>,
 }
 
 struct Out {
@@ -116,6 +119,7 @@ pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, E
     let mut stack: Vec<State> = Vec::new();
     let mut out = Out { s: ModuleString { syms: Vec::new(), starts: vec![0], params: Vec::new() } };
     let mut spheres = Vec::new();
+    let mut queries = Vec::new();
     let mut polygons = 0u32;
     let mut i = 0;
     while i < s.len() {
@@ -220,6 +224,23 @@ pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, E
                     i += 1;
                 }
             }
+            '?' if p.is_empty() => {
+                // `?P(x,y,z)`: the turtle's position, heading, up or left
+                // vector (`interpret.c`, `case '?'`); cpfg's up is −Z here.
+                if let Some(&q) = s.syms.get(i) {
+                    let v = match q {
+                        'P' => Some(st.pos),
+                        'H' => Some(st.rot * DVec3::Y),
+                        'U' => Some(st.rot * DVec3::NEG_Z),
+                        'L' => Some(st.rot * DVec3::NEG_X),
+                        _ => None,
+                    };
+                    if let Some(v) = v {
+                        queries.push((i, v.to_array()));
+                        i += 1;
+                    }
+                }
+            }
             '@' => {
                 let Some(&f) = s.syms.get(i) else { break };
                 let fp: Vec<f64> = s.params_of(i).to_vec();
@@ -236,7 +257,28 @@ pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, E
             _ => {}
         }
     }
-    Ok(Lowered { string: out.s, spheres })
+    Ok(Lowered { string: out.s, spheres, queries })
+}
+
+/// Whether `sys` queries the turtle, so every step is followed by an
+/// interpretation that fills the queries in (manual §6.9).
+pub fn has_queries(sys: &super::syntax::Cpfg) -> bool {
+    let q = |m: &[super::syntax::Module]| m.windows(2).any(|w| w[0].sym == '?' && w[0].args.is_empty() && "PHUL".contains(w[1].sym));
+    q(&sys.axiom) || sys.productions.iter().any(|p| q(&p.succ))
+}
+
+/// Writes into every query module of `s` what the turtle sees there: the
+/// first parameters get x, y (and z); extra parameters are kept.
+pub fn fill_queries(s: &mut CString, view: &View, budget: &mut Budget) -> Result<(), EvalError> {
+    let l = lower(s, view, budget)?;
+    budget.release_memory(8 * l.string.syms.len() as u64 + 8 * l.string.params.len() as u64);
+    for (i, v) in l.queries {
+        let (a, b) = (s.starts[i] as usize, s.starts[i + 1] as usize);
+        for (slot, x) in s.params[a..b].iter_mut().zip(v) {
+            *slot = f64::from(x as f32);
+        }
+    }
+    Ok(())
 }
 
 /// Writes the width and colour when they changed since last written.

@@ -80,7 +80,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     let view = read_view(req.files, &mut sys.warnings);
     clock.lap(Phase::Parse);
     let mut d = derive::Deriver::new(&sys, req.seed);
-    let derived = d.derive(steps(&sys, &view), req.on_limit, budget)?;
+    let derived = d.derive(steps(&sys, &view), Some(&view), req.on_limit, budget)?;
     let drawn = d.homomorphism(&derived.string, budget)?;
     budget.release_memory(derived.string.bytes());
     let lowered = lower::lower(&drawn, &view, budget)?;

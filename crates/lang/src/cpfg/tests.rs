@@ -17,7 +17,7 @@ fn derive_text(src: &str, seed: Option<u64>) -> String {
     let mut budget = Budget::new(Limits::default());
     let mut d = Deriver::new(&sys, seed);
     let n = sys.derivation_length.unwrap_or(0);
-    d.derive(n, OnLimit::Error, &mut budget).expect("derives").string.to_text()
+    d.derive(n, Some(&super::view::View::default()), OnLimit::Error, &mut budget).expect("derives").string.to_text()
 }
 
 fn build(front: &dyn crate::FrontEnd, src: &str, files: &BTreeMap<String, Vec<u8>>, limits: Limits) -> Result<Model, BuildError> {
@@ -149,6 +149,13 @@ fn ls_translations_draw_the_same_segments() {
         assert_eq!(a.primitives, b.primitives, "{c}");
         assert_eq!(points(&a), points(&b), "{c}");
     }
+}
+
+/// The environmental query `?P` receives the turtle's position (manual §6.9).
+#[test]
+fn queries_receive_the_position() {
+    let src = "Lsystem: 1\nderivation length: 1\nAxiom: F(2)?P(0,0)A\nA --> +(90)F(3)?P(0,0)\nendlsystem\n";
+    assert_eq!(derive_text(src, None), "F(2)?P(0,2)+(90)F(3)?P(-3,2)");
 }
 
 #[test]
