@@ -71,6 +71,8 @@ pub struct Machine {
     gauss: Option<f64>,
     /// The stream stochastic productions are chosen with (`drand48`).
     pub choice: Rand48,
+    /// The view's functions, `func(1, x)` first.
+    pub funcs: Vec<super::func::Function>,
 }
 
 fn non_finite(span: Span, what: &str, v: f64) -> EvalError {
@@ -99,7 +101,7 @@ impl Machine {
                 (a.dims.clone(), v)
             })
             .collect();
-        Machine { globals: vec![0.0; sys.globals.len()], arrays, ran, gauss: None, choice }
+        Machine { globals: vec![0.0; sys.globals.len()], arrays, ran, gauss: None, choice, funcs: Vec::new() }
     }
 
     fn index(&mut self, a: u32, idx: &[Expr], span: Span, locals: &mut [f64], budget: &mut Budget) -> Result<usize, EvalError> {
@@ -195,6 +197,11 @@ impl Machine {
                 self.gauss = None;
                 0.0
             }
+            // cpfg warns and gives 0 for an id without a function (`SplineFuncValue`).
+            Func::Func => match (x as i64).checked_sub(1).and_then(|k| usize::try_from(k).ok()).and_then(|k| self.funcs.get(k)) {
+                Some(f) => f.value(v[1]),
+                None => 0.0,
+            },
             Func::Ignored => 0.0,
         })
     }
@@ -330,8 +337,8 @@ pub fn constant(e: &Expr) -> Option<f64> {
                 constant(b)
             }
         }
-        Expr::Call(f, args, _) if !matches!(f, Func::Ran | Func::Nran | Func::Bran | Func::Biran | Func::Srand | Func::Ignored) => {
-            let mut m = Machine { globals: Vec::new(), arrays: Vec::new(), ran: Rand48::unseeded(), gauss: None, choice: Rand48::unseeded() };
+        Expr::Call(f, args, _) if !matches!(f, Func::Ran | Func::Nran | Func::Bran | Func::Biran | Func::Srand | Func::Ignored | Func::Func) => {
+            let mut m = Machine { globals: Vec::new(), arrays: Vec::new(), ran: Rand48::unseeded(), gauss: None, choice: Rand48::unseeded(), funcs: Vec::new() };
             let mut budget = Budget::new(crate::core::budget::Limits::default());
             let args: Vec<Expr> = args.iter().map(|a| constant(a).map(Expr::Num)).collect::<Option<_>>()?;
             m.eval(&Expr::Call(*f, args, Span::default()), &mut [], &mut budget).ok()

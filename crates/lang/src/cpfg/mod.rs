@@ -19,6 +19,7 @@
 pub mod companions;
 pub mod derive;
 pub mod eval;
+pub mod func;
 pub mod lower;
 pub mod string;
 pub mod syntax;
@@ -51,7 +52,7 @@ pub fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnosti
         all.first().map(|(_, b)| b.as_slice())
     };
     if let Some(b) = pick("v", warnings) {
-        v.read(&String::from_utf8_lossy(b), &|name| files.contains_key(name));
+        v.read(&String::from_utf8_lossy(b), &|name| files.get(name).map(|f| String::from_utf8_lossy(f).into_owned()));
     }
     if let Some(b) = pick("a", warnings) {
         v.read_animation(&String::from_utf8_lossy(b));
@@ -59,10 +60,22 @@ pub fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnosti
     if let Some(b) = pick("map", warnings) {
         v.read_map(b);
     }
+    for m in &v.unreadable {
+        warnings.push(Diagnostic::warning(Span::new(1, 1), format!("cannot read {m}; func() of it gives 0")));
+    }
     for m in &v.missing {
         warnings.push(Diagnostic::warning(Span::new(1, 1), format!("the view names {m}, which was not sent; what it defines is not drawn")));
     }
     v
+}
+
+/// The macros cpfg predefines for a function gallery's names (`-DNAME=id`,
+/// `cpfg/generate.c`, `PreprocessLsystem`).
+pub fn predefined(view: &view::View) -> Vec<(String, String)> {
+    if !view.gallery {
+        return Vec::new();
+    }
+    view.functions.iter().enumerate().filter(|(_, f)| !f.name.is_empty()).map(|(i, f)| (f.name.clone(), (i + 1).to_string())).collect()
 }
 
 /// The number of derivation steps: the L-system's `derivation length:`,
@@ -73,13 +86,16 @@ pub fn steps(sys: &syntax::Cpfg, view: &view::View) -> u32 {
 
 /// Builds the model of cpfg `source` (with the request's files) under `budget`.
 pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
-    let mut sys = syntax::parse_with(source, req.files, &[])?;
+    let mut warnings = Vec::new();
+    let mut view = read_view(req.files, &mut warnings);
+    let mut sys = syntax::parse_with(source, req.files, &predefined(&view))?;
+    sys.warnings.extend(warnings);
     if let Some(name) = req.params.keys().next() {
         return Err(EvalError::UnknownParam { name: name.clone(), declared: String::new() }.into());
     }
-    let view = read_view(req.files, &mut sys.warnings);
     clock.lap(Phase::Parse);
     let mut d = derive::Deriver::new(&sys, req.seed);
+    d.machine.funcs = std::mem::take(&mut view.functions);
     let derived = d.derive(steps(&sys, &view), Some(&view), req.on_limit, budget)?;
     let drawn = d.homomorphism(&derived.string, budget)?;
     budget.release_memory(derived.string.bytes());

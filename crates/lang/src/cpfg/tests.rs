@@ -164,8 +164,8 @@ fn parse_errors_have_positions() {
     assert_eq!(e.diagnostics[0].span.line, 3);
     let e = parse_with(b"Lsystem: 1\nAxiom: F\nF : x > --> F\n", &BTreeMap::new(), &[]).expect_err("fails");
     assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (3, 9));
-    let e = parse_with(b"Lsystem: 1\nAxiom: F\nF --> F(func(1,0.5))\n", &BTreeMap::new(), &[]).expect_err("fails");
-    assert!(e.diagnostics[0].message.contains("func"), "{e:?}");
+    let e = parse_with(b"Lsystem: 1\nAxiom: F\nF --> F(curveX(1,0.5))\n", &BTreeMap::new(), &[]).expect_err("fails");
+    assert!(e.diagnostics[0].message.contains("curveX"), "{e:?}");
 }
 
 #[test]
@@ -208,3 +208,21 @@ fn hostile_sources_end_in_named_errors() {
     assert!(parse_with(bomb.as_bytes(), &BTreeMap::new(), &[]).is_err());
 }
 
+
+/// `func(id, x)` reads the view's `.func` files as cpfg's `SplineFunction`:
+/// control points on the line y = x give y = x (to cpfg's 0.001), and a
+/// gallery's names are predefined as their ids.
+#[test]
+fn functions_from_the_view() {
+    let line = "fver 1 1\nname: ramp\nsamples: 0\nflip: off\npoints: 4\n0 0\n0.333333 0.333333\n0.666667 0.666667\n1 1\n";
+    let f = super::func::read_function(line, 0).expect("reads");
+    assert!((f.value(0.25) - 0.25).abs() < 0.002, "{}", f.value(0.25));
+    assert!((f.value(2.0) - 1.0).abs() < 0.002);
+    let mut files = BTreeMap::new();
+    files.insert("m.v".to_string(), b"function set: g.fset\n".to_vec());
+    files.insert("g.fset".to_string(), format!("funcgalleryver 1 1\nitems: 1\n{line}").into_bytes());
+    let src = "Lsystem: 1\nderivation length: 1\nAxiom: A\nA --> F(10*func(ramp, 0.5))\nendlsystem\n";
+    let m = build(&super::Cpfg, src, &files, Limits::default()).expect("builds");
+    let top = m.scene.lines.iter().flat_map(|l| l.points.iter()).map(|p| p.frame.translation.y).fold(0.0f64, f64::max);
+    assert!((top - 5.0).abs() < 0.02, "{top}");
+}

@@ -50,6 +50,13 @@ pub struct View {
     pub last_frame: Option<u32>,
     /// Files the view names (surfaces, contours, functions) that were not sent.
     pub missing: Vec<String>,
+    /// The functions of `function:` and `function set:`, in order (ids from 1).
+    pub functions: Vec<super::func::Function>,
+    /// Whether the functions came from a gallery, whose names cpfg
+    /// predefines as macros (`cpfg/generate.c`, `PreprocessLsystem`).
+    pub gallery: bool,
+    /// Files the view names that could not be read, with why.
+    pub unreadable: Vec<String>,
 }
 
 impl Default for View {
@@ -68,6 +75,9 @@ impl Default for View {
             palette: None,
             last_frame: None,
             missing: Vec::new(),
+            functions: Vec::new(),
+            gallery: false,
+            unreadable: Vec::new(),
         }
     }
 }
@@ -92,8 +102,9 @@ fn uncomment(text: &str) -> String {
 }
 
 impl View {
-    /// Reads a view file; `exists` says whether a file it names was sent.
-    pub fn read(&mut self, text: &str, exists: &dyn Fn(&str) -> bool) {
+    /// Reads a view file; `file` gives a file it names, when it was sent.
+    pub fn read(&mut self, text: &str, file: &dyn Fn(&str) -> Option<String>) {
+        let exists = |n: &str| file(n).is_some();
         let text = uncomment(text);
         for line in text.lines() {
             let Some((cmd, rest)) = line.split_once(':') else { continue };
@@ -141,10 +152,27 @@ impl View {
                     self.tropism = Some((d, first.unwrap_or(0.0)));
                 }
                 "tropism" if self.tropism.is_none() => self.tropism = tropism(rest),
-                "surface" | "contour" | "function" | "function set" | "line" | "tsurface" | "background scene" => {
+                "function" | "function set" => {
+                    let mut words = rest.split_whitespace();
+                    let name = words.next().unwrap_or("");
+                    let samples = words.next().and_then(|w| w.parse::<usize>().ok()).unwrap_or(0);
+                    let Some(body) = file(name) else {
+                        self.missing.push(name.to_string());
+                        continue;
+                    };
+                    let read = if cmd == "function" { super::func::read_function(&body, samples).map(|f| vec![f]) } else { super::func::read_set(&body) };
+                    match read {
+                        Ok(fs) => {
+                            self.gallery |= cmd == "function set";
+                            self.functions.extend(fs);
+                        }
+                        Err(e) => self.unreadable.push(format!("{name}: {e}")),
+                    }
+                }
+                "surface" | "contour" | "line" | "tsurface" | "background scene" => {
                     let words: Vec<&str> = rest.split(|c: char| c.is_whitespace() || c == ',').filter(|w| !w.is_empty()).collect();
-                    let file = if matches!(cmd.as_str(), "surface" | "contour" | "line" | "tsurface") { words.get(1) } else { words.first() };
-                    if let Some(f) = file {
+                    let named = if matches!(cmd.as_str(), "surface" | "contour" | "line" | "tsurface") { words.get(1) } else { words.first() };
+                    if let Some(f) = named {
                         if !exists(f) {
                             self.missing.push((*f).to_string());
                         }

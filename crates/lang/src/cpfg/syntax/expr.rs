@@ -329,7 +329,7 @@ impl<'a> Cur<'a> {
         if self.peek_tok()? == Tok::Op("(") {
             let Some(f) = Func::from_name(&n) else {
                 let what = match n.as_str() {
-                    "func" | "curveX" | "curveY" | "curveZ" | "curveGAL" => "user-defined functions and contours (.func/.con files) are not read yet",
+                    "curveX" | "curveY" | "curveZ" | "curveGAL" => "user-defined functions and contours (.con files) are not read yet",
                     "inblob" | "vvXmin" | "vvXmax" | "vvYmin" | "vvYmax" | "vvZmin" | "vvZmax" | "vvScale" | "GetDerivationLength" | "SetDerivationLength" => "this function of the interactive viewer has no meaning here",
                     _ => "no such function in cpfg",
                 };
@@ -348,7 +348,7 @@ impl<'a> Cur<'a> {
             }
             let ok = match f {
                 Func::Atan => (1..=2).contains(&args.len()),
-                Func::Nran | Func::Bran | Func::Biran | Func::Atan2 => args.len() == 2,
+                Func::Nran | Func::Bran | Func::Biran | Func::Atan2 | Func::Func => args.len() == 2,
                 Func::Ignored => true,
                 _ => args.len() == 1,
             };

@@ -61,6 +61,8 @@ pub enum Func {
     Biran,
     /// Reseeds the stream of `ran`.
     Srand,
+    /// `func(id, x)`: the view's function `id` at x (`cpfg/splinefun.cpp`).
+    Func,
     /// `printf`, `fprintf`, `fopen`, `fclose`, `fflush`, `fscanf`, `stop`,
     /// `play`, `Display`: no file or console here; they return 0.
     Ignored,
@@ -90,6 +92,7 @@ impl Func {
             "bran" => Func::Bran,
             "biran" => Func::Biran,
             "srand" => Func::Srand,
+            "func" => Func::Func,
             "printf" | "fprintf" | "fopen" | "fclose" | "fflush" | "fscanf" | "stop" | "play" | "Display" => Func::Ignored,
             _ => return None,
         })
