@@ -158,6 +158,12 @@ fn queries_receive_the_position() {
     assert_eq!(derive_text(src, None), "F(2)?P(0,2)+(90)F(3)?P(-3,2)");
 }
 
+/// Roll symbols in successors stay symbols; a lone `\\` in an expression is skipped.
+#[test]
+fn backslashes() {
+    assert_eq!(derive_text("Lsystem: 1\nderivation length: 1\nAxiom: A\nA --> \\(30)F\\F(1 \\ + 1)\nendlsystem\n", None), "\\(30)F\\F(2)");
+}
+
 #[test]
 fn parse_errors_have_positions() {
     let e = parse_with(b"Lsystem: 1\nAxiom: F\nF --> F(1\nendlsystem\n", &BTreeMap::new(), &[]).expect_err("fails");

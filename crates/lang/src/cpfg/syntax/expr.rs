@@ -160,6 +160,12 @@ impl<'a> Cur<'a> {
     /// Reads the next expression token without consuming it (returns its end).
     fn scan(&mut self) -> Result<(Tok, usize), ParseError> {
         self.blanks();
+        // A stray `\` (left by a `\\` continuation) is no token: cpfg's
+        // flex lexer echoes it and reads on.
+        while self.peek() == Some('\\') {
+            self.i += 1;
+            self.blanks();
+        }
         let s = self.i;
         let Some(ch) = self.peek() else { return Ok((Tok::Eol, s)) };
         if ch == '\n' {
@@ -454,6 +460,15 @@ impl<'a> Cur<'a> {
                 let is_call = self.peek_tok()? == Tok::Op("(");
                 if is_call {
                     let e = self.name(n, s)?;
+                    self.expect(";")?;
+                    return Ok(Stmt::Expr(e));
+                }
+                let assigns = self.peek_tok()? == Tok::Op("=") || (self.peek_tok()? == Tok::Op("[") && self.names.arrays.contains(&n));
+                if !assigns {
+                    // An expression for nothing (`roll - roll/L0;`): cpfg's
+                    // grammar recovers from it; here it is evaluated and dropped.
+                    self.i = s;
+                    let e = self.expr()?;
                     self.expect(";")?;
                     return Ok(Stmt::Expr(e));
                 }

@@ -32,8 +32,9 @@ pub const MAX_OUTPUT_BYTES: usize = 8 << 20;
 /// Headers of the C library that models include without using; they are empty.
 const SYSTEM_HEADERS: &[&str] = &["math.h", "stdio.h", "stdlib.h", "memory.h", "string.h"];
 
-/// The directives cccp knows; a line whose `#` starts anything else (a
-/// width module `#(0.06)` at the start of a continued production) is text.
+/// The directives cccp knows (`""`: a `#` alone); a line whose `#` starts
+/// anything else (a width module `#(0.06)` at the start of a continued
+/// production) is text.
 const DIRECTIVES: &[&str] = &["define", "undef", "include", "if", "ifdef", "ifndef", "elif", "else", "endif", "error", "warning", "pragma", "line", "ident", ""];
 
 /// The preprocessed text and, for every output line, where it came from.
@@ -233,7 +234,7 @@ impl Pp<'_> {
             last_line = line;
             let span = Span::new(line, 1);
             let active = conds.last().map_or(true, |c| c.active);
-            if let Some((name, rest)) = directive(&content).filter(|(n, _)| DIRECTIVES.contains(n)) {
+            if let Some((name, rest)) = directive(&content).filter(|(n, r)| DIRECTIVES.contains(n) && !(n.is_empty() && !r.is_empty())) {
                 match name {
                     "if" | "ifdef" | "ifndef" => {
                         let v = if !active {
