@@ -112,3 +112,23 @@ fn files_count_against_the_source_limit() {
     let e = render(b"Lsystem: 1\nAxiom: F\nendlsystem\n", &req).expect_err("over the limit");
     assert!(e.to_string().contains("source"), "{e}");
 }
+
+/// Every prefix of a committed model, and each with one byte flipped, ends
+/// in a model or a typed error under tight limits: a cheap stand-in for the
+/// `render_cpfg` fuzz target that runs with the tests.
+#[test]
+fn damaged_models_end_in_models_or_errors() {
+    let limits = Limits { max_steps: 20_000, max_primitives: 2_000, max_triangles: 100_000, max_memory: 32 << 20, timeout_ms: 2_000, ..Limits::default() };
+    for name in ["01-Lychnis", "07-fractal-ferns", "query-position"] {
+        let main = main_file(&data().join(name));
+        let source = std::fs::read(&main).expect("read");
+        let files = files_of(&main, &source);
+        let req = RenderRequest { language: Some(Language::Cpfg), format: Format::Stl, files, limits, ..RenderRequest::default() };
+        for cut in (0..source.len()).step_by(7) {
+            let _ = render(&source[..cut], &req);
+            let mut flipped = source.clone();
+            flipped[cut] ^= 0x21;
+            let _ = render(&flipped, &req);
+        }
+    }
+}
