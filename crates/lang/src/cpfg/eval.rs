@@ -225,18 +225,29 @@ impl Machine {
         }
     }
 
-    /// A Beta(a, b) deviate by Jöhnk's method (not cpfg's `brand`, so
-    /// `bran` values differ from cpfg's; `docs/cpfg.md`).
+    /// A Beta(a, b) deviate by Cheng's algorithm BA, as cpfg's `brand`
+    /// (`cpfg/utility.c`, by Paul Kruszewski), from the same stream.
     fn bran(&mut self, a: f64, b: f64, span: Span, budget: &mut Budget) -> Result<f64, EvalError> {
-        if !(a > 0.0 && b > 0.0) {
+        if !(a > 0.0 && b > 0.0) || !(a + b).is_finite() {
             return Err(non_finite(span, "bran() shape", a.min(b)));
         }
+        let s = a + b;
+        let lambda = if a.min(b) <= 1.0 { a.min(b) } else { ((2.0 * a * b - s) / (s - 2.0)).sqrt() };
+        let u = a + lambda;
         loop {
             budget.charge_step()?;
-            let x = self.ran.next().powf(1.0 / a);
-            let y = self.ran.next().powf(1.0 / b);
-            if x + y <= 1.0 && x + y > 0.0 {
-                return Ok(x / (x + y));
+            let mut u1 = self.ran.next();
+            while u1 == 0.0 {
+                u1 = self.ran.next();
+            }
+            let mut u2 = self.ran.next();
+            while u2 == 0.0 {
+                u2 = self.ran.next();
+            }
+            let v = (1.0 / lambda) * (u1 / (1.0 - u1)).ln();
+            let ym = a * v.exp();
+            if s * (s / (b + ym)).ln() + u * v - 4f64.ln() >= (u1 * u1 * u2).ln() {
+                return Ok(ym / (b + ym));
             }
         }
     }
