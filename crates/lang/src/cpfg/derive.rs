@@ -311,7 +311,7 @@ impl<'a> Deriver<'a> {
         if cands.is_empty() {
             return Ok(None);
         }
-        let mut r = total * self.machine.choice.next() as f32;
+        let mut r = total * self.machine.choice.uniform() as f32;
         for (p, locals, w) in cands {
             r -= w;
             if r <= 0.0 {

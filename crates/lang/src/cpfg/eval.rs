@@ -52,7 +52,7 @@ impl Rand48 {
     }
 
     /// The next number in [0, 1).
-    pub fn next(&mut self) -> f64 {
+    pub fn uniform(&mut self) -> f64 {
         self.x = 0x5_DEEC_E66Du64.wrapping_mul(self.x).wrapping_add(0xB) & MASK48;
         self.x as f64 / (1u64 << 48) as f64
     }
@@ -184,13 +184,13 @@ impl Machine {
                     x.signum()
                 }
             }
-            Func::Ran => self.ran.next() * x,
+            Func::Ran => self.ran.uniform() * x,
             Func::Nran => self.nran(x, v[1], budget)?,
             Func::Bran => self.bran(x, v[1], span, budget)?,
             Func::Biran => {
-                let trials = x.max(0.0).min(1e9) as u64;
+                let trials = x.clamp(0.0, 1e9) as u64;
                 budget.charge_steps(trials)?;
-                (0..trials).filter(|_| self.ran.next() <= v[1]).count() as f64
+                (0..trials).filter(|_| self.ran.uniform() <= v[1]).count() as f64
             }
             Func::Srand => {
                 self.ran = Rand48::cpfg_srand(x as i64);
@@ -214,8 +214,8 @@ impl Machine {
         }
         loop {
             budget.charge_step()?;
-            let v1 = 2.0 * self.ran.next() - 1.0;
-            let v2 = 2.0 * self.ran.next() - 1.0;
+            let v1 = 2.0 * self.ran.uniform() - 1.0;
+            let v2 = 2.0 * self.ran.uniform() - 1.0;
             let rsq = v1 * v1 + v2 * v2;
             if rsq < 1.0 && rsq != 0.0 {
                 let fac = (-2.0 * rsq.ln() / rsq).sqrt();
@@ -228,7 +228,7 @@ impl Machine {
     /// A Beta(a, b) deviate by Cheng's algorithm BA, as cpfg's `brand`
     /// (`cpfg/utility.c`, by Paul Kruszewski), from the same stream.
     fn bran(&mut self, a: f64, b: f64, span: Span, budget: &mut Budget) -> Result<f64, EvalError> {
-        if !(a > 0.0 && b > 0.0) || !(a + b).is_finite() {
+        if !(a > 0.0 && b > 0.0 && (a + b).is_finite()) {
             return Err(non_finite(span, "bran() shape", a.min(b)));
         }
         let s = a + b;
@@ -236,13 +236,13 @@ impl Machine {
         let u = a + lambda;
         loop {
             budget.charge_step()?;
-            let mut u1 = self.ran.next();
+            let mut u1 = self.ran.uniform();
             while u1 == 0.0 {
-                u1 = self.ran.next();
+                u1 = self.ran.uniform();
             }
-            let mut u2 = self.ran.next();
+            let mut u2 = self.ran.uniform();
             while u2 == 0.0 {
-                u2 = self.ran.next();
+                u2 = self.ran.uniform();
             }
             let v = (1.0 / lambda) * (u1 / (1.0 - u1)).ln();
             let ym = a * v.exp();

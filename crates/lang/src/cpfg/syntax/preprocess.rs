@@ -233,8 +233,8 @@ impl Pp<'_> {
         for (line, content) in logical_lines(text) {
             last_line = line;
             let span = Span::new(line, 1);
-            let active = conds.last().map_or(true, |c| c.active);
-            if let Some((name, rest)) = directive(&content).filter(|(n, r)| DIRECTIVES.contains(n) && !(n.is_empty() && !r.is_empty())) {
+            let active = conds.last().is_none_or(|c| c.active);
+            if let Some((name, rest)) = directive(&content).filter(|(n, r)| (r.is_empty() || !n.is_empty()) && DIRECTIVES.contains(n)) {
                 match name {
                     "if" | "ifdef" | "ifndef" => {
                         let v = if !active {
