@@ -132,3 +132,23 @@ fn damaged_models_end_in_models_or_errors() {
         }
     }
 }
+
+/// The HTTP body's `files` (text, or `base64:` bytes) reach the request,
+/// change the cache key, and refuse names with a folder.
+#[test]
+fn http_body_carries_files() {
+    use rulemesh::service::RenderBody;
+    let ceiling = Limits::default();
+    let plan = |files: serde_json::Value| {
+        let body: RenderBody = serde_json::from_value(serde_json::json!({ "source": "Lsystem: 1\nAxiom: F\nendlsystem\n", "language": "cpfg", "files": files })).expect("body");
+        body.plan(&ceiling, false)
+    };
+    let a = plan(serde_json::json!({ "m.v": "angle increment: 90\n", "m.map": "base64:AAEC" })).expect("plan");
+    assert_eq!(a.request.files["m.v"], b"angle increment: 90\n");
+    assert_eq!(a.request.files["m.map"], vec![0u8, 1, 2]);
+    let b = plan(serde_json::json!({ "m.v": "angle increment: 60\n", "m.map": "base64:AAEC" })).expect("plan");
+    assert_ne!(a.key, b.key);
+    let none = plan(serde_json::json!({})).expect("plan");
+    assert_ne!(none.key, a.key);
+    assert!(plan(serde_json::json!({ "../etc/passwd": "x" })).is_err());
+}

@@ -237,6 +237,11 @@ pub struct RenderBody {
     pub view: Option<String>,
     /// `png` only: `"transparent"` (default) or an opaque `"#rrggbb"`.
     pub background: Option<String>,
+    /// Named files beside the source (a cpfg model's `.v`, `.a`, `.map` and
+    /// `#include`s, docs/cpfg.md): name → text, or `base64:` and the bytes.
+    /// They count against `max_source_bytes` and are part of the cache key.
+    #[serde(default)]
+    pub files: BTreeMap<String, String>,
 }
 
 /// `POST /v1/check` as sent.
@@ -401,8 +406,7 @@ impl RenderBody {
             // The service reads no files: Builder.load takes library grammars only.
             script_dir: None,
             frame: self.frame,
-            // Files beside the source are not accepted over HTTP yet (issue 35).
-            files: Default::default(),
+            files: decode_files(self.files)?,
         };
         crate::pipeline::check_request(&request).map_err(|e| ServiceError::BadRequest(e.to_string()))?;
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
@@ -486,4 +490,22 @@ mod tests {
         let b: RenderBody = from_json(br#"{"source":"startshape A\nrule A { BOX {} }\n"}"#).expect("json");
         assert_eq!(a.plan(&Limits::ceiling(), false).expect("a").key, b.plan(&Limits::ceiling(), false).expect("b").key);
     }
+}
+
+/// The body's `files` as bytes: text as UTF-8, `base64:…` decoded; a name
+/// must be a plain file name (no folder, no `..`).
+fn decode_files(files: BTreeMap<String, String>) -> Result<BTreeMap<String, Vec<u8>>, ServiceError> {
+    use base64::Engine as _;
+    let mut out = BTreeMap::new();
+    for (name, text) in files {
+        if !crate::lang::cpfg::companions::plain_name(&name) {
+            return Err(ServiceError::BadRequest(format!("files: `{name}` is not a plain file name")));
+        }
+        let bytes = match text.strip_prefix("base64:") {
+            Some(b) => base64::engine::general_purpose::STANDARD.decode(b.trim()).map_err(|e| ServiceError::BadRequest(format!("files: `{name}`: bad base64: {e}")))?,
+            None => text.into_bytes(),
+        };
+        out.insert(name, bytes);
+    }
+    Ok(out)
 }
