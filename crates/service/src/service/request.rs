@@ -492,20 +492,16 @@ mod tests {
     }
 }
 
-/// The body's `files` as bytes: text as UTF-8, `base64:…` decoded; a name
-/// must be a plain file name (no folder, no `..`).
+/// The body's `files` as bytes: text as UTF-8, `base64:…` decoded (a
+/// value that is not valid base64 after the prefix is text). Names are only
+/// keys the front end looks up (nothing is read from disk), so any is kept.
 fn decode_files(files: BTreeMap<String, String>) -> Result<BTreeMap<String, Vec<u8>>, ServiceError> {
     use base64::Engine as _;
-    let mut out = BTreeMap::new();
-    for (name, text) in files {
-        if !crate::lang::cpfg::companions::plain_name(&name) {
-            return Err(ServiceError::BadRequest(format!("files: `{name}` is not a plain file name")));
-        }
-        let bytes = match text.strip_prefix("base64:") {
-            Some(b) => base64::engine::general_purpose::STANDARD.decode(b.trim()).map_err(|e| ServiceError::BadRequest(format!("files: `{name}`: bad base64: {e}")))?,
-            None => text.into_bytes(),
-        };
-        out.insert(name, bytes);
-    }
-    Ok(out)
+    Ok(files
+        .into_iter()
+        .map(|(name, text)| {
+            let decoded = text.strip_prefix("base64:").and_then(|b| base64::engine::general_purpose::STANDARD.decode(b.trim()).ok());
+            (name, decoded.unwrap_or_else(|| text.into_bytes()))
+        })
+        .collect())
 }

@@ -137,7 +137,7 @@ fn options() -> Value {
             "detail": { "type": "integer", "minimum": crate::geom::MIN_DETAIL, "maximum": crate::geom::MAX_DETAIL, "default": crate::geom::DEFAULT_DETAIL },
             "layout": { "enum": ["merged", "per-kind"], "default": "merged" },
             "frame": { "type": "integer", "minimum": 0, "maximum": u32::MAX },
-            "files": { "type": "object", "additionalProperties": { "type": "string" }, "description": "Files beside the source (a cpfg model's .v, .a, .map, #includes): plain file name → text, or \"base64:\" and the bytes" },
+            "files": { "type": "object", "additionalProperties": { "type": "string" }, "description": "Files beside the source (a cpfg model's .v, .a, .map, #includes): file name → text, or \"base64:\" and the bytes" },
             "position_bits": { "enum": [8, 10, 12, 16], "default": 16 },
             "normal_bits": { "enum": [8, 16], "default": 8 },
             "zstd": { "type": "boolean", "default": false },
