@@ -232,3 +232,23 @@ fn functions_from_the_view() {
     let top = m.scene.lines.iter().flat_map(|l| l.points.iter()).map(|p| p.frame.translation.y).fold(0.0f64, f64::max);
     assert!((top - 5.0).abs() < 0.02, "{top}");
 }
+
+/// Found over the vlab models: a continued production line starting with
+/// `#(w)` is text, not a directive (ArticulatedLamp), and an expression
+/// statement in a block is run and dropped (04-paintbrush).
+#[test]
+fn vlab_regressions() {
+    let src = "Lsystem: 1\nderivation length: 1\nAxiom: A\nA --> F\n\t#(0.5)F\nendlsystem\n";
+    assert_eq!(derive_text(src, None), "F#(0.5)F");
+    let src = "Lsystem: 1\nderivation length: 1\nAxiom: A(2)\nA(x) : { y = x; y - 1; } * --> B(y)\nendlsystem\n";
+    assert_eq!(derive_text(src, None), "B(2)");
+}
+
+/// A source with an `Lsystem:` line is detected as cpfg, before every other language.
+#[test]
+fn detected_from_lsystem_line() {
+    use crate::Language;
+    assert_eq!(Language::detect(b"#define N 3\nLsystem: 1\nAxiom: F\nendlsystem\n"), Some(Language::Cpfg));
+    assert_eq!(Language::detect(b"axiom: F\niterations: 2\nF -> FF\n"), Some(Language::Lsystem));
+    assert_eq!(Language::from_extension(std::path::Path::new("plant.l")), Some(Language::Cpfg));
+}
