@@ -186,6 +186,14 @@ fn includes_resolve_against_the_files_only() {
     files.insert("b.h".to_string(), b"#include \"a.h\"\n".to_vec());
     let e = parse_with(b"#include \"a.h\"\nLsystem: 1\nAxiom: F\n", &files, &[]).expect_err("cycle");
     assert!(e.diagnostics[0].message.contains("cycle"), "{e:?}");
+    // A chain deeper than the bound: f0.h includes f1.h includes … f39.h.
+    let mut chain = BTreeMap::new();
+    for k in 0..40 {
+        chain.insert(format!("f{k}.h"), format!("#include \"f{}.h\"\n", k + 1).into_bytes());
+    }
+    chain.insert("f40.h".to_string(), Vec::new());
+    let e = parse_with(b"#include \"f0.h\"\nLsystem: 1\nAxiom: F\n", &chain, &[]).expect_err("too deep");
+    assert!(e.diagnostics[0].message.contains("nest more than 16"), "{e:?}");
 }
 
 fn limit_of(r: Result<Model, BuildError>) -> Limit {
