@@ -103,8 +103,31 @@ impl Out {
 }
 
 /// Lowers `s` for the turtle with `view`, one step per module.
+///
+/// Pixel lines (`line style: pixel`, cpfg's default) keep their width on
+/// the screen whatever the zoom; a mesh has no screen, so a pixel is taken
+/// as 1/[`PIXELS_ACROSS`] of the drawing's largest extent (cpfg fits the
+/// model to its window), which costs a first walk to measure it.
 pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, EvalError> {
-    let width_unit = if view.line_style == LineStyle::Pixel { PIXEL } else { 1.0 };
+    if view.line_style != LineStyle::Pixel {
+        return walk(s, view, 1.0, budget).map(|w| w.0);
+    }
+    let (first, extent) = walk(s, view, PIXEL, budget)?;
+    if !(extent > 0.0 && extent.is_finite()) {
+        return Ok(first);
+    }
+    budget.release_memory(8 * first.string.syms.len() as u64 + 8 * first.string.params.len() as u64);
+    drop(first);
+    walk(s, view, extent / PIXELS_ACROSS, budget).map(|w| w.0)
+}
+
+/// Pixels across the largest extent of a drawing with pixel lines.
+pub const PIXELS_ACROSS: f64 = 250.0;
+
+/// One walk: the lowered string and the largest extent of the positions visited.
+fn walk(s: &CString, view: &View, width_unit: f64, budget: &mut Budget) -> Result<(Lowered, f64), EvalError> {
+    let mut lo = DVec3::ZERO;
+    let mut hi = DVec3::ZERO;
     let mut st = State {
         pos: DVec3::ZERO,
         rot: DQuat::IDENTITY,
@@ -137,6 +160,8 @@ pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, E
                 }
                 out.push(if draws { DRAW } else { MOVE }, &[len], budget)?;
                 st.pos += st.rot * DVec3::Y * len;
+                lo = lo.min(st.pos);
+                hi = hi.max(st.pos);
                 if polygons > 0 && (c == 'F' || c == 'f') {
                     out.push(POLY_VERTEX, &[], budget)?;
                 }
@@ -257,7 +282,8 @@ pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, E
             _ => {}
         }
     }
-    Ok(Lowered { string: out.s, spheres, queries })
+    let extent = (hi - lo).max_element();
+    Ok((Lowered { string: out.s, spheres, queries }, extent))
 }
 
 /// Whether `sys` queries the turtle, so every step is followed by an

@@ -9,7 +9,8 @@
 /// How `F` and `G` are drawn (manual §8.1.5, `line style:`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LineStyle {
-    /// Flat lines `width` pixels wide (drawn here as thin tubes, see [`PIXEL`]).
+    /// Flat lines `width` pixels wide (drawn here as tubes, a pixel a fixed
+    /// fraction of the drawing's extent: `lower::PIXELS_ACROSS`).
     Pixel,
     /// Flat polygons `width` world units wide (drawn as tubes).
     Polygon,
@@ -17,8 +18,8 @@ pub enum LineStyle {
     Cylinder,
 }
 
-/// World units per pixel of width when lines are pixels: a line has no
-/// width in world units, so a pixel is taken as 1/20 of the default step.
+/// World units per pixel of width when lines are pixels, before the
+/// drawing's extent is known (`lower` then takes a pixel as a fraction of it).
 pub const PIXEL: f64 = 0.05;
 
 /// What the view, animation and colour map files say.
