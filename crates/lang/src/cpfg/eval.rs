@@ -10,7 +10,7 @@
 //! an error naming its position (the issue asks hostile input to fail,
 //! `docs/cpfg.md` records the difference).
 
-use super::syntax::{BinOp, Cpfg, Expr, Func, Stmt, Target, UnOp};
+use super::syntax::{pure, BinOp, Cpfg, Expr, Func, Stmt, Target, UnOp};
 use crate::core::budget::Budget;
 use crate::core::Span;
 use crate::model::EvalError;
@@ -77,15 +77,6 @@ pub struct Machine {
 
 fn non_finite(span: Span, what: &str, v: f64) -> EvalError {
     EvalError::NonFinite { span, what: what.to_string(), value: format!("{v}") }
-}
-
-/// Degrees to radians as cpfg's `D_TO_R`.
-fn rad(d: f64) -> f64 {
-    d * std::f64::consts::PI / 180.0
-}
-
-fn deg(r: f64) -> f64 {
-    r * 180.0 / std::f64::consts::PI
 }
 
 impl Machine {
@@ -160,30 +151,11 @@ impl Machine {
     }
 
     fn call(&mut self, f: Func, v: [f64; 2], n: usize, span: Span, budget: &mut Budget) -> Result<f64, EvalError> {
+        if let Some(r) = pure::function(f, v, n) {
+            return Ok(r);
+        }
         let x = v[0];
         Ok(match f {
-            Func::Sin => rad(x).sin(),
-            Func::Cos => rad(x).cos(),
-            Func::Tan => rad(x).tan(),
-            Func::Asin => deg(x.asin()),
-            Func::Acos => deg(x.acos()),
-            Func::Atan if n == 2 => deg(v[1].atan2(x)),
-            Func::Atan => deg(x.atan()),
-            Func::Atan2 => deg(v[1].atan2(x)),
-            Func::Exp => x.exp(),
-            Func::Log => x.ln(),
-            Func::Sqrt => x.sqrt(),
-            Func::Floor => x.floor(),
-            Func::Ceil => x.ceil(),
-            Func::Trunc => (x + 0.5).floor(),
-            Func::Fabs => x.abs(),
-            Func::Sign => {
-                if x == 0.0 {
-                    0.0
-                } else {
-                    x.signum()
-                }
-            }
             Func::Ran => self.ran.uniform() * x,
             Func::Nran => self.nran(x, v[1], budget)?,
             Func::Bran => self.bran(x, v[1], span, budget)?,
@@ -202,7 +174,8 @@ impl Machine {
                 Some(f) => f.value(v[1]),
                 None => 0.0,
             },
-            Func::Ignored => 0.0,
+            // The deterministic functions were answered by `pure::function`.
+            _ => 0.0,
         })
     }
 
@@ -306,54 +279,5 @@ impl Machine {
 }
 
 fn binary(op: BinOp, x: f64, y: f64, span: Span) -> Result<f64, EvalError> {
-    let b = |v: bool| f64::from(v);
-    Ok(match op {
-        BinOp::Or => b(x != 0.0 || y != 0.0),
-        BinOp::And => b(x != 0.0 && y != 0.0),
-        BinOp::Eq => b(x == y),
-        BinOp::Ne => b(x != y),
-        BinOp::Lt => b(x < y),
-        BinOp::Le => b(x <= y),
-        BinOp::Gt => b(x > y),
-        BinOp::Ge => b(x >= y),
-        BinOp::Add => x + y,
-        BinOp::Sub => x - y,
-        BinOp::Mul => x * y,
-        BinOp::Div if y == 0.0 => return Err(non_finite(span, "divisor", y)),
-        BinOp::Div => x / y,
-        BinOp::Rem => {
-            // C's int conversion then %, as cpfg's `case tREM`.
-            let (a, d) = (x as i64, y as i64);
-            if d == 0 {
-                return Err(non_finite(span, "divisor of %", y));
-            }
-            a.wrapping_rem(d) as f64
-        }
-        BinOp::Pow => x.powf(y),
-    })
-}
-
-/// The value of a constant expression (numbers and operators only), as the
-/// parser needs for `derivation length:`, `seed:` and array sizes.
-pub fn constant(e: &Expr) -> Option<f64> {
-    match e {
-        Expr::Num(v) => Some(*v),
-        Expr::Unary(UnOp::Neg, x) => constant(x).map(|v| -v),
-        Expr::Unary(UnOp::Not, x) => constant(x).map(|v| f64::from(v == 0.0)),
-        Expr::Binary(op, a, b, span) => binary(*op, constant(a)?, constant(b)?, *span).ok(),
-        Expr::Cond(c, a, b) => {
-            if constant(c)? != 0.0 {
-                constant(a)
-            } else {
-                constant(b)
-            }
-        }
-        Expr::Call(f, args, _) if !matches!(f, Func::Ran | Func::Nran | Func::Bran | Func::Biran | Func::Srand | Func::Ignored | Func::Func) => {
-            let mut m = Machine { globals: Vec::new(), arrays: Vec::new(), ran: Rand48::unseeded(), gauss: None, choice: Rand48::unseeded(), funcs: Vec::new() };
-            let mut budget = Budget::new(crate::core::budget::Limits::default());
-            let args: Vec<Expr> = args.iter().map(|a| constant(a).map(Expr::Num)).collect::<Option<_>>()?;
-            m.eval(&Expr::Call(*f, args, Span::default()), &mut [], &mut budget).ok()
-        }
-        _ => None,
-    }
+    pure::binary(op, x, y).ok_or_else(|| non_finite(span, if op == BinOp::Rem { "divisor of %" } else { "divisor" }, y))
 }

@@ -13,6 +13,7 @@ pub mod cond;
 pub mod expr;
 mod parser;
 pub mod preprocess;
+pub mod pure;
 
 pub use parser::{parse, parse_with};
 

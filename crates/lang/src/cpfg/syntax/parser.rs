@@ -195,7 +195,7 @@ fn constant(cur: &mut Cur<'_>) -> Result<Option<f64>, ParseError> {
     let at = cur.i;
     let e = cur.expr()?;
     cur.names.global_mode = false;
-    let v = crate::cpfg::eval::constant(&e).ok_or_else(|| ParseError::single(cur.span_at(at), "expected a constant (numbers and #define names only)"))?;
+    let v = super::pure::constant(&e).ok_or_else(|| ParseError::single(cur.span_at(at), "expected a constant (numbers and #define names only)"))?;
     Ok(Some(v))
 }
 
@@ -224,7 +224,7 @@ fn define(cur: &mut Cur<'_>, sys: &mut Cpfg) -> Result<(), ParseError> {
             while cur.eat("[")? {
                 loop {
                     let e = cur.expr()?;
-                    let v = crate::cpfg::eval::constant(&e).filter(|v| *v >= 1.0 && v.is_finite()).ok_or_else(|| ParseError::single(cur.span_at(at), "an array dimension must be a constant ≥ 1"))?;
+                    let v = super::pure::constant(&e).filter(|v| *v >= 1.0 && v.is_finite()).ok_or_else(|| ParseError::single(cur.span_at(at), "an array dimension must be a constant ≥ 1"))?;
                     dims.push(v as usize);
                     if !cur.eat(",")? {
                         break;
@@ -239,7 +239,7 @@ fn define(cur: &mut Cur<'_>, sys: &mut Cpfg) -> Result<(), ParseError> {
                 cur.expect("{")?;
                 loop {
                     let e = cur.expr()?;
-                    init.push(crate::cpfg::eval::constant(&e).ok_or_else(|| ParseError::single(cur.span_at(at), "array values must be constants"))?);
+                    init.push(super::pure::constant(&e).ok_or_else(|| ParseError::single(cur.span_at(at), "array values must be constants"))?);
                     if !cur.eat(",")? {
                         break;
                     }
