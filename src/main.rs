@@ -302,6 +302,19 @@ fn script_dir_of(file: &str) -> std::path::PathBuf {
     }
 }
 
+/// The files a cpfg model's folder holds beside it (`plant.v`, `plant.a`,
+/// `plant.map`, its `#include`s and what the view names), which the
+/// request carries: front ends never read the disk themselves.
+fn companions_of(file: &str, language: Option<Language>, source: &[u8], max: u64) -> std::collections::BTreeMap<String, Vec<u8>> {
+    if file == "-" || language != Some(Language::Cpfg) {
+        return Default::default();
+    }
+    let dir = script_dir_of(file);
+    let stem = Path::new(file).file_stem().and_then(|s| s.to_str()).unwrap_or("");
+    let read = |name: &str| std::fs::read(dir.join(name)).ok();
+    rulemesh::lang::cpfg::companions::companions(stem, source, &read, max.saturating_sub(source.len() as u64))
+}
+
 fn language_for(file: &str, given: Option<Language>) -> Option<Language> {
     given.or_else(|| Language::from_extension(Path::new(file)))
 }
@@ -367,6 +380,8 @@ fn run_render(args: RenderArgs) -> Result<(), Failure> {
     let mut req = options.plan(&Limits::ceiling()).map_err(|e| usage(e.to_string()))?;
     req.script_dir = Some(script_dir_of(&args.file));
     let source = read_source(&args.file, req.limits.max_source_bytes)?;
+    // A cpfg model's companions (its view, colour map, includes) beside the file.
+    req.files = companions_of(&args.file, req.language, &source, req.limits.max_source_bytes);
     if args.cache_key {
         let key = rulemesh::pipeline::key::cache_key(&rulemesh::pipeline::key::normalize_source(&source), &req);
         println!("{}", key.hex());

@@ -5,6 +5,7 @@
 mod common;
 mod picture;
 
+mod cfdg;
 mod cli;
 mod c_decoder;
 mod c_scene;

@@ -25,6 +25,8 @@ pub mod frontend;
 pub mod ir;
 pub mod model;
 
+pub mod cfdg;
+pub mod cpfg;
 pub mod eisen;
 pub mod etol;
 pub mod lsystem;
@@ -74,6 +76,10 @@ languages! {
     Ug => ug::Ug,
     /// The ETOL token stream of Haglund 2009, Appendix A, read as an L-system; see `docs/lsystem.md`.
     Etol => etol::Etol,
+    /// Context Free Design Grammar (CFDG 2.x and 3.x, as cfdg 3.4 reads and draws it); see `docs/cfdg.md`.
+    Cfdg => cfdg::Cfdg,
+    /// L-systems written for cpfg, the L-system program of L-studio and vlab (`AlgorithmicBotany/vlab`); see `docs/cpfg.md`.
+    Cpfg => cpfg::Cpfg,
 }
 
 impl crate::core::Choice for Language {
@@ -112,10 +118,21 @@ impl Language {
     /// Detection is a precedence across languages, so it is written here
     /// rather than per front end: EisenScript shares `rule ` with MDG and
     /// `#define` with L-systems, so it wins only without their unambiguous
-    /// markers; then MDG's words; then an L-system's settings lines. The
-    /// other languages are named or known by extension.
+    /// markers; then CFDG, whose `startshape` MDG shares, only with a 3.x
+    /// `shape` line, a `CF::` setting or a 2D primitive and no MDG-only word
+    /// ([`cfdg::looks_like_cfdg`]); then MDG's words; then an L-system's settings lines. A
+    /// cpfg L-system comes first of all: its `Lsystem:` line (as cpfg's
+    /// lexer reads it, `[Ll]system:`) is in no other language. The other
+    /// languages are named or known by extension.
     pub fn detect(source: &[u8]) -> Option<Language> {
         let text = String::from_utf8_lossy(&source[..source.len().min(64 * 1024)]);
+        let cpfg_line = |l: &str| {
+            let l = l.trim_start();
+            l.starts_with("Lsystem:") || l.starts_with("lsystem:")
+        };
+        if text.lines().any(cpfg_line) {
+            return Some(Language::Cpfg);
+        }
         let mdg_words = ["startshape", "rule ", "rule\t", "@param", "@define"];
         let lsystem_line = |l: &str| {
             let l = l.trim_start();
@@ -126,6 +143,8 @@ impl Language {
             && !["startshape", "@param", "@define"].iter().any(|w| text.contains(w));
         if eisen {
             Some(Language::Eisenscript)
+        } else if cfdg::looks_like_cfdg(&text) {
+            Some(Language::Cfdg)
         } else if mdg_words.iter().any(|w| text.contains(w)) {
             Some(Language::Mdg)
         } else if text.lines().any(lsystem_line) {

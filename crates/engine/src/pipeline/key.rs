@@ -124,6 +124,7 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
         // the key serves, always has none (it reads library grammars only).
         script_dir: _,
         frame,
+        files,
     } = req;
     let ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview } = export_options;
     let format = *format;
@@ -149,6 +150,15 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
     // Only when given, so every other request keeps its key.
     if let Some(k) = frame {
         e.u64("frame", (*k).into());
+    }
+    // The files sent with the source (cpfg's view, colour map, includes),
+    // in name order; only when there are some, so other keys are unchanged.
+    if !files.is_empty() {
+        e.u64("files", files.len() as u64);
+        for (name, bytes) in files {
+            e.field("file.name", name.as_bytes());
+            e.field("file.bytes", bytes);
+        }
     }
     e.field("format", format.name().as_bytes());
     // The options of the format's own group (the registry's), each only

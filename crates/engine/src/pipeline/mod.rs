@@ -77,6 +77,10 @@ pub struct RenderRequest {
     /// picture; `None` builds the whole movie as one animated model. Other
     /// sources refuse it.
     pub frame: Option<u32>,
+    /// Named files sent with the source (a vlab object's `.v`, `.a`, `.map`
+    /// and `#include`d files): front ends resolve names against these only.
+    /// Their bytes count against the source-size limit.
+    pub files: BTreeMap<String, Vec<u8>>,
 }
 
 impl Default for RenderRequest {
@@ -93,6 +97,7 @@ impl Default for RenderRequest {
             export_options: ExportOptions::default(),
             script_dir: None,
             frame: None,
+            files: BTreeMap::new(),
         }
     }
 }
@@ -366,7 +371,8 @@ pub fn write_picture(width: u32, height: u32, rgba: &[u8], text: &export::png::T
 /// failure is a typed [`RenderError`].
 pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, RenderError> {
     check_request(req)?;
-    Budget::check_source(&req.limits, source.len() as u64)?;
+    let files_len: u64 = req.files.values().map(|f| f.len() as u64).sum();
+    Budget::check_source(&req.limits, (source.len() as u64).saturating_add(files_len))?;
     let language = language_of(source, req.language)?;
     let truncating = req.on_limit == OnLimit::Truncate;
     let mut budget = budget_for(req.limits);
@@ -385,6 +391,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         animated: graph_capable(req),
         script_dir: req.script_dir.as_deref(),
         frame: req.frame,
+        files: &req.files,
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     crate::core::memprobe::mark("start", &budget);

@@ -93,4 +93,8 @@ pub struct BuildRequest<'a> {
     /// Build only this picture of a JavaScript movie (see
     /// `RenderRequest::frame`); `None` builds every picture.
     pub frame: Option<u32>,
+    /// Named files sent beside the source (a vlab object's view, animation,
+    /// colour map and `#include`d files, for `language: "cpfg"`): a front
+    /// end resolves the names a source gives only against these, never the disk.
+    pub files: &'a std::collections::BTreeMap<String, Vec<u8>>,
 }

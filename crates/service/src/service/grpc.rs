@@ -72,6 +72,7 @@ impl From<pb::RenderRequest> for RenderBody {
             view,
             background,
             frame,
+            files,
         } = r;
         let options = RenderOptions {
             language: non_empty(language),
@@ -106,7 +107,7 @@ impl From<pb::RenderRequest> for RenderBody {
             view: non_empty(view),
             background: non_empty(background),
         };
-        RenderBody { source, options }
+        RenderBody { source, files: files.into_iter().map(|(k, v)| (k, file_text(v))).collect(), options }
     }
 }
 
@@ -299,5 +300,16 @@ impl Rulemesh for GrpcService {
             })
             .collect();
         Ok(Response::new(pb::ListGrammarsReply { grammars }))
+    }
+}
+
+/// A gRPC file's bytes in the HTTP body's spelling: text as itself, other
+/// bytes (and text that would read as base64) as `base64:` and the bytes.
+fn file_text(bytes: Vec<u8>) -> String {
+    use base64::Engine as _;
+    match String::from_utf8(bytes) {
+        Ok(t) if !t.starts_with("base64:") => t,
+        Ok(t) => format!("base64:{}", base64::engine::general_purpose::STANDARD.encode(t.as_bytes())),
+        Err(e) => format!("base64:{}", base64::engine::general_purpose::STANDARD.encode(e.as_bytes())),
     }
 }

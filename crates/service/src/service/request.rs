@@ -14,6 +14,7 @@ use crate::export::{Format, OptionGroup};
 use crate::lang::Language;
 use crate::preview::PreviewOptions;
 use crate::RenderRequest;
+use std::collections::BTreeMap;
 use serde::Deserialize;
 use serde_json::{Map, Value};
 use std::sync::Arc;
@@ -64,6 +65,11 @@ pub struct RenderBody {
     pub source: String,
     /// Everything else the request says.
     pub options: RenderOptions,
+    /// Named files beside the source (a cpfg model's `.v`, `.a`, `.map` and
+    /// `#include`s, docs/cpfg.md): name → text, or `base64:` and the bytes.
+    /// Content like the source, not an option of the render: they count
+    /// against `max_source_bytes` and are part of the cache key.
+    pub files: BTreeMap<String, String>,
 }
 
 impl<'de> Deserialize<'de> for RenderBody {
@@ -77,8 +83,12 @@ impl<'de> Deserialize<'de> for RenderBody {
             Some(other) => return Err(serde::de::Error::custom(format!("`source` must be a string, not {other}"))),
             None => return Err(serde::de::Error::missing_field("source")),
         };
+        let files = match fields.remove("files") {
+            None => BTreeMap::new(),
+            Some(v) => serde_json::from_value(v).map_err(|e| serde::de::Error::custom(format!("`files`: {e}")))?,
+        };
         let options = RenderOptions::deserialize(Value::Object(fields)).map_err(serde::de::Error::custom)?;
-        Ok(RenderBody { source, options })
+        Ok(RenderBody { source, files, options })
     }
 }
 
@@ -103,9 +113,13 @@ fn declared_object(fields: &[crate::pipeline::options::OptionField]) -> ObjectBu
 impl PartialSchema for RenderBody {
     fn schema() -> RefOr<Schema> {
         let source = ObjectBuilder::new().schema_type(utoipa::openapi::schema::Type::String).description(Some("Grammar source."));
+        let files = ObjectBuilder::new()
+            .additional_properties(Some(ObjectBuilder::new().schema_type(utoipa::openapi::schema::Type::String)))
+            .description(Some("Files beside the source (a cpfg model's .v, .a, .map, #includes): name → text, or `base64:` and the bytes."));
         declared_object(RenderOptions::fields())
             .property("source", source)
             .required("source")
+            .property("files", files)
             .description(Some("`POST /v1/render` as sent: the source and the render options (the one declaration, `pipeline::options`)."))
             .into()
     }
@@ -173,7 +187,8 @@ impl RenderBody {
     /// Validates the request against the server's `ceiling` (the one
     /// validator, [`RenderOptions::plan`]) and computes its cache key.
     pub fn plan(self, ceiling: &Limits, no_cache: bool) -> Result<RenderPlan, ServiceError> {
-        let request = self.options.plan(ceiling)?;
+        let mut request = self.options.plan(ceiling)?;
+        request.files = decode_files(self.files)?;
         let source: Arc<[u8]> = normalize_source(self.source.as_bytes()).into();
         let key = cache_key(&source, &request);
         Ok(RenderPlan { source, request, key, no_cache })
@@ -216,7 +231,7 @@ pub fn query_body(source: &str, language: Language, ext: &str, query_pairs: &[(S
         let picture = Format::reading(OptionGroup::Preview).first().copied().unwrap_or(format);
         preview_options(picture, size, view.as_deref(), background.as_deref())?;
     }
-    Ok(RenderBody { source: source.to_string(), options })
+    Ok(RenderBody { source: source.to_string(), files: BTreeMap::new(), options })
 }
 
 /// Reads a JSON body into `T`, with serde's message (and position) on failure.
@@ -296,4 +311,18 @@ mod tests {
         let b: RenderBody = from_json(br#"{"source":"startshape A\nrule A { BOX {} }\n"}"#).expect("json");
         assert_eq!(a.plan(&Limits::ceiling(), false).expect("a").key, b.plan(&Limits::ceiling(), false).expect("b").key);
     }
+}
+
+/// The body's `files` as bytes: text as UTF-8, `base64:…` decoded (a
+/// value that is not valid base64 after the prefix is text). Names are only
+/// keys the front end looks up (nothing is read from disk), so any is kept.
+fn decode_files(files: BTreeMap<String, String>) -> Result<BTreeMap<String, Vec<u8>>, ServiceError> {
+    use base64::Engine as _;
+    Ok(files
+        .into_iter()
+        .map(|(name, text)| {
+            let decoded = text.strip_prefix("base64:").and_then(|b| base64::engine::general_purpose::STANDARD.decode(b.trim()).ok());
+            (name, decoded.unwrap_or_else(|| text.into_bytes()))
+        })
+        .collect())
 }

@@ -110,6 +110,7 @@ fn options() -> Value {
     let mut options = options_schema();
     if let Some(props) = options.get_mut("properties").and_then(Value::as_object_mut) {
         props.insert("source".into(), json!({ "type": "string", "description": "Grammar source (added by the client; the schema is about the rest)" }));
+        props.insert("files".into(), json!({ "type": "object", "additionalProperties": { "type": "string" }, "description": "Files beside the source (a cpfg model's .v, .a, .map, #includes): file name → text, or \"base64:\" and the bytes" }));
     }
     options
 }

@@ -107,6 +107,9 @@ impl RenderOptions {
             },
             script_dir: None,
             frame,
+            // Content beside the source, not an option: the door that has
+            // them (HTTP and gRPC bodies, the CLI's folder) sets them.
+            files: Default::default(),
         };
         super::super::check_request(&request).map_err(|e| InvalidOptions(e.to_string()))?;
         Ok(request)

@@ -1,0 +1,249 @@
+//! Expressions as cfdg evaluates them (`ASTfunction::evaluate`,
+//! `ASToperator::evaluate`, `astexpression.cpp`, Context Free 3.4): trig in
+//! degrees, `rand` family drawing from the current random stream, lists
+//! flattening into tuples.
+
+use crate::cfdg::rand64::Rand64;
+use crate::cfdg::syntax::Expr;
+use crate::model::EvalError;
+use crate::Span;
+
+/// Variables in scope: globals first, then the locals pushed by loops and
+/// definitions (searched from the top).
+#[derive(Debug, Clone)]
+pub struct Scope {
+    /// Name and value (a tuple) of each variable.
+    pub vars: Vec<(String, Vec<f64>)>,
+    /// The largest natural number `isNatural` accepts (`CF::MaxNatural`,
+    /// cfdg's default 1000); infinite under `CF::Impure`.
+    pub max_natural: f64,
+}
+
+impl Default for Scope {
+    fn default() -> Self {
+        Scope { vars: Vec::new(), max_natural: 1000.0 }
+    }
+}
+
+impl Scope {
+    fn get(&self, name: &str) -> Option<&[f64]> {
+        self.vars.iter().rev().find(|(n, _)| n == name).map(|(_, v)| v.as_slice())
+    }
+}
+
+/// Largest tuple an expression may build (cfdg's adjustments take at most 6).
+const MAX_TUPLE: usize = 64;
+
+fn bad(span: Span, what: &str, value: impl std::fmt::Display) -> EvalError {
+    EvalError::NonFinite { span, what: what.to_string(), value: value.to_string() }
+}
+
+/// Evaluates `e` and appends its values to `out`.
+pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
+    match e {
+        Expr::Num(v, _) => out.push(*v),
+        Expr::Var(name, span) => match scope.get(name) {
+            Some(v) => out.extend_from_slice(v),
+            None if name == "infinity" => out.push(f64::INFINITY),
+            None => return Err(bad(*span, &format!("`{name}` (not defined)"), "undefined")),
+        },
+        Expr::Paren(a) => eval(a, scope, rand, out)?,
+        Expr::Cons(v) => {
+            for a in v {
+                eval(a, scope, rand, out)?;
+                if out.len() > MAX_TUPLE {
+                    return Err(bad(Span::new(1, 1), "a list", "too long"));
+                }
+            }
+        }
+        Expr::Unary(op, a) => {
+            let x = scalar(a, scope, rand)?;
+            out.push(match op {
+                'N' => -x,
+                '!' => f64::from(x == 0.0),
+                _ => x,
+            });
+        }
+        Expr::Binary(op, a, b) => {
+            let x = scalar(a, scope, rand)?;
+            // && and || short-circuit as cfdg's do.
+            if *op == '&' && x == 0.0 {
+                out.push(0.0);
+                return Ok(());
+            }
+            if *op == '|' && x != 0.0 {
+                out.push(1.0);
+                return Ok(());
+            }
+            let y = scalar(b, scope, rand)?;
+            out.push(match op {
+                '+' => x + y,
+                '-' => x - y,
+                '*' => x * y,
+                '/' => x / y,
+                '^' => x.powf(y),
+                '_' => (x - y).max(0.0),
+                '<' => f64::from(x < y),
+                '>' => f64::from(x > y),
+                'L' => f64::from(x <= y),
+                'G' => f64::from(x >= y),
+                '=' => f64::from(x == y),
+                'n' => f64::from(x != y),
+                '&' | '|' => f64::from(y != 0.0),
+                'X' => f64::from((x != 0.0) != (y != 0.0)),
+                _ => f64::NAN,
+            });
+        }
+        Expr::Call(name, args, span) if name == "if" || name == "select" => {
+            // Only the chosen argument is evaluated (ASTselect::evaluate), so
+            // only its random numbers are drawn.
+            let items = args.as_ref().as_ref().map(|a| a.items()).unwrap_or_default();
+            if items.len() < 3 || (name == "if" && items.len() != 3) {
+                return Err(EvalError::BadParam { name: name.clone(), message: format!("{}:{}: expected a selector and at least two choices", span.line, span.column) });
+            }
+            let sel = scalar(items[0], scope, rand)?;
+            let i = if name == "if" {
+                usize::from(sel == 0.0)
+            } else if sel < 0.0 || sel.is_nan() {
+                0
+            } else {
+                (sel as usize).min(items.len() - 2)
+            };
+            eval(items[1 + i], scope, rand, out)?;
+        }
+        Expr::Call(name, args, span) => {
+            let mut a = Vec::new();
+            if let Some(x) = args.as_ref() {
+                eval(x, scope, rand, &mut a)?;
+            }
+            out.push(call(name, &a, rand, *span, scope.max_natural)?);
+        }
+    }
+    Ok(())
+}
+
+/// Evaluates `e` to one number.
+pub fn scalar(e: &Expr, scope: &Scope, rand: &mut Rand64) -> Result<f64, EvalError> {
+    let mut v = Vec::with_capacity(1);
+    eval(e, scope, rand, &mut v)?;
+    match v.as_slice() {
+        [x] => Ok(*x),
+        _ => Err(EvalError::BadParam { name: "expression".into(), message: format!("expected one number, got {}", v.len()) }),
+    }
+}
+
+const DEG: f64 = 0.0174532925199;
+const RAD: f64 = 57.29577951308;
+
+fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, max_natural: f64) -> Result<f64, EvalError> {
+    let arg = |i: usize| a.get(i).copied().unwrap_or(0.0);
+    let want = |n: usize| -> Result<(), EvalError> {
+        if a.len() == n {
+            Ok(())
+        } else {
+            Err(EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: expected {n} arguments, got {}", span.line, span.column, a.len()) })
+        }
+    };
+    // `rand()` is [0,1), `rand(x)` [0,x), `rand(a,b)` [a,b) (ASTfunction's constructor fills the pair).
+    let pair = |a: &[f64]| match a.len() {
+        0 => (0.0, 1.0),
+        1 => (0.0, a[0]),
+        _ => (a[0], a[1]),
+    };
+    Ok(match name {
+        "rand" | "rand." | "rand_static" => {
+            let (lo, hi) = pair(a);
+            rand.next_double() * (hi - lo).abs() + lo.min(hi)
+        }
+        "rand+/-" => {
+            want(2)?;
+            (rand.next_double() * 2.0 - 1.0) * a[1] + a[0]
+        }
+        "randint" => {
+            let (lo, hi) = pair(a);
+            (rand.next_double() * (hi - lo).abs() + lo.min(hi)).floor()
+        }
+        "cos" => (arg(0) * DEG).cos(),
+        "sin" => (arg(0) * DEG).sin(),
+        "tan" => (arg(0) * DEG).tan(),
+        "cot" => 1.0 / (arg(0) * DEG).tan(),
+        "acos" => arg(0).acos() * RAD,
+        "asin" => arg(0).asin() * RAD,
+        "atan" => arg(0).atan() * RAD,
+        "acot" => (1.0 / arg(0)).atan() * RAD,
+        "atan2" => {
+            want(2)?;
+            a[0].atan2(a[1]) * RAD
+        }
+        "cosh" => arg(0).cosh(),
+        "sinh" => arg(0).sinh(),
+        "tanh" => arg(0).tanh(),
+        "acosh" => arg(0).acosh(),
+        "asinh" => arg(0).asinh(),
+        "atanh" => arg(0).atanh(),
+        "log" => arg(0).ln(),
+        "log10" => arg(0).log10(),
+        "sqrt" => arg(0).sqrt(),
+        "exp" => arg(0).exp(),
+        "abs" => arg(0).abs(),
+        "floor" => arg(0).floor(),
+        "ceiling" => arg(0).ceil(),
+        "infinity" => {
+            if a.is_empty() {
+                f64::INFINITY
+            } else {
+                f64::INFINITY.copysign(arg(0))
+            }
+        }
+        "sg" => {
+            if arg(0) == 0.0 {
+                0.0
+            } else {
+                1.0
+            }
+        }
+        "factorial" => {
+            let n = arg(0);
+            if !(0.0..=170.0).contains(&n) || n.fract() != 0.0 {
+                return Err(bad(span, "factorial's argument", n));
+            }
+            (1..=n as u32).map(f64::from).product()
+        }
+        "isNatural" => f64::from(arg(0) >= 0.0 && arg(0) <= max_natural && arg(0) == arg(0).floor()),
+        "div" => {
+            want(2)?;
+            (a[0] / a[1]).floor()
+        }
+        "divides" => {
+            want(2)?;
+            f64::from(a[0] % a[1] == 0.0)
+        }
+        "mod" => {
+            want(2)?;
+            let m = a[0] % a[1];
+            if m != 0.0 && (m < 0.0) != (a[1] < 0.0) {
+                m + a[1]
+            } else {
+                m
+            }
+        }
+        "min" => a.iter().copied().fold(f64::INFINITY, f64::min),
+        "max" => a.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        "bitnot" | "bitor" | "bitand" | "bitxor" | "bitleft" | "bitright" => {
+            // On 64-bit integers, kept to 52 bits (ASTfunction::evaluate).
+            let n = if name == "bitnot" { 1 } else { 2 };
+            want(n)?;
+            let (x, y) = (a[0] as u64, if n == 2 { a[1] as u64 } else { 0 });
+            let v = match name {
+                "bitnot" => !x,
+                "bitor" => x | y,
+                "bitand" => x & y,
+                "bitxor" => x ^ y,
+                "bitleft" => x.checked_shl(y.min(64) as u32).unwrap_or(0),
+                _ => x.checked_shr(y.min(64) as u32).unwrap_or(0),
+            };
+            (v & 0x000F_FFFF_FFFF_FFFF) as f64
+        }
+        _ => return Err(EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: unknown or unsupported function", span.line, span.column) }),
+    })
+}

@@ -1,0 +1,232 @@
+//! The CFDG renderer: expands a parsed [`Grammar`] into finished primitives
+//! as cfdg 3.4's `RendererImpl` does (`renderimpl.cpp`, `astreplacement.cpp`,
+//! John Horigan, Context Free 3.4): the largest unfinished shape first,
+//! each shape carrying its own random stream, rule choice by cumulative
+//! weight, recursion ending when a shape's area in pixels falls below the
+//! minimum size at the scale the picture has so far, and the finished
+//! shapes sorted by z, then by the order they were finished.
+
+pub mod adjust;
+pub mod expr;
+pub mod frame;
+pub mod state;
+
+use crate::cfdg::rand64::Rand64;
+use crate::cfdg::syntax::{self, Element, Grammar, Term, Value};
+use crate::model::EvalError;
+use crate::{ParseError, Span};
+use expr::{scalar, Scope};
+use state::{Affine, State};
+use std::collections::HashMap;
+
+/// The primitives' shape numbers (`primShape`): CIRCLE, SQUARE, TRIANGLE.
+pub const PRIMITIVES: [&str; 3] = ["CIRCLE", "SQUARE", "TRIANGLE"];
+
+/// What a render is asked: canvas, minimum size, border and variation
+/// (cfdg's command line: `-s`, `-x`, `-b`, `-v`, `-m`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Canvas width in pixels.
+    pub width: u32,
+    /// Canvas height in pixels.
+    pub height: u32,
+    /// Minimum shape size in pixels (cfdg's default 0.3).
+    pub min_size: f64,
+    /// Border mode in [-1, 2] (cfdg's default 2: variable-sized border).
+    pub border: f64,
+    /// The variation number ([`crate::cfdg::variation`]).
+    pub variation: i32,
+    /// Most shapes (cfdg `-m`); 0 for none.
+    pub max_shapes: u64,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { width: 500, height: 500, min_size: 0.3, border: 2.0, variation: 1, max_shapes: 0 }
+    }
+}
+
+/// One finished primitive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Finished {
+    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE.
+    pub kind: usize,
+    /// Its map from the unit primitive to design space.
+    pub transform: Affine,
+    /// Its z (drawing order: lower first).
+    pub z: f64,
+    /// Its RGBA in [0, 1] (not yet quantised).
+    pub rgba: [f64; 4],
+    /// The order it was finished in (1-based).
+    pub order: u64,
+    /// The area of its bounding box in design units (`m_Z.sz` of a finished shape).
+    pub box_area: f64,
+}
+
+/// A rendered picture: the shapes cfdg would draw, in drawing order, and the framing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Picture {
+    /// Shapes in drawing order (too small ones dropped, as cfdg drops them).
+    pub shapes: Vec<Finished>,
+    /// Width of the drawn area in pixels (cfdg's `curr_width`).
+    pub width: u32,
+    /// Height of the drawn area in pixels.
+    pub height: u32,
+    /// The canvas width (`-s`).
+    pub canvas_width: u32,
+    /// The canvas height.
+    pub canvas_height: u32,
+    /// Design space to pixels (y up).
+    pub to_pixels: Affine,
+    /// The background colour, RGBA in [0, 1].
+    pub background: [f64; 4],
+    /// The variation number used.
+    pub variation: i32,
+    /// Every primitive finished, including those too small to draw.
+    pub finished: u64,
+}
+
+#[derive(Debug, Clone)]
+struct Unfinished {
+    shape: usize,
+    state: State,
+    area: f64,
+    params: Vec<f64>,
+}
+
+/// A compiled rule set: rules of each shape with cumulative weights.
+struct Rules<'g> {
+    index: HashMap<&'g str, usize>,
+    /// Per shape number (primitives first): (cumulative weight, body).
+    by_shape: Vec<Vec<(f64, &'g [Element])>>,
+    /// Per shape number: its parameters' names.
+    params: Vec<&'g [String]>,
+}
+
+fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
+    let mut index: HashMap<&str, usize> = HashMap::new();
+    for (i, p) in PRIMITIVES.iter().enumerate() {
+        index.insert(p, i);
+    }
+    let mut by_shape: Vec<Vec<(f64, f64, bool, &[Element])>> = vec![Vec::new(); 3];
+    let mut params: Vec<&[String]> = vec![&[]; 3];
+    for r in &g.rules {
+        // A rule for a primitive's name replaces the primitive (cfdg's shape
+        // type becomes a rule type, `CFDGImpl::addRule`); FILL cannot have rules.
+        if r.name == "FILL" {
+            return Err(ParseError::single(r.span, "`FILL` is a path command and cannot have rules"));
+        }
+        let n = index.len();
+        let i = *index.entry(r.name.as_str()).or_insert(n);
+        if i == by_shape.len() {
+            by_shape.push(Vec::new());
+            params.push(&r.params);
+        }
+        by_shape[i].push((r.weight, 0.0, r.percent, &r.body));
+    }
+    // CFDGImpl::rulesLoaded: normalise, percentages apart, cumulative, the last 1.
+    let by_shape = by_shape
+        .into_iter()
+        .map(|rules| {
+            let total: f64 = rules.iter().filter(|r| !r.2).map(|r| r.0).sum();
+            let pct: f64 = rules.iter().filter(|r| r.2).map(|r| r.0).sum();
+            let any_pct = rules.iter().any(|r| r.2);
+            let mut acc = 0.0;
+            let n = rules.len();
+            rules
+                .into_iter()
+                .enumerate()
+                .map(|(k, (w, _, is_pct, body))| {
+                    let mut weight = w / total;
+                    if any_pct {
+                        weight = if is_pct { w } else { weight * (1.0 - pct) };
+                    }
+                    if !weight.is_finite() {
+                        weight = 0.0;
+                    }
+                    acc += weight;
+                    (if k + 1 == n { 1.0 } else { acc }, body)
+                })
+                .collect()
+        })
+        .collect();
+    Ok(Rules { index, by_shape, params })
+}
+
+/// Checks that every shape a design names exists, so a missing rule is a
+/// parse error at its use rather than a stop in the middle of rendering.
+pub fn check(g: &Grammar) -> Result<(), ParseError> {
+    let rules = compile(g)?;
+    fn walk(body: &[Element], rules: &Rules<'_>) -> Result<(), ParseError> {
+        for e in body {
+            match e {
+                Element::Replace(r) => arity(r, rules)?,
+                Element::Loop(l) => {
+                    walk(&l.body, rules)?;
+                    walk(&l.finally, rules)?;
+                }
+                Element::If { then, otherwise, .. } => {
+                    walk(then, rules)?;
+                    walk(otherwise, rules)?;
+                }
+                Element::Switch { cases, otherwise, .. } => {
+                    for (_, b) in cases {
+                        walk(b, rules)?;
+                    }
+                    walk(otherwise, rules)?;
+                }
+                Element::Transform { body, .. } => walk(body, rules)?,
+                Element::Define(_) => {}
+            }
+        }
+        Ok(())
+    }
+    fn arity(r: &syntax::Replacement, rules: &Rules<'_>) -> Result<(), ParseError> {
+        let Some(&i) = rules.index.get(r.shape.as_str()) else {
+            return Err(ParseError::single(r.span, format!("shape `{}` has no rules", r.shape)));
+        };
+        let wanted = rules.params[i].len();
+        if matches!(&r.args, Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE) {
+            return Ok(());
+        }
+        let given = r.args.as_ref().map_or(0, |a| a.items().len());
+        if given != wanted {
+            return Err(ParseError::single(r.span, format!("shape `{}` takes {wanted} arguments, given {given}", r.shape)));
+        }
+        Ok(())
+    }
+    for r in &g.rules {
+        walk(&r.body, &rules)?;
+    }
+    if let Some(s) = &g.start {
+        if rules.index.contains_key(s.shape.as_str()) {
+            arity(s, &rules)?;
+        }
+    }
+    match &g.start {
+        None => Err(ParseError::single(Span::new(1, 1), "no `startshape`")),
+        Some(s) if !rules.index.contains_key(s.shape.as_str()) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
+        Some(_) => Ok(()),
+    }
+}
+
+mod run;
+pub use run::render;
+
+/// The terms of an adjustment in evaluation order, cached per adjustment.
+pub(crate) fn terms_of(adj: &syntax::Adjustment) -> Vec<Term> {
+    adjust::ordered(adj)
+}
+
+/// Evaluates the numeric `CF::` setting `name`, if set.
+pub(crate) fn setting(g: &Grammar, name: &str, scope: &Scope) -> Result<Option<f64>, EvalError> {
+    let mut r = Rand64::default();
+    for d in g.defines.iter().rev() {
+        if d.name == name {
+            if let Value::Expr(e) = &d.value {
+                return scalar(e, scope, &mut r).map(Some);
+            }
+        }
+    }
+    Ok(None)
+}

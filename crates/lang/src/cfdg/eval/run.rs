@@ -1,0 +1,398 @@
+//! The expansion loop (`RendererImpl::run`, `processShape`,
+//! `processPrimShapeSiblings`, `outputFinal`; `ASTreplacement::traverse`
+//! and its loop, transform, if and switch forms), charging the [`Budget`].
+
+use super::expr::{scalar, Scope};
+use super::frame::{bounds_polygon, pop_heap, push_heap, Bounds};
+use super::adjust::{apply_prepared, prepare, Prepared};
+use super::state::{Hsba, State};
+use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
+use crate::cfdg::rand64::Rand64;
+use crate::cfdg::syntax::{self, define_seed, loop_seed, term_seed, Adjustment, Element, Grammar, Value};
+use crate::core::budget::Budget;
+use crate::model::EvalError;
+use std::collections::HashMap;
+
+/// Bytes accounted per unfinished or finished shape.
+const SHAPE_BYTES: u64 = 160;
+/// cfdg's fixed border in pixels (`FIXED_BORDER`).
+const FIXED_BORDER: f64 = 8.0;
+
+struct Renderer<'g> {
+    rules: Rules<'g>,
+    opts: Options,
+    cache: HashMap<usize, (Prepared, Rand64)>,
+    scope: Scope,
+    current: Rand64,
+    unfinished: Vec<Unfinished>,
+    finished: Vec<Finished>,
+    bounds: Bounds,
+    scale_area: f64,
+    min_area: f64,
+    fixed_border: f64,
+    shape_border: f64,
+    shape_count: u64,
+    max_shapes: u64,
+    budget: &'g mut Budget,
+    polygons: [Vec<(f64, f64)>; 3],
+    /// The parameters of the shape being expanded.
+    params: Vec<f64>,
+    /// The fixed bounds of a `CF::Size` design.
+    sized: Option<Bounds>,
+}
+
+fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
+    cache.entry(key).or_insert_with(make)
+}
+
+/// Renders `g` as cfdg renders it with `opts`, charging `budget`: a step
+/// per rule expanded and per loop iteration, memory per shape kept, a
+/// primitive per shape finished.
+pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
+    let rules = compile(g).map_err(|e| EvalError::BadParam { name: "grammar".into(), message: e.to_string() })?;
+    // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
+    let mut scope = Scope::default();
+    let mut current = Rand64::seeded(opts.variation.max(1) as u64);
+    current.next_u64();
+    let mut global_rand = current;
+    for d in &g.defines {
+        if let (false, Value::Expr(e)) = (d.name.starts_with("CF::"), &d.value) {
+            if !super::adjust::is_constant(e) {
+                global_rand.xor(define_seed(&d.name));
+            }
+            let mut v = Vec::new();
+            super::expr::eval(e, &scope, &mut global_rand, &mut v)?;
+            scope.vars.push((d.name.clone(), v));
+        }
+    }
+    // Settings that change the picture's framing or copy its shapes are not
+    // rendered yet; refusing them beats drawing something cfdg does not.
+    for d in &g.defines {
+        if matches!(d.name.as_str(), "CF::Tile" | "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
+            return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
+        }
+    }
+    // RendererImpl::init: CF::MaxNatural must be ≥ 1 and < 2⁵³; CF::Impure lifts it.
+    if let Some(m) = setting(g, "CF::MaxNatural", &scope)? {
+        if !(1.0..9_007_199_254_740_992.0).contains(&m) {
+            return Err(EvalError::BadParam { name: "CF::MaxNatural".into(), message: "must be >= 1 and < 9007199254740992".into() });
+        }
+        scope.max_natural = m;
+    }
+    if setting(g, "CF::Impure", &scope)?.is_some_and(|v| v != 0.0) {
+        scope.max_natural = f64::INFINITY;
+    }
+    let min_size = setting(g, "CF::MinimumSize", &scope)?.unwrap_or(opts.min_size);
+    let min_size = if min_size > 0.0 { min_size } else { 0.3 };
+    let mut max_shapes = setting(g, "CF::MaxShapes", &scope)?.map(|v| v.max(1.0) as u64).unwrap_or(opts.max_shapes);
+    if max_shapes == 0 {
+        max_shapes = 500_000_000;
+    }
+    let border = opts.border;
+    let fixed_border = FIXED_BORDER * if border <= 1.0 { border } else { 1.0 };
+    let fixed_border = if 2.0 * fixed_border.abs().floor() >= f64::from(opts.width.min(opts.height)) { 0.0 } else { fixed_border };
+    let shape_border = if border <= 1.0 { 1.0 } else { border };
+    let background = background(g, &scope)?;
+    let sized = sized(g, &scope)?;
+    let mut r = Renderer {
+        rules,
+        opts: *opts,
+        cache: HashMap::new(),
+        scope,
+        current,
+        unfinished: Vec::new(),
+        finished: Vec::new(),
+        bounds: Bounds::default(),
+        scale_area: 0.0,
+        min_area: min_size * min_size,
+        fixed_border,
+        shape_border,
+        shape_count: 0,
+        max_shapes,
+        budget,
+        polygons: [bounds_polygon(0), bounds_polygon(1), bounds_polygon(2)],
+        params: Vec::new(),
+        sized: None,
+    };
+    // CF::Size fixes the bounds (centred on the origin) and the scale, and
+    // offsets the start shape (RendererImpl::initBounds, getInitialShape).
+    let mut offset = (0.0, 0.0);
+    if let Some((w, h, x, y)) = sized {
+        r.fixed_border = 0.0;
+        r.shape_border = 0.0;
+        r.bounds = Bounds { min_x: -w / 2.0, max_x: w / 2.0, min_y: -h / 2.0, max_y: h / 2.0 };
+        let (scale, ..) = r.bounds.compute_scale_exact(i64::from(opts.width), i64::from(opts.height), 0.0, 0.0, true);
+        r.scale_area = scale * scale;
+        r.sized = Some(r.bounds);
+        offset = (x, y);
+    }
+    let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
+    let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
+        return Err(EvalError::BadParam { name: "startshape".into(), message: format!("shape `{}` has no rules", start.shape) });
+    };
+    let mut init = State::initial();
+    // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
+    let mut start_params = Vec::new();
+    if let Some(a) = &start.args {
+        super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
+    }
+    let seed = if start.adjust.terms.is_empty() {
+        // A start shape without adjustment has an empty modification, seeded with the default seed.
+        let mut s = Rand64::default();
+        let mut i = 0;
+        s.xor_bytes(start.shape.as_bytes(), &mut i);
+        s
+    } else {
+        // The start shape's adjustment is hashed in its own modification
+        // (from the default seed), grabbed into the start replacement's
+        // (xored with the default seed), then the name is hashed on
+        // (CFDGImpl's mInitShape, ASTmodification::grab).
+        let mut s = Rand64::default();
+        let mut i = 0;
+        crate::cfdg::syntax::adjust_entropy(&start.adjust, &mut s, &mut i);
+        s.xor(Rand64::default());
+        s.xor_bytes(start.shape.as_bytes(), &mut i);
+        s
+    };
+    r.current.xor(seed);
+    r.current.next_u64();
+    apply_prepared(&prepare(&start.adjust), &mut init, &r.scope, &mut r.current)?;
+    init.transform.tx += offset.0;
+    init.transform.ty += offset.1;
+    init.seed = r.current;
+    r.process(start_shape, init, start_params)?;
+    let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
+    while !r.unfinished.is_empty() {
+        if r.shape_count.max(r.unfinished.len() as u64) >= r.max_shapes {
+            break;
+        }
+        pop_heap(&mut r.unfinished, &less);
+        let Some(mut s) = r.unfinished.pop() else { break };
+        r.budget.release_memory(SHAPE_BYTES + 8 * s.params.len() as u64);
+        r.budget.charge_step()?;
+        let choice = s.state.seed.next_double();
+        let rules = &r.rules.by_shape[s.shape];
+        let Some(&(_, body)) = rules.iter().find(|(w, _)| *w >= choice).or(rules.last()) else { continue };
+        r.current = s.state.seed;
+        let names = r.rules.params[s.shape];
+        let depth = r.scope.vars.len();
+        for (n, v) in names.iter().zip(&s.params) {
+            r.scope.vars.push((n.clone(), vec![*v]));
+        }
+        r.params = std::mem::take(&mut s.params);
+        r.body(body, &s.state)?;
+        r.scope.vars.truncate(depth);
+    }
+    Ok(r.finish(background))
+}
+
+/// The `CF::Size` (or 2.x `size { }`) adjustment's size and offset.
+fn sized(g: &Grammar, scope: &Scope) -> Result<Option<(f64, f64, f64, f64)>, EvalError> {
+    let Some(d) = g.defines.iter().rev().find(|d| d.name == "CF::Size") else { return Ok(None) };
+    let Value::Adjust(a) = &d.value else { return Ok(None) };
+    let mut s = State::initial();
+    let mut rand = Rand64::default();
+    super::adjust::apply(&terms_of(a), &mut s, scope, &mut rand)?;
+    let t = s.transform;
+    if t.shx != 0.0 || t.shy != 0.0 || !(t.sx > 0.0 && t.sy > 0.0) {
+        return Err(EvalError::BadParam { name: "CF::Size".into(), message: format!("{}:{}: a size must be positive and not rotated or skewed", d.span.line, d.span.column) });
+    }
+    Ok(Some((t.sx, t.sy, t.tx, t.ty)))
+}
+
+fn background(g: &Grammar, scope: &Scope) -> Result<[f64; 4], EvalError> {
+    let adj = g.background.as_ref().or_else(|| {
+        g.defines.iter().rev().find(|d| d.name == "CF::Background").and_then(|d| match &d.value {
+            Value::Adjust(a) => Some(a),
+            _ => None,
+        })
+    });
+    let mut s = State::initial();
+    s.color = Hsba { h: 0.0, s: 0.0, b: 1.0, a: 1.0 };
+    if let Some(a) = adj {
+        let mut rand = Rand64::default();
+        super::adjust::apply(&terms_of(a), &mut s, scope, &mut rand)?;
+    }
+    Ok(s.color.rgba())
+}
+
+impl Renderer<'_> {
+    fn process(&mut self, shape: usize, state: State, params: Vec<f64>) -> Result<(), EvalError> {
+        if !state.is_finite() {
+            return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
+        }
+        if shape >= 3 || !self.rules.by_shape[shape].is_empty() {
+            let area = state.area();
+            if !self.bounds.valid() || area * self.scale_area >= self.min_area {
+                self.budget.reserve_memory(SHAPE_BYTES)?;
+                self.budget.reserve_memory(8 * params.len() as u64)?;
+                self.unfinished.push(Unfinished { shape, state, area, params });
+                push_heap(&mut self.unfinished, &|a: &Unfinished, b: &Unfinished| a.area < b.area);
+            }
+            return Ok(());
+        }
+        let b = Bounds::of_polygon(&state.transform, &self.polygons[shape]);
+        if !b.valid() {
+            return Ok(());
+        }
+        match &self.sized {
+            // Off-canvas shapes are dropped from a sized design.
+            Some(fixed) => {
+                if b.min_x > fixed.max_x || b.max_x < fixed.min_x || b.min_y > fixed.max_y || b.max_y < fixed.min_y {
+                    return Ok(());
+                }
+            }
+            None => {
+                self.bounds.merge(&b.dilate(self.shape_border));
+                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border);
+                self.scale_area = scale * scale;
+            }
+        }
+        self.shape_count += 1;
+        self.budget.charge_primitive(2)?;
+        self.budget.reserve_memory(SHAPE_BYTES)?;
+        let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
+        self.finished.push(Finished { kind: shape, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area });
+        Ok(())
+    }
+
+    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> (Prepared, Rand64) {
+        let key = adj as *const Adjustment as usize;
+        cached(&mut self.cache, key, || (prepare(adj), term_seed(adj, shape, args))).clone()
+    }
+
+    fn body(&mut self, body: &[Element], parent: &State) -> Result<(), EvalError> {
+        let depth = self.scope.vars.len();
+        for e in body {
+            self.element(e, parent)?;
+        }
+        self.scope.vars.truncate(depth);
+        Ok(())
+    }
+
+    fn element(&mut self, e: &Element, parent: &State) -> Result<(), EvalError> {
+        match e {
+            Element::Replace(rep) => {
+                let shape = *self.rules.index.get(rep.shape.as_str()).ok_or_else(|| EvalError::BadParam { name: rep.shape.clone(), message: "shape has no rules".into() })?;
+                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let mut params = Vec::new();
+                match &rep.args {
+                    Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE => {
+                        params = self.params.clone();
+                        if params.len() != self.rules.params[shape].len() {
+                            return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: `(=)` needs a parent with the same parameters", rep.span.line, rep.span.column) });
+                        }
+                    }
+                    Some(a) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
+                    None => {}
+                }
+                let mut child = *parent;
+                self.current.xor(seed);
+                self.current.next_u64();
+                apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
+                child.seed = self.current;
+                child.seed.next_u64();
+                self.process(shape, child, params)
+            }
+            Element::Loop(l) => {
+                let key = l as *const syntax::Loop as usize;
+                let var = l.var.clone().unwrap_or_else(|| "~~inaccessiblevar~~".into());
+                let (terms, seed) = cached(&mut self.cache, key, || (prepare(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).clone();
+                self.current.xor(seed);
+                let mut a = Vec::new();
+                super::expr::eval(&l.args, &self.scope, &mut self.current, &mut a)?;
+                let (start, end, step) = match a.as_slice() {
+                    [n] => (0.0, *n, 1.0),
+                    [s, e] => (*s, *e, 1.0),
+                    [s, e, st] => (*s, *e, *st),
+                    _ => return Err(EvalError::BadIteration { span: l.span, value: format!("{} loop arguments", a.len()) }),
+                };
+                if !(start.is_finite() && end.is_finite() && step.is_finite()) || step == 0.0 {
+                    return Err(EvalError::BadIteration { span: l.span, value: format!("{start}, {end}, {step}") });
+                }
+                let mut child = *parent;
+                let mut index = start;
+                self.scope.vars.push((var, vec![index]));
+                let slot = self.scope.vars.len() - 1;
+                loop {
+                    if (step > 0.0 && index >= end) || (step < 0.0 && index <= end) {
+                        break;
+                    }
+                    self.budget.charge_step()?;
+                    self.scope.vars[slot].1[0] = index;
+                    self.body(&l.body, &child)?;
+                    apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
+                    index += step;
+                }
+                self.scope.vars[slot].1[0] = index;
+                self.body(&l.finally, &child)?;
+                self.scope.vars.truncate(slot);
+                Ok(())
+            }
+            Element::If { cond, then, otherwise, .. } => {
+                let c = scalar(cond, &self.scope, &mut self.current)?;
+                self.body(if c != 0.0 { then } else { otherwise }, parent)
+            }
+            Element::Switch { selector, cases, otherwise, .. } => {
+                let v = scalar(selector, &self.scope, &mut self.current)?.floor();
+                let body = cases.iter().find(|(ranges, _)| ranges.iter().any(|&(lo, hi)| v >= lo as f64 && v <= hi as f64)).map(|(_, b)| b).unwrap_or(otherwise);
+                self.body(body, parent)
+            }
+            Element::Transform { clone, adjusts, body, .. } => {
+                let clone_seed = self.current;
+                for adj in adjusts {
+                    let mut child = *parent;
+                    apply_prepared(&prepare(adj), &mut child, &self.scope, &mut self.current)?;
+                    self.current.next_u64();
+                    let depth = self.scope.vars.len();
+                    for e in body {
+                        if *clone {
+                            self.current = clone_seed;
+                        }
+                        self.element(e, &child)?;
+                    }
+                    self.scope.vars.truncate(depth);
+                }
+                Ok(())
+            }
+            Element::Define(d) => {
+                // A constant definition is folded at compile time and never
+                // traversed (ASTdefine::traverse returns for non-stack defines).
+                if !matches!(&d.value, Value::Expr(e) if super::adjust::is_constant(e)) {
+                    self.current.xor(define_seed(&d.name));
+                }
+                if let Value::Expr(e) = &d.value {
+                    let mut v = Vec::new();
+                    super::expr::eval(e, &self.scope, &mut self.current, &mut v)?;
+                    self.scope.vars.push((d.name.clone(), v));
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// Sorts, frames and drops what cfdg would not draw (`outputFinal`, `drawShape`).
+    fn finish(mut self, background: [f64; 4]) -> Picture {
+        let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border, self.sized.is_some());
+        let area = scale * scale;
+        let finished = self.finished.len() as u64;
+        self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
+        let min_area = self.min_area;
+        self.finished.retain(|s| {
+            let a = s.box_area * area;
+            a.is_finite() && a >= min_area
+        });
+        self.budget.release_memory(SHAPE_BYTES * (self.unfinished.len() as u64));
+        Picture {
+            shapes: self.finished,
+            width: w.clamp(0, u32::MAX as i64) as u32,
+            height: h.clamp(0, u32::MAX as i64) as u32,
+            canvas_width: self.opts.width,
+            canvas_height: self.opts.height,
+            to_pixels,
+            background,
+            variation: self.opts.variation,
+            finished,
+        }
+    }
+}

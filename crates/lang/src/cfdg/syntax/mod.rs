@@ -1,0 +1,262 @@
+//! The CFDG syntax tree and its parser, for both the 2.x syntax (`rule X
+//! 0.5 { }`, `{ }` canonical and `[ ]` ordered adjustments, `N * { } X { }`
+//! loops) and the 3.x syntax (`shape`, `rule`, `[ ]` canonical and `[[ ]]`
+//! ordered adjustments, `loop`, `if`, `switch`, `transform`, `clone`,
+//! definitions and `CF::` settings), as cfdg 3.4 reads them (John Horigan,
+//! `cfdg.ypp` and `cfdg.l`, Context Free 3.4, 2018).
+//!
+//! The tree keeps each number's text: Context Free hashes the source text of
+//! every adjustment into the random seed of the replacement that carries it
+//! ("entropy", `astexpression.cpp` `entropy()`), so the same variation code
+//! gives the same picture only if the text is hashed as cfdg hashes it.
+
+mod entropy;
+pub mod lexer;
+mod parser;
+
+pub use entropy::{adjust_entropy, define_seed, loop_seed, term_seed};
+pub use parser::{parse, parse_with, Loader, REUSE};
+
+use crate::Span;
+
+/// Which syntax a file is written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Version {
+    /// Context Free 2.x: `rule NAME { }`, `{ }` canonical adjustments.
+    V2,
+    /// Context Free 3.x: `shape NAME`, `[ ]` canonical adjustments.
+    V3,
+}
+
+/// A parsed design.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grammar {
+    /// The syntax it was read as.
+    pub version: Version,
+    /// The first shape (`startshape NAME [adjustment]` or `CF::StartShape`).
+    pub start: Option<Replacement>,
+    /// Every rule, in source order (a 3.x `shape` with one body is one rule of weight 1).
+    pub rules: Vec<Rule>,
+    /// Global definitions and `CF::` settings in source order.
+    pub defines: Vec<Define>,
+    /// The 2.x `background { }` adjustment, if any.
+    pub background: Option<Adjustment>,
+    /// Warnings found while parsing.
+    pub warnings: Vec<crate::Diagnostic>,
+}
+
+/// One rule of a shape.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rule {
+    /// The shape it expands.
+    pub name: String,
+    /// Its weight (1 when not given).
+    pub weight: f64,
+    /// Whether the weight was written as a percentage (`rule 20%`).
+    pub percent: bool,
+    /// Its body.
+    pub body: Vec<Element>,
+    /// Whether it is a `path` (drawn as a path, not expanded).
+    pub is_path: bool,
+    /// The names of its shape's numeric parameters, in order.
+    pub params: Vec<String>,
+    /// Where it starts.
+    pub span: Span,
+}
+
+/// A definition `NAME = expression` (a `CF::` setting when NAME starts with `CF::`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Define {
+    /// The name defined.
+    pub name: String,
+    /// Its value: an expression or an adjustment.
+    pub value: Value,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// The right side of a definition.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value {
+    /// A numeric expression.
+    Expr(Expr),
+    /// An adjustment (`CF::Background = [b -1]`).
+    Adjust(Adjustment),
+    /// A shape name (`CF::StartShape = X`).
+    Shape(String),
+}
+
+/// A replacement: a shape and the adjustment placing it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Replacement {
+    /// The shape's name (a rule's or `SQUARE`, `CIRCLE`, `TRIANGLE`).
+    pub shape: String,
+    /// Its adjustment.
+    pub adjust: Adjustment,
+    /// Its arguments, when the shape takes parameters (a list of
+    /// parenthesised expressions, as cfdg builds and hashes it).
+    pub args: Option<Expr>,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// One element of a rule body.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Element {
+    /// `SHAPE [adjustment]`.
+    Replace(Replacement),
+    /// A loop (`loop N [adj] body`, `loop i = a, b, s [adj] body`, 2.x `N * {adj} body`).
+    Loop(Loop),
+    /// `if (cond) body else body`.
+    If {
+        /// The condition.
+        cond: Expr,
+        /// Taken when it is not 0.
+        then: Vec<Element>,
+        /// Taken otherwise.
+        otherwise: Vec<Element>,
+        /// Where it is written.
+        span: Span,
+    },
+    /// `switch (e) { case a, b..c: body else: body }`.
+    Switch {
+        /// The selector (floored).
+        selector: Expr,
+        /// Each case's values (inclusive ranges) and body.
+        cases: Vec<(Vec<(i64, i64)>, Vec<Element>)>,
+        /// The `else` body.
+        otherwise: Vec<Element>,
+        /// Where it is written.
+        span: Span,
+    },
+    /// `transform adj… body` or `clone adj… body`.
+    Transform {
+        /// `clone`: every copy restarts from the same random state.
+        clone: bool,
+        /// The adjustments, one copy of the body each.
+        adjusts: Vec<Adjustment>,
+        /// The body.
+        body: Vec<Element>,
+        /// Where it is written.
+        span: Span,
+    },
+    /// A local definition.
+    Define(Define),
+}
+
+/// A loop.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Loop {
+    /// The index variable's name, if named.
+    pub var: Option<String>,
+    /// The loop arguments (count; or start, end[, step]).
+    pub args: Expr,
+    /// The adjustment applied after each step.
+    pub adjust: Adjustment,
+    /// The body.
+    pub body: Vec<Element>,
+    /// The `finally` body.
+    pub finally: Vec<Element>,
+    /// Written in the 2.x form `N * {adj}`.
+    pub v2: bool,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// An adjustment: terms in order, applied canonically or as written.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Adjustment {
+    /// Canonical order (translate, rotate, size, skew, flip) or as written.
+    pub canonical: bool,
+    /// The terms as written (after Context Free's merging of `x a y b`).
+    pub terms: Vec<Term>,
+}
+
+/// The kinds of adjustment term (`ASTmodTerm::modTypeEnum`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TermKind {
+    /// `x` (one or two arguments).
+    X,
+    /// `y`.
+    Y,
+    /// `z`.
+    Z,
+    /// `size`/`s` (one or two arguments; three also scales z).
+    Size,
+    /// The z part of a three-number `size` (`zsize`).
+    ZSize,
+    /// `rotate`/`r`.
+    Rotate,
+    /// `flip`/`f`.
+    Flip,
+    /// `skew`.
+    Skew,
+    /// `transform`/`trans` with 1, 2, 4 or 6 numbers.
+    Transform,
+    /// `hue`/`h`.
+    Hue,
+    /// `saturation`/`sat`.
+    Sat,
+    /// `brightness`/`b`.
+    Bright,
+    /// `alpha`/`a`.
+    Alpha,
+    /// `hue v |`: towards the target hue.
+    HueTarg,
+    /// `sat v |`.
+    SatTarg,
+    /// `b v |`.
+    BrightTarg,
+    /// `a v |`.
+    AlphaTarg,
+    /// `|hue v`: changes the target hue.
+    TargHue,
+    /// `|sat v`.
+    TargSat,
+    /// `|b v`.
+    TargBright,
+    /// `|a v`.
+    TargAlpha,
+    /// `time`, `timescale`, `blend`: read and ignored (no animation).
+    Ignored,
+}
+
+/// One adjustment term.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Term {
+    /// Which term.
+    pub kind: TermKind,
+    /// Its arguments (a `Cons` when more than one).
+    pub args: Expr,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// An expression, keeping what Context Free hashes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Expr {
+    /// A number and its text.
+    Num(f64, String),
+    /// A variable (a definition, a loop index or a parameter).
+    Var(String, Span),
+    /// Unary `-` (`N`) or `+` (`P`) or `!`.
+    Unary(char, Box<Expr>),
+    /// A binary operator (Context Free's one-letter names: `+ - * / ^ < > L G = n & | X`).
+    Binary(char, Box<Expr>, Box<Expr>),
+    /// A parenthesised expression.
+    Paren(Box<Expr>),
+    /// A list `a, b` or the several arguments of a term.
+    Cons(Vec<Expr>),
+    /// A function call by its name (`rand`, `sin`, …; `rand.` for `a..b`, `rand+/-` for `a ± b`).
+    Call(String, Box<Option<Expr>>, Span),
+}
+
+impl Expr {
+    /// The expressions a list holds (itself when it is not a list).
+    pub fn items(&self) -> Vec<&Expr> {
+        match self {
+            Expr::Cons(v) => v.iter().collect(),
+            e => vec![e],
+        }
+    }
+}

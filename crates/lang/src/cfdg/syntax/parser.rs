@@ -1,0 +1,773 @@
+//! The recursive-descent parser over [`lexer`](super::lexer) tokens, after
+//! the productions of `cfdg.ypp` (Context Free 3.4). The version is decided
+//! up front as cfdg decides it when it restarts a parse: a file with a
+//! `shape` keyword, a `loop` or a `CF::` setting is 3.x, otherwise 2.x.
+
+use super::lexer::{lex, Tok, Token};
+use super::{Adjustment, Define, Element, Expr, Grammar, Loop, Replacement, Rule, Term, TermKind, Value, Version};
+use crate::{ParseError, Span};
+
+/// The argument list `(=)` stands for: the parent shape's parameters.
+pub const REUSE: &str = "(=)";
+
+/// Deepest nesting of bodies and expressions the parser follows; deeper
+/// input is an error, never a stack overflow.
+pub const MAX_NESTING: usize = 200;
+
+/// Reads the file an `import`/`include` names (a bare file name); `None`
+/// when it cannot be read or no files may be read.
+pub type Loader<'a> = &'a dyn Fn(&str) -> Option<Vec<u8>>;
+
+/// Most files one design may import, counting repeats (an import cycle ends here).
+pub const MAX_IMPORTS: usize = 64;
+
+/// Parses CFDG `source` (UTF-8; invalid UTF-8 is an error at its position);
+/// `import`/`include` are errors.
+pub fn parse(source: &[u8]) -> Result<Grammar, ParseError> {
+    parse_with(source, &|_| None)
+}
+
+fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
+    let text = std::str::from_utf8(source).map_err(|e| {
+        let before = &source[..e.valid_up_to()];
+        let line = before.iter().filter(|&&c| c == b'\n').count() as u32 + 1;
+        let col = before.iter().rev().take_while(|&&c| c != b'\n').count() as u32 + 1;
+        ParseError::single(Span::new(line, col), "invalid UTF-8")
+    })?;
+    let mut toks = lex(text)?;
+    // The version is decided per file, as cfdg decides it when it restarts
+    // a parse: a `shape`, a `loop` or a `CF::` setting makes it 3.x.
+    let v3 = toks.iter().any(|t| match &t.tok {
+        Tok::Word(w) => w == "shape" || w == "loop" || w.starts_with("CF::"),
+        _ => false,
+    });
+    for t in &mut toks {
+        t.v3 = v3;
+        t.included = included;
+    }
+    Ok(toks)
+}
+
+/// Parses CFDG `source`, reading imported files through `load`.
+pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
+    let toks = tokens(source, false)?;
+    let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0 };
+    p.grammar()
+}
+
+struct Parser<'a> {
+    toks: Vec<Token>,
+    pos: usize,
+    version: Version,
+    depth: usize,
+    load: Loader<'a>,
+    imports: usize,
+}
+
+fn term_kind(word: &str) -> Option<TermKind> {
+    Some(match word {
+        "x" => TermKind::X,
+        "y" => TermKind::Y,
+        "z" => TermKind::Z,
+        "size" | "s" => TermKind::Size,
+        "rotate" | "r" => TermKind::Rotate,
+        "flip" | "f" => TermKind::Flip,
+        "skew" => TermKind::Skew,
+        "transform" | "trans" => TermKind::Transform,
+        "hue" | "h" => TermKind::Hue,
+        "saturation" | "sat" => TermKind::Sat,
+        "brightness" | "b" => TermKind::Bright,
+        "alpha" | "a" => TermKind::Alpha,
+        "|hue" | "|h" => TermKind::TargHue,
+        "|saturation" | "|sat" => TermKind::TargSat,
+        "|brightness" | "|b" => TermKind::TargBright,
+        "|alpha" | "|a" => TermKind::TargAlpha,
+        "time" | "timescale" | "blend" => TermKind::Ignored,
+        _ => return None,
+    })
+}
+
+impl Parser<'_> {
+    fn v3(&self) -> bool {
+        self.toks[self.pos.min(self.toks.len() - 1)].v3
+    }
+    fn peek(&self) -> &Tok {
+        &self.toks[self.pos.min(self.toks.len() - 1)].tok
+    }
+    fn peek_at(&self, k: usize) -> &Tok {
+        &self.toks[(self.pos + k).min(self.toks.len() - 1)].tok
+    }
+    fn span(&self) -> Span {
+        self.toks[self.pos.min(self.toks.len() - 1)].span
+    }
+    fn bump(&mut self) -> Token {
+        let t = self.toks[self.pos.min(self.toks.len() - 1)].clone();
+        if self.pos < self.toks.len() - 1 {
+            self.pos += 1;
+        }
+        t
+    }
+    fn is_punct(&self, p: &str) -> bool {
+        matches!(self.peek(), Tok::Punct(q) if *q == p)
+    }
+    fn is_word(&self, w: &str) -> bool {
+        matches!(self.peek(), Tok::Word(q) if q == w)
+    }
+    fn err<T>(&self, msg: impl Into<String>) -> Result<T, ParseError> {
+        let found = match self.peek() {
+            Tok::Num(n) => format!("`{n}`"),
+            Tok::Word(w) => format!("`{w}`"),
+            Tok::Str(s) => format!("\"{s}\""),
+            Tok::Punct(p) => format!("`{p}`"),
+            Tok::Eof => "end of input".into(),
+        };
+        Err(ParseError::single(self.span(), format!("{}, found {found}", msg.into())))
+    }
+    fn expect(&mut self, p: &str) -> Result<(), ParseError> {
+        if self.is_punct(p) {
+            self.bump();
+            Ok(())
+        } else {
+            self.err(format!("expected `{p}`"))
+        }
+    }
+    fn name(&mut self, what: &str) -> Result<(String, Span), ParseError> {
+        let span = self.span();
+        match self.peek().clone() {
+            Tok::Word(w) if term_kind(&w).is_none() => {
+                self.bump();
+                Ok((w, span))
+            }
+            _ => self.err(format!("expected {what}")),
+        }
+    }
+    fn enter(&mut self) -> Result<(), ParseError> {
+        self.depth += 1;
+        if self.depth > MAX_NESTING {
+            return Err(ParseError::single(self.span(), format!("nesting deeper than {MAX_NESTING}")));
+        }
+        Ok(())
+    }
+
+    fn grammar(&mut self) -> Result<Grammar, ParseError> {
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new() };
+        let mut current_shape: Option<String> = None;
+        let mut current_params: Vec<String> = Vec::new();
+        let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
+        loop {
+            let span = self.span();
+            match self.peek().clone() {
+                Tok::Eof => break,
+                Tok::Word(w) if w == "startshape" => {
+                    self.bump();
+                    let (name, nspan) = self.name("a shape name after `startshape`")?;
+                    let args = if self.is_punct("(") { self.call_args(&name)? } else { None };
+                    let adjust = if self.is_punct("[") { self.adjustment()? } else { Adjustment { canonical: true, terms: Vec::new() } };
+                    // The design's own startshape wins over an imported file's.
+                    if !self.toks[self.pos.saturating_sub(1)].included || g.start.is_none() {
+                        g.start = Some(Replacement { shape: name, adjust, args, span: nspan });
+                    }
+                }
+                Tok::Word(w) if w == "include" || w == "import" => {
+                    self.bump();
+                    let name = match self.bump().tok {
+                        Tok::Word(n) | Tok::Str(n) => n,
+                        _ => return Err(ParseError::single(span, "expected a file name after `import`")),
+                    };
+                    self.imports += 1;
+                    if self.imports > MAX_IMPORTS {
+                        return Err(ParseError::single(span, format!("more than {MAX_IMPORTS} imports (a cycle?)")));
+                    }
+                    let Some(bytes) = (self.load)(&name) else {
+                        return Err(ParseError::single(span, format!("cannot import `{name}` (only files beside the design can be imported)")));
+                    };
+                    let mut more = tokens(&bytes, true).map_err(|e| {
+                        let d = &e.diagnostics[0];
+                        ParseError::single(span, format!("in `{name}` at {}:{}: {}", d.span.line, d.span.column, d.message))
+                    })?;
+                    more.pop(); // its end of input
+                    let at = self.pos;
+                    self.toks.splice(at..at, more);
+                }
+                Tok::Word(w) if w == "path" => return self.err("paths (`path`) are not supported yet"),
+                Tok::Word(w) if w == "shape" => {
+                    self.bump();
+                    let (name, _) = self.name("a shape name after `shape`")?;
+                    // A shape declared with parameters keeps them when its
+                    // body comes later under `shape NAME` alone (paramtest6).
+                    current_params = if self.is_punct("(") {
+                        let p = self.param_list()?;
+                        declared.insert(name.clone(), p.clone());
+                        p
+                    } else {
+                        declared.get(&name).cloned().unwrap_or_default()
+                    };
+                    if self.is_punct("{") {
+                        let body = self.body()?;
+                        g.rules.push(Rule { name, weight: 1.0, percent: false, body, is_path: false, params: current_params.clone(), span });
+                        current_shape = None;
+                    } else {
+                        current_shape = Some(name);
+                    }
+                }
+                Tok::Word(w) if w == "rule" => {
+                    self.bump();
+                    let name = if !self.v3() {
+                        self.name("a rule name after `rule`")?.0
+                    } else {
+                        match &current_shape {
+                            Some(n) => n.clone(),
+                            None => return self.err("`rule` outside a `shape`"),
+                        }
+                    };
+                    let (weight, percent) = if let Tok::Num(n) = self.peek().clone() {
+                        self.bump();
+                        let pct = n.ends_with('%');
+                        let v: f64 = n.trim_end_matches('%').parse().unwrap_or(1.0);
+                        (if pct { v / 100.0 } else { v }, pct)
+                    } else {
+                        (1.0, false)
+                    };
+                    let body = if !self.v3() { self.body_v2()? } else { self.body()? };
+                    let weight = if weight > 0.0 && weight.is_finite() { weight } else { 1.0 };
+                    let params = if self.v3() { current_params.clone() } else { Vec::new() };
+                    g.rules.push(Rule { name, weight, percent, body, is_path: false, params, span });
+                }
+                Tok::Word(w) if !self.v3() && matches!(w.as_str(), "background" | "tile" | "size") => {
+                    self.bump();
+                    let adj = self.adjustment()?;
+                    match w.as_str() {
+                        "background" => g.background = Some(adj),
+                        "tile" => g.defines.push(Define { name: "CF::Tile".into(), value: Value::Adjust(adj), span }),
+                        _ => g.defines.push(Define { name: "CF::Size".into(), value: Value::Adjust(adj), span }),
+                    }
+                }
+                Tok::Word(_) if matches!(self.peek_at(1), Tok::Punct("=")) => {
+                    let d = self.define()?;
+                    if d.name == "CF::StartShape" {
+                        if let Value::Shape(s) = &d.value {
+                            g.start = Some(Replacement { shape: s.clone(), adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span: d.span });
+                        }
+                    }
+                    current_shape = None;
+                    g.defines.push(d);
+                }
+                _ => return self.err("expected `startshape`, `shape`, `rule`, a definition or a setting"),
+            }
+        }
+        Ok(g)
+    }
+
+    fn define(&mut self) -> Result<Define, ParseError> {
+        let (name, span) = match self.bump() {
+            Token { tok: Tok::Word(w), span, .. } => (w, span),
+            _ => return self.err("expected a name"),
+        };
+        self.expect("=")?;
+        let value = if self.is_punct("[") {
+            Value::Adjust(self.adjustment()?)
+        } else if name == "CF::StartShape" {
+            Value::Shape(self.name("a shape name")?.0)
+        } else {
+            Value::Expr(self.expr(0)?)
+        };
+        Ok(Define { name, value, span })
+    }
+
+    /// `{ elements }` or one element (3.x).
+    fn body(&mut self) -> Result<Vec<Element>, ParseError> {
+        self.enter()?;
+        let mut out = Vec::new();
+        if self.is_punct("{") {
+            self.bump();
+            while !self.is_punct("}") {
+                if matches!(self.peek(), Tok::Eof) {
+                    return self.err("expected `}`");
+                }
+                out.push(self.element()?);
+            }
+            self.bump();
+        } else {
+            out.push(self.element()?);
+        }
+        self.depth -= 1;
+        Ok(out)
+    }
+
+    fn element(&mut self) -> Result<Element, ParseError> {
+        let span = self.span();
+        let word = match self.peek().clone() {
+            Tok::Word(w) => w,
+            _ => return self.err("expected a shape, `loop`, `if`, `switch`, `transform` or a definition"),
+        };
+        match word.as_str() {
+            "loop" => {
+                self.bump();
+                let var = if matches!(self.peek(), Tok::Word(_)) && matches!(self.peek_at(1), Tok::Punct("=")) {
+                    let (v, _) = self.name("a loop index")?;
+                    self.bump();
+                    Some(v)
+                } else {
+                    None
+                };
+                let args = self.expr(0)?;
+                let adjust = self.adjustment()?;
+                let body = self.body()?;
+                let finally = if self.is_word("finally") {
+                    self.bump();
+                    self.body()?
+                } else {
+                    Vec::new()
+                };
+                Ok(Element::Loop(Loop { var, args, adjust, body, finally, v2: false, span }))
+            }
+            "if" => {
+                self.bump();
+                self.expect("(")?;
+                let cond = self.expr(0)?;
+                self.expect(")")?;
+                let then = self.body()?;
+                let otherwise = if self.is_word("else") {
+                    self.bump();
+                    self.body()?
+                } else {
+                    Vec::new()
+                };
+                Ok(Element::If { cond, then, otherwise, span })
+            }
+            "switch" => {
+                self.bump();
+                self.expect("(")?;
+                let selector = self.expr(0)?;
+                self.expect(")")?;
+                self.expect("{")?;
+                let (mut cases, mut otherwise) = (Vec::new(), Vec::new());
+                while !self.is_punct("}") {
+                    if self.is_word("case") {
+                        self.bump();
+                        let mut ranges = Vec::new();
+                        loop {
+                            let lo = self.case_value()?;
+                            let hi = if self.is_punct("..") {
+                                self.bump();
+                                self.case_value()?
+                            } else {
+                                lo
+                            };
+                            ranges.push((lo, hi));
+                            if !self.is_punct(",") {
+                                break;
+                            }
+                            self.bump();
+                        }
+                        self.expect(":")?;
+                        cases.push((ranges, self.body()?));
+                    } else if self.is_word("else") {
+                        self.bump();
+                        self.expect(":")?;
+                        otherwise = self.body()?;
+                    } else {
+                        return self.err("expected `case`, `else` or `}`");
+                    }
+                }
+                self.bump();
+                Ok(Element::Switch { selector, cases, otherwise, span })
+            }
+            "transform" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
+                self.bump();
+                let mut adjusts = Vec::new();
+                while self.is_punct("[") {
+                    adjusts.push(self.adjustment()?);
+                }
+                if adjusts.is_empty() {
+                    return self.err("expected an adjustment `[ ]`");
+                }
+                let body = self.body()?;
+                Ok(Element::Transform { clone: word == "clone", adjusts, body, span })
+            }
+            "finally" | "else" | "case" => self.err("unexpected keyword"),
+            w if w.chars().all(|c| c.is_ascii_uppercase()) && is_path_op(w) => self.err("path operations are not supported yet"),
+            _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
+            _ => {
+                let (shape, span) = self.name("a shape name")?;
+                let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
+                let adjust = self.adjustment()?;
+                Ok(Element::Replace(Replacement { shape, adjust, args, span }))
+            }
+        }
+    }
+
+    /// A case value: a constant expression above the range operator, floored.
+    fn case_value(&mut self) -> Result<i64, ParseError> {
+        let span = self.span();
+        let e = self.expr(7)?;
+        let v = const_value(&e).ok_or_else(|| ParseError::single(span, "a case value must be a constant number"))?;
+        Ok(v.floor().clamp(-1e15, 1e15) as i64)
+    }
+
+    /// A 2.x rule body: `{ replacements }`.
+    fn body_v2(&mut self) -> Result<Vec<Element>, ParseError> {
+        self.enter()?;
+        self.expect("{")?;
+        let mut out = Vec::new();
+        while !self.is_punct("}") {
+            out.push(self.replacement_v2()?);
+        }
+        self.bump();
+        self.depth -= 1;
+        Ok(out)
+    }
+
+    fn replacement_v2(&mut self) -> Result<Element, ParseError> {
+        let span = self.span();
+        match self.peek().clone() {
+            Tok::Num(n) if matches!(self.peek_at(1), Tok::Punct("*")) => {
+                self.bump();
+                self.bump();
+                let value: f64 = n.trim_end_matches('%').parse().unwrap_or(0.0);
+                let adjust = self.adjustment()?;
+                let body = if self.is_punct("{") { self.body_v2()? } else { vec![self.replacement_v2()?] };
+                Ok(Element::Loop(Loop { var: None, args: Expr::Num(value, n), adjust, body, finally: Vec::new(), v2: true, span }))
+            }
+            Tok::Word(w) if is_path_op(&w) => self.err("path operations are not supported yet"),
+            Tok::Word(_) => {
+                let (shape, span) = self.name("a shape name")?;
+                let adjust = self.adjustment()?;
+                Ok(Element::Replace(Replacement { shape, adjust, args: None, span }))
+            }
+            _ => self.err("expected a replacement"),
+        }
+    }
+
+    /// An adjustment: 3.x `[ ]` canonical, `[[ ]]` ordered; 2.x `{ }` canonical, `[ ]` ordered.
+    fn adjustment(&mut self) -> Result<Adjustment, ParseError> {
+        let (canonical, close): (bool, &[&str]) = if self.v3() {
+            if self.is_punct("[") && matches!(self.peek_at(1), Tok::Punct("[")) {
+                self.bump();
+                self.bump();
+                (false, &["]", "]"])
+            } else if self.is_punct("[") {
+                self.bump();
+                (true, &["]"])
+            } else {
+                return self.err("expected an adjustment `[ ]`");
+            }
+        } else if self.is_punct("{") {
+            self.bump();
+            (true, &["}"])
+        } else if self.is_punct("[") {
+            self.bump();
+            (false, &["]"])
+        } else {
+            return self.err("expected an adjustment `{ }` or `[ ]`");
+        };
+        let mut terms: Vec<Term> = Vec::new();
+        while !self.is_punct(close[0]) {
+            let span = self.span();
+            let kind = match self.peek().clone() {
+                Tok::Word(w) => match term_kind(&w) {
+                    Some(k) => k,
+                    None => return self.err("expected an adjustment (x, y, size, rotate, hue, …)"),
+                },
+                _ => return self.err(format!("expected an adjustment or `{}`", close[0])),
+            };
+            self.bump();
+            let mut args = Vec::new();
+            while self.starts_exp() {
+                args.push(self.exp()?);
+            }
+            if args.is_empty() {
+                return self.err("expected a number after the adjustment");
+            }
+            let mut kind = kind;
+            if self.is_punct("|") && args.len() == 1 {
+                self.bump();
+                kind = match kind {
+                    TermKind::Hue => TermKind::HueTarg,
+                    TermKind::Sat => TermKind::SatTarg,
+                    TermKind::Bright => TermKind::BrightTarg,
+                    TermKind::Alpha => TermKind::AlphaTarg,
+                    _ => return Err(ParseError::single(span, "only colour adjustments take a target `|`")),
+                };
+            }
+            let args = if args.len() == 1 { args.pop().unwrap_or(Expr::Cons(Vec::new())) } else { Expr::Cons(args) };
+            // `x a y b` merges into one two-argument x term (ASTmodification::compile).
+            if kind == TermKind::Y {
+                if let Some(prev) = terms.last_mut() {
+                    if prev.kind == TermKind::X && !matches!(prev.args, Expr::Cons(_)) {
+                        let x = std::mem::replace(&mut prev.args, Expr::Cons(Vec::new()));
+                        prev.args = Expr::Cons(vec![x, args]);
+                        continue;
+                    }
+                }
+            }
+            // `x a b c` and `size a b c` split into a z term, placed first,
+            // and a two-number term (ASTmodification::compile's xyz split).
+            if let (TermKind::X | TermKind::Size, Expr::Cons(v)) = (kind, &args) {
+                if v.len() == 3 {
+                    let mut v = v.clone();
+                    let z = v.pop().unwrap_or(Expr::Cons(Vec::new()));
+                    terms.push(Term { kind: if kind == TermKind::X { TermKind::Z } else { TermKind::ZSize }, args: z, span });
+                    terms.push(Term { kind, args: Expr::Cons(v), span });
+                    continue;
+                }
+            }
+            terms.push(Term { kind, args, span });
+        }
+        for c in close {
+            self.expect(c)?;
+        }
+        Ok(Adjustment { canonical, terms })
+    }
+
+    fn starts_exp(&self) -> bool {
+        match self.peek() {
+            Tok::Num(_) | Tok::Punct("(") | Tok::Punct("-") | Tok::Punct("+") => true,
+            Tok::Word(w) => term_kind(w).is_none(),
+            _ => false,
+        }
+    }
+
+    /// An adjustment argument (`exp` in cfdg.ypp): numbers, parenthesised
+    /// expressions, calls, variables, unary signs, `..` and `+/-`.
+    fn exp(&mut self) -> Result<Expr, ParseError> {
+        self.enter()?;
+        let mut left = self.exp_atom()?;
+        while self.is_punct("..") || self.is_punct("+/-") {
+            let op = if self.is_punct("..") { "rand." } else { "rand+/-" };
+            let span = self.span();
+            self.bump();
+            let right = self.exp_atom()?;
+            left = Expr::Call(op.into(), Box::new(Some(Expr::Cons(vec![left, right]))), span);
+        }
+        self.depth -= 1;
+        Ok(left)
+    }
+
+    fn exp_atom(&mut self) -> Result<Expr, ParseError> {
+        self.enter()?;
+        let e = match self.peek().clone() {
+            Tok::Punct("-") => {
+                self.bump();
+                Expr::Unary('N', Box::new(self.exp_atom()?))
+            }
+            Tok::Punct("+") => {
+                self.bump();
+                Expr::Unary('P', Box::new(self.exp_atom()?))
+            }
+            _ => self.primary()?,
+        };
+        self.depth -= 1;
+        Ok(e)
+    }
+
+    fn primary(&mut self) -> Result<Expr, ParseError> {
+        let span = self.span();
+        match self.peek().clone() {
+            Tok::Num(n) => {
+                self.bump();
+                let pct = n.ends_with('%');
+                let v: f64 = n.trim_end_matches('%').parse().unwrap_or(0.0);
+                Ok(Expr::Num(if pct { v / 100.0 } else { v }, n))
+            }
+            Tok::Punct("(") => {
+                self.bump();
+                let e = self.expr(0)?;
+                self.expect(")")?;
+                Ok(Expr::Paren(Box::new(e)))
+            }
+            Tok::Word(w) if term_kind(&w).is_none() => {
+                self.bump();
+                if self.is_punct("(") {
+                    let args = self.call_args(&w)?;
+                    Ok(Expr::Call(w, Box::new(args), span))
+                } else {
+                    Ok(Expr::Var(w, span))
+                }
+            }
+            _ => self.err("expected a number, a name or `(`"),
+        }
+    }
+
+    /// `( a, b, … )` after a function or shape name: each argument held in
+    /// parentheses and the list always a list, as cfdg's arglist builds it
+    /// (its entropy shows it); `rand()` and `rand(x)` get cfdg's textless bounds.
+    fn call_args(&mut self, name: &str) -> Result<Option<Expr>, ParseError> {
+        self.expect("(")?;
+        // `NAME(=)`: the parent's parameters, reused (cfdg's SimpleParentArgs).
+        if self.is_punct("=") && matches!(self.peek_at(1), Tok::Punct(")")) {
+            self.bump();
+            self.bump();
+            return Ok(Some(Expr::Var(REUSE.into(), self.span())));
+        }
+        // `if` is a keyword whose parentheses hold a bare list (`IF '(' exp2 ')'`).
+        if name == "if" {
+            let e = if self.is_punct(")") { None } else { Some(self.expr(0)?) };
+            self.expect(")")?;
+            return Ok(e);
+        }
+        let mut items = Vec::new();
+        while !self.is_punct(")") {
+            items.push(Expr::Paren(Box::new(self.expr(1)?)));
+            if !self.is_punct(",") {
+                break;
+            }
+            self.bump();
+        }
+        self.expect(")")?;
+        let zero = || Expr::Num(0.0, String::new());
+        Ok(match (name, items.len()) {
+            ("rand" | "rand_static" | "randint", 0) => Some(Expr::Cons(vec![zero(), Expr::Num(if name == "randint" { 2.0 } else { 1.0 }, String::new())])),
+            ("rand" | "rand_static" | "randint", 1) => Some(Expr::Cons(vec![zero(), items.remove(0)])),
+            (_, 0) => None,
+            _ => Some(Expr::Cons(items)),
+        })
+    }
+
+    /// `(number a, natural b, …)` after `shape NAME`: numeric parameters only.
+    fn param_list(&mut self) -> Result<Vec<String>, ParseError> {
+        self.expect("(")?;
+        let mut names = Vec::new();
+        while !self.is_punct(")") {
+            let ty = match self.peek().clone() {
+                Tok::Word(w) => w,
+                _ => return self.err("expected a parameter type"),
+            };
+            // An untyped parameter is a number.
+            let n = if matches!(self.peek_at(1), Tok::Punct(",") | Tok::Punct(")")) {
+                self.name("a parameter name")?.0
+            } else {
+                if !matches!(ty.as_str(), "number" | "natural") {
+                    return self.err("only `number` and `natural` parameters are supported yet");
+                }
+                self.bump();
+                self.name("a parameter name")?.0
+            };
+            if self.is_punct("=") {
+                return self.err("parameter defaults are not supported yet");
+            }
+            names.push(n);
+            if !self.is_punct(",") {
+                break;
+            }
+            self.bump();
+        }
+        self.expect(")")?;
+        Ok(names)
+    }
+
+    /// A full expression (`exp2`/`exp3`) by precedence climbing; `,` makes a list.
+    fn expr(&mut self, min: u8) -> Result<Expr, ParseError> {
+        self.enter()?;
+        let mut left = match self.peek().clone() {
+            Tok::Punct("-") => {
+                self.bump();
+                Expr::Unary('N', Box::new(self.expr(8)?))
+            }
+            Tok::Punct("+") => {
+                self.bump();
+                Expr::Unary('P', Box::new(self.expr(8)?))
+            }
+            Tok::Punct("!") => {
+                self.bump();
+                Expr::Unary('!', Box::new(self.expr(8)?))
+            }
+            _ => self.primary()?,
+        };
+        loop {
+            let (op, prec, right_assoc): (char, u8, bool) = match self.peek() {
+                Tok::Punct(",") => (',', 0, true),
+                Tok::Punct("^^") => ('X', 1, false),
+                Tok::Punct("||") => ('|', 2, false),
+                Tok::Punct("&&") => ('&', 3, false),
+                Tok::Punct("==") => ('=', 4, false),
+                Tok::Punct("<>") | Tok::Punct("!=") => ('n', 4, false),
+                Tok::Punct("<") => ('<', 5, false),
+                Tok::Punct("<=") => ('L', 5, false),
+                Tok::Punct(">") => ('>', 5, false),
+                Tok::Punct(">=") => ('G', 5, false),
+                Tok::Punct("..") => ('.', 6, false),
+                Tok::Punct("+/-") => ('~', 6, false),
+                Tok::Punct("+") => ('+', 7, false),
+                Tok::Punct("-") => ('-', 7, false),
+                Tok::Punct("--") => ('_', 7, false),
+                Tok::Punct("*") => ('*', 8, false),
+                Tok::Punct("/") => ('/', 8, false),
+                Tok::Punct("^") => ('^', 10, true),
+                _ => break,
+            };
+            if prec < min || (prec == min && !right_assoc) {
+                break;
+            }
+            let span = self.span();
+            self.bump();
+            let right = self.expr(if right_assoc { prec } else { prec + 1 })?;
+            left = match op {
+                ',' => match left {
+                    Expr::Cons(mut v) => {
+                        match right {
+                            Expr::Cons(w) => v.extend(w),
+                            r => v.push(r),
+                        }
+                        Expr::Cons(v)
+                    }
+                    l => match right {
+                        Expr::Cons(mut w) => {
+                            w.insert(0, l);
+                            Expr::Cons(w)
+                        }
+                        r => Expr::Cons(vec![l, r]),
+                    },
+                },
+                '.' => Expr::Call("rand.".into(), Box::new(Some(Expr::Cons(vec![left, right]))), span),
+                '~' => Expr::Call("rand+/-".into(), Box::new(Some(Expr::Cons(vec![left, right]))), span),
+                op => Expr::Binary(op, Box::new(left), Box::new(right)),
+            };
+        }
+        self.depth -= 1;
+        Ok(left)
+    }
+}
+
+fn is_path_op(w: &str) -> bool {
+    matches!(w, "MOVETO" | "LINETO" | "ARCTO" | "CURVETO" | "MOVEREL" | "LINEREL" | "ARCREL" | "CURVEREL" | "CLOSEPOLY" | "STROKE" | "FILL")
+}
+
+/// The value of a constant case expression: numbers, signs, arithmetic,
+/// parentheses and a few pure functions (kept here, below the evaluator).
+fn const_value(e: &Expr) -> Option<f64> {
+    let v = match e {
+        Expr::Num(v, _) => *v,
+        Expr::Paren(a) => const_value(a)?,
+        Expr::Unary('N', a) => -const_value(a)?,
+        Expr::Unary('P', a) => const_value(a)?,
+        Expr::Binary(op, a, b) => {
+            let (x, y) = (const_value(a)?, const_value(b)?);
+            match op {
+                '+' => x + y,
+                '-' => x - y,
+                '*' => x * y,
+                '/' => x / y,
+                '^' => x.powf(y),
+                _ => return None,
+            }
+        }
+        Expr::Call(name, args, _) => {
+            let items = args.as_ref().as_ref()?.items();
+            let x = match items.as_slice() {
+                [a] => const_value(a)?,
+                _ => return None,
+            };
+            match name.as_str() {
+                "abs" => x.abs(),
+                "floor" => x.floor(),
+                "ceiling" => x.ceil(),
+                "sqrt" => x.sqrt(),
+                _ => return None,
+            }
+        }
+        _ => return None,
+    };
+    v.is_finite().then_some(v)
+}

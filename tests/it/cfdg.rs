@@ -1,0 +1,197 @@
+//! Context Free designs (issue 34): a dozen of Debian's `contextfree`
+//! examples rendered by the CFDG front end and by cfdg 3.4 itself (`-V`,
+//! the oracle, installed by `scripts/test`), compared shape by shape: the
+//! same count, the same kinds in the same drawing order, transforms within
+//! 10⁻⁴ of the picture's size, fill colours within one 8-bit step. Also
+//! parse errors with positions, byte-identical re-runs, the 3D formats, and
+//! hostile designs ending in typed errors.
+
+use crate::common::{tempdir, validate_gltf};
+use rulemesh::core::{Budget, Limits};
+use rulemesh::export::Format;
+use rulemesh::lang::cfdg::{eval, parse_checked_in, svg, variation};
+use rulemesh::lang::Language;
+use rulemesh::pipeline::{render, RenderError, RenderRequest};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const EXAMPLES: &str = "/usr/share/doc/contextfree/examples";
+const SIZE: u32 = 200;
+
+/// One shape element of a `-V` SVG: kind, RGB, alpha, matrix.
+type Shape = (String, [u8; 3], f64, [f64; 6]);
+
+fn shapes(svg_text: &str) -> Vec<Shape> {
+    let mut out = Vec::new();
+    for chunk in svg_text.split('<').skip(1) {
+        let kind = chunk.split([' ', '\n']).next().unwrap_or("").to_string();
+        if !matches!(kind.as_str(), "circle" | "rect" | "use") {
+            continue;
+        }
+        let attr = |name: &str| chunk.split(&format!("{name}=\"")).nth(1).and_then(|s| s.split('"').next()).map(str::to_string);
+        let fill = attr("fill").unwrap_or_default();
+        let hex = |i: usize| u8::from_str_radix(fill.get(1 + 2 * i..3 + 2 * i).unwrap_or("00"), 16).unwrap_or(0);
+        let alpha = attr("fill-opacity").and_then(|a| a.parse().ok()).unwrap_or(1.0);
+        let m = attr("transform").unwrap_or_default();
+        let nums: Vec<f64> = m.trim_start_matches("matrix(").trim_end_matches(')').split_whitespace().filter_map(|v| v.parse().ok()).collect();
+        let mut t = [0.0; 6];
+        t.iter_mut().zip(&nums).for_each(|(a, b)| *a = *b);
+        out.push((kind, [hex(0), hex(1), hex(2)], alpha, t));
+    }
+    out
+}
+
+/// cfdg's SVG of `file` at variation `var`.
+fn cfdg_svg(file: &Path, var: &str) -> String {
+    let dir = tempdir();
+    let out = dir.path().join("c.svg");
+    let status = Command::new("cfdg")
+        .args(["-q", "-s", &SIZE.to_string(), "-v", var, "-V"])
+        .arg(file)
+        .arg(&out)
+        .status()
+        .expect("cfdg runs (scripts/test installs Debian's contextfree)");
+    assert!(status.success(), "cfdg failed on {}", file.display());
+    std::fs::read_to_string(&out).expect("cfdg wrote its SVG")
+}
+
+/// rulemesh's SVG of `file` at variation `var`.
+fn rulemesh_svg(file: &Path, var: &str) -> String {
+    let src = std::fs::read(file).expect("example readable");
+    let g = parse_checked_in(&src, file.parent()).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    let opts = eval::Options { width: SIZE, height: SIZE, variation: variation::from_code(var).expect("code"), ..eval::Options::default() };
+    let p = eval::render(&g, &opts, &mut Budget::new(Limits::default())).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    svg::write(&p)
+}
+
+/// Asserts the two SVGs hold the same shapes within the issue's tolerances.
+fn assert_same(name: &str, cf: &str, rm: &str) {
+    let (a, b) = (shapes(cf), shapes(rm));
+    assert!(!a.is_empty(), "{name}: cfdg drew nothing");
+    assert_eq!(a.len(), b.len(), "{name}: shape count");
+    for (i, (x, y)) in a.iter().zip(&b).enumerate() {
+        assert_eq!(x.0, y.0, "{name}: shape {i} kind");
+        for k in 0..6 {
+            assert!((x.3[k] - y.3[k]).abs() <= 1e-4 * f64::from(SIZE), "{name}: shape {i} transform {:?} vs {:?}", x.3, y.3);
+        }
+        for k in 0..3 {
+            assert!(x.1[k].abs_diff(y.1[k]) <= 1, "{name}: shape {i} colour {:?} vs {:?}", x.1, y.1);
+        }
+        assert!((x.2 - y.2).abs() <= 1.0 / 255.0 + 1e-6, "{name}: shape {i} alpha");
+    }
+}
+
+fn example(name: &str) -> PathBuf {
+    let p = Path::new(EXAMPLES).join(name);
+    assert!(p.exists(), "{} missing: scripts/test installs Debian's contextfree", p.display());
+    p
+}
+
+/// A dozen named examples, 2.x and 3.x, deterministic and random, match cfdg -V.
+#[test]
+fn a_dozen_examples_match_cfdg() {
+    let named = [
+        ("demo1.cfdg", "ABC"),
+        ("demo1_v2.cfdg", "ABC"),
+        ("sierpinski.cfdg", "ABC"),
+        ("sierpinski_v2.cfdg", "ABC"),
+        ("mtree.cfdg", "ABC"),
+        ("lesson.cfdg", "ABC"),
+        ("chanukah.cfdg", "ABC"),
+        ("weighting_demo_v2.cfdg", "ABC"),
+        ("welcome.cfdg", "ABC"),
+        ("quadcity.cfdg", "ABC"),
+        ("rendering-tests.cfdg", "ABC"),
+        ("tree_number_5.cfdg", "ABC"),
+        ("tests/mergexytest1.cfdg", "ABC"),
+        ("tests/sattargtest.cfdg", "ABC"),
+        ("tests/sizetest.cfdg", "ABC"),
+        ("tests/curves.cfdg", "ABC"),
+        // A start shape with an adjustment and parameters passed on with (=).
+        ("tests/grass.cfdg", "ABC"),
+        // Other variation codes, letters and a number, give cfdg's shapes too.
+        ("mtree.cfdg", "XYZ"),
+        ("demo1.cfdg", "12345"),
+        ("weighting_demo_v2.cfdg", "ABCDEF"),
+    ];
+    for (name, var) in named {
+        let file = example(name);
+        assert_same(name, &cfdg_svg(&file, var), &rulemesh_svg(&file, var));
+    }
+}
+
+/// Re-runs are byte-identical: the SVG and the glb of the same design and variation.
+#[test]
+fn reruns_are_byte_identical() {
+    let file = example("mtree.cfdg");
+    assert_eq!(rulemesh_svg(&file, "XYZ"), rulemesh_svg(&file, "XYZ"));
+    let src = std::fs::read(&file).expect("read");
+    let mut req = RenderRequest { language: Some(Language::Cfdg), format: Format::Glb, ..RenderRequest::default() };
+    req.params.insert("variation".into(), rulemesh::core::ParamValue::Text("XYZ".into()));
+    let a = render(&src, &req).expect("renders");
+    let b = render(&src, &req).expect("renders");
+    assert_eq!(a.bytes, b.bytes);
+    assert!(a.primitives > 0);
+}
+
+/// The 3D formats take a CFDG design: a valid glb, an STL with 12 triangles per square tile.
+#[test]
+fn designs_become_flat_models() {
+    let src = b"startshape A\nshape A {\n loop 5 [x 2] SQUARE [b 0.5]\n CIRCLE [y 3]\n TRIANGLE [y -3]\n}\n";
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Glb, ..RenderRequest::default() };
+    let out = render(src, &req).expect("renders");
+    assert_eq!(out.primitives, 7);
+    let dir = tempdir();
+    let glb = dir.path().join("a.glb");
+    std::fs::write(&glb, &out.bytes).expect("write");
+    for (errors, _, report) in validate_gltf(&[glb]) {
+        assert_eq!(errors, 0, "{report}");
+    }
+    let stl = render(src, &RenderRequest { format: Format::Stl, ..req.clone() }).expect("renders");
+    let triangles = u32::from_le_bytes(stl.bytes[80..84].try_into().expect("count"));
+    assert!(triangles >= 5 * 12 + 8, "{triangles}");
+    // Detected from `startshape` without a language.
+    assert_eq!(Language::detect(b"startshape A\nshape A { SQUARE [] }\n"), Some(Language::Cfdg));
+}
+
+/// Parse errors carry line, column and message through the pipeline.
+#[test]
+fn parse_errors_have_positions() {
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Stl, ..RenderRequest::default() };
+    for (src, at) in [
+        ("startshape A\nshape A {\n  SQUARE [x 1 ]]\n}\n", (3, 16)),
+        ("startshape A\nshape A {\n  B []\n}\n", (3, 3)),
+        ("startshape A\nshape A {\n  SQUARE [x 1 @]\n}\n", (3, 15)),
+        ("startshape A\nrule A {\n  SQUARE { x (1 }\n}\n", (3, 17)),
+    ] {
+        match render(src.as_bytes(), &req) {
+            Err(RenderError::Parse(e)) => {
+                let d = &e.diagnostics[0];
+                assert_eq!((d.span.line, d.span.column), at, "{src}: {e}");
+                assert!(!d.message.is_empty());
+            }
+            other => panic!("{src}: {other:?}"),
+        }
+    }
+}
+
+/// Hostile designs end in typed errors: endless expansion, a huge loop, NaN, infinity, deep nesting.
+#[test]
+fn hostile_designs_end_in_typed_errors() {
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Stl, ..RenderRequest::default() };
+    let cases: [(&str, &dyn Fn(&RenderError) -> bool); 5] = [
+        ("startshape A\nshape A {\n A [x 1]\n A [x -1]\n}\n", &|e| matches!(e, RenderError::Limit(_) | RenderError::Eval(rulemesh::model::EvalError::Limit(_)))),
+        ("startshape A\nshape A {\n loop 1e12 [x 1] SQUARE []\n}\n", &|e| matches!(e, RenderError::Limit(_) | RenderError::Eval(rulemesh::model::EvalError::Limit(_)))),
+        ("startshape A\nshape A {\n loop (0/0) [] SQUARE []\n}\n", &|e| matches!(e, RenderError::Eval(rulemesh::model::EvalError::BadIteration { .. }))),
+        ("startshape A\nshape A {\n SQUARE [s (1/0)]\n}\n", &|e| matches!(e, RenderError::Eval(rulemesh::model::EvalError::NonFinite { .. }))),
+        ("startshape A\nshape A {\n SQUARE [x (sqrt(-1))]\n}\n", &|e| matches!(e, RenderError::Eval(rulemesh::model::EvalError::NonFinite { .. }))),
+    ];
+    for (src, ok) in cases {
+        match render(src.as_bytes(), &req) {
+            Err(e) => assert!(ok(&e), "{src}: {e:?}"),
+            Ok(_) => panic!("{src}: rendered"),
+        }
+    }
+    let deep = format!("startshape A\nshape A {{ SQUARE [x {}1{}] }}\n", "(".repeat(100_000), ")".repeat(100_000));
+    assert!(matches!(render(deep.as_bytes(), &req), Err(RenderError::Parse(_))));
+}
