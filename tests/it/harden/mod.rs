@@ -10,6 +10,7 @@ mod conn;
 mod deadline;
 mod input;
 mod memory;
+mod prints;
 mod schema;
 mod seeds;
 

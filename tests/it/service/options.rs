@@ -265,8 +265,11 @@ fn grpc_requests_carry_every_declared_option() {
         view: "top".into(),
         background: "#ff8000".into(),
         frame: Some(1),
+        files: [("model.v".to_string(), b"angle factor: 8\n".to_vec())].into(),
     };
     let body = RenderBody::from(request);
+    // The files are content beside the source, not an option: carried too.
+    assert_eq!(body.files.get("model.v").map(String::as_str), Some("angle factor: 8\n"));
     let options = serde_json::to_value(&body.options).expect("options as JSON");
     let empty = |v: &Value| v.is_null() || v.as_object().is_some_and(|o| o.is_empty());
     for e in entries().iter().filter(|e| e.field.doors.has(Doors::GRPC)) {

@@ -29,6 +29,11 @@ pub struct ServeConfig {
     /// Renders running at once (0: one per core).
     #[arg(long, env = "RULEMESH_MAX_CONCURRENCY", default_value_t = 0)]
     pub max_concurrency: usize,
+    /// Prints (`print=true`) running at once, within the renders above (0: one per two cores,
+    /// at least one). A print unites on two threads for seconds; two beside each other on two
+    /// cores each take twice as long and end at their deadline, so the others wait their turn.
+    #[arg(long, env = "RULEMESH_MAX_PRINT_CONCURRENCY", default_value_t = 0)]
+    pub max_print_concurrency: usize,
     /// Renders allowed to wait for a slot; more are shed with 503.
     #[arg(long, env = "RULEMESH_QUEUE", default_value_t = 64)]
     pub queue: usize,
@@ -155,6 +160,8 @@ pub struct ConfigFile {
     pub cache_bytes: Option<u64>,
     /// [`ServeConfig::max_concurrency`]
     pub max_concurrency: Option<usize>,
+    /// [`ServeConfig::max_print_concurrency`]
+    pub max_print_concurrency: Option<usize>,
     /// [`ServeConfig::queue`]
     pub queue: Option<usize>,
     /// [`ServeConfig::body_limit`]
@@ -238,6 +245,7 @@ impl Default for ServeConfig {
             grpc: SocketAddr::from(([127, 0, 0, 1], 50051)),
             cache_bytes: 256 * 1024 * 1024,
             max_concurrency: 0,
+            max_print_concurrency: 0,
             queue: 64,
             body_limit: 2 * 1024 * 1024,
             queue_timeout_ms: 30_000,
@@ -287,6 +295,7 @@ impl ServeConfig {
             grpc,
             cache_bytes,
             max_concurrency,
+            max_print_concurrency,
             queue,
             body_limit,
             queue_timeout_ms,
@@ -323,6 +332,17 @@ impl ServeConfig {
         } else {
             std::thread::available_parallelism().map_or(2, |n| n.get())
         }
+    }
+
+    /// Prints running at once: the setting, or one per two cores (at least
+    /// one); never more than [`ServeConfig::concurrency`].
+    pub fn print_concurrency(&self) -> usize {
+        let n = if self.max_print_concurrency > 0 {
+            self.max_print_concurrency
+        } else {
+            (std::thread::available_parallelism().map_or(2, |n| n.get()) / 2).max(1)
+        };
+        n.min(self.concurrency())
     }
 
     /// The ceiling every client-supplied limit is clamped to: these settings,

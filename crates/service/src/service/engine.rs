@@ -1,6 +1,6 @@
 //! The render engine shared by HTTP and gRPC: cache lookup with single-flight,
 //! then the pipeline on the blocking pool behind a concurrency limit with a
-//! bounded wait queue.
+//! bounded wait queue, prints behind a narrower limit of their own.
 
 use super::timing::{RanRender, RequestTiming};
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
@@ -30,6 +30,9 @@ pub struct Engine {
     cache: ModelCache,
     slots: Arc<Semaphore>,
     slot_count: usize,
+    /// Print slots (`ServeConfig::print_concurrency`): a print takes one
+    /// before its render slot, so a waiting print holds no render slot.
+    print_slots: Arc<Semaphore>,
     queue_limit: usize,
     waiting: AtomicUsize,
     queue_timeout: Duration,
@@ -49,6 +52,31 @@ impl Drop for Waiting<'_> {
 }
 
 impl Engine {
+    /// Takes a permit of `slots` at once, or waits for one in the bounded
+    /// queue (shed with 503 when the queue is full, 503 when the wait
+    /// passes the queue timeout, counted from `queued_at`).
+    async fn wait_for(&self, slots: &Arc<Semaphore>, queued_at: Instant) -> Result<tokio::sync::OwnedSemaphorePermit, ServiceError> {
+        if let Ok(p) = slots.clone().try_acquire_owned() {
+            return Ok(p);
+        }
+        let before = self.waiting.fetch_add(1, Ordering::AcqRel);
+        self.metrics.queued(1);
+        let guard = Waiting(self);
+        if before >= self.queue_limit {
+            drop(guard);
+            self.metrics.shed();
+            return Err(ServiceError::Overloaded { running: self.slot_count, waiting: before, retry_after_secs: 1 });
+        }
+        let left = self.queue_timeout.saturating_sub(queued_at.elapsed());
+        let acquired = tokio::time::timeout(left, slots.clone().acquire_owned()).await;
+        drop(guard);
+        match acquired {
+            Ok(Ok(p)) => Ok(p),
+            Ok(Err(_)) => Err(ServiceError::ShuttingDown),
+            Err(_) => Err(ServiceError::QueueTimeout { ms: u64::try_from(self.queue_timeout.as_millis()).unwrap_or(u64::MAX) }),
+        }
+    }
+
     /// An engine configured by `config`, reporting to `metrics`; fails if the
     /// disk cache directory cannot be opened or the Redis URL is invalid
     /// (Redis itself need not be up).
@@ -75,6 +103,7 @@ impl Engine {
             cache,
             slots: Arc::new(Semaphore::new(slot_count)),
             slot_count,
+            print_slots: Arc::new(Semaphore::new(config.print_concurrency())),
             queue_limit: config.queue,
             waiting: AtomicUsize::new(0),
             queue_timeout: config.queue_timeout(),
@@ -122,28 +151,15 @@ impl Engine {
     /// pool; records the wait and the stages in `ran` and the metrics.
     async fn run(&self, plan: RenderPlan, ran: &Mutex<Option<RanRender>>) -> Result<Rendered, ServiceError> {
         let queued_at = Instant::now();
-        let permit = match self.slots.clone().try_acquire_owned() {
-            Ok(p) => p,
-            Err(_) => {
-                let before = self.waiting.fetch_add(1, Ordering::AcqRel);
-                self.metrics.queued(1);
-                let guard = Waiting(self);
-                if before >= self.queue_limit {
-                    drop(guard);
-                    self.metrics.shed();
-                    return Err(ServiceError::Overloaded { running: self.slot_count, waiting: before, retry_after_secs: 1 });
-                }
-                let acquired = tokio::time::timeout(self.queue_timeout, self.slots.clone().acquire_owned()).await;
-                drop(guard);
-                match acquired {
-                    Ok(Ok(p)) => p,
-                    Ok(Err(_)) => return Err(ServiceError::ShuttingDown),
-                    Err(_) => {
-                        return Err(ServiceError::QueueTimeout { ms: u64::try_from(self.queue_timeout.as_millis()).unwrap_or(u64::MAX) })
-                    }
-                }
-            }
+        // A print waits for a print slot first (issue 38's load run: two
+        // prints beside each other on two cores both ran past their
+        // deadline). Its wait counts against the same queue and timeout.
+        let print_permit = match plan.request.export_options.print.enabled {
+            true => Some(self.wait_for(&self.print_slots, queued_at).await?),
+            false => None,
         };
+        let permit = self.wait_for(&self.slots, queued_at).await?;
+        let permit = (permit, print_permit);
         // The second line behind the render's own budget: start only while
         // the process has room for the whole budget (waiting a little for
         // renders in flight to give memory back), never into the OOM killer.

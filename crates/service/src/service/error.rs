@@ -120,8 +120,10 @@ pub enum ServiceError {
         /// Suggested wait in seconds.
         retry_after_secs: u64,
     },
-    /// The request waited for a render slot longer than its deadline.
-    #[error("no render slot within the {ms} ms request deadline")]
+    /// The request waited for a render slot (or a print slot) longer than
+    /// the queue timeout; it never started. HTTP 503 with `Retry-After`,
+    /// gRPC `UNAVAILABLE`.
+    #[error("no render slot within the {ms} ms queue timeout; retry after 1 s")]
     QueueTimeout {
         /// The deadline in milliseconds.
         ms: u64,
@@ -183,8 +185,12 @@ impl ServiceError {
             ServiceError::Limit(_) | ServiceError::Unprocessable { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             ServiceError::NotFound(_) => StatusCode::NOT_FOUND,
             ServiceError::PayloadTooLarge { .. } | ServiceError::TooManyMembers { .. } => StatusCode::PAYLOAD_TOO_LARGE,
-            ServiceError::Overloaded { .. } | ServiceError::ShuttingDown | ServiceError::MemoryPressure { .. } => StatusCode::SERVICE_UNAVAILABLE,
-            ServiceError::QueueTimeout { .. } => StatusCode::GATEWAY_TIMEOUT,
+            // A request that waited out the queue never started: like a shed
+            // one, the server is busy and a retry may succeed (503 with
+            // Retry-After), not a render that ran out of time (504).
+            ServiceError::Overloaded { .. } | ServiceError::ShuttingDown | ServiceError::MemoryPressure { .. } | ServiceError::QueueTimeout { .. } => {
+                StatusCode::SERVICE_UNAVAILABLE
+            }
             ServiceError::Unauthorized => StatusCode::UNAUTHORIZED,
             ServiceError::RateLimited { .. } => StatusCode::TOO_MANY_REQUESTS,
             ServiceError::JavaScriptDisabled => StatusCode::FORBIDDEN,
@@ -201,8 +207,7 @@ impl ServiceError {
             ServiceError::Unprocessable { .. } => tonic::Code::FailedPrecondition,
             ServiceError::NotFound(_) => tonic::Code::NotFound,
             ServiceError::PayloadTooLarge { .. } | ServiceError::TooManyMembers { .. } | ServiceError::MemoryPressure { .. } => tonic::Code::ResourceExhausted,
-            ServiceError::Overloaded { .. } | ServiceError::ShuttingDown => tonic::Code::Unavailable,
-            ServiceError::QueueTimeout { .. } => tonic::Code::DeadlineExceeded,
+            ServiceError::Overloaded { .. } | ServiceError::ShuttingDown | ServiceError::QueueTimeout { .. } => tonic::Code::Unavailable,
             ServiceError::Unauthorized => tonic::Code::Unauthenticated,
             ServiceError::RateLimited { .. } => tonic::Code::ResourceExhausted,
             ServiceError::JavaScriptDisabled => tonic::Code::PermissionDenied,
@@ -239,7 +244,7 @@ impl ServiceError {
             ServiceError::Overloaded { retry_after_secs, .. } | ServiceError::RateLimited { retry_after_secs, .. } | ServiceError::MemoryPressure { retry_after_secs, .. } => {
                 Some(*retry_after_secs)
             }
-            ServiceError::ShuttingDown => Some(1),
+            ServiceError::ShuttingDown | ServiceError::QueueTimeout { .. } => Some(1),
             _ => None,
         }
     }
