@@ -21,6 +21,7 @@
 use crate::core::{Choice, OnLimit, ParamValue};
 use crate::lang::Language;
 use serde::Deserialize;
+use crate::export::{Format, OptionGroup};
 use serde_json::json;
 use std::collections::BTreeMap;
 
@@ -36,8 +37,6 @@ pub use field::{Doors, Key, Kind, OptionField};
 pub use read::SeedValue;
 pub use validate::{parse_format, parse_language, preview_options, InvalidOptions};
 
-/// The formats' request names, in the order the schema lists them.
-pub const FORMAT_NAMES: [&str; 9] = ["glb", "gltf", "stl", "stl-ascii", "strips", "scene", "3mf", "ug", "png"];
 
 /// A whole-number schema from `min` to `max`.
 fn whole(min: u64, max: u64) -> serde_json::Value {
@@ -49,9 +48,11 @@ fn needs_print() -> Option<(&'static str, serde_json::Value)> {
     Some(("print", json!(true)))
 }
 
-/// `format: png`, which the picture's options need.
+/// `format: png`, which the picture's options need: the format registry's
+/// picture format (the first that reads [`OptionGroup::Preview`]).
 fn needs_png() -> Option<(&'static str, serde_json::Value)> {
-    Some(("format", json!("png")))
+    let picture = Format::reading(OptionGroup::Preview).first().map_or("png", |f| f.name());
+    Some(("format", json!(picture)))
 }
 
 declare_options! {
@@ -125,7 +126,7 @@ declare_options! {
         /// on the command line, by default from the output file's extension.
         format: Option<String> => {
             doors: Doors::NOT_QUERY, kind: Kind::Text,
-            schema: json!({ "enum": FORMAT_NAMES, "default": "glb" }), example: json!("stl"),
+            schema: json!({ "enum": Format::names(), "default": Format::default().name() }), example: json!("stl"),
         },
         /// Limits, each clamped to the server's ceiling.
         #[serde(default, deserialize_with = "read::limits_object")]
