@@ -283,7 +283,7 @@ async fn check_reports_diagnostics_with_positions() {
     let d = &v["diagnostics"][0];
     assert_eq!((d["severity"].as_str(), d["line"].as_u64()), (Some("error"), Some(2)), "{v}");
     assert!(d["column"].as_u64().is_some_and(|c| c > 1));
-    assert_eq!(post(&base, "/v1/check", &json!({"source": "x", "language": "cfdg"})).await.status(), 400);
+    assert_eq!(post(&base, "/v1/check", &json!({"source": "x", "language": "nope"})).await.status(), 400);
     assert_eq!(post(&base, "/v1/check", &json!({"text": "x"})).await.status(), 400);
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");

@@ -257,8 +257,8 @@ mod tests {
     #[test]
     fn bad_fields_are_bad_requests() {
         for bad in [
-            r#"{"source":"x","format":"obj"}"#,
-            r#"{"source":"x","language":"cfdg"}"#,
+            r#"{"source":"x","format":"nope"}"#,
+            r#"{"source":"x","language":"nope"}"#,
             r#"{"source":"x","on_limit":"maybe"}"#,
             r#"{"source":"x","layout":"spread"}"#,
             r#"{"source":"x","format":"png","size":8}"#,
