@@ -71,7 +71,7 @@ try {
   const apiErrors = [];
   page.on('response', (r) => {
     if (r.status() < 400) return;
-    if (new URL(r.url()).pathname.startsWith('/v1/')) apiErrors.push(`${r.status()} ${r.request().method()} ${r.url()}`);
+    if (new URL(r.url()).pathname.startsWith('/v1/')) apiErrors.push(`${r.status()} ${r.request().method()} ${r.url()} ${(r.request().postData() || '').slice(0, 160)}`);
     else pageErrors.push(`${r.status()} for the page's own ${r.url()}`);
   });
   const idleAfter = async (renders) => {

@@ -327,7 +327,13 @@ async function render() {
       return;
     }
     const format = $('format').value || 'glb';
-    const response = await post('/v1/render', request(format));
+    // The request as it stands now: the glb twin and the size table below
+    // describe this model, not whatever the editor holds by the time they
+    // are sent (an edit waits out the render debounce before it starts a
+    // new render, and a request read from the editor then could carry a
+    // half-typed source).
+    const sent = request(format);
+    const response = await post('/v1/render', sent);
     if (mine !== seq) return;
     showHeaders(response);
     if (!response.ok) {
@@ -348,7 +354,7 @@ async function render() {
       finish('preview', `PNG preview, ${bytes.byteLength} bytes.`);
     } else {
       // Other formats are shown through their glb twin (from the cache when repeated).
-      const glb = format === 'glb' || format === 'gltf' ? bytes : await (await post('/v1/render', request('glb'))).arrayBuffer();
+      const glb = format === 'glb' || format === 'gltf' ? bytes : await (await post('/v1/render', { ...sent, format: 'glb' })).arrayBuffer();
       if (mine !== seq) return;
       const gltf = await parseGlb(glb);
       if (mine !== seq) return;
@@ -357,14 +363,14 @@ async function render() {
       $('triangles').textContent = String(countTriangles(gltf.scene));
       finish('model', `${format}: ${bytes.byteLength} bytes.`);
     }
-    listSizes(mine);
+    listSizes(mine, sent);
   } catch (e) {
     finish(`error: ${e.message || e}`, String(e.message || e));
   }
 }
 
-/** Fills the size-per-format table, one request at a time, for the render `mine`. */
-async function listSizes(mine) {
+/** Fills the size-per-format table, one request at a time, for the render `mine` of `sent`. */
+async function listSizes(mine, sent) {
   const rows = $('sizes').tBodies[0];
   rows.replaceChildren();
   for (const format of SIZE_FORMATS) {
@@ -373,7 +379,7 @@ async function listSizes(mine) {
     row.insertCell().textContent = format;
     const cell = row.insertCell();
     row.dataset.format = format;
-    const response = await post('/v1/render', request(format));
+    const response = await post('/v1/render', { ...sent, format });
     const bytes = response.ok ? (await response.arrayBuffer()).byteLength : null;
     cell.textContent = bytes === null ? (await errorText(response)) : `${bytes} bytes`;
   }
