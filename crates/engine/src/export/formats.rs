@@ -164,6 +164,13 @@ impl Format {
         Format::extensions().iter().map(|e| format!(".{e}")).collect::<Vec<_>>().join(", ")
     }
 
+    /// The picture format: the first that reads the preview options
+    /// ([`OptionGroup::Preview`], `png`), which the `size`, `view` and
+    /// `background` options need.
+    pub fn picture() -> Option<Format> {
+        Format::reading(OptionGroup::Preview).first().copied()
+    }
+
     /// The formats that read the option group `group` (for messages and
     /// the schema's rules, e.g. the preview options need `png`).
     pub fn reading(group: OptionGroup) -> Vec<Format> {

@@ -14,7 +14,7 @@
 //! stalled log reader costs dropped lines, counted in
 //! `rulemesh_log_lines_dropped_total`, never a blocked worker.
 
-use super::timing::RequestTiming;
+use super::timing::{ms, RequestTiming};
 use crate::cache::CacheOutcome;
 use crate::core::timing::Phase;
 use std::sync::atomic::{AtomicU64, AtomicU8, Ordering};
@@ -90,10 +90,6 @@ pub struct Finished<'a> {
     pub etag: Option<&'a str>,
     /// Where its time went, when the answer was a model.
     pub timing: Option<&'a RequestTiming>,
-}
-
-fn ms(d: Duration) -> f64 {
-    d.as_secs_f64() * 1000.0
 }
 
 /// Logs `r`: the short INFO line (when the mode wants it), outside the

@@ -228,7 +228,7 @@ pub fn query_body(source: &str, language: Language, ext: &str, query_pairs: &[(S
     let format = parse_format(Some(ext))?;
     if format.info().options != OptionGroup::Preview {
         let (size, view, background) = (options.size.take(), options.view.take(), options.background.take());
-        let picture = Format::reading(OptionGroup::Preview).first().copied().unwrap_or(format);
+        let picture = Format::picture().unwrap_or(format);
         preview_options(picture, size, view.as_deref(), background.as_deref())?;
     }
     Ok(RenderBody { source: source.to_string(), files: BTreeMap::new(), options })

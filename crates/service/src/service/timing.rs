@@ -27,7 +27,9 @@ pub struct RequestTiming {
     pub ran: Option<RanRender>,
 }
 
-fn ms(d: Duration) -> f64 {
+/// A duration in milliseconds, as the header, the log fields and the
+/// access log write them.
+pub(super) fn ms(d: Duration) -> f64 {
     d.as_secs_f64() * 1000.0
 }
 

@@ -21,7 +21,7 @@
 use crate::core::{Choice, OnLimit, ParamValue};
 use crate::lang::Language;
 use serde::Deserialize;
-use crate::export::{Format, OptionGroup};
+use crate::export::Format;
 use serde_json::json;
 use std::collections::BTreeMap;
 
@@ -49,9 +49,9 @@ fn needs_print() -> Option<(&'static str, serde_json::Value)> {
 }
 
 /// `format: png`, which the picture's options need: the format registry's
-/// picture format (the first that reads [`OptionGroup::Preview`]).
+/// picture format ([`Format::picture`]).
 fn needs_png() -> Option<(&'static str, serde_json::Value)> {
-    let picture = Format::reading(OptionGroup::Preview).first().map_or("png", |f| f.name());
+    let picture = Format::picture().map_or("png", Format::name);
     Some(("format", json!(picture)))
 }
 
