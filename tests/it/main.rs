@@ -3,6 +3,7 @@
 //! `scripts/test`, which installs those tools.
 
 mod common;
+mod serve_child;
 mod picture;
 
 mod cfdg;

@@ -5,31 +5,16 @@
 //! the writer drops lines and counts them instead.
 
 use super::sample;
-use crate::common;
-use crate::scaleout::free_port;
-use std::net::{SocketAddr, TcpStream};
-use std::process::{Child, Command, Stdio};
+use crate::serve_child::ServeChild;
+use std::net::SocketAddr;
 use std::sync::mpsc::Receiver;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-/// `rulemesh serve` on free loopback ports with `extra` flags, its stderr
-/// piped; returns the child and its HTTP address once it accepts.
-fn serve(extra: &[&str]) -> (Child, SocketAddr) {
-    let http = SocketAddr::from(([127, 0, 0, 1], free_port()));
-    let grpc = SocketAddr::from(([127, 0, 0, 1], free_port()));
-    let child = Command::new(common::bin())
-        .args(["serve", "--http", &http.to_string(), "--grpc", &grpc.to_string(), "--log-format", "json", "--log", "info"])
-        .args(extra)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn rulemesh serve");
-    let deadline = Instant::now() + Duration::from_secs(20);
-    while TcpStream::connect(http).is_err() {
-        assert!(Instant::now() < deadline, "server did not start");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    (child, http)
+/// `rulemesh serve` with JSON log lines at INFO and `extra` flags, its stderr piped.
+fn serve(extra: &[&str]) -> ServeChild {
+    let mut args = vec!["--log-format", "json", "--log", "info"];
+    args.extend_from_slice(extra);
+    ServeChild::piped(&args, &[])
 }
 
 /// `count` sequential `GET /healthz` (each a logged request), then the
@@ -55,29 +40,24 @@ fn request_lines(rx: &Receiver<String>) -> usize {
     n
 }
 
-fn stop(mut child: Child) {
-    let _ = child.kill();
-    let _ = child.wait();
-}
-
 #[test]
 fn access_log_off_writes_no_request_line_and_the_metrics_still_count() {
-    let (mut child, http) = serve(&["--access-log", "off"]);
-    let rx = common::stderr_lines(&mut child);
-    let m = requests_then_metrics(http, 50);
+    let mut child = serve(&["--access-log", "off"]);
+    let rx = child.stderr_lines();
+    let m = requests_then_metrics(child.http, 50);
     assert_eq!(request_lines(&rx), 0);
     assert_eq!(sample(&m, r#"rulemesh_requests_total{protocol="http",route="/healthz",status="200"}"#), Some(50.0), "{m}");
-    stop(child);
+    drop(child);
 }
 
 #[test]
 fn access_log_sampled_writes_one_line_in_a_hundred() {
-    let (mut child, http) = serve(&["--access-log", "sampled"]);
-    let rx = common::stderr_lines(&mut child);
+    let mut child = serve(&["--access-log", "sampled"]);
+    let rx = child.stderr_lines();
     // 250 probes and the metrics scrape: requests 100 and 200 are logged.
-    let _ = requests_then_metrics(http, 250);
+    let _ = requests_then_metrics(child.http, 250);
     assert_eq!(request_lines(&rx), 2);
-    stop(child);
+    drop(child);
 }
 
 /// A log reader that never reads: stderr is a pipe nobody drains, so it
@@ -85,9 +65,9 @@ fn access_log_sampled_writes_one_line_in_a_hundred() {
 /// the client's 5 s), and the dropped lines are counted.
 #[test]
 fn a_stalled_log_reader_costs_dropped_lines_not_a_stalled_service() {
-    let (child, http) = serve(&["--log-buffer-lines", "16"]);
-    let m = requests_then_metrics(http, 3000);
+    let child = serve(&["--log-buffer-lines", "16"]);
+    let m = requests_then_metrics(child.http, 3000);
     let dropped = sample(&m, "rulemesh_log_lines_dropped_total").expect("the dropped-lines counter is exported");
     assert!(dropped > 0.0, "3,000 lines into a full pipe with a 16-line queue must drop some: {dropped}");
-    stop(child);
+    drop(child);
 }

@@ -4,12 +4,10 @@
 
 use super::{client, config, header, mdg, mdg_printable, render, server_timing, start, stop, EISEN};
 use crate::common;
-use crate::scaleout::free_port;
+use crate::serve_child::ServeChild;
 use rulemesh::service::grpc::pb;
 use rulemesh::service::grpc::pb::rulemesh_client::RulemeshClient;
 use serde_json::{json, Value};
-use std::net::{SocketAddr, TcpStream};
-use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// Checks one `Server-Timing` value against what the request did: on a
@@ -107,20 +105,9 @@ async fn every_model_response_says_where_its_time_went() {
 /// with the `Server-Timing` numbers as fields, equal to the header's.
 #[test]
 fn the_json_log_lines_of_a_request_are_short_at_info_with_the_numbers_at_debug() {
-    let http = SocketAddr::from(([127, 0, 0, 1], free_port()));
-    let grpc = SocketAddr::from(([127, 0, 0, 1], free_port()));
-    let mut child = Command::new(common::bin())
-        .args(["serve", "--http", &http.to_string(), "--grpc", &grpc.to_string(), "--log-format", "json", "--log", "debug"])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn rulemesh serve");
-    let rx = common::stderr_lines(&mut child);
-    let deadline = Instant::now() + Duration::from_secs(20);
-    while TcpStream::connect(http).is_err() {
-        assert!(Instant::now() < deadline, "server did not start");
-        std::thread::sleep(Duration::from_millis(20));
-    }
+    let mut child = ServeChild::piped(&["--log-format", "json", "--log", "debug"], &[]);
+    let rx = child.stderr_lines();
+    let http = child.http;
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().expect("runtime");
     let (value, length) = runtime.block_on(async {
         let r = render(&format!("http://{http}"), &json!({"source": mdg("log"), "format": "glb"})).await;
@@ -138,8 +125,7 @@ fn the_json_log_lines_of_a_request_are_short_at_info_with_the_numbers_at_debug()
             detail = Some(v);
         }
     }
-    let _ = child.kill();
-    let _ = child.wait();
+    drop(child);
     let (Some((short, short_len)), Some(line)) = (short, detail) else { unreachable!("both lines were seen") };
     let mut names: Vec<&str> = short["fields"].as_object().expect("fields").keys().map(String::as_str).collect();
     names.sort_unstable();

@@ -6,8 +6,7 @@
 //! span per pipeline stage. Without the flag nothing is sent.
 
 use super::mdg;
-use crate::common;
-use crate::scaleout::free_port;
+use crate::serve_child::ServeChild;
 use opentelemetry_proto::tonic::collector::trace::v1::trace_service_server::{TraceService, TraceServiceServer};
 use opentelemetry_proto::tonic::collector::trace::v1::{ExportTraceServiceRequest, ExportTraceServiceResponse};
 use opentelemetry_proto::tonic::common::v1::any_value::Value as AnyValue;
@@ -16,8 +15,7 @@ use opentelemetry_proto::tonic::trace::v1::Span;
 use rulemesh::service::grpc::pb;
 use rulemesh::service::grpc::pb::rulemesh_client::RulemeshClient;
 use serde_json::json;
-use std::net::{SocketAddr, TcpStream};
-use std::process::{Child, Command, Stdio};
+use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -80,39 +78,13 @@ fn attribute(span: &Span, key: &str) -> Option<String> {
     })
 }
 
-/// A `rulemesh serve` on free loopback ports; its HTTP and gRPC addresses.
-fn serve(extra: &[&str], env: &[(&str, String)]) -> (Child, SocketAddr, SocketAddr) {
-    let http = SocketAddr::from(([127, 0, 0, 1], free_port()));
-    let grpc = SocketAddr::from(([127, 0, 0, 1], free_port()));
-    let child = Command::new(common::bin())
-        .args(["serve", "--http", &http.to_string(), "--grpc", &grpc.to_string(), "--log", "warn"])
-        .args(extra)
-        .envs(env.iter().map(|(k, v)| (*k, v.as_str())))
-        .env("OTEL_BSP_SCHEDULE_DELAY", "100")
-        .stdout(Stdio::null())
-        .stderr(Stdio::inherit())
-        .spawn()
-        .expect("spawn rulemesh serve");
-    let deadline = Instant::now() + Duration::from_secs(20);
-    while TcpStream::connect(http).is_err() {
-        assert!(Instant::now() < deadline, "server did not start");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    (child, http, grpc)
-}
-
-/// Stops `child` with SIGTERM (a graceful shutdown, which flushes the spans) and waits.
-fn terminate(mut child: Child) {
-    let _ = Command::new("kill").args(["-TERM", &child.id().to_string()]).status();
-    let deadline = Instant::now() + Duration::from_secs(20);
-    while child.try_wait().ok().flatten().is_none() {
-        if Instant::now() > deadline {
-            let _ = child.kill();
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    let _ = child.wait();
+/// A `rulemesh serve` logging warnings only, exporting a batch of spans every 100 ms.
+fn serve(extra: &[&str], env: &[(&str, String)]) -> ServeChild {
+    let mut args = vec!["--log", "warn"];
+    args.extend_from_slice(extra);
+    let mut env = env.to_vec();
+    env.push(("OTEL_BSP_SCHEDULE_DELAY", "100".to_string()));
+    ServeChild::start(&args, &env)
 }
 
 /// Checks a trace: one server span named `name` under `parent`, with the
@@ -142,7 +114,8 @@ fn check_trace(spans: &[Span], name: &str, parent: &[u8], stages: &[&str]) {
 async fn a_traced_request_has_a_span_per_stage_under_the_callers_traceparent() {
     let collector = Collector::default();
     let addr = collector.start().await;
-    let (child, http, grpc) = serve(&["--otlp-endpoint", &format!("http://{addr}")], &[]);
+    let child = serve(&["--otlp-endpoint", &format!("http://{addr}")], &[]);
+    let (http, grpc) = (child.http, child.grpc);
     let stages = ["parse", "eval", "mesh", "export"];
 
     let (trace, parent) = ("0af7651916cd43dd8448eb211c80319c", "b7ad6b7169203331");
@@ -163,7 +136,7 @@ async fn a_traced_request_has_a_span_per_stage_under_the_callers_traceparent() {
 
     let http_spans = collector.wait_for(&unhex(trace), 5).await;
     let grpc_spans = collector.wait_for(&unhex(grpc_trace), 5).await;
-    terminate(child);
+    child.terminate();
     check_trace(&http_spans, "POST /v1/render", &unhex(parent), &stages);
     check_trace(&grpc_spans, "Render", &unhex(grpc_parent), &stages);
 }
@@ -173,7 +146,8 @@ async fn without_an_endpoint_nothing_is_exported() {
     let collector = Collector::default();
     let addr = collector.start().await;
     // The standard variable alone does not turn exporting on: only --otlp-endpoint does.
-    let (child, http, _) = serve(&[], &[("OTEL_EXPORTER_OTLP_ENDPOINT", format!("http://{addr}"))]);
+    let child = serve(&[], &[("OTEL_EXPORTER_OTLP_ENDPOINT", format!("http://{addr}"))]);
+    let http = child.http;
     let r = super::client()
         .post(format!("http://{http}/v1/render"))
         .header("traceparent", "00-11111111111111111111111111111111-2222222222222222-01")
@@ -182,7 +156,7 @@ async fn without_an_endpoint_nothing_is_exported() {
         .await
         .expect("request");
     assert_eq!(r.status(), 200);
-    terminate(child);
+    child.terminate();
     tokio::time::sleep(Duration::from_millis(300)).await;
     assert!(collector.spans.lock().expect("lock").is_empty(), "spans were exported without an endpoint");
 }
