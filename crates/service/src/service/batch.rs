@@ -152,7 +152,7 @@ fn sweep_members(base: &RenderBody, sweep: &BTreeMap<String, Vec<ParamValue>>) -
 
 /// Reads the JSON batch body: a `/v1/render` body (or `grammar`, a library
 /// grammar's name, instead of `source`) plus `seeds` or `sweep`.
-pub fn from_json_body(body: &[u8], ceiling: &Limits) -> Result<Batch, ServiceError> {
+pub fn from_json_body(body: &[u8], ceiling: &Limits, phone: bool) -> Result<Batch, ServiceError> {
     let mut fields: Map<String, Value> = from_json(body)?;
     let grammar: Option<String> = take(&mut fields, "grammar")?;
     let seeds: Option<Vec<SeedValue>> = take(&mut fields, "seeds")?;
@@ -166,6 +166,8 @@ pub fn from_json_body(body: &[u8], ceiling: &Limits) -> Result<Batch, ServiceErr
         fields.entry("language").or_insert_with(|| Value::from(builtin.language.name()));
     }
     let base: RenderBody = serde_json::from_value(Value::Object(fields)).map_err(|e| ServiceError::BadRequest(format!("malformed JSON request: {e}")))?;
+    // A phone's default (docs/loaders.md) is the base's, so every member inherits it.
+    let base = base.with_phone_default(phone);
     let variation = match (seeds, sweep) {
         (Some(seeds), None) => Variation::Seeds(seeds.into_iter().map(|s| s.0).collect()),
         (None, Some(sweep)) => Variation::Sweep(sweep),
@@ -188,7 +190,7 @@ mod tests {
     use super::*;
 
     fn batch(json: &str) -> Result<Batch, ServiceError> {
-        from_json_body(json.as_bytes(), &Limits::ceiling())
+        from_json_body(json.as_bytes(), &Limits::ceiling(), false)
     }
 
     #[test]
