@@ -1,6 +1,7 @@
 //! In-process throughput of fresh renders (issue 33), run by
-//! `scripts/bench throughput`: `throughput GRAMMAR [SECONDS]` renders the
-//! grammar (grammars/gem.mdg) in every phone and print format, each render
+//! `scripts/bench throughput`: `throughput GRAMMAR [SECONDS] [FORMAT,...]` renders
+//! the grammar (grammars/gem.mdg) in every phone and print format (or the
+//! formats listed; the first is the one the export ratios divide by), each render
 //! with a new seed so that nothing a cache could keep is reused, and prints
 //! one Markdown table: CPU per render, renders a second per core, and the
 //! median of each stage.
@@ -64,10 +65,14 @@ fn ms(d: Duration) -> String {
 
 fn run() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
-    let path = args.next().ok_or("usage: throughput GRAMMAR [SECONDS]")?;
+    let path = args.next().ok_or("usage: throughput GRAMMAR [SECONDS] [FORMAT,...]")?;
     let seconds: f64 = args.next().map(|s| s.parse().map_err(|e| format!("SECONDS: {e}"))).transpose()?.unwrap_or(10.0);
     let source = std::fs::read(&path).map_err(|e| format!("{path}: {e}"))?;
-    let formats: Vec<Format> = FORMATS.iter().map(|n| Format::parse(n).ok_or(format!("unknown format {n}"))).collect::<Result<_, _>>()?;
+    let names: Vec<String> = match args.next() {
+        Some(list) => list.split(',').map(str::to_owned).collect(),
+        None => FORMATS.iter().map(|n| n.to_string()).collect(),
+    };
+    let formats: Vec<Format> = names.iter().map(|n| Format::parse(n).ok_or(format!("unknown format {n}"))).collect::<Result<_, _>>()?;
     let mut tallies: Vec<Tally> = formats.iter().map(|_| Tally::default()).collect();
     let mut seed = 1u64;
     // Warm up: code, allocator and page faults, once per format, not counted.
