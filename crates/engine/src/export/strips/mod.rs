@@ -327,7 +327,10 @@ pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &St
     // Each chunk's codecs (meshoptimizer's vertex and index codecs, about a
     // third of the encoder's time) run on a second thread while this one
     // tessellates, quantises and welds the next chunk; chunks are appended
-    // in order, so the bytes are those of one thread.
+    // in order, so the bytes are those of one thread. A model of one chunk
+    // (every icon) has nothing to overlap its codecs with: they run here,
+    // since starting a thread cost a tenth of a fresh gem's strips (issue 33).
+    let single = survey.survey.chunks() <= 1;
     std::thread::scope(|s| -> Result<(), ExportError> {
         let mut coding: Option<std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>> = None;
         let join = |h: std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>| {
@@ -337,6 +340,9 @@ pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &St
             let welded = weld_chunk(parts, &q);
             if let Some(h) = coding.take() {
                 append(&mut body, join(h)?, budget)?;
+            }
+            if single {
+                return append(&mut body, welded.code()?, budget);
             }
             coding = Some(s.spawn(move || welded.code()));
             Ok(())
