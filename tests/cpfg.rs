@@ -64,11 +64,11 @@ fn committed_vlab_objects_render() {
 /// Segment counts of the book's figures as vlab draws them, from their folders.
 #[test]
 fn abop_figures_from_their_folders() {
-    // ABOP §1.2 quadratic Koch curve: 8^4 segments.
+    // The quadratic Koch curve (the generator of ABOP Figure 1.6's island, mirrored): 8^4 segments.
     assert_eq!(render_object("01-quadratic-Koch", Format::Glb, None).expect("koch").primitives, 4096);
-    // ABOP fig. 1.7b snowflake curve: 4^4.
+    // Von Koch's snowflake curve (ABOP Figure 1.1): 4^4.
     assert_eq!(render_object("03-snowflake", Format::Glb, None).expect("snowflake").primitives, 256);
-    // The compound leaf: 130 internodes; with its homomorphism also 81 apices.
+    // The compound leaf (ABOP Figure 1.24e at 4 steps): 130 internodes; with its homomorphism also 81 apices.
     assert_eq!(render_object("04-compound", Format::Glb, None).expect("compound").primitives, 130);
     assert_eq!(render_object("05-compound-homo", Format::Glb, None).expect("compound-homo").primitives, 211);
 }

@@ -162,3 +162,5 @@ impl FrontEnd for Cpfg {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod figures;

@@ -57,8 +57,9 @@ fn count(s: &str, c: char) -> usize {
     s.chars().filter(|&x| x == c).count()
 }
 
-/// The quadratic Koch curve of ABOP §1.2 (vlab `01-quadratic-Koch`): every
-/// F becomes 8, so 8⁴ segments after 4 steps.
+/// The quadratic Koch curve of vlab's `01-quadratic-Koch` (the mirrored
+/// generator of ABOP Figure 1.6's island): every F becomes 8, so 8⁴
+/// segments after 4 steps. The figures themselves: `figures.rs`.
 #[test]
 fn quadratic_koch_counts() {
     let s = derive_text(KOCH, None);
@@ -67,14 +68,16 @@ fn quadratic_koch_counts() {
     assert_eq!(cpfg(KOCH).expect("builds").primitives, 4096);
 }
 
-/// The snowflake curve of ABOP fig. 1.7b (vlab `03-snowflake`): 4⁴ segments.
+/// Von Koch's snowflake curve (vlab `03-snowflake`; ABOP Figure 1.1, not
+/// Figure 1.7b, which is its quadratic modification): 4⁴ segments.
 #[test]
 fn snowflake_counts() {
     assert_eq!(count(&derive_text(SNOWFLAKE, None), 'F'), 256);
     assert_eq!(cpfg(SNOWFLAKE).expect("builds").primitives, 256);
 }
 
-/// The compound leaf of the vlab course (`04-compound`): A ↦ 3A, F ↦ 2F + 2 per A,
+/// The compound leaf of the vlab course (`04-compound`, ABOP Figure 1.24e
+/// with A for X, 4 steps instead of 7): A ↦ 3A, F ↦ 2F + 2 per A,
 /// 130 segments after 4 steps; with the homomorphism (`05-compound-homo`)
 /// the 81 apices draw too: 211.
 #[test]
@@ -218,6 +221,31 @@ fn hostile_sources_end_in_named_errors() {
         Err(BuildError::Eval(EvalError::NonFinite { span, what, .. })) => assert_eq!((span.line, what.as_str()), (4, "divisor")),
         other => panic!("expected a division error, got {other:?}"),
     }
+    // Inside a block (before and after the condition): the statement's own position.
+    let div = "Lsystem: 1\nderivation length: 1\nAxiom: A(0)\nA(x) : { y = 2; y = y / x; } * --> A(y)\nendlsystem\n";
+    match cpfg(div) {
+        Err(BuildError::Eval(EvalError::NonFinite { span, what, .. })) => assert_eq!((span.line, what.as_str()), (4, "divisor")),
+        other => panic!("expected a division error, got {other:?}"),
+    }
+    let rem = "Lsystem: 1\nStart: { n = 0; }\nderivation length: 1\nAxiom: A(3)\nA(x) : 1 { z = x % n; } --> A(z)\nendlsystem\n";
+    match cpfg(rem) {
+        Err(BuildError::Eval(EvalError::NonFinite { span, what, .. })) => assert_eq!((span.line, what.as_str()), (5, "divisor of %")),
+        other => panic!("expected a division error, got {other:?}"),
+    }
+    // A derivation length from the animation file, and a recursive
+    // homomorphism as deep as it may be, end at a limit too.
+    let mut files = BTreeMap::new();
+    files.insert("m.a".to_string(), b"last frame: 900000000\n".to_vec());
+    let l = limit_of(build(&super::Cpfg, "Lsystem: 1\nAxiom: F\nF --> FF\nendlsystem\n", &files, small));
+    assert!(matches!(l, Limit::Steps | Limit::Memory), "{l:?}");
+    let deep = "Lsystem: 1\nderivation length: 1\nAxiom: A\nhomomorphism\nmaximum depth: 4000000000\nA --> AA\nendlsystem\n";
+    let l = limit_of(build(&super::Cpfg, deep, &BTreeMap::new(), small));
+    assert!(matches!(l, Limit::Steps | Limit::Memory | Limit::Depth), "{l:?}");
+    // A header that includes itself is a cycle.
+    let mut own = BTreeMap::new();
+    own.insert("self.h".to_string(), b"#include \"self.h\"\n".to_vec());
+    let e = parse_with(b"#include \"self.h\"\nLsystem: 1\nAxiom: F\n", &own, &[]).expect_err("cycle");
+    assert!(e.diagnostics[0].message.contains("cycle"), "{e:?}");
     let bomb = "#define A B B\n#define B C C\n#define C D D\n#define D E E\n#define E F F\n#define F G G\n#define G H H\n#define H I I\n#define I J J\n#define J K K\n#define K L L\n#define L M M\n#define M N N\n#define N O O\n#define O P P\n#define P Q Q\n#define Q R R\n#define R S S\n#define S T T\n#define T U U\n#define U V V\n#define V W W\n#define W X X\n#define X Y Y\nLsystem: 1\nAxiom: A\n";
     assert!(parse_with(bomb.as_bytes(), &BTreeMap::new(), &[]).is_err());
 }
