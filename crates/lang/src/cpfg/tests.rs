@@ -154,6 +154,36 @@ fn ls_translations_draw_the_same_segments() {
     }
 }
 
+/// Two more pairs: conditions with a branching delay (the fractal ferns'
+/// productions with F for I and R = 1.5, exact in `f32`), and the
+/// context-sensitive plant of ABOP Figure 1.31a (Hogeweg and Hesper;
+/// `grammars/hogeweg.ls` with a, b for 0, 1), whose contexts skip `+ - F`
+/// and whole branches in both dialects.
+#[test]
+fn ls_translations_with_conditions_and_context() {
+    let pairs = [
+        (
+            "#define D 3\n#define R 1.5\nLsystem: 1\nderivation length: 12\nAxiom: A(0)\nA(t) : t<D --> A(t+1)\nA(t) : t==D --> F(1)[+A(0)][-A(0)]F(1)A(t)\nF(x) --> F(R*x)\nendlsystem\n",
+            "iterations: 12\nangle: 45\naxiom: A(0)\nA(t) : t < 3 -> A(t+1)\nA(t) : t == 3 -> F(1) [ + A(0) ] [ - A(0) ] F(1) A(t)\nF(x) -> F(1.5*x)\n",
+            45.0,
+        ),
+        (
+            "Lsystem: 1\nderivation length: 30\nignore: +-F\nAxiom: FbFbFb\na < a > a --> a\na < a > b --> b[+FbFb]\na < b > a --> b\na < b > b --> b\nb < a > a --> a\nb < a > b --> bFb\nb < b > a --> a\nb < b > b --> a\n+ --> -\n- --> +\nendlsystem\n",
+            "iterations: 30\nangle: 22.5\nignore: + - F\naxiom: F b F b F b\na < a > a -> a\na < a > b -> b [ + F b F b ]\na < b > a -> b\na < b > b -> b\nb < a > a -> a\nb < a > b -> b F b\nb < b > a -> a\nb < b > b -> a\n* < + > * -> -\n* < - > * -> +\n",
+            22.5,
+        ),
+    ];
+    for (c, ls, angle) in pairs {
+        let mut files = BTreeMap::new();
+        files.insert("m.v".to_string(), format!("angle increment: {angle}\n").into_bytes());
+        let a = build(&super::Cpfg, c, &files, Limits::default()).expect("cpfg builds");
+        let b = build(&crate::lsystem::Lsystem, ls, &BTreeMap::new(), Limits::default()).expect("ls builds");
+        assert!(a.primitives > 50, "{c}: {}", a.primitives);
+        assert_eq!(a.primitives, b.primitives, "{c}");
+        assert_eq!(points(&a), points(&b), "{c}");
+    }
+}
+
 /// The environmental query `?P` receives the turtle's position (manual §6.9).
 #[test]
 fn queries_receive_the_position() {
