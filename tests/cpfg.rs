@@ -154,3 +154,45 @@ fn http_body_carries_files() {
     let odd = plan(serde_json::json!({ "../etc/passwd": "base64:%%" })).expect("plan");
     assert_eq!(odd.request.files["../etc/passwd"], b"base64:%%");
 }
+
+/// `/check` reads what a render reads: the Lychnis names its view's
+/// functions (`func(BR_ANGLE, …)`, predefined from `functions.fset`), so
+/// checked alone it fails at a position, and with its folder's files (the
+/// body's `files`, as a render body carries them) it passes, as does the
+/// CLI's `rulemesh check`, which sends the folder's files.
+#[test]
+fn check_reads_the_files_a_render_reads() {
+    use rulemesh::service::http::check;
+    use rulemesh::service::request::CheckBody;
+    let main = main_file(&data().join("01-Lychnis"));
+    let source = std::fs::read_to_string(&main).expect("read");
+    let files = files_of(&main, source.as_bytes());
+    let text: BTreeMap<String, String> = files.iter().map(|(k, v)| (k.clone(), String::from_utf8(v.clone()).expect("text files"))).collect();
+    let ceiling = Limits::default();
+    let alone = check(CheckBody { source: source.clone(), language: None, files: BTreeMap::new() }, &ceiling).expect("report");
+    assert!(!alone.ok, "{alone:?}");
+    assert!(alone.diagnostics[0].span.line > 0 && alone.diagnostics[0].message.contains("BR_ANGLE"), "{alone:?}");
+    let with = check(CheckBody { source, language: None, files: text }, &ceiling).expect("report");
+    assert!(with.ok && with.language == Some("cpfg"), "{with:?}");
+    let r = common::run(&["check", main.to_str().expect("utf8")], None);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    // The files count against the source limit here too.
+    let small = Limits { max_source_bytes: 2048, ..Limits::default() };
+    assert!(rulemesh::pipeline::check_source_with(b"Lsystem: 1\nAxiom: F\nendlsystem\n", &files, None, &small).is_err());
+}
+
+/// A batch's members carry the body's `files`: every member of a seeds
+/// batch over a cpfg model plans with its view, so it differs from the
+/// same member without it.
+#[test]
+fn batch_members_carry_the_files() {
+    use rulemesh::service::batch::from_json_body;
+    let body = |files: serde_json::Value| serde_json::json!({ "source": "Lsystem: 1\nderivation length: 2\nAxiom: F\nF --> F+F\nendlsystem\n", "language": "cpfg", "seeds": [1, 2], "files": files }).to_string();
+    let ceiling = Limits::default();
+    let with = from_json_body(body(serde_json::json!({ "m.v": "angle increment: 90\n" })).as_bytes(), &ceiling).expect("batch");
+    let without = from_json_body(body(serde_json::json!({})).as_bytes(), &ceiling).expect("batch");
+    let (a, b) = (with.member_body(&with.members()[0]).plan(&ceiling, false).expect("plan"), without.member_body(&without.members()[0]).plan(&ceiling, false).expect("plan"));
+    assert_eq!(a.request.files["m.v"], b"angle increment: 90\n");
+    assert!(b.request.files.is_empty());
+    assert_ne!(a.key, b.key);
+}

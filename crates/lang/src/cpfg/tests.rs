@@ -213,6 +213,12 @@ fn includes_resolve_against_the_files_only() {
     files.insert("rules.h".to_string(), b"#define RULE F --> FF\n".to_vec());
     let sys = parse_with(b"#include \"rules.h\"\nLsystem: 1\nderivation length: 1\nAxiom: F\nRULE\nendlsystem\n", &files, &[]).expect("parses");
     assert_eq!(sys.productions.len(), 1);
+    // `check_with` reads the same files (what `/check` sends); `check` alone cannot.
+    use crate::FrontEnd;
+    let src = b"#include \"rules.h\"\nLsystem: 1\nderivation length: 1\nAxiom: F\nRULE\nendlsystem\n";
+    assert!(super::Cpfg.check_with(src, &files).is_ok());
+    let e = super::Cpfg.check(src).expect_err("no rules.h");
+    assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].message.contains("rules.h")), (1, true), "{e:?}");
     let e = parse_with(b"#include \"/etc/passwd\"\nLsystem: 1\nAxiom: F\n", &files, &[]).expect_err("refused");
     assert!(e.diagnostics[0].message.contains("no file"), "{e:?}");
     files.insert("a.h".to_string(), b"#include \"b.h\"\n".to_vec());
