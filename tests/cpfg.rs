@@ -155,11 +155,10 @@ fn http_body_carries_files() {
     assert_eq!(odd.request.files["../etc/passwd"], b"base64:%%");
 }
 
-/// `/check` reads what a render reads: the Lychnis names its view's
-/// functions (`func(BR_ANGLE, …)`, predefined from `functions.fset`), so
-/// checked alone it fails at a position, and with its folder's files (the
-/// body's `files`, as a render body carries them) it passes, as does the
-/// CLI's `rulemesh check`, which sends the folder's files.
+/// `/check` reads what a render reads: a model whose `#include` is among
+/// the body's `files` (as a render body carries them) passes, and fails at
+/// the directive's line without them; the Lychnis checks with its folder's
+/// files, over HTTP and with the CLI's `rulemesh check` (which sends them).
 #[test]
 fn check_reads_the_files_a_render_reads() {
     use rulemesh::service::http::check;
@@ -169,9 +168,13 @@ fn check_reads_the_files_a_render_reads() {
     let files = files_of(&main, source.as_bytes());
     let text: BTreeMap<String, String> = files.iter().map(|(k, v)| (k.clone(), String::from_utf8(v.clone()).expect("text files"))).collect();
     let ceiling = Limits::default();
-    let alone = check(CheckBody { source: source.clone(), language: None, files: BTreeMap::new() }, &ceiling).expect("report");
+    let included = "Lsystem: 1\n#include \"rules.h\"\nAxiom: F\nRULE\nendlsystem\n".to_string();
+    let rules: BTreeMap<String, String> = [("rules.h".to_string(), "#define RULE F --> FF\n".to_string())].into();
+    let alone = check(CheckBody { source: included.clone(), language: None, files: BTreeMap::new() }, &ceiling).expect("report");
     assert!(!alone.ok, "{alone:?}");
-    assert!(alone.diagnostics[0].span.line > 0 && alone.diagnostics[0].message.contains("BR_ANGLE"), "{alone:?}");
+    assert!(alone.diagnostics[0].span.line == 2 && alone.diagnostics[0].message.contains("rules.h"), "{alone:?}");
+    let beside = check(CheckBody { source: included, language: None, files: rules }, &ceiling).expect("report");
+    assert!(beside.ok, "{beside:?}");
     let with = check(CheckBody { source, language: None, files: text }, &ceiling).expect("report");
     assert!(with.ok && with.language == Some("cpfg"), "{with:?}");
     let r = common::run(&["check", main.to_str().expect("utf8")], None);
