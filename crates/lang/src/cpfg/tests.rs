@@ -271,7 +271,7 @@ fn hostile_sources_end_in_named_errors() {
     // A derivation length from the animation file, and a recursive
     // homomorphism as deep as it may be, end at a limit too.
     let mut files = BTreeMap::new();
-    files.insert("m.a".to_string(), b"last frame: 900000000\n".to_vec());
+    files.insert("m.a".to_string(), b"last frame: 4000000000\n".to_vec());
     let l = limit_of(build(&super::Cpfg, "Lsystem: 1\nAxiom: F\nF --> FF\nendlsystem\n", &files, small));
     assert!(matches!(l, Limit::Steps | Limit::Memory), "{l:?}");
     let deep = "Lsystem: 1\nderivation length: 1\nAxiom: A\nhomomorphism\nmaximum depth: 4000000000\nA --> AA\nendlsystem\n";
