@@ -235,9 +235,17 @@ pub fn declared_params(source: &[u8], language: Option<Language>, limits: &Limit
 
 /// Parses `source` only to report its diagnostics: the language read and its warnings.
 pub fn check_source(source: &[u8], language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<Diagnostic>), RenderError> {
-    Budget::check_source(limits, source.len() as u64)?;
+    check_source_with(source, &BTreeMap::new(), language, limits)
+}
+
+/// [`check_source`] with named files beside the source (a cpfg model's
+/// view and `#include`s, as [`RenderRequest::files`] carries them); the
+/// files count against the source-size limit with the source, as in a render.
+pub fn check_source_with(source: &[u8], files: &BTreeMap<String, Vec<u8>>, language: Option<Language>, limits: &Limits) -> Result<(Language, Vec<Diagnostic>), RenderError> {
+    let bytes = files.values().fold(source.len() as u64, |n, f| n.saturating_add(f.len() as u64));
+    Budget::check_source(limits, bytes)?;
     let language = language_of(source, language)?;
-    Ok((language, language.front_end().check(source)?))
+    Ok((language, language.front_end().check_with(source, files)?))
 }
 
 /// Rejects a request whose options are out of range before any work: the

@@ -85,6 +85,13 @@ impl Batch {
         &self.members
     }
 
+    /// The render body of `member`: the base request (source, `files`,
+    /// options) with the member's seed and parameters, as [`Batch::run`]
+    /// renders it.
+    pub fn member_body(&self, member: &Member) -> RenderBody {
+        member_body(&self.base, member)
+    }
+
     /// Renders every member through the engine, at most as many at once as
     /// the server has render slots (so a batch alone never sheds its own
     /// members), yielding each outcome as soon as it and every member before
@@ -97,9 +104,7 @@ impl Batch {
             .map(move |member| {
                 let (state, base) = (state.clone(), base.clone());
                 async move {
-                    let mut body = RenderBody::clone(&base);
-                    body.options.seed = member.seed;
-                    body.options.params = member.params.clone();
+                    let body = member_body(&base, &member);
                     let result = match body.plan(&ceiling, no_cache) {
                         Ok(plan) => {
                             let format = plan.request.format;
@@ -113,6 +118,14 @@ impl Batch {
             })
             .buffered(width)
     }
+}
+
+/// `base` with `member`'s seed and parameters.
+fn member_body(base: &RenderBody, member: &Member) -> RenderBody {
+    let mut body = base.clone();
+    body.options.seed = member.seed;
+    body.options.params = member.params.clone();
+    body
 }
 
 /// Refuses an empty batch or one over [`MAX_MEMBERS`].

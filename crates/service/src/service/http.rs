@@ -566,7 +566,8 @@ pub fn check(body: CheckBody, ceiling: &Limits) -> Result<CheckReport, ServiceEr
     let language = super::request::parse_language(body.language.as_deref())?;
     let source = crate::cache::normalize_source(body.source.as_bytes());
     let limits = Limits::default().clamped_to(ceiling);
-    match crate::pipeline::check_source(&source, language, &limits) {
+    let files = super::request::decode_files(body.files)?;
+    match crate::pipeline::check_source_with(&source, &files, language, &limits) {
         Ok((lang, warnings)) => Ok(CheckReport { ok: true, language: Some(lang.name()), diagnostics: warnings }),
         Err(crate::RenderError::Parse(p)) => {
             let lang = language.or_else(|| crate::lang::Language::detect(&source)).map(|l| l.name());
