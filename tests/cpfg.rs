@@ -192,8 +192,8 @@ fn batch_members_carry_the_files() {
     use rulemesh::service::batch::from_json_body;
     let body = |files: serde_json::Value| serde_json::json!({ "source": "Lsystem: 1\nderivation length: 2\nAxiom: F\nF --> F+F\nendlsystem\n", "language": "cpfg", "seeds": [1, 2], "files": files }).to_string();
     let ceiling = Limits::default();
-    let with = from_json_body(body(serde_json::json!({ "m.v": "angle increment: 90\n" })).as_bytes(), &ceiling).expect("batch");
-    let without = from_json_body(body(serde_json::json!({})).as_bytes(), &ceiling).expect("batch");
+    let with = from_json_body(body(serde_json::json!({ "m.v": "angle increment: 90\n" })).as_bytes(), &ceiling, false).expect("batch");
+    let without = from_json_body(body(serde_json::json!({})).as_bytes(), &ceiling, false).expect("batch");
     let (a, b) = (with.member_body(&with.members()[0]).plan(&ceiling, false).expect("plan"), without.member_body(&without.members()[0]).plan(&ceiling, false).expect("plan"));
     assert_eq!(a.request.files["m.v"], b"angle increment: 90\n");
     assert!(b.request.files.is_empty());
