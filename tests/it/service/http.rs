@@ -476,7 +476,9 @@ async fn compression_is_negotiated_for_text_and_decodes() {
         // The raw response: encoded, with its own ETag and Vary.
         let r = plain.get(&gltf_url).header("accept-encoding", enc).send().await.expect("get");
         assert_eq!(header(&r, "content-encoding"), enc);
-        assert!(header(&r, "vary").to_ascii_lowercase().contains("accept-encoding"), "{enc}");
+        // Every Vary line (glTF says Sec-CH-UA-Mobile, User-Agent too: docs/loaders.md).
+        let vary: Vec<String> = r.headers().get_all("vary").iter().filter_map(|v| v.to_str().ok()).map(str::to_ascii_lowercase).collect();
+        assert!(vary.iter().any(|v| v.contains("accept-encoding")) && vary.iter().any(|v| v.contains("user-agent")), "{enc}: {vary:?}");
         let tagged = header(&r, "etag").to_string();
         assert_eq!(tagged, format!("{}-{enc}\"", gltf_etag.trim_end_matches('"')));
         let raw = r.bytes().await.expect("body");
