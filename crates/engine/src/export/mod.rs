@@ -2,7 +2,7 @@
 //! scene metadata and the model only; they never parse.
 //!
 //! One folder per format family (`gltf`, `strips`, `scene`, `stl`,
-//! `threemf`, `png`, `ug`), each declaring its formats' descriptors
+//! `threemf`, `png`, `ug`, `usdz`), each declaring its formats' descriptors
 //! ([`FormatInfo`]) beside its writers; this file holds what they share
 //! (the errors, the scene-level metadata, the request's format options,
 //! the welding and the deadline cadence), and `formats` is the registry
@@ -18,6 +18,7 @@ pub mod stl;
 pub mod strips;
 pub mod threemf;
 pub mod ug;
+pub mod usdz;
 
 pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteMeshes, WriteModel, Writer};
 pub use formats::{estimated_size, export, export_with, Format, FORMATS};
