@@ -165,8 +165,10 @@ pub(super) fn materials(out: &mut String, colours: &[[u8; 4]]) {
 
 /// One `Mesh` prim named `name`: `group`'s triangles of `mesh`, their
 /// vertex normals (when the mesh has them), constant display colour and
-/// opacity, and its colour's material bound.
-pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &Group) -> Result<(), ExportError> {
+/// opacity, and, when `bind`, its colour's material bound (a prototype's
+/// mesh is bound by its instances instead: a binding may not reach out of
+/// a referenced layer).
+pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &Group, bind: bool) -> Result<(), ExportError> {
     let m = &mesh.mesh;
     let mut lo = [f32::INFINITY; 3];
     let mut hi = [f32::NEG_INFINITY; 3];
@@ -177,7 +179,14 @@ pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &
             hi[a] = hi[a].max(p[a]);
         }
     }
-    let _ = writeln!(out, "\n    def Mesh \"{name}\" (\n        prepend apiSchemas = [\"MaterialBindingAPI\"]\n    )\n    {{");
+    match bind {
+        true => {
+            let _ = writeln!(out, "\n    def Mesh \"{name}\" (\n        prepend apiSchemas = [\"MaterialBindingAPI\"]\n    )\n    {{");
+        }
+        false => {
+            let _ = writeln!(out, "\n    def Mesh \"{name}\"\n    {{");
+        }
+    }
     out.push_str("        float3[] extent = [");
     triple(out, lo);
     out.push_str(", ");
@@ -193,7 +202,10 @@ pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &
         }
         let _ = write!(out, "{i}");
     }
-    let _ = writeln!(out, "]\n        rel material:binding = </{ROOT}/Materials/{}>", material_name(group.colour));
+    out.push_str("]\n");
+    if bind {
+        let _ = writeln!(out, "        rel material:binding = </{ROOT}/Materials/{}>", material_name(group.colour));
+    }
     if !m.normals.is_empty() {
         out.push_str("        normal3f[] normals = [");
         list(out, &m.normals, &group.vertices, mesh)?;

@@ -20,6 +20,7 @@
 //! Numbers are the shortest text that reads back to the same `f32`, so the
 //! same meshes give the same bytes on every machine.
 
+pub mod instanced;
 pub mod layer;
 pub mod package;
 
@@ -44,8 +45,8 @@ pub const USDZ: FormatInfo = FormatInfo {
     mime: "model/vnd.usdz+zip",
     caps: Capabilities::NONE,
     options: OptionGroup::None,
-    size: SizeBound { fixed: 4 * 1024, per_vertex: 0, per_triangle: TRIANGLE_BYTES, per_instance: 0 },
-    writer: Writer::Meshes(write_usdz_with),
+    size: SizeBound { fixed: 4 * 1024, per_vertex: 0, per_triangle: TRIANGLE_BYTES, per_instance: instanced::INSTANCE_BYTES },
+    writer: Writer::Instancing { meshes: write_usdz_with, hierarchy: instanced::write_usdz_hierarchy },
 };
 
 /// Bytes a mesh prim's own text (its name, extent, binding, colour and
@@ -110,7 +111,7 @@ pub fn write_usdz(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) 
     let out = write_text(meshes, meta, &split, &colours, text_bytes, budget).and_then(|text| {
         drop(split);
         budget.check_deadline()?;
-        package::package(text.as_bytes())
+        package::package(text.as_bytes(), &[])
     });
     budget.release_memory(bytes.saturating_add(group_bytes));
     out
@@ -126,7 +127,7 @@ fn write_text(meshes: &[NamedMesh], meta: &ExportMeta, split: &[Vec<layer::Group
     let mut written = 0usize;
     for (k, (mesh, groups)) in meshes.iter().zip(split).enumerate() {
         for (j, group) in groups.iter().enumerate() {
-            layer::mesh_prim(&mut text, &format!("Mesh_{k}_{j}"), mesh, group)?;
+            layer::mesh_prim(&mut text, &format!("Mesh_{k}_{j}"), mesh, group, true)?;
             let before = written / DEADLINE_EVERY;
             written += group.indices.len() / 3;
             if written / DEADLINE_EVERY != before {

@@ -26,15 +26,20 @@ pub const PADDING_HEADER_ID: u16 = 0x1986;
 /// entry, which a usdz reader opens as the stage's root layer.
 pub const LAYER_NAME: &str = "model.usda";
 
-/// Packs `layer` (the default layer's text) as a one-entry usdz package:
-/// stored (no compression), its data aligned to [`ALIGNMENT`] bytes.
-pub fn package(layer: &[u8]) -> Result<Vec<u8>, ExportError> {
+/// Packs `layer` (the default layer's text, named [`LAYER_NAME`]) and then
+/// `others` (name, bytes: the prototype layers it references) as a usdz
+/// package: every entry stored (no compression), its data aligned to
+/// [`ALIGNMENT`] bytes, the default layer first.
+pub fn package(layer: &[u8], others: &[(String, Vec<u8>)]) -> Result<Vec<u8>, ExportError> {
     let fail = |e: &dyn std::fmt::Display| ExportError::TooLarge { format: "usdz", detail: e.to_string() };
-    let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::with_capacity(layer.len().saturating_add(256))));
+    let total = others.iter().fold(layer.len(), |n, (name, body)| n.saturating_add(body.len()).saturating_add(name.len()).saturating_add(256));
+    let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::with_capacity(total.saturating_add(256))));
     let options = zip::write::SimpleFileOptions::default()
         .compression_method(zip::CompressionMethod::Stored)
         .with_alignment_and_header_id(ALIGNMENT, PADDING_HEADER_ID);
-    zip.start_file(LAYER_NAME, options).map_err(|e| fail(&e))?;
-    zip.write_all(layer).map_err(|e| fail(&e))?;
+    for (name, body) in std::iter::once((LAYER_NAME, layer)).chain(others.iter().map(|(n, b)| (n.as_str(), b.as_slice()))) {
+        zip.start_file(name, options).map_err(|e| fail(&e))?;
+        zip.write_all(body).map_err(|e| fail(&e))?;
+    }
     Ok(zip.finish().map_err(|e| fail(&e))?.into_inner())
 }
