@@ -5,7 +5,7 @@
 //! the glb's triangle count; the package layout is read byte by byte; a
 //! model over the limits is refused; re-runs are byte-identical.
 
-use crate::common::{bin, grammar_files, repo, run, tempdir, three_check};
+use crate::common::{bin, repo, run, tempdir, three_check};
 use rulemesh::lang::Language;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -119,27 +119,34 @@ fn local_entries(b: &[u8]) -> Vec<(String, usize, usize, usize, usize, usize)> {
 
 #[test]
 fn the_package_is_stored_aligned_and_starts_with_the_layer() {
-    for grammar in ["gem.mdg", "plant-a.ls", "windmill.mdg"] {
+    for grammar in ["gem.mdg", "plant-a.ls", "menger.mdg"] {
         let out = run(&["render", repo().join("grammars").join(grammar).to_str().expect("utf-8"), "--format", "usdz"], None);
         assert!(out.status.success(), "{grammar}: {}", String::from_utf8_lossy(&out.stderr));
         let b = out.stdout;
         let entries = local_entries(&b);
-        assert_eq!(entries.len(), 1, "{grammar}: one layer, no textures");
-        let (name, method, flags, data, compressed, size) = entries[0].clone();
-        assert_eq!(name, "model.usda", "{grammar}: the default layer is the first entry");
-        assert_eq!(method, 0, "{grammar}: stored, not compressed");
-        assert_eq!(flags & 1, 0, "{grammar}: not encrypted");
-        assert_eq!(flags & 8, 0, "{grammar}: sizes in the local header, no data descriptor");
-        assert_eq!(data % 64, 0, "{grammar}: data at {data}, not 64-byte aligned");
-        assert_eq!(compressed, size, "{grammar}");
-        assert!(b[data..data + size].starts_with(b"#usda 1.0\n"), "{grammar}");
-        // The padding is Pixar's extra field (header id 0x1986).
-        let extra = &b[30 + name.len()..data];
+        // gem is flat: its one layer; the L-system and the Menger sponge are
+        // hierarchies: the layer, then a prototype layer per leaf shape.
+        assert_eq!(entries.len() == 1, grammar == "gem.mdg", "{grammar}: {} entries", entries.len());
+        for (k, (name, method, flags, data, compressed, size)) in entries.iter().enumerate() {
+            match k {
+                0 => assert_eq!(name, "model.usda", "{grammar}: the default layer is the first entry"),
+                _ => assert_eq!(*name, format!("prototypes/P_{}.usda", k - 1), "{grammar}"),
+            }
+            assert_eq!(*method, 0, "{grammar} {name}: stored, not compressed");
+            assert_eq!(flags & 1, 0, "{grammar} {name}: not encrypted");
+            assert_eq!(flags & 8, 0, "{grammar} {name}: sizes in the local header, no data descriptor");
+            assert_eq!(data % 64, 0, "{grammar} {name}: data at {data}, not 64-byte aligned");
+            assert_eq!(compressed, size, "{grammar} {name}");
+            assert!(b[*data..data + size].starts_with(b"#usda 1.0\n"), "{grammar} {name}");
+        }
+        // The first entry's padding is Pixar's extra field (header id 0x1986).
+        let (name, _, _, data, _, _) = &entries[0];
+        let extra = &b[30 + name.len()..*data];
         assert_eq!(u16_at(extra, 0), 0x1986, "{grammar}: {extra:?}");
         // The end of central directory: one entry, no comment.
         let eocd = b.len() - 22;
         assert_eq!(&b[eocd..eocd + 4], b"PK\x05\x06", "{grammar}");
-        assert_eq!(u16_at(&b, eocd + 10), 1, "{grammar}");
+        assert_eq!(u16_at(&b, eocd + 10), entries.len(), "{grammar}");
     }
 }
 
