@@ -60,7 +60,9 @@ fn every_library_grammar_renders_validates_and_loads_in_three() {
     let mut glb = Vec::new();
     let mut names = Vec::new();
     for g in library() {
-        let stem = g.file_stem().and_then(|s| s.to_str()).expect("name").to_string();
+        // `icons/tree.mdg` and `tree.mdg` both exist: name files by their path.
+        let rel = g.strip_prefix(repo().join("grammars")).expect("under grammars/").with_extension("");
+        let stem = rel.to_str().expect("utf-8").replace('/', "-");
         let (u, b) = (dir.path().join(format!("{stem}.usdz")), dir.path().join(format!("{stem}.glb")));
         let t = render_to(&g, &u).unwrap_or_else(|e| panic!("{}: {e}", g.display()));
         assert_eq!(render_to(&g, &b).unwrap_or_else(|e| panic!("{}: {e}", g.display())), t, "{stem}");
