@@ -27,9 +27,11 @@ use glam::DMat4;
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
-/// Bytes of the default layer one placement takes at most: the prim, its
-/// binding and reference, and a 4×4 matrix of 16-character numbers.
-pub const INSTANCE_BYTES: u64 = 512;
+/// Bytes of the default layer one placement takes at most: the prim
+/// (about 280 bytes with its name, binding and reference), and a 4×4
+/// matrix of numbers of at most 16 characters with their separators
+/// (about 330), and the op order (about 60).
+pub const INSTANCE_BYTES: u64 = 768;
 
 /// The path of prototype `k`'s layer inside the package.
 fn prototype_path(k: usize) -> String {
@@ -37,8 +39,8 @@ fn prototype_path(k: usize) -> String {
 }
 
 /// A prototype's layer: stage metadata (the prototype as default prim) and
-/// one `Xform` holding its mesh, unbound.
-/// Returns the layer and the memory charged for it.
+/// one `Xform` holding its mesh, unbound. Returns the layer and the memory
+/// charged for it.
 fn prototype_layer(k: usize, mesh: &NamedMesh, budget: &mut Budget) -> Result<(Vec<u8>, u64), ExportError> {
     let t = mesh.mesh.triangle_count() as u64;
     let bytes = super::USDZ.size.of(0, t).saturating_add(super::PRIM_BYTES);

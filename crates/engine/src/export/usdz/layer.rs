@@ -9,8 +9,8 @@
 //! its points, vertex normals, triangles, extent, constant
 //! `primvars:displayColor` and the binding of its colour's material. A
 //! mesh of several colours is split by colour, since a material binds a
-//! whole prim (or a `GeomSubset`, which three.js's `USDLoader` and AR Quick
-//! Look read less uniformly than whole prims).
+//! whole prim (a `GeomSubset` per colour would keep one prim per mesh;
+//! whole prims are the simpler form every reader binds).
 
 use crate::export::{ExportError, ExportMeta, Provenance};
 use crate::geom::{Mesh, NamedMesh};
