@@ -1,9 +1,10 @@
 #!/usr/bin/env node
 // Loads glTF files in three.js (GLTFLoader, with MeshoptDecoder for
-// EXT_meshopt_compression) in headless Chromium, one browser session for all
+// EXT_meshopt_compression) and USDZ packages (USDLoader, which
+// USDZLoader now aliases) in headless Chromium, one browser session for all
 // files, and reports per file whether it loaded and how many triangles it has.
 //
-// Usage: node scripts/three-check/check.mjs FILE.glb...
+// Usage: node scripts/three-check/check.mjs FILE.glb|FILE.usdz...
 //
 // Prints one JSON line per file: {"file", "ok", "triangles" (instanced
 // meshes count once per instance), "meshes", "instances", "coloured" (instances
@@ -79,7 +80,8 @@ try {
   await page.waitForFunction(() => window.threeCheckReady === true, null, { timeout: 30000 });
   for (let i = 0; i < files.length; i++) {
     consoleErrors.length = 0;
-    const r = await page.evaluate((url) => window.threeCheck(url), `${base}/files/${i}`);
+    const kind = extname(files[i]).slice(1).toLowerCase();
+    const r = await page.evaluate(([url, kind]) => window.threeCheck(url, kind), [`${base}/files/${i}`, kind]);
     r.file = files[i];
     if (r.ok && consoleErrors.length) {
       r.ok = false;

@@ -46,6 +46,7 @@ mod sheet;
 mod ssfidelity;
 mod strips;
 mod unigrafix;
+mod usdz;
 mod scaleout;
 mod service;
 mod harden;

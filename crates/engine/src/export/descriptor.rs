@@ -127,6 +127,11 @@ pub type EncodePicture = fn(&Image, Option<&Provenance>, &mut Budget) -> Result<
 /// applies; returns the bytes and the triangles a reader tessellates.
 pub type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
 
+/// Writes an object-instancing hierarchy as it was made (each leaf shape
+/// once, placed per leaf) at a tessellation detail, with the model's
+/// metadata.
+pub type WriteHierarchy = fn(&Hierarchy, u32, &ExportMeta, &mut Budget) -> Result<Vec<u8>, ExportError>;
+
 /// How a format is written: from what, by which function.
 #[derive(Debug, Clone, Copy)]
 pub enum Writer {
@@ -139,4 +144,15 @@ pub enum Writer {
     /// From the model itself, instances and hierarchy as made, with no
     /// meshing (`docs/scene-format.md`).
     Model(WriteModel),
+    /// From meshes as [`Writer::Meshes`] does, and from an object-instancing
+    /// hierarchy, when the model has one, by `hierarchy` (unfitted and
+    /// unprinted requests; the front ends are asked for a hierarchy): each
+    /// leaf shape written once and placed per leaf (USDZ's scene-graph
+    /// instancing, `docs/usdz.md`).
+    Instancing {
+        /// The flat route's writer.
+        meshes: WriteMeshes,
+        /// The hierarchy's writer.
+        hierarchy: WriteHierarchy,
+    },
 }

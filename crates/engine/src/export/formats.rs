@@ -13,7 +13,7 @@
 //! formats exist.
 
 use super::descriptor::{FormatInfo, OptionGroup, Writer};
-use super::{gltf, png, scene, stl, strips, threemf, ug, ExportError, ExportMeta, ExportOptions};
+use super::{gltf, png, scene, stl, strips, threemf, ug, usdz, ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 
@@ -65,6 +65,9 @@ formats! {
     Scene => scene::SCENE,
     /// 3MF core package (a zip with the model XML in millimetres), for printing.
     ThreeMf => threemf::THREEMF,
+    /// USDZ (Pixar's usdz package: USD text in a stored, 64-byte-aligned
+    /// zip), for iOS's AR Quick Look and RealityKit: see docs/usdz.md.
+    Usdz => usdz::USDZ,
     /// Berkeley UniGrafix text (Séquin (ed.) 1992): `def`/`v`/`f`/`c`/`i` statements.
     Ug => ug::UG,
     /// A PNG picture of the model (the preview stage, `docs/preview.md`):
@@ -199,7 +202,7 @@ pub fn export_with(
     budget.check_deadline()?;
     let info = format.info();
     match info.writer {
-        Writer::Meshes(write) => write(meshes, meta, options, budget),
+        Writer::Meshes(write) | Writer::Instancing { meshes: write, .. } => write(meshes, meta, options, budget),
         // The pipeline runs the preview stage itself (to time it) and then
         // the encoder; this arm serves meshes from outside a render (a
         // decoded strips file) and library callers.

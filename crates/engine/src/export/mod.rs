@@ -2,7 +2,7 @@
 //! scene metadata and the model only; they never parse.
 //!
 //! One folder per format family (`gltf`, `strips`, `scene`, `stl`,
-//! `threemf`, `png`, `ug`), each declaring its formats' descriptors
+//! `threemf`, `png`, `ug`, `usdz`), each declaring its formats' descriptors
 //! ([`FormatInfo`]) beside its writers; this file holds what they share
 //! (the errors, the scene-level metadata, the request's format options,
 //! the welding and the deadline cadence), and `formats` is the registry
@@ -18,8 +18,9 @@ pub mod stl;
 pub mod strips;
 pub mod threemf;
 pub mod ug;
+pub mod usdz;
 
-pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteMeshes, WriteModel, Writer};
+pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteHierarchy, WriteMeshes, WriteModel, Writer};
 pub use formats::{estimated_size, export, export_with, Format, FORMATS};
 pub use gltf::compact::{parse_compression, Compression, GltfOptions};
 pub use provenance::Provenance;
@@ -225,7 +226,7 @@ mod tests {
         for (name, meshes, meta) in samples() {
             let (v, t) = counts(&meshes);
             // Every format written from meshes, as the registry lists them.
-            for &format in Format::ALL.iter().filter(|f| matches!(f.info().writer, Writer::Meshes(_))) {
+            for &format in Format::ALL.iter().filter(|f| matches!(f.info().writer, Writer::Meshes(_) | Writer::Instancing { .. })) {
                 let ext = format!("{}.{}", format.name(), format.extension());
                 let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
                 assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());

@@ -8,7 +8,7 @@
 //! ([`Route::hierarchy`], [`Route::animated`]), never the format.
 
 use super::RenderRequest;
-use crate::export::{EncodePicture, Instancing, WriteMeshes, WriteModel, Writer};
+use crate::export::{EncodePicture, Instancing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
 use crate::model::HierarchyUse;
 
 /// The way a model is written, chosen by [`Route::of`].
@@ -28,6 +28,10 @@ pub(crate) enum Route {
     /// (`EXT_mesh_gpu_instancing`), `.glb` when `binary`; `flat` writes
     /// what is not instanced (a moving model, one without repeats).
     InstancedGltf { binary: bool, flat: WriteMeshes },
+    /// A hierarchy written by the format's own writer, each leaf shape once
+    /// and placed per leaf (usdz's scene-graph instancing, docs/usdz.md);
+    /// a model without one goes to `flat`.
+    InstancedHierarchy { write: WriteHierarchy, flat: Output },
     /// Meshes in `output`; a node graph with the model's animation and
     /// camera path when `animated`; a hierarchy the front end builds is
     /// expanded first when `hierarchy` (glTF asked for flat instancing).
@@ -55,6 +59,13 @@ impl Route {
         let (output, meshes) = match info.writer {
             Writer::Model(write) => return Route::Model(write),
             Writer::Meshes(write) => (Output::Meshes { write, fit }, Some(write)),
+            Writer::Instancing { meshes, hierarchy } => {
+                let output = Output::Meshes { write: meshes, fit };
+                if !print && !fit {
+                    return Route::InstancedHierarchy { write: hierarchy, flat: output };
+                }
+                (output, Some(meshes))
+            }
             Writer::Picture(encode) => (Output::Picture(encode), None),
         };
         match meshes {
@@ -77,7 +88,7 @@ impl Route {
         match self {
             Route::Model(_) => HierarchyUse::Required,
             Route::Print { .. } => HierarchyUse::Union,
-            Route::InstancedGltf { .. } | Route::Flat { hierarchy: true, .. } => HierarchyUse::Preferred,
+            Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Flat { hierarchy: true, .. } => HierarchyUse::Preferred,
             Route::StreamedStrips { .. } => HierarchyUse::Streamed,
             Route::Flat { hierarchy: false, .. } => HierarchyUse::Never,
         }
@@ -96,8 +107,9 @@ impl Route {
 
     /// Whether placements are written as instances, each charged at the
     /// format's per-instance bound: every one from the model (`scene`), the
-    /// repeats under GPU instancing.
+    /// repeats under GPU instancing, a hierarchy's leaves written by the
+    /// format's own hierarchy writer.
     pub(crate) fn writes_instances(&self) -> bool {
-        matches!(self, Route::Model(_) | Route::InstancedGltf { .. })
+        matches!(self, Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. })
     }
 }

@@ -28,6 +28,22 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
         Route::StreamedStrips { empty } => strips_from_model(model, provenance, empty, req, budget, clock),
         Route::Print { report, output } => print(model, provenance, report, output, req, budget, clock),
         Route::InstancedGltf { binary, flat: write } => instanced(model, provenance, binary, write, req, budget, clock),
+        Route::InstancedHierarchy { write, flat: output } => match model.hierarchy.take() {
+            Some(h) => {
+                let meta = ExportMeta {
+                    background: model.scene.background,
+                    truncated: h.truncated.is_some(),
+                    graph: None,
+                    material_per_mesh: false,
+                    camera: None,
+                    provenance: Some(provenance),
+                };
+                let bytes = write(&h, req.detail, &meta, budget)?;
+                clock.lap(Phase::Export);
+                Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated))
+            }
+            None => flat(model, provenance, output, None, req, budget, clock),
+        },
         Route::Flat { output, animated, .. } => {
             if let Some(h) = model.hierarchy.take() {
                 model.scene = h.expand(req.detail, budget)?;
