@@ -9,7 +9,7 @@
 use crate::common::{tempdir, validate_gltf};
 use rulemesh::core::{Budget, Limits};
 use rulemesh::export::Format;
-use rulemesh::lang::cfdg::{eval, parse_checked_in, svg, variation};
+use rulemesh::lang::cfdg::{drawing, eval, parse_checked_in, variation};
 use rulemesh::lang::Language;
 use rulemesh::pipeline::{render, RenderError, RenderRequest};
 use std::path::{Path, PathBuf};
@@ -60,8 +60,10 @@ fn rulemesh_svg(file: &Path, var: &str) -> String {
     let src = std::fs::read(file).expect("example readable");
     let g = parse_checked_in(&src, file.parent()).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
     let opts = eval::Options { width: SIZE, height: SIZE, variation: variation::from_code(var).expect("code"), ..eval::Options::default() };
-    let p = eval::render(&g, &opts, &mut Budget::new(Limits::default())).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
-    svg::write(&p)
+    let mut budget = Budget::new(Limits::default());
+    let p = eval::render(&g, &opts, &mut budget).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    let d = drawing::of(&p, &mut budget).expect("fits");
+    String::from_utf8(rulemesh::export::svg::write_svg(&d, &mut budget).expect("writes")).expect("utf-8")
 }
 
 /// Asserts the two SVGs hold the same shapes within the tolerances.

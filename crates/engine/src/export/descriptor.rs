@@ -13,7 +13,7 @@ use super::{ExportError, ExportMeta, ExportOptions, Provenance};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use crate::mesh::MeshLayout;
-use crate::model::{Hierarchy, Scene};
+use crate::model::{Drawing, Hierarchy, Scene};
 use crate::preview::Image;
 
 /// One format: everything the CLI, the service, the schema, the cache, the
@@ -127,6 +127,10 @@ pub type EncodePicture = fn(&Image, Option<&Provenance>, &mut Budget) -> Result<
 /// applies; returns the bytes and the triangles a reader tessellates.
 pub type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
 
+/// Writes the model's 2D drawing (a Context Free design's marks), with the
+/// model's provenance where the format has metadata.
+pub type WriteDrawing = fn(&Drawing, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
+
 /// How a format is written: from what, by which function.
 #[derive(Debug, Clone, Copy)]
 pub enum Writer {
@@ -139,4 +143,8 @@ pub enum Writer {
     /// From the model itself, instances and hierarchy as made, with no
     /// meshing (`docs/scene-format.md`).
     Model(WriteModel),
+    /// From the model's 2D [`Drawing`], for a model that carries one (a
+    /// Context Free design); the pipeline refuses the format for a model
+    /// without, naming the capability (`svg`).
+    Drawing(WriteDrawing),
 }

@@ -374,6 +374,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     let files_len: u64 = req.files.values().map(|f| f.len() as u64).sum();
     Budget::check_source(&req.limits, (source.len() as u64).saturating_add(files_len))?;
     let language = language_of(source, req.language)?;
+    if matches!(req.format.info().writer, Writer::Drawing(_)) && !language.front_end().draws() {
+        // Refused before anything is evaluated: the language makes no drawing.
+        return Err(no_drawing(req.format, language).into());
+    }
     let truncating = req.on_limit == OnLimit::Truncate;
     let mut budget = budget_for(req.limits);
     let mut clock = StageClock::start();
@@ -392,6 +396,8 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         script_dir: req.script_dir.as_deref(),
         frame: req.frame,
         files: &req.files,
+        // A picture's side, for languages that evaluate in pixels (Context Free).
+        canvas: matches!(req.format.info().writer, Writer::Picture(_)).then_some(req.export_options.preview.size),
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     crate::core::memprobe::mark("start", &budget);
@@ -429,6 +435,25 @@ fn stages(mut model: Model, provenance: Provenance, req: &RenderRequest, budget:
         clock.lap(Phase::Export);
         let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
         return Ok(summary(bytes, &model, triangles, truncated));
+    }
+    match (req.format.info().writer, model.drawing.take()) {
+        // A 2D design as SVG, as cfdg -V writes it.
+        (Writer::Drawing(write), Some(drawing)) => {
+            let bytes = write(&drawing, Some(&provenance), budget)?;
+            clock.lap(Phase::Export);
+            return Ok(summary(bytes, &model, 0, model.scene.truncated));
+        }
+        (Writer::Drawing(_), None) => return Err(no_drawing(req.format, model.language).into()),
+        // A 2D design's picture is the drawing itself, not a view of its tiles
+        // (a print is a solid: its picture is the preview's).
+        (Writer::Picture(encode), Some(drawing)) if !opts.print.enabled => {
+            let image = crate::preview::drawing::render(&drawing, &opts.preview, budget).map_err(ExportError::from)?;
+            clock.lap(Phase::Preview);
+            let bytes = encode(&image, Some(&provenance), budget)?;
+            clock.lap(Phase::Export);
+            return Ok(summary(bytes, &model, 0, model.scene.truncated));
+        }
+        _ => {}
     }
     if streamed(req) {
         return strips_from_model(model, provenance, req, budget, clock);
@@ -626,6 +651,13 @@ fn strips_from_model(mut model: Model, provenance: Provenance, req: &RenderReque
     let (bytes, triangles, truncated) = empty_if_late(written, survey.triangles(), truncated, meta, req, budget)?;
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
+}
+
+/// The typed refusal of a drawing format (`svg`) for a language whose
+/// models have no 2D drawing: a client error naming the capability.
+fn no_drawing(format: Format, language: Language) -> ExportError {
+    let name = format.name();
+    ExportError::InvalidOptions { format: name, detail: export::no_drawing(name, &format!("`{}` models", language.name())) }
 }
 
 /// The output of a render whose bytes are written (times are filled in by [`render`]).
