@@ -29,10 +29,17 @@ const FORMATS: [Format; 6] = [Format::Glb, Format::Gltf, Format::Stl, Format::St
 /// the source. Any outcome but a panic (or a libFuzzer timeout or
 /// out-of-memory) passes.
 pub fn render(language: Language, data: &[u8]) {
+    render_as(language, data, &FORMATS)
+}
+
+/// [`render`] with the options byte's low bits picking from `formats`
+/// (Context Free's target adds the drawing formats, `svg` and `png`).
+pub fn render_as(language: Language, data: &[u8], formats: &[Format]) {
     let Some((&options, source)) = data.split_first() else { return };
+    let Some(&format) = formats.get(usize::from(options & 7) % formats.len().max(1)) else { return };
     let req = RenderRequest {
         language: Some(language),
-        format: FORMATS[usize::from(options & 7) % FORMATS.len()],
+        format,
         on_limit: if options & 0x80 != 0 { OnLimit::Truncate } else { OnLimit::Error },
         seed: Some(u64::from((options >> 3) & 0xf)),
         limits: tight_limits(),
