@@ -488,7 +488,10 @@ fn render_failure(file: &str, e: RenderError) -> Failure {
 fn run_check(args: CheckArgs) -> Result<(), Failure> {
     let limits = Limits::default();
     let source = read_source(&args.file, limits.max_source_bytes)?;
-    match rulemesh::pipeline::check_source(&source, language_for(&args.file, args.language), &limits) {
+    let language = language_for(&args.file, args.language);
+    // A cpfg model is checked with the files a render of it sends.
+    let files = companions_of(&args.file, language, &source, limits.max_source_bytes);
+    match rulemesh::pipeline::check_source_with(&source, &files, language, &limits) {
         Ok((_, warnings)) => {
             for line in diagnostic_lines(&args.file, &warnings) {
                 println!("{line}");

@@ -64,11 +64,11 @@ fn committed_vlab_objects_render() {
 /// Segment counts of the book's figures as vlab draws them, from their folders.
 #[test]
 fn abop_figures_from_their_folders() {
-    // ABOP §1.2 quadratic Koch curve: 8^4 segments.
+    // The quadratic Koch curve (the generator of ABOP Figure 1.6's island, mirrored): 8^4 segments.
     assert_eq!(render_object("01-quadratic-Koch", Format::Glb, None).expect("koch").primitives, 4096);
-    // ABOP fig. 1.7b snowflake curve: 4^4.
+    // Von Koch's snowflake curve (ABOP Figure 1.1): 4^4.
     assert_eq!(render_object("03-snowflake", Format::Glb, None).expect("snowflake").primitives, 256);
-    // The compound leaf: 130 internodes; with its homomorphism also 81 apices.
+    // The compound leaf (ABOP Figure 1.24e at 4 steps): 130 internodes; with its homomorphism also 81 apices.
     assert_eq!(render_object("04-compound", Format::Glb, None).expect("compound").primitives, 130);
     assert_eq!(render_object("05-compound-homo", Format::Glb, None).expect("compound-homo").primitives, 211);
 }
@@ -153,4 +153,49 @@ fn http_body_carries_files() {
     assert_ne!(none.key, a.key);
     let odd = plan(serde_json::json!({ "../etc/passwd": "base64:%%" })).expect("plan");
     assert_eq!(odd.request.files["../etc/passwd"], b"base64:%%");
+}
+
+/// `/check` reads what a render reads: a model whose `#include` is among
+/// the body's `files` (as a render body carries them) passes, and fails at
+/// the directive's line without them; the Lychnis checks with its folder's
+/// files, over HTTP and with the CLI's `rulemesh check` (which sends them).
+#[test]
+fn check_reads_the_files_a_render_reads() {
+    use rulemesh::service::http::check;
+    use rulemesh::service::request::CheckBody;
+    let main = main_file(&data().join("01-Lychnis"));
+    let source = std::fs::read_to_string(&main).expect("read");
+    let files = files_of(&main, source.as_bytes());
+    let text: BTreeMap<String, String> = files.iter().map(|(k, v)| (k.clone(), String::from_utf8(v.clone()).expect("text files"))).collect();
+    let ceiling = Limits::default();
+    let included = "Lsystem: 1\n#include \"rules.h\"\nAxiom: F\nRULE\nendlsystem\n".to_string();
+    let rules: BTreeMap<String, String> = [("rules.h".to_string(), "#define RULE F --> FF\n".to_string())].into();
+    let alone = check(CheckBody { source: included.clone(), language: None, files: BTreeMap::new() }, &ceiling).expect("report");
+    assert!(!alone.ok, "{alone:?}");
+    assert!(alone.diagnostics[0].span.line == 2 && alone.diagnostics[0].message.contains("rules.h"), "{alone:?}");
+    let beside = check(CheckBody { source: included, language: None, files: rules }, &ceiling).expect("report");
+    assert!(beside.ok, "{beside:?}");
+    let with = check(CheckBody { source, language: None, files: text }, &ceiling).expect("report");
+    assert!(with.ok && with.language == Some("cpfg"), "{with:?}");
+    let r = common::run(&["check", main.to_str().expect("utf8")], None);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    // The files count against the source limit here too.
+    let small = Limits { max_source_bytes: 2048, ..Limits::default() };
+    assert!(rulemesh::pipeline::check_source_with(b"Lsystem: 1\nAxiom: F\nendlsystem\n", &files, None, &small).is_err());
+}
+
+/// A batch's members carry the body's `files`: every member of a seeds
+/// batch over a cpfg model plans with its view, so it differs from the
+/// same member without it.
+#[test]
+fn batch_members_carry_the_files() {
+    use rulemesh::service::batch::from_json_body;
+    let body = |files: serde_json::Value| serde_json::json!({ "source": "Lsystem: 1\nderivation length: 2\nAxiom: F\nF --> F+F\nendlsystem\n", "language": "cpfg", "seeds": [1, 2], "files": files }).to_string();
+    let ceiling = Limits::default();
+    let with = from_json_body(body(serde_json::json!({ "m.v": "angle increment: 90\n" })).as_bytes(), &ceiling).expect("batch");
+    let without = from_json_body(body(serde_json::json!({})).as_bytes(), &ceiling).expect("batch");
+    let (a, b) = (with.member_body(&with.members()[0]).plan(&ceiling, false).expect("plan"), without.member_body(&without.members()[0]).plan(&ceiling, false).expect("plan"));
+    assert_eq!(a.request.files["m.v"], b"angle increment: 90\n");
+    assert!(b.request.files.is_empty());
+    assert_ne!(a.key, b.key);
 }

@@ -13,7 +13,7 @@ fuzz_target!(|data: &[u8]| {
         let _ = RenderBody::from(req).plan(&rulemesh_fuzz::tight_limits(), no_cache);
     }
     if let Ok(req) = pb::CheckRequest::decode(data) {
-        let body = rulemesh::service::request::CheckBody { source: req.source, language: (!req.language.is_empty()).then_some(req.language) };
+        let body = rulemesh::service::request::CheckBody { source: req.source, language: (!req.language.is_empty()).then_some(req.language), ..Default::default() };
         let _ = rulemesh::service::http::check(body, &rulemesh_fuzz::tight_limits());
     }
 });

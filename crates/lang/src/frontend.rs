@@ -27,6 +27,16 @@ pub trait FrontEnd: Sync {
     /// Parses `source` only to report its diagnostics (warnings on success).
     fn check(&self, source: &[u8]) -> Result<Vec<Diagnostic>, ParseError>;
 
+    /// [`check`](FrontEnd::check) with the request's named files beside the
+    /// source (`BuildRequest::files`): a cpfg model's `#include`s and the
+    /// function names its view predefines resolve against them, so `/check`
+    /// of such a model agrees with its render. Languages that read no files
+    /// ignore them.
+    fn check_with(&self, source: &[u8], files: &std::collections::BTreeMap<String, Vec<u8>>) -> Result<Vec<Diagnostic>, ParseError> {
+        let _ = files;
+        self.check(source)
+    }
+
     /// The parameters `source` declares (MDG `@param`, EisenScript GUI
     /// defines; empty where the language has none), read without evaluating.
     fn declared_params(&self, source: &[u8]) -> Result<Vec<ParamDecl>, ParseError>;

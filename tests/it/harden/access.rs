@@ -146,7 +146,7 @@ async fn grpc_keys_rates_shares_and_ceilings() {
         assert_eq!(e.code(), tonic::Code::Unauthenticated);
     }
     // x-api-key works as well as authorization.
-    let mut r = tonic::Request::new(pb::CheckRequest { source: small("chk"), language: String::new() });
+    let mut r = tonic::Request::new(pb::CheckRequest { source: small("chk"), language: String::new(), files: Default::default() });
     r.metadata_mut().insert("x-api-key", MetadataValue::from_static("k-open"));
     assert!(g.check(r).await.expect("check").into_inner().ok);
     assert_eq!(g.render(with("k-open", &small("gok"))).await.expect("renders").into_inner().meta.expect("meta").primitives, 6);

@@ -1,13 +1,15 @@
 //! Issue 17's hardening, end to end against the real server: bad input
 //! answered with typed errors, access control (keys, rates, shares,
 //! ceilings, CORS, the JavaScript switch) over HTTP and gRPC, connection
-//! hygiene, verified cache tiers, the deadline watchdog and the OpenAPI
+//! hygiene, verified cache tiers, cache keys that change with every input
+//! that changes output (issue 33), the deadline watchdog and the OpenAPI
 //! document checked by schemathesis.
 
 mod access;
 mod cache;
 mod conn;
 mod deadline;
+mod fresh;
 mod input;
 mod memory;
 mod prints;

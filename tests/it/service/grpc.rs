@@ -58,9 +58,16 @@ async fn grpc_matches_http_and_maps_errors() {
     let err = g.render(pb::RenderRequest { source: small("fmt"), format: "obj".into(), ..Default::default() }).await.expect_err("format");
     assert_eq!(err.code(), tonic::Code::InvalidArgument);
 
-    let check = g.check(pb::CheckRequest { source: "startshape A\nrule A { BOX { x } }".into(), language: String::new() }).await.expect("Check").into_inner();
+    let check = g.check(pb::CheckRequest { source: "startshape A\nrule A { BOX { x } }".into(), language: String::new(), files: Default::default() }).await.expect("Check").into_inner();
     assert!(!check.ok);
     assert_eq!(check.diagnostics[0].line, 2);
+    // A cpfg model's #include resolves against the request's files, as in a render.
+    let cpfg = "#include \"rules.h\"\nLsystem: 1\nAxiom: F\nRULE\nendlsystem\n";
+    let files: std::collections::HashMap<String, Vec<u8>> = [("rules.h".to_string(), b"#define RULE F --> FF\n".to_vec())].into();
+    let with = g.check(pb::CheckRequest { source: cpfg.into(), language: String::new(), files }).await.expect("Check").into_inner();
+    assert!(with.ok && with.language == "cpfg", "{with:?}");
+    let without = g.check(pb::CheckRequest { source: cpfg.into(), language: String::new(), files: Default::default() }).await.expect("Check").into_inner();
+    assert!(!without.ok && without.diagnostics[0].message.contains("rules.h"), "{without:?}");
 
     let list = g.list_grammars(pb::ListGrammarsRequest {}).await.expect("ListGrammars").into_inner();
     assert!(list.grammars.iter().any(|x| x.name == "gem" && x.language == "mdg" && !x.description.is_empty()));

@@ -25,9 +25,11 @@ fn library_files() -> BTreeMap<String, (&'static str, std::path::PathBuf)> {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_library_grammar_is_listed_and_served_as_the_cli_renders_it() {
     let files = library_files();
-    // 27 MDG and 15 L-system grammars, and the 24 icons (docs/icons.md).
+    // 27 MDG, 15 L-system and 3 cpfg grammars, and the 24 icons (docs/icons.md).
     assert_eq!(files.values().filter(|f| f.0 == "mdg").count(), 27 + 24, "{:?}", files.keys());
     assert_eq!(files.values().filter(|f| f.0 == "lsystem").count(), 15, "{:?}", files.keys());
+    // The cpfg models need no view file, so /v1/models (which sends no files) draws them as the CLI does.
+    assert_eq!(files.values().filter(|f| f.0 == "cpfg").count(), 3, "{:?}", files.keys());
     let (srv, base) = start(config()).await;
     let c = client();
 

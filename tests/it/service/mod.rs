@@ -18,6 +18,7 @@ mod variations;
 mod library;
 mod print_report;
 mod options;
+mod phone;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).

@@ -56,7 +56,7 @@ async fn a_developer_session_in_chromium_loads_edits_previews_and_marks_errors()
     assert_eq!(seen["preview_width"], 256, "{seen}");
     assert_eq!(seen["marked_line"], 3, "{seen}");
     assert_eq!(seen["foreign_requests"], 0, "{seen}");
-    assert_eq!(seen["sizes"].as_object().map(|s| s.len()), Some(6), "{seen}");
+    assert_eq!(seen["sizes"].as_object().map(|s| s.len()), Some(rulemesh::export::Format::ALL.len()), "one size per registered format: {seen}");
 
     // Opened with no state: the default library model, named in the URL.
     let opened = &seen["default"];

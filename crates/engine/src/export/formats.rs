@@ -188,6 +188,8 @@ pub fn export(format: Format, meshes: &[NamedMesh], meta: &ExportMeta, budget: &
 
 /// Writes `meshes` in `format` with the request's format options, reserving
 /// the output size in `budget` first: the writer the registry names for it.
+/// It writes the meshes as they are: fitting them into the unit box is the
+/// pipeline's stage (`fit_unit_box` is read there, not here).
 pub fn export_with(
     format: Format,
     meshes: &[NamedMesh],
@@ -198,16 +200,6 @@ pub fn export_with(
     // Writing a large model takes a share of the deadline; a model that
     // arrives here late is not started.
     budget.check_deadline()?;
-    let (fitted, moved);
-    let (meshes, meta) = if options.fit_unit_box {
-        // The camera moves with the model, so the fitted model is seen as the original was.
-        let map;
-        (fitted, map) = crate::geom::normalize::fit_unit_box(meshes, budget)?;
-        moved = ExportMeta { camera: meta.camera.as_ref().map(|c| map.map_or_else(|| c.clone(), |(centre, scale)| c.fitted(centre, scale))), ..meta.clone() };
-        (&fitted[..], &moved)
-    } else {
-        (meshes, meta)
-    };
     let info = format.info();
     match info.writer {
         Writer::Meshes(write) => write(meshes, meta, options, budget),

@@ -142,7 +142,7 @@ impl From<crate::preview::PreviewError> for ExportError {
     fn from(e: crate::preview::PreviewError) -> Self {
         match e {
             crate::preview::PreviewError::Limit(l) => ExportError::Limit(l),
-            crate::preview::PreviewError::BadOptions(detail) => ExportError::InvalidOptions { format: "png", detail },
+            crate::preview::PreviewError::BadOptions(detail) => ExportError::InvalidOptions { format: png::PNG.name, detail },
         }
     }
 }

@@ -81,7 +81,15 @@ fn encode_limits(e: &mut Encoder, l: &Limits) {
 /// The key of rendering `source` (already normalised with
 /// [`normalize_source`]) as `req` says, with this engine version.
 pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
-    let mut e = model_encoder(source, req, &req.params);
+    cache_key_of_engine(crate::ENGINE_VERSION, source, req)
+}
+
+/// [`cache_key`] as engine version `engine` computes it. The disk and
+/// Redis tiers outlive one binary, so a new engine must not find the old
+/// one's models: this is how a test checks that the version is part of
+/// the key without building a second engine (issue 33).
+pub fn cache_key_of_engine(engine: &str, source: &[u8], req: &RenderRequest) -> CacheKey {
+    let mut e = model_encoder(engine, source, req, &req.params);
     encode_limits(&mut e, &req.limits);
     e.field("on_limit", if req.on_limit == crate::core::OnLimit::Truncate { b"truncate" } else { b"error" });
     CacheKey(*e.0.finalize().as_bytes())
@@ -95,11 +103,11 @@ pub fn cache_key(source: &[u8], req: &RenderRequest) -> CacheKey {
 /// `params` stand in for the request's (the pipeline passes them in their
 /// canonical spelling, [`ParamValue::canonical`]).
 pub fn model_key(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, ParamValue>) -> CacheKey {
-    CacheKey(*model_encoder(source, req, params).0.finalize().as_bytes())
+    CacheKey(*model_encoder(crate::ENGINE_VERSION, source, req, params).0.finalize().as_bytes())
 }
 
 /// Everything but the limits and the `on_limit` mode, encoded, with
-/// `params` as the parameters.
+/// `params` as the parameters, as engine version `engine` encodes it.
 ///
 /// The request is taken apart field by field, with no `..`: a field added
 /// to [`RenderRequest`] or to one of its option structs does not compile
@@ -107,7 +115,7 @@ pub fn model_key(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
 /// encoded only where they apply and only when they differ from what a
 /// request had before they existed, so older requests keep their keys (and
 /// the golden table its rows).
-fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, ParamValue>) -> Encoder {
+fn model_encoder(engine: &str, source: &[u8], req: &RenderRequest, params: &BTreeMap<String, ParamValue>) -> Encoder {
     let RenderRequest {
         language,
         seed,
@@ -129,7 +137,7 @@ fn model_encoder(source: &[u8], req: &RenderRequest, params: &BTreeMap<String, P
     let ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview } = export_options;
     let format = *format;
     let mut e = Encoder(blake3::Hasher::new());
-    e.field("engine", crate::ENGINE_VERSION.as_bytes());
+    e.field("engine", engine.as_bytes());
     let language = language.or_else(|| Language::detect(source));
     e.field("language", language.map_or("unknown", Language::name).as_bytes());
     e.field("source", source);
@@ -237,6 +245,12 @@ mod tests {
             assert_ne!(k, cache_key(src, v), "{v:?}");
         }
         assert_ne!(k, cache_key(b"startshape B\nrule B { BOX {} }\n", &base));
+        // One source byte, the language, the files and the engine version, each alone.
+        assert_ne!(k, cache_key(b"startshape A\nrule A { BOX {} }\n ", &base));
+        assert_ne!(k, cache_key(src, &RenderRequest { language: Some(Language::Cfdg), ..base.clone() }));
+        assert_ne!(k, cache_key(src, &RenderRequest { files: [("a".to_string(), b"x".to_vec())].into(), ..base.clone() }));
+        assert_eq!(k, cache_key_of_engine(crate::ENGINE_VERSION, src, &base));
+        assert_ne!(k, cache_key_of_engine("0.0.0-other", src, &base));
         // Strips precision is part of a strips model's key.
         let strips = RenderRequest { format: Format::Strips, ..base.clone() };
         let mut coarse = strips.clone();

@@ -191,7 +191,8 @@ pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[bool],
     budget.reserve_memory(band_bytes.saturating_add(image_bytes))?;
     let mut rgba = vec![0u8; image_bytes as usize];
     let cells = (band_rows * width) as usize;
-    let mut band = Band { width, rows: (0, 0), depth: vec![EMPTY; cells], colour: vec![0; cells] };
+    let (depth, colour) = BandBuffers::take(cells);
+    let mut band = Band { width, rows: (0, 0), depth, colour };
     let mut meter = Meter { budget, pending: 0 };
     let mut top = 0;
     // Backdrop triangles (see `is_backdrop`), if any, are drawn first and
@@ -223,7 +224,48 @@ pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[bool],
         top += band_rows;
     }
     meter.budget.release_memory(band_bytes);
+    BandBuffers::keep(band.depth, band.colour);
     Ok(Image { size: options.size, rgba })
+}
+
+/// The largest band, in samples, whose buffers a thread keeps for its next
+/// preview: a 256 px icon's whole picture (512² samples, 2 MiB of depth and
+/// colour). Larger previews allocate theirs each time.
+const KEPT_CELLS: usize = 512 * 512;
+
+thread_local! {
+    /// The band buffers of this thread's last preview (at most [`KEPT_CELLS`]).
+    static KEPT: std::cell::RefCell<(Vec<u32>, Vec<u32>)> = const { std::cell::RefCell::new((Vec::new(), Vec::new())) };
+}
+
+/// Band buffers kept from one preview to the next on the same thread. A
+/// fresh 2 MiB pair for every icon cost a third of a 256 px preview's CPU
+/// (page faults, zeroing, and returning the pages: issue 33's profile);
+/// kept, a buffer is only sized. Its old contents are never read: every
+/// band fills its depth with [`EMPTY`] first, and a colour is read only
+/// where a triangle of this band set the depth, so the pixels do not
+/// depend on what the last preview left. The service renders on its
+/// blocking pool (at most `--max-concurrency` + 4 threads), so at most that
+/// many pairs are kept.
+struct BandBuffers;
+
+impl BandBuffers {
+    /// A depth and a colour buffer of `cells` samples, the kept ones when they fit.
+    fn take(cells: usize) -> (Vec<u32>, Vec<u32>) {
+        let (mut depth, mut colour) = if cells <= KEPT_CELLS { KEPT.with(|k| std::mem::take(&mut *k.borrow_mut())) } else { (Vec::new(), Vec::new()) };
+        depth.resize(cells, EMPTY);
+        depth.truncate(cells);
+        colour.resize(cells, 0);
+        colour.truncate(cells);
+        (depth, colour)
+    }
+
+    /// Keeps the buffers for the thread's next preview, when small enough.
+    fn keep(depth: Vec<u32>, colour: Vec<u32>) {
+        if depth.capacity() <= KEPT_CELLS && colour.capacity() <= KEPT_CELLS {
+            KEPT.with(|k| *k.borrow_mut() = (depth, colour));
+        }
+    }
 }
 
 /// One attribute's plane over the triangle's samples, in 1/2^16 units:
@@ -425,13 +467,15 @@ impl Band {
                 let (Some(depths), Some(colours)) = (self.depth.get(row..row + width), self.colour.get(row..row + width)) else {
                     continue;
                 };
-                for (i, (&d, &c)) in depths.iter().zip(colours).enumerate() {
-                    if d != EMPTY {
-                        let px = i / ss as usize;
-                        let c = i64::from(c);
-                        covered[px] += 1;
-                        let s = &mut sums[px];
-                        *s = [s[0] + (c >> 20 & 0x3ff), s[1] + (c >> 10 & 0x3ff), s[2] + (c & 0x3ff)];
+                // A pixel's samples of this row side by side: no division per sample.
+                let pixels = depths.chunks_exact(ss as usize).zip(colours.chunks_exact(ss as usize));
+                for ((d, c), (n, s)) in pixels.zip(covered.iter_mut().zip(sums.iter_mut())) {
+                    for (&d, &c) in d.iter().zip(c) {
+                        if d != EMPTY {
+                            let c = i64::from(c);
+                            *n += 1;
+                            *s = [s[0] + (c >> 20 & 0x3ff), s[1] + (c >> 10 & 0x3ff), s[2] + (c & 0x3ff)];
+                        }
                     }
                 }
             }

@@ -147,6 +147,15 @@ impl FrontEnd for Cpfg {
     fn check(&self, source: &[u8]) -> Result<Vec<Diagnostic>, ParseError> {
         syntax::parse(source).map(|s| s.warnings)
     }
+    /// Parses as a render does: the view's warnings, then the source's,
+    /// with `#include` and the view's function names read from `files`.
+    fn check_with(&self, source: &[u8], files: &BTreeMap<String, Vec<u8>>) -> Result<Vec<Diagnostic>, ParseError> {
+        let mut warnings = Vec::new();
+        let view = read_view(files, &mut warnings);
+        let sys = syntax::parse_with(source, files, &predefined(&view))?;
+        warnings.extend(sys.warnings);
+        Ok(warnings)
+    }
     /// cpfg models declare no request parameters (the source is checked all the same).
     fn declared_params(&self, source: &[u8]) -> Result<Vec<ParamDecl>, ParseError> {
         syntax::parse(source).map(|_| Vec::new())
@@ -162,3 +171,5 @@ impl FrontEnd for Cpfg {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod figures;

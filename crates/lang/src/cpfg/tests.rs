@@ -58,8 +58,9 @@ fn count(s: &str, c: char) -> usize {
     s.chars().filter(|&x| x == c).count()
 }
 
-/// The quadratic Koch curve of ABOP §1.2 (vlab `01-quadratic-Koch`): every
-/// F becomes 8, so 8⁴ segments after 4 steps.
+/// The quadratic Koch curve of vlab's `01-quadratic-Koch` (the mirrored
+/// generator of ABOP Figure 1.6's island): every F becomes 8, so 8⁴
+/// segments after 4 steps. The figures themselves: `figures.rs`.
 #[test]
 fn quadratic_koch_counts() {
     let s = derive_text(KOCH, None);
@@ -68,14 +69,16 @@ fn quadratic_koch_counts() {
     assert_eq!(cpfg(KOCH).expect("builds").primitives, 4096);
 }
 
-/// The snowflake curve of ABOP fig. 1.7b (vlab `03-snowflake`): 4⁴ segments.
+/// Von Koch's snowflake curve (vlab `03-snowflake`; ABOP Figure 1.1, not
+/// Figure 1.7b, which is its quadratic modification): 4⁴ segments.
 #[test]
 fn snowflake_counts() {
     assert_eq!(count(&derive_text(SNOWFLAKE, None), 'F'), 256);
     assert_eq!(cpfg(SNOWFLAKE).expect("builds").primitives, 256);
 }
 
-/// The compound leaf of the vlab course (`04-compound`): A ↦ 3A, F ↦ 2F + 2 per A,
+/// The compound leaf of the vlab course (`04-compound`, ABOP Figure 1.24e
+/// with A for X, 4 steps instead of 7): A ↦ 3A, F ↦ 2F + 2 per A,
 /// 130 segments after 4 steps; with the homomorphism (`05-compound-homo`)
 /// the 81 apices draw too: 211.
 #[test]
@@ -152,6 +155,36 @@ fn ls_translations_draw_the_same_segments() {
     }
 }
 
+/// Two more pairs: conditions with a branching delay (the fractal ferns'
+/// productions with F for I and R = 1.5, exact in `f32`), and the
+/// context-sensitive plant of ABOP Figure 1.31a (Hogeweg and Hesper;
+/// `grammars/hogeweg.ls` with a, b for 0, 1), whose contexts skip `+ - F`
+/// and whole branches in both dialects.
+#[test]
+fn ls_translations_with_conditions_and_context() {
+    let pairs = [
+        (
+            "#define D 3\n#define R 1.5\nLsystem: 1\nderivation length: 12\nAxiom: A(0)\nA(t) : t<D --> A(t+1)\nA(t) : t==D --> F(1)[+A(0)][-A(0)]F(1)A(t)\nF(x) --> F(R*x)\nendlsystem\n",
+            "iterations: 12\nangle: 45\naxiom: A(0)\nA(t) : t < 3 -> A(t+1)\nA(t) : t == 3 -> F(1) [ + A(0) ] [ - A(0) ] F(1) A(t)\nF(x) -> F(1.5*x)\n",
+            45.0,
+        ),
+        (
+            "Lsystem: 1\nderivation length: 30\nignore: +-F\nAxiom: FbFbFb\na < a > a --> a\na < a > b --> b[+FbFb]\na < b > a --> b\na < b > b --> b\nb < a > a --> a\nb < a > b --> bFb\nb < b > a --> a\nb < b > b --> a\n+ --> -\n- --> +\nendlsystem\n",
+            "iterations: 30\nangle: 22.5\nignore: + - F\naxiom: F b F b F b\na < a > a -> a\na < a > b -> b [ + F b F b ]\na < b > a -> b\na < b > b -> b\nb < a > a -> a\nb < a > b -> b F b\nb < b > a -> a\nb < b > b -> a\n* < + > * -> -\n* < - > * -> +\n",
+            22.5,
+        ),
+    ];
+    for (c, ls, angle) in pairs {
+        let mut files = BTreeMap::new();
+        files.insert("m.v".to_string(), format!("angle increment: {angle}\n").into_bytes());
+        let a = build(&super::Cpfg, c, &files, Limits::default()).expect("cpfg builds");
+        let b = build(&crate::lsystem::Lsystem, ls, &BTreeMap::new(), Limits::default()).expect("ls builds");
+        assert!(a.primitives > 50, "{c}: {}", a.primitives);
+        assert_eq!(a.primitives, b.primitives, "{c}");
+        assert_eq!(points(&a), points(&b), "{c}");
+    }
+}
+
 /// The environmental query `?P` receives the turtle's position (manual §6.9).
 #[test]
 fn queries_receive_the_position() {
@@ -181,6 +214,12 @@ fn includes_resolve_against_the_files_only() {
     files.insert("rules.h".to_string(), b"#define RULE F --> FF\n".to_vec());
     let sys = parse_with(b"#include \"rules.h\"\nLsystem: 1\nderivation length: 1\nAxiom: F\nRULE\nendlsystem\n", &files, &[]).expect("parses");
     assert_eq!(sys.productions.len(), 1);
+    // `check_with` reads the same files (what `/check` sends); `check` alone cannot.
+    use crate::FrontEnd;
+    let src = b"#include \"rules.h\"\nLsystem: 1\nderivation length: 1\nAxiom: F\nRULE\nendlsystem\n";
+    assert!(super::Cpfg.check_with(src, &files).is_ok());
+    let e = super::Cpfg.check(src).expect_err("no rules.h");
+    assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].message.contains("rules.h")), (1, true), "{e:?}");
     let e = parse_with(b"#include \"/etc/passwd\"\nLsystem: 1\nAxiom: F\n", &files, &[]).expect_err("refused");
     assert!(e.diagnostics[0].message.contains("no file"), "{e:?}");
     files.insert("a.h".to_string(), b"#include \"b.h\"\n".to_vec());
@@ -219,6 +258,31 @@ fn hostile_sources_end_in_named_errors() {
         Err(BuildError::Eval(EvalError::NonFinite { span, what, .. })) => assert_eq!((span.line, what.as_str()), (4, "divisor")),
         other => panic!("expected a division error, got {other:?}"),
     }
+    // Inside a block (before and after the condition): the statement's own position.
+    let div = "Lsystem: 1\nderivation length: 1\nAxiom: A(0)\nA(x) : { y = 2; y = y / x; } * --> A(y)\nendlsystem\n";
+    match cpfg(div) {
+        Err(BuildError::Eval(EvalError::NonFinite { span, what, .. })) => assert_eq!((span.line, what.as_str()), (4, "divisor")),
+        other => panic!("expected a division error, got {other:?}"),
+    }
+    let rem = "Lsystem: 1\nStart: { n = 0; }\nderivation length: 1\nAxiom: A(3)\nA(x) : 1 { z = x % n; } --> A(z)\nendlsystem\n";
+    match cpfg(rem) {
+        Err(BuildError::Eval(EvalError::NonFinite { span, what, .. })) => assert_eq!((span.line, what.as_str()), (5, "divisor of %")),
+        other => panic!("expected a division error, got {other:?}"),
+    }
+    // A derivation length from the animation file, and a recursive
+    // homomorphism as deep as it may be, end at a limit too.
+    let mut files = BTreeMap::new();
+    files.insert("m.a".to_string(), b"last frame: 4000000000\n".to_vec());
+    let l = limit_of(build(&super::Cpfg, "Lsystem: 1\nAxiom: F\nF --> FF\nendlsystem\n", &files, small));
+    assert!(matches!(l, Limit::Steps | Limit::Memory), "{l:?}");
+    let deep = "Lsystem: 1\nderivation length: 1\nAxiom: A\nhomomorphism\nmaximum depth: 4000000000\nA --> AA\nendlsystem\n";
+    let l = limit_of(build(&super::Cpfg, deep, &BTreeMap::new(), small));
+    assert!(matches!(l, Limit::Steps | Limit::Memory | Limit::Depth), "{l:?}");
+    // A header that includes itself is a cycle.
+    let mut own = BTreeMap::new();
+    own.insert("self.h".to_string(), b"#include \"self.h\"\n".to_vec());
+    let e = parse_with(b"#include \"self.h\"\nLsystem: 1\nAxiom: F\n", &own, &[]).expect_err("cycle");
+    assert!(e.diagnostics[0].message.contains("cycle"), "{e:?}");
     let bomb = "#define A B B\n#define B C C\n#define C D D\n#define D E E\n#define E F F\n#define F G G\n#define G H H\n#define H I I\n#define I J J\n#define J K K\n#define K L L\n#define L M M\n#define M N N\n#define N O O\n#define O P P\n#define P Q Q\n#define Q R R\n#define R S S\n#define S T T\n#define T U U\n#define U V V\n#define V W W\n#define W X X\n#define X Y Y\nLsystem: 1\nAxiom: A\n";
     assert!(parse_with(bomb.as_bytes(), &BTreeMap::new(), &[]).is_err());
 }

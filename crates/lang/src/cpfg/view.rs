@@ -185,11 +185,14 @@ impl View {
     }
 
     /// Reads an animation file: only `last frame:` matters (manual §8.2).
+    /// Any positive count a `u32` holds is kept, however large, as the
+    /// L-system's own `derivation length:` is: the step budget, not this
+    /// reader, refuses a derivation too long to run.
     pub fn read_animation(&mut self, text: &str) {
         for line in uncomment(text).lines() {
             if let Some((cmd, rest)) = line.split_once(':') {
                 if cmd.trim().eq_ignore_ascii_case("last frame") {
-                    if let Some(v) = numbers(rest).first().filter(|v| **v > 0.0 && **v < 1e9) {
+                    if let Some(v) = numbers(rest).first().filter(|v| **v > 0.0 && **v <= f64::from(u32::MAX)) {
                         self.last_frame = Some(*v as u32);
                     }
                 }

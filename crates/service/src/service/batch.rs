@@ -85,6 +85,13 @@ impl Batch {
         &self.members
     }
 
+    /// The render body of `member`: the base request (source, `files`,
+    /// options) with the member's seed and parameters, as [`Batch::run`]
+    /// renders it.
+    pub fn member_body(&self, member: &Member) -> RenderBody {
+        member_body(&self.base, member)
+    }
+
     /// Renders every member through the engine, at most as many at once as
     /// the server has render slots (so a batch alone never sheds its own
     /// members), yielding each outcome as soon as it and every member before
@@ -97,9 +104,7 @@ impl Batch {
             .map(move |member| {
                 let (state, base) = (state.clone(), base.clone());
                 async move {
-                    let mut body = RenderBody::clone(&base);
-                    body.options.seed = member.seed;
-                    body.options.params = member.params.clone();
+                    let body = member_body(&base, &member);
                     let result = match body.plan(&ceiling, no_cache) {
                         Ok(plan) => {
                             let format = plan.request.format;
@@ -113,6 +118,14 @@ impl Batch {
             })
             .buffered(width)
     }
+}
+
+/// `base` with `member`'s seed and parameters.
+fn member_body(base: &RenderBody, member: &Member) -> RenderBody {
+    let mut body = base.clone();
+    body.options.seed = member.seed;
+    body.options.params = member.params.clone();
+    body
 }
 
 /// Refuses an empty batch or one over [`MAX_MEMBERS`].
@@ -152,7 +165,7 @@ fn sweep_members(base: &RenderBody, sweep: &BTreeMap<String, Vec<ParamValue>>) -
 
 /// Reads the JSON batch body: a `/v1/render` body (or `grammar`, a library
 /// grammar's name, instead of `source`) plus `seeds` or `sweep`.
-pub fn from_json_body(body: &[u8], ceiling: &Limits) -> Result<Batch, ServiceError> {
+pub fn from_json_body(body: &[u8], ceiling: &Limits, phone: bool) -> Result<Batch, ServiceError> {
     let mut fields: Map<String, Value> = from_json(body)?;
     let grammar: Option<String> = take(&mut fields, "grammar")?;
     let seeds: Option<Vec<SeedValue>> = take(&mut fields, "seeds")?;
@@ -166,6 +179,8 @@ pub fn from_json_body(body: &[u8], ceiling: &Limits) -> Result<Batch, ServiceErr
         fields.entry("language").or_insert_with(|| Value::from(builtin.language.name()));
     }
     let base: RenderBody = serde_json::from_value(Value::Object(fields)).map_err(|e| ServiceError::BadRequest(format!("malformed JSON request: {e}")))?;
+    // A phone's default (docs/loaders.md) is the base's, so every member inherits it.
+    let base = base.with_phone_default(phone);
     let variation = match (seeds, sweep) {
         (Some(seeds), None) => Variation::Seeds(seeds.into_iter().map(|s| s.0).collect()),
         (None, Some(sweep)) => Variation::Sweep(sweep),
@@ -188,7 +203,7 @@ mod tests {
     use super::*;
 
     fn batch(json: &str) -> Result<Batch, ServiceError> {
-        from_json_body(json.as_bytes(), &Limits::ceiling())
+        from_json_body(json.as_bytes(), &Limits::ceiling(), false)
     }
 
     #[test]

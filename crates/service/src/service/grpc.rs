@@ -256,7 +256,8 @@ impl Rulemesh for GrpcService {
         let started = Instant::now();
         let admission = admit(&self.state, request.metadata());
         let r = request.into_inner();
-        let body = CheckBody { source: r.source, language: if r.language.is_empty() { None } else { Some(r.language) } };
+        let files = r.files.into_iter().map(|(k, v)| (k, file_text(v))).collect();
+        let body = CheckBody { source: r.source, language: if r.language.is_empty() { None } else { Some(r.language) }, files };
         let result = admission.and_then(|a| super::http::check(body, &a.ceiling));
         self.count("Check", &result, started);
         let report = result.map_err(|e| e.to_status())?;

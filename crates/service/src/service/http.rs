@@ -372,7 +372,8 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
 async fn render_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
     let result: Result<(Served, bool, Format), ServiceError> = async {
         let body = body_bytes(body, st.config.body_limit)?;
-        let plan = from_json::<RenderBody>(&body)?.plan(&caller.ceiling, wants_fresh(&headers))?;
+        let body = from_json::<RenderBody>(&body)?.with_phone_default(super::phone::is_phone(&headers));
+        let plan = body.plan(&caller.ceiling, wants_fresh(&headers))?;
         let text = is_text(plan.request.format);
         let format = plan.request.format;
         Ok((st.engine.serve(plan).await?, text, format))
@@ -381,7 +382,9 @@ async fn render_post(State(st): State<Arc<AppState>>, Extension(caller): Extensi
     match result {
         Ok((served, text, format)) => {
             st.metrics.bytes_out("http", format, served.model.bytes.len());
-            model_response(&served, None, text)
+            let mut resp = model_response(&served, None, text);
+            super::phone::vary(resp.headers_mut(), format);
+            resp
         }
         Err(e) => e.into_response(),
     }
@@ -459,7 +462,7 @@ async fn model_get(
         };
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.as_deref().unwrap_or(""))?;
-        let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?;
+        let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?.with_phone_default(super::phone::is_phone(&headers));
         let pinned = body.options.seed.is_some();
         let text = is_text(format);
         let print = body.options.print == Some(true);
@@ -475,11 +478,14 @@ async fn model_get(
             if etag_matches(&headers, &served.model.etag) {
                 let mut resp = StatusCode::NOT_MODIFIED.into_response();
                 model_headers(resp.headers_mut(), &served, Some(cc));
+                super::phone::vary(resp.headers_mut(), format);
                 resp.extensions_mut().insert(served.timing);
                 return resp;
             }
             st.metrics.bytes_out("http", format, served.model.bytes.len());
-            model_response(&served, Some(cc), text)
+            let mut resp = model_response(&served, Some(cc), text);
+            super::phone::vary(resp.headers_mut(), format);
+            resp
         }
         Err(e) => e.into_response(),
     }
@@ -560,7 +566,8 @@ pub fn check(body: CheckBody, ceiling: &Limits) -> Result<CheckReport, ServiceEr
     let language = super::request::parse_language(body.language.as_deref())?;
     let source = crate::cache::normalize_source(body.source.as_bytes());
     let limits = Limits::default().clamped_to(ceiling);
-    match crate::pipeline::check_source(&source, language, &limits) {
+    let files = super::request::decode_files(body.files)?;
+    match crate::pipeline::check_source_with(&source, &files, language, &limits) {
         Ok((lang, warnings)) => Ok(CheckReport { ok: true, language: Some(lang.name()), diagnostics: warnings }),
         Err(crate::RenderError::Parse(p)) => {
             let lang = language.or_else(|| crate::lang::Language::detect(&source)).map(|l| l.name());

@@ -154,7 +154,7 @@ fn line(outcome: &MemberOutcome, state: &AppState) -> Bytes {
         (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
 pub(super) async fn batch_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> Response {
-    let batch = match body_bytes(body, st.config.body_limit).and_then(|b| batch::from_json_body(&b, &caller.ceiling)) {
+    let batch = match body_bytes(body, st.config.body_limit).and_then(|b| batch::from_json_body(&b, &caller.ceiling, super::phone::is_phone(&headers))) {
         Ok(b) => b,
         Err(e) => return e.into_response(),
     };

@@ -21,6 +21,7 @@ pub mod http_schema;
 pub mod library;
 pub mod memory;
 pub mod metrics;
+pub mod phone;
 pub mod playground;
 pub mod request;
 pub mod schema;

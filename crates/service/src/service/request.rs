@@ -152,6 +152,11 @@ pub struct CheckBody {
     pub source: String,
     /// A language's name (`"mdg"`, `"lsystem"`, `"eisenscript"`, …, `Language::ALL`); detected from the source when absent.
     pub language: Option<String>,
+    /// Named files beside the source, as a render body's `files` (text, or
+    /// `base64:` and the bytes): a cpfg model's view and `#include`s, so the
+    /// check reads what the render reads. They count against the source limit.
+    #[serde(default)]
+    pub files: BTreeMap<String, String>,
 }
 
 /// A validated render: what to render, how, and under which cache key.
@@ -316,7 +321,7 @@ mod tests {
 /// The body's `files` as bytes: text as UTF-8, `base64:…` decoded (a
 /// value that is not valid base64 after the prefix is text). Names are only
 /// keys the front end looks up (nothing is read from disk), so any is kept.
-fn decode_files(files: BTreeMap<String, String>) -> Result<BTreeMap<String, Vec<u8>>, ServiceError> {
+pub(crate) fn decode_files(files: BTreeMap<String, String>) -> Result<BTreeMap<String, Vec<u8>>, ServiceError> {
     use base64::Engine as _;
     Ok(files
         .into_iter()

@@ -154,7 +154,7 @@ pub fn write_instanced(
         ((json_bytes.len() as u64).saturating_add(base64_len(end)).saturating_add(end), 0)
     };
     if glb && total > MAX_BYTES {
-        return Err(ExportError::TooLarge { format: "GLB", detail: format!("file of {total} bytes exceeds the 4 GiB limit") });
+        return Err(ExportError::TooLarge { format: super::GLB.name, detail: format!("file of {total} bytes exceeds the 4 GiB limit") });
     }
     budget.reserve_memory(total)?;
     let mut out = Vec::with_capacity(if glb { total as usize } else { bin_len });

@@ -108,7 +108,7 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
     let bin_chunk = if buffer_len == 0 { 0 } else { 8 + align4(buffer_len) };
     let total = 12 + 8 + json_len + bin_chunk;
     if total > MAX_BYTES {
-        return Err(ExportError::TooLarge { format: "GLB", detail: format!("file of {total} bytes exceeds the 4 GiB limit") });
+        return Err(ExportError::TooLarge { format: GLB.name, detail: format!("file of {total} bytes exceeds the 4 GiB limit") });
     }
     budget.reserve_memory(total)?;
     let mut out = Vec::with_capacity(total as usize);

@@ -188,7 +188,7 @@ pub fn write_scene(
     provenance: Option<&Provenance>,
     budget: &mut Budget,
 ) -> Result<(Vec<u8>, u64), ExportError> {
-    let too_large = |what: &str| ExportError::TooLarge { format: "scene", detail: format!("more than 2³¹ {what}") };
+    let too_large = |what: &str| ExportError::TooLarge { format: super::SCENE.name, detail: format!("more than 2³¹ {what}") };
     let plan = plan(scene, hierarchy, detail, layout, budget)?;
     budget.check_deadline()?;
     let mut palette: BTreeMap<[u8; 4], u32> = BTreeMap::new();

@@ -117,10 +117,10 @@ pub fn title(provenance: Option<&crate::export::Provenance>) -> String {
 pub fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let count = triangle_total(meshes)?;
     let count32 = u32::try_from(count)
-        .map_err(|_| ExportError::TooLarge { format: "STL", detail: format!("{count} triangles exceed the u32 triangle count") })?;
+        .map_err(|_| ExportError::TooLarge { format: STL.name, detail: format!("{count} triangles exceed the u32 triangle count") })?;
     let total = 84u64.saturating_add(count.saturating_mul(TRIANGLE_BYTES));
     budget.reserve_memory(total)?;
-    let mut out = Vec::with_capacity(usize::try_from(total).map_err(|_| ExportError::TooLarge { format: "STL", detail: "output exceeds the address space".into() })?);
+    let mut out = Vec::with_capacity(usize::try_from(total).map_err(|_| ExportError::TooLarge { format: STL.name, detail: "output exceeds the address space".into() })?);
     let mut header = [0u8; HEADER];
     let n = title.len().min(HEADER);
     header[..n].copy_from_slice(&title.as_bytes()[..n]);
@@ -153,7 +153,7 @@ pub fn write_ascii(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>,
     const TAIL: &str = "endsolid rulemesh\n";
     let count = triangle_total(meshes)?;
     let bound = ((HEAD.len() + TAIL.len()) as u64).saturating_add(count.saturating_mul(ASCII_FACET_MAX));
-    let cap = usize::try_from(bound).map_err(|_| ExportError::TooLarge { format: "STL", detail: "output exceeds the address space".into() })?;
+    let cap = usize::try_from(bound).map_err(|_| ExportError::TooLarge { format: STL.name, detail: "output exceeds the address space".into() })?;
     budget.reserve_memory(bound)?;
     let mut out = String::with_capacity(cap);
     out.push_str(HEAD);

@@ -242,7 +242,7 @@ impl WeldedChunk {
     /// on a second thread while the next chunk is welded.
     pub fn code(self) -> Result<EncodedChunk, ExportError> {
         let WeldedChunk { vertices, triangles } = self;
-        let codec = |what: &str, e: meshopt::Error| ExportError::TooLarge { format: "strips", detail: format!("{what} codec: {e:?}") };
+        let codec = |what: &str, e: meshopt::Error| ExportError::TooLarge { format: super::STRIPS.name, detail: format!("{what} codec: {e:?}") };
         let vstream = meshopt::encode_vertex_buffer_level(&vertices, 3, Some(1)).map_err(|e| codec("vertex", e))?;
         let istream = meshopt::encode_index_buffer(&triangles, vertices.len()).map_err(|e| codec("index", e))?;
         // Fits: at most 3·CHUNK_TRIANGLES of each.

@@ -94,8 +94,48 @@ pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
     [quantise_unit(u * 0.5 + 0.5, max), quantise_unit(v * 0.5 + 0.5, max)]
 }
 
-/// Quantises `v` in `[0, 1]` to `0..=max`.
+/// Quantises `v` in `[0, 1]` to `0..=max`: `(v * max).round()` clamped
+/// to `0..=max` (NaN to 0). Rounded here rather than with `f64::round`,
+/// which is a call of libm's `round` on x86-64's baseline, once per
+/// coordinate of every strips vertex (issue 33's profile). The value is
+/// clamped to `-1..=max + 1` first, which rounds to the same clamped
+/// result, so the cast truncates exactly; half-way cases go away from
+/// zero, as `f64::round` does.
 pub fn quantise_unit(v: f64, max: u32) -> u16 {
-    (v * f64::from(max)).round().clamp(0.0, f64::from(max)) as u16
+    let max = f64::from(max);
+    // `clamp` keeps NaN, and NaN casts to 0, as before.
+    let x = (v * max).clamp(-1.0, max + 1.0);
+    let t = x as i64;
+    let frac = x - t as f64;
+    let rounded = t + i64::from(frac >= 0.5) - i64::from(frac <= -0.5);
+    // Fits: 0..=max, and max < 2^16.
+    rounded.clamp(0, max as i64) as u16
 }
 
+
+#[cfg(test)]
+mod tests {
+    use super::quantise_unit;
+
+    /// `f64::round`'s answer, the rule `quantise_unit` keeps.
+    fn reference(v: f64, max: u32) -> u16 {
+        (v * f64::from(max)).round().clamp(0.0, f64::from(max)) as u16
+    }
+
+    #[test]
+    fn quantise_unit_rounds_as_f64_round_does() {
+        let specials = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -0.0, 0.0, 1.0, -1e300, 1e300, f64::MIN_POSITIVE, 1.0 + f64::EPSILON, -f64::EPSILON];
+        for max in [255u32, 1023, 4095, 65535] {
+            for v in specials {
+                assert_eq!(quantise_unit(v, max), reference(v, max), "{v} at {max}");
+            }
+            // Every half-way point and its neighbours, below, inside and above 0..=1.
+            for k in -4i64..=2 * i64::from(max) + 4 {
+                let half = (k as f64 + 0.5) / f64::from(max);
+                for v in [half, f64::from_bits(half.to_bits() + 1), f64::from_bits(half.to_bits().wrapping_sub(1)), k as f64 / f64::from(max)] {
+                    assert_eq!(quantise_unit(v, max), reference(v, max), "{v} at {max}");
+                }
+            }
+        }
+    }
+}

@@ -73,7 +73,7 @@ fn check_meshes(meshes: &[NamedMesh]) -> Result<(), ExportError> {
 }
 
 fn len32(n: usize) -> Result<u32, ExportError> {
-    u32::try_from(n).map_err(|_| ExportError::TooLarge { format: "strips", detail: "stream over 4 GiB".into() })
+    u32::try_from(n).map_err(|_| ExportError::TooLarge { format: STRIPS.name, detail: "stream over 4 GiB".into() })
 }
 
 /// The container being written: header space, palette, chunks; the header
@@ -113,7 +113,7 @@ impl Body {
             self.out.extend_from_slice(&c.vertices.to_le_bytes());
             self.out.extend_from_slice(&c.triangles.to_le_bytes());
         } else if self.chunks > 0 {
-            return Err(ExportError::TooLarge { format: "strips", detail: "a second chunk in a one-mesh file".into() });
+            return Err(ExportError::TooLarge { format: STRIPS.name, detail: "a second chunk in a one-mesh file".into() });
         }
         self.out.extend_from_slice(&len32(c.vstream.len())?.to_le_bytes());
         self.out.extend_from_slice(&c.vstream);
@@ -135,7 +135,7 @@ impl Body {
             self.out[self.count_at..self.count_at + 4].copy_from_slice(&self.chunks.to_le_bytes());
         }
         if self.vertices >= u64::from(RESTART) {
-            return Err(ExportError::TooLarge { format: "strips", detail: "more than 2^32 - 2 vertices".into() });
+            return Err(ExportError::TooLarge { format: STRIPS.name, detail: "more than 2^32 - 2 vertices".into() });
         }
         let mut out = self.out;
         let raw_len = len32(out.len() - HEADER_LEN)?;
@@ -145,7 +145,7 @@ impl Body {
             budget.reserve_memory(u64::from(raw_len))?;
             flags |= FLAG_ZSTD;
             // Level 19, single-threaded, no checksum or dictionary: deterministic.
-            let body = zstd::bulk::compress(&out[HEADER_LEN..], 19).map_err(|e| ExportError::TooLarge { format: "strips", detail: format!("zstd: {e}") })?;
+            let body = zstd::bulk::compress(&out[HEADER_LEN..], 19).map_err(|e| ExportError::TooLarge { format: STRIPS.name, detail: format!("zstd: {e}") })?;
             out.truncate(HEADER_LEN);
             out.extend_from_slice(&body);
         }
@@ -199,7 +199,7 @@ fn mesh_chunks(meshes: &[NamedMesh], chunk: &mut dyn FnMut(&[Part<'_>]) -> Resul
 /// same meshes and options give the same bytes, and the same bytes as
 /// [`write_strips_model`] of the model they were meshed from.
 pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    opts.validate().map_err(|detail| ExportError::InvalidOptions { format: "strips", detail })?;
+    opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
     budget.reserve_memory(STRIPS.size.of(v, t))?;
     check_meshes(meshes)?;
@@ -306,7 +306,7 @@ pub fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budge
 /// meshes of the same model. `survey` is [`survey_model`]'s answer for the
 /// same source; the deadline fails the call.
 pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    opts.validate().map_err(|detail| ExportError::InvalidOptions { format: "strips", detail })?;
+    opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
     budget.check_deadline()?;
     let palette = survey.survey.palette();
     let bounds = survey.survey.bounds();
@@ -327,16 +327,22 @@ pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &St
     // Each chunk's codecs (meshoptimizer's vertex and index codecs, about a
     // third of the encoder's time) run on a second thread while this one
     // tessellates, quantises and welds the next chunk; chunks are appended
-    // in order, so the bytes are those of one thread.
+    // in order, so the bytes are those of one thread. A model of one chunk
+    // (every icon) has nothing to overlap its codecs with: they run here,
+    // since starting a thread cost a tenth of a fresh gem's strips (issue 33).
+    let single = survey.survey.chunks() <= 1;
     std::thread::scope(|s| -> Result<(), ExportError> {
         let mut coding: Option<std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>> = None;
         let join = |h: std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>| {
-            h.join().unwrap_or_else(|_| Err(ExportError::TooLarge { format: "strips", detail: "a chunk's codec thread panicked".into() }))
+            h.join().unwrap_or_else(|_| Err(ExportError::TooLarge { format: STRIPS.name, detail: "a chunk's codec thread panicked".into() }))
         };
         feed(src, OnLimit::Error, Some(survey.pieces), budget, &mut |parts, budget| {
             let welded = weld_chunk(parts, &q);
             if let Some(h) = coding.take() {
                 append(&mut body, join(h)?, budget)?;
+            }
+            if single {
+                return append(&mut body, welded.code()?, budget);
             }
             coding = Some(s.spawn(move || welded.code()));
             Ok(())

@@ -196,7 +196,7 @@ pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: 
     budget.check_deadline()?;
     let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let options = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
-    let fail = |e: &dyn std::fmt::Display| ExportError::TooLarge { format: "3mf", detail: e.to_string() };
+    let fail = |e: &dyn std::fmt::Display| ExportError::TooLarge { format: THREEMF.name, detail: e.to_string() };
     for (name, body) in [("[Content_Types].xml", CONTENT_TYPES), ("_rels/.rels", RELS), ("3D/3dmodel.model", xml.as_str())] {
         zip.start_file(name, options).map_err(|e| fail(&e))?;
         zip.write_all(body.as_bytes()).map_err(|e| fail(&e))?;

@@ -195,9 +195,10 @@ declare_options! {
         },
         /// `glb`/`gltf`: `gpu` (default: each mesh placed more than once is
         /// written once, `EXT_mesh_gpu_instancing`) or `flat` (plain meshes,
-        /// for loaders without the extension).
+        /// for loaders without the extension; the default for phones over
+        /// HTTP, docs/loaders.md).
         instancing: Option<String> => {
-            doors: Doors::NOT_QUERY, kind: Kind::Text,
+            kind: Kind::Text,
             schema: json!({ "enum": crate::export::Instancing::names(), "default": "gpu" }), example: json!("flat"),
         },
         /// Merge every part into one watertight, outward-oriented solid in

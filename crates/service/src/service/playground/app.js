@@ -16,12 +16,10 @@ import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
+// The server's registries: every language it reads, every format it writes.
+import { LANGUAGES, FORMATS } from './registry.js';
 
 const $ = (id) => document.getElementById(id);
-/** Formats whose size the page lists after each render. */
-const SIZE_FORMATS = ['glb', 'gltf', 'stl', '3mf', 'strips', 'png'];
-/** The languages the server reads (replaced by the schema's list once one arrives). */
-const LANGUAGES = ['mdg', 'lsystem', 'eisenscript', 'stack', 'ug', 'etol'];
 /** How the grammar menu labels each language's group (others by their name). */
 const LANGUAGE_LABELS = { mdg: 'MDG', lsystem: 'L-system', eisenscript: 'EisenScript', stack: 'Stack', ug: 'UG', etol: 'ETOL' };
 /**
@@ -373,7 +371,7 @@ async function render() {
 async function listSizes(mine, sent) {
   const rows = $('sizes').tBodies[0];
   rows.replaceChildren();
-  for (const format of SIZE_FORMATS) {
+  for (const format of FORMATS) {
     if (mine !== seq) return;
     const row = rows.insertRow();
     row.insertCell().textContent = format;
@@ -593,7 +591,7 @@ async function loadLibrary() {
 
 async function start() {
   fillSelect($('language'), LANGUAGES, false);
-  fillSelect($('format'), SIZE_FORMATS, false);
+  fillSelect($('format'), FORMATS, false);
   $('source').addEventListener('input', () => {
     drawGutter();
     scheduleRender();
