@@ -9,7 +9,7 @@
 use crate::common::{tempdir, validate_gltf};
 use rulemesh::core::{Budget, Limits};
 use rulemesh::export::Format;
-use rulemesh::lang::cfdg::{eval, parse_checked_in, svg, variation};
+use rulemesh::lang::cfdg::{drawing, eval, parse_checked_in, variation};
 use rulemesh::lang::Language;
 use rulemesh::pipeline::{render, RenderError, RenderRequest};
 use std::path::{Path, PathBuf};
@@ -60,8 +60,10 @@ fn rulemesh_svg(file: &Path, var: &str) -> String {
     let src = std::fs::read(file).expect("example readable");
     let g = parse_checked_in(&src, file.parent()).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
     let opts = eval::Options { width: SIZE, height: SIZE, variation: variation::from_code(var).expect("code"), ..eval::Options::default() };
-    let p = eval::render(&g, &opts, &mut Budget::new(Limits::default())).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
-    svg::write(&p)
+    let mut budget = Budget::new(Limits::default());
+    let p = eval::render(&g, &opts, &mut budget).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    let d = drawing::of(&p, &mut budget).expect("fits");
+    String::from_utf8(rulemesh::export::svg::write_svg(&d, &mut budget).expect("writes")).expect("utf-8")
 }
 
 /// Asserts the two SVGs hold the same shapes within the issue's tolerances.
@@ -194,4 +196,29 @@ fn hostile_designs_end_in_typed_errors() {
     }
     let deep = format!("startshape A\nshape A {{ SQUARE [x {}1{}] }}\n", "(".repeat(100_000), ")".repeat(100_000));
     assert!(matches!(render(deep.as_bytes(), &req), Err(RenderError::Parse(_))));
+}
+
+/// 10 MB sources: refused at the source limit by default; with the limit
+/// raised, parsed and drawn or stopped with a typed error within the budget
+/// (400 000 rules of one shape, one 10 MB comment, 10 MB of parentheses).
+#[test]
+fn ten_megabyte_sources_end_in_typed_outcomes() {
+    const TEN_MB: usize = 10 * 1024 * 1024;
+    let rules = format!("startshape A\n{}", "rule A { SQUARE { x 1 } }\n".repeat(TEN_MB / 26));
+    let comment = format!("startshape A\nshape A {{ SQUARE [] }}\n/*{}*/\n", "x".repeat(TEN_MB));
+    let parens = format!("startshape A\nshape A {{ SQUARE [x {}1] }}\n", "(".repeat(TEN_MB));
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() };
+    for src in [&rules, &comment, &parens] {
+        match render(src.as_bytes(), &req) {
+            Err(RenderError::Limit(l)) => assert_eq!(l.limit, rulemesh::core::Limit::SourceBytes),
+            other => panic!("expected the source limit, got {:?}", other.map(|o| o.bytes.len())),
+        }
+    }
+    let mut big = req.clone();
+    big.limits.max_source_bytes = 16 * 1024 * 1024;
+    let out = render(rules.as_bytes(), &big).expect("400 000 rules of one shape draw one of them");
+    assert_eq!(out.primitives, 1);
+    let out = render(comment.as_bytes(), &big).expect("a long comment is skipped");
+    assert_eq!(out.primitives, 1);
+    assert!(matches!(render(parens.as_bytes(), &big), Err(RenderError::Parse(_))));
 }

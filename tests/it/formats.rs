@@ -8,23 +8,46 @@
 //! table alone is then checked everywhere (docs/extending.md).
 
 use crate::common::{self, repo, run};
-use rulemesh::export::{Format, OptionGroup, FORMATS};
+use rulemesh::export::{Format, OptionGroup, Writer, FORMATS};
 use rulemesh::lang::Language;
 use rulemesh::service::{self, ServeConfig};
 use serde_json::{json, Value};
 use std::time::Duration;
 
-/// The library grammar every format is rendered from (small, every format applies).
+/// The library grammar every 3D format is rendered from (small, every such format applies).
 const GRAMMAR: &str = "gem";
 
-fn gem_source() -> String {
-    std::fs::read_to_string(repo().join("grammars").join(format!("{GRAMMAR}.mdg"))).expect("grammars/gem.mdg")
+/// The library grammar a format written from a 2D drawing (`svg`) is
+/// rendered from: a Context Free design, since no 3D language draws one.
+const DRAWING: &str = "cfdg-spiral";
+
+/// Whether `format` is written from a model's 2D drawing.
+fn draws(format: Format) -> bool {
+    matches!(format.info().writer, Writer::Drawing(_))
 }
 
-/// `gem` rendered by the library in `format`, as the CLI and the service render it.
+/// The library grammar `format` is checked with: its name, file and language.
+fn grammar_for(format: Format) -> (&'static str, &'static str, Language) {
+    if draws(format) {
+        (DRAWING, "cfdg-spiral.cfdg", Language::Cfdg)
+    } else {
+        (GRAMMAR, "gem.mdg", Language::Mdg)
+    }
+}
+
+fn source_for(format: Format) -> String {
+    let (_, file, _) = grammar_for(format);
+    std::fs::read_to_string(repo().join("grammars").join(file)).expect("library grammar")
+}
+
+fn gem_source() -> String {
+    source_for(Format::Glb)
+}
+
+/// The format's library grammar rendered by the library in `format`, as the CLI and the service render it.
 fn library_render(format: Format) -> Vec<u8> {
-    let req = rulemesh::RenderRequest { language: Some(Language::Mdg), format, ..Default::default() };
-    rulemesh::render(gem_source().as_bytes(), &req).unwrap_or_else(|e| panic!("{}: {e}", format.name())).bytes
+    let req = rulemesh::RenderRequest { language: Some(grammar_for(format).2), format, ..Default::default() };
+    rulemesh::render(source_for(format).as_bytes(), &req).unwrap_or_else(|e| panic!("{}: {e}", format.name())).bytes
 }
 
 #[test]
@@ -96,12 +119,12 @@ fn no_writer_names_the_registry() {
 #[test]
 fn the_cli_knows_every_format_by_name_and_by_extension() {
     let dir = common::tempdir();
-    let grammar = repo().join("grammars").join(format!("{GRAMMAR}.mdg"));
-    let grammar = grammar.to_str().expect("utf-8 path");
     let help = run(&["render", "--help"], None);
     let help = String::from_utf8_lossy(&help.stdout).to_string();
     for &format in Format::ALL {
         let info = format.info();
+        let grammar = repo().join("grammars").join(grammar_for(format).1);
+        let grammar = grammar.to_str().expect("utf-8 path");
         // --format NAME, to a file whose name says nothing.
         let named = dir.path().join(format!("named-{}.out", info.name));
         let out = run(&["render", grammar, "--format", info.name, "-o", named.to_str().expect("utf-8")], None);
@@ -119,6 +142,8 @@ fn the_cli_knows_every_format_by_name_and_by_extension() {
         assert!(help.contains(info.name), "render --help does not list {}:\n{help}", info.name);
     }
     // An extension no format has is a usage error listing the registry's.
+    let grammar = repo().join("grammars").join("gem.mdg");
+    let grammar = grammar.to_str().expect("utf-8 path");
     let out = run(&["render", grammar, "-o", dir.path().join("x.nope").to_str().expect("utf-8")], None);
     assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -134,7 +159,7 @@ fn the_golden_table_renders_every_format() {
     for &format in Format::ALL {
         let name = format.name();
         assert!(variants.contains(&name), "golden.rs has no `{name}` variant");
-        let row = format!("grammars/{GRAMMAR}.mdg {name} ");
+        let row = format!("grammars/{} {name} ", grammar_for(format).1);
         assert!(table.lines().any(|l| l.starts_with(&row)), "tests/golden/hashes.txt has no row `{row}…`");
     }
 }
@@ -162,20 +187,32 @@ async fn the_service_serves_every_format_with_its_mime_type_and_lists_it_in_its_
     for &format in Format::ALL {
         let info = format.info();
         // POST /v1/render by name (and by any case).
+        let (grammar, _, language) = grammar_for(format);
         for name in [info.name.to_string(), info.name.to_ascii_uppercase()] {
-            let body = json!({ "source": gem_source(), "language": "mdg", "format": name });
+            let body = json!({ "source": source_for(format), "language": language.name(), "format": name });
             let r = client.post(format!("{base}/v1/render")).json(&body).send().await.expect("request");
             assert_eq!(r.status(), 200, "format {name}");
             assert_eq!(content_type(&r), info.mime, "format {name}");
             assert_eq!(r.bytes().await.expect("body").to_vec(), library_render(format), "format {name}");
         }
-        // GET /v1/models/gem.EXT for every extension: the format that claims it.
+        // GET /v1/models/NAME.EXT for every extension: the format that claims it.
         for ext in info.extensions {
             let owner = Format::from_extension_name(ext).expect("claimed");
-            let r = get(format!("{base}/v1/models/{GRAMMAR}.{ext}")).await;
-            assert_eq!(r.status(), 200, "/v1/models/{GRAMMAR}.{ext}");
-            assert_eq!(content_type(&r), owner.content_type(), "/v1/models/{GRAMMAR}.{ext}");
-            assert_eq!(r.bytes().await.expect("body").to_vec(), library_render(owner), "/v1/models/{GRAMMAR}.{ext}");
+            let r = get(format!("{base}/v1/models/{grammar}.{ext}")).await;
+            assert_eq!(r.status(), 200, "/v1/models/{grammar}.{ext}");
+            assert_eq!(content_type(&r), owner.content_type(), "/v1/models/{grammar}.{ext}");
+            assert_eq!(r.bytes().await.expect("body").to_vec(), library_render(owner), "/v1/models/{grammar}.{ext}");
+        }
+        if draws(format) {
+            // A 3D language has no drawing: a typed 400 naming the capability, by either route.
+            let body = json!({ "source": gem_source(), "language": "mdg", "format": info.name });
+            let r = client.post(format!("{base}/v1/render")).json(&body).send().await.expect("request");
+            assert_eq!(r.status(), 400, "gem as {}", info.name);
+            let err: Value = r.json().await.expect("error body");
+            assert_eq!(err["error"]["code"], "bad_request", "{err}");
+            assert!(err["error"]["message"].as_str().is_some_and(|m| m.contains("capability `drawing`")), "{err}");
+            let r = get(format!("{base}/v1/models/{GRAMMAR}.{}", format.extension())).await;
+            assert_eq!(r.status(), 400, "/v1/models/{GRAMMAR}.{}", format.extension());
         }
     }
     assert_eq!(get(format!("{base}/v1/models/{GRAMMAR}.nope")).await.status(), 404);

@@ -47,6 +47,14 @@ pub trait FrontEnd: Sync {
         false
     }
 
+    /// Whether the models this front end makes carry a 2D
+    /// [`Drawing`](crate::model::Drawing) (Context Free's designs do): the
+    /// capability `drawing`, which a format written from a drawing (`svg`)
+    /// needs, so a request for it is refused before a 3D model is evaluated.
+    fn draws(&self) -> bool {
+        false
+    }
+
     /// Whether the leaves of a [`Hierarchy`](crate::model::Hierarchy) this
     /// front end builds take their colour per placement (MDG's, as its flat
     /// scenes do: an instanced writer then gives each placement its colour)

@@ -13,7 +13,7 @@ use super::{ExportError, ExportMeta, ExportOptions, Provenance};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use crate::mesh::MeshLayout;
-use crate::model::{Hierarchy, Scene};
+use crate::model::{Drawing, Hierarchy, Scene};
 use crate::preview::Image;
 
 /// One format: everything the CLI, the service, the schema, the cache, the
@@ -131,6 +131,9 @@ pub type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, Option<&Pr
 /// once, placed per leaf) at a tessellation detail, with the model's
 /// metadata.
 pub type WriteHierarchy = fn(&Hierarchy, u32, &ExportMeta, &mut Budget) -> Result<Vec<u8>, ExportError>;
+/// Writes the model's 2D drawing (a Context Free design's marks), with the
+/// model's provenance where the format has metadata.
+pub type WriteDrawing = fn(&Drawing, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
 
 /// How a format is written: from what, by which function.
 #[derive(Debug, Clone, Copy)]
@@ -155,4 +158,8 @@ pub enum Writer {
         /// The hierarchy's writer.
         hierarchy: WriteHierarchy,
     },
+    /// From the model's 2D [`Drawing`], for a model that carries one (a
+    /// Context Free design); the pipeline refuses the format for a model
+    /// without, naming the capability (`svg`).
+    Drawing(WriteDrawing),
 }

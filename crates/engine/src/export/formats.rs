@@ -13,7 +13,7 @@
 //! formats exist.
 
 use super::descriptor::{FormatInfo, OptionGroup, Writer};
-use super::{gltf, png, scene, stl, strips, threemf, ug, usdz, ExportError, ExportMeta, ExportOptions};
+use super::{gltf, png, scene, stl, strips, svg, threemf, ug, usdz, ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 
@@ -73,6 +73,9 @@ formats! {
     /// A PNG picture of the model (the preview stage, `docs/preview.md`):
     /// drawn on the CPU, for icons and order pages.
     Png => png::PNG,
+    /// SVG of a 2D design (Context Free's), as `cfdg -V` writes it; the 3D
+    /// languages have no drawing and are refused (docs/cfdg.md).
+    Svg => svg::SVG,
 }
 
 impl Default for Format {
@@ -211,7 +214,15 @@ pub fn export_with(
             format: info.name,
             detail: format!("the {} format is written from the model (instances, hierarchy), not from meshes", info.name),
         }),
+        Writer::Drawing(_) => Err(ExportError::InvalidOptions { format: info.name, detail: no_drawing(info.name, "meshes") }),
     }
+}
+
+/// Why a format written from a 2D drawing (`svg`) cannot be written from
+/// `what` (a language's models, or meshes from outside a render): the
+/// message of the typed refusal, naming the capability that is missing.
+pub fn no_drawing(format: &str, what: &str) -> String {
+    format!("the {format} format needs a 2D drawing (capability `drawing`), which only Context Free designs (language `cfdg`) have; {what} are 3D, with no drawing (`png` draws a picture of them)")
 }
 
 /// An upper bound on the encoded size of a model with this many vertices and

@@ -16,12 +16,13 @@ pub mod provenance;
 pub mod scene;
 pub mod stl;
 pub mod strips;
+pub mod svg;
 pub mod threemf;
 pub mod ug;
 pub mod usdz;
 
-pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteHierarchy, WriteMeshes, WriteModel, Writer};
-pub use formats::{estimated_size, export, export_with, Format, FORMATS};
+pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
+pub use formats::{estimated_size, export, export_with, no_drawing, Format, FORMATS};
 pub use gltf::compact::{parse_compression, Compression, GltfOptions};
 pub use provenance::Provenance;
 pub use strips::StripsOptions;

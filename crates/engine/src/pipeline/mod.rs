@@ -341,6 +341,10 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     Budget::check_source(&req.limits, (source.len() as u64).saturating_add(files_len))?;
     let language = language_of(source, req.language)?;
     let route = Route::of(req);
+    if matches!(route, Route::Drawing(_)) && !language.front_end().draws() {
+        // Refused before anything is evaluated: the language makes no drawing.
+        return Err(stages::no_drawing(req.format, language).into());
+    }
     let truncating = req.on_limit == OnLimit::Truncate;
     let mut budget = budget_for(req.limits);
     let mut clock = StageClock::start();
@@ -359,6 +363,8 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         script_dir: req.script_dir.as_deref(),
         frame: req.frame,
         files: &req.files,
+        // A picture's side, for languages that evaluate in pixels (Context Free).
+        canvas: route.canvas(req),
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     crate::core::memprobe::mark("start", &budget);

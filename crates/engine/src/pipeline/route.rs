@@ -8,7 +8,7 @@
 //! ([`Route::hierarchy`], [`Route::animated`]), never the format.
 
 use super::RenderRequest;
-use crate::export::{EncodePicture, Instancing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
+use crate::export::{EncodePicture, Instancing, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
 use crate::model::HierarchyUse;
 
 /// The way a model is written, chosen by [`Route::of`].
@@ -17,6 +17,9 @@ pub(crate) enum Route {
     /// The format writes the model as made: its instances and hierarchy,
     /// nothing tessellated (`scene`, docs/scene-format.md).
     Model(WriteModel),
+    /// The format writes the model's 2D drawing (`svg`), which only a
+    /// language that draws makes (Context Free); others are refused.
+    Drawing(WriteDrawing),
     /// Strips written from the model a chunk at a time: no merged mesh,
     /// a hierarchy walked, not expanded (docs/strips-format.md); `empty`
     /// writes the empty model a late answer falls back to.
@@ -58,6 +61,7 @@ impl Route {
         let plain = opts.gltf.is_plain();
         let (output, meshes) = match info.writer {
             Writer::Model(write) => return Route::Model(write),
+            Writer::Drawing(write) => return Route::Drawing(write),
             Writer::Meshes(write) => (Output::Meshes { write, fit }, Some(write)),
             Writer::Instancing { meshes, hierarchy } => {
                 let output = Output::Meshes { write: meshes, fit };
@@ -90,7 +94,7 @@ impl Route {
             Route::Print { .. } => HierarchyUse::Union,
             Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Flat { hierarchy: true, .. } => HierarchyUse::Preferred,
             Route::StreamedStrips { .. } => HierarchyUse::Streamed,
-            Route::Flat { hierarchy: false, .. } => HierarchyUse::Never,
+            Route::Flat { hierarchy: false, .. } | Route::Drawing(_) => HierarchyUse::Never,
         }
     }
 
@@ -98,6 +102,12 @@ impl Route {
     /// node graph (plain glTF, instanced or flat); everything else shows time 0.
     pub(crate) fn animated(&self) -> bool {
         matches!(self, Route::InstancedGltf { .. } | Route::Flat { animated: true, .. })
+    }
+
+    /// The side in pixels of the picture the route makes (`png`'s `size`),
+    /// for front ends that evaluate in pixels (`BuildRequest::canvas`).
+    pub(crate) fn canvas(&self, req: &RenderRequest) -> Option<u32> {
+        matches!(self, Route::Flat { output: Output::Picture(_), .. }).then_some(req.export_options.preview.size)
     }
 
     /// Whether no merged mesh is built (only the output is promised).

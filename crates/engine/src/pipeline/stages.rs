@@ -25,6 +25,24 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
             let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
             Ok(summary(bytes, &model, triangles, truncated))
         }
+        Route::Drawing(write) => match model.drawing.take() {
+            // A 2D design as SVG, as cfdg -V writes it.
+            Some(drawing) => {
+                let bytes = write(&drawing, Some(&provenance), budget)?;
+                clock.lap(Phase::Export);
+                Ok(summary(bytes, &model, 0, model.scene.truncated))
+            }
+            None => Err(no_drawing(req.format, model.language).into()),
+        },
+        // A 2D design's picture is the drawing itself, not a view of its tiles.
+        Route::Flat { output: Output::Picture(encode), .. } if model.drawing.is_some() => {
+            let drawing = model.drawing.take().unwrap_or_default();
+            let image = crate::preview::drawing::render(&drawing, &req.export_options.preview, budget).map_err(ExportError::from)?;
+            clock.lap(Phase::Preview);
+            let bytes = encode(&image, Some(&provenance), budget)?;
+            clock.lap(Phase::Export);
+            Ok(summary(bytes, &model, 0, model.scene.truncated))
+        }
         Route::StreamedStrips { empty } => strips_from_model(model, provenance, empty, req, budget, clock),
         Route::Print { report, output } => print(model, provenance, report, output, req, budget, clock),
         Route::InstancedGltf { binary, flat: write } => instanced(model, provenance, binary, write, req, budget, clock),
@@ -52,6 +70,13 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
             flat(model, provenance, output, graph, req, budget, clock)
         }
     }
+}
+
+/// The typed refusal of a drawing format (`svg`) for a language whose
+/// models have no 2D drawing: a client error naming the capability.
+pub(super) fn no_drawing(format: crate::export::Format, language: crate::lang::Language) -> ExportError {
+    let name = format.name();
+    ExportError::InvalidOptions { format: name, detail: export::no_drawing(name, &format!("`{}` models", language.name())) }
 }
 
 /// Whether the model moves: an animation rig or a camera path, which play

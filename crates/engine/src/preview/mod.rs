@@ -17,6 +17,7 @@
 
 pub mod camera;
 pub mod closed;
+pub mod drawing;
 pub mod raster;
 pub mod shade;
 pub mod sheet;

@@ -3,7 +3,8 @@
 //! front end for `language: "cfdg"`. Source → [`syntax::Grammar`] →
 //! [`eval::render`] (cfdg's renderer: the same shapes, order, colours and
 //! framing for the same variation code) → a [`Model`] of thin tiles, one per
-//! primitive, stacked in drawing order ([`tiles`]). See `docs/cfdg.md`.
+//! primitive, stacked in drawing order ([`tiles`]), carrying the picture as
+//! its 2D drawing ([`drawing`]) for `svg` and `png`. See `docs/cfdg.md`.
 //!
 //! Limits: every rule expanded and every loop iteration is a step, every
 //! finished primitive a primitive (with its triangles), every shape kept
@@ -11,9 +12,9 @@
 //! quietly, as in cfdg. `max_depth` does not apply: expansion is a heap,
 //! never a recursion.
 
+pub mod drawing;
 pub mod eval;
 pub mod rand64;
-pub mod svg;
 pub mod syntax;
 pub mod tiles;
 pub mod variation;
@@ -108,18 +109,27 @@ impl FrontEnd for Cfdg {
     fn declared_params(&self, source: &[u8]) -> Result<Vec<ParamDecl>, ParseError> {
         parse_checked(source).map(|_| Vec::new())
     }
+    fn draws(&self) -> bool {
+        true
+    }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         let g = parse_checked_in(source, req.script_dir)?;
         clock.lap(Phase::Parse);
         let var = variation_of(req)?;
-        let opts = eval::Options { variation: var, ..eval::Options::default() };
+        let mut opts = eval::Options { variation: var, ..eval::Options::default() };
+        if let Some(side) = req.canvas {
+            // A picture is drawn for its size, as `cfdg -s` draws it.
+            (opts.width, opts.height) = (side, side);
+        }
         let picture = eval::render(&g, &opts, budget)?;
         let scene = tiles::scene(&picture, req, budget)?;
+        let drawing = drawing::of(&picture, budget)?;
         Ok(Model {
             language: Language::Cfdg,
             primitives: picture.shapes.len() as u64,
             scene,
             hierarchy: None,
+            drawing: Some(drawing),
             warnings: g.warnings,
             promised: 0,
             seed: var as u64,

@@ -56,20 +56,6 @@ fn hostile_inputs_end_in_typed_errors() {
     assert!(syntax::parse(deep.as_bytes()).is_err());
 }
 
-/// Renders the file named by `CFDG_FILE` with `CFDG_VARIATION` at 200 px
-/// and prints the SVG (a development aid for comparing with `cfdg -V`).
-#[test]
-#[ignore]
-fn dump_svg() {
-    let Ok(path) = std::env::var("CFDG_FILE") else { return };
-    let src = std::fs::read(&path).unwrap_or_default();
-    let g = parse_checked(&src).unwrap_or_else(|e| panic!("{e}"));
-    let var = variation::from_code(&std::env::var("CFDG_VARIATION").unwrap_or("A".into())).unwrap_or(1);
-    let opts = eval::Options { width: 200, height: 200, variation: var, ..eval::Options::default() };
-    let p = eval::render(&g, &opts, &mut Budget::new(Limits::default())).unwrap_or_else(|e| panic!("{e}"));
-    let _ = std::fs::write(std::env::var("CFDG_OUT").unwrap_or("/tmp/out.svg".into()), svg::write(&p));
-}
-
 /// Regression: a name with multi-byte characters made the lexer slice
 /// inside a character (found by scripts/cfdg-compat on `unicodetest.cfdg`).
 #[test]

@@ -108,7 +108,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         let flat = crate::lsystem::dag::from_string(&shell, &lowered.string, budget)?;
         let h = crate::lsystem::instance::build(&shell, &flat, budget)?;
         let primitives = h.leaves();
-        return Ok(Model { language: Language::Cpfg, scene: Default::default(), hierarchy: Some(h), primitives, warnings: sys.warnings, promised: 0, seed });
+        return Ok(Model { language: Language::Cpfg, scene: Default::default(), hierarchy: Some(h), drawing: None, primitives, warnings: sys.warnings, promised: 0, seed });
     }
     let cost = req.downstream;
     let opts = turtle::TurtleOptions {
@@ -131,7 +131,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
             return Err(EvalError::Limit(l).into());
         }
     }
-    Ok(Model { language: Language::Cpfg, scene: drawing.scene, hierarchy: None, primitives: drawing.segments + spheres, warnings: sys.warnings, promised: drawing.promised, seed })
+    Ok(Model { language: Language::Cpfg, scene: drawing.scene, hierarchy: None, drawing: None, primitives: drawing.segments + spheres, warnings: sys.warnings, promised: drawing.promised, seed })
 }
 
 /// The front end of `language: "cpfg"`.

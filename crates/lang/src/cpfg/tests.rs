@@ -33,6 +33,7 @@ fn build(front: &dyn crate::FrontEnd, src: &str, files: &BTreeMap<String, Vec<u8
         script_dir: None,
         frame: None,
         files,
+        canvas: None,
     };
     front.build_model(src.as_bytes(), &req, &mut Budget::new(limits), &mut StageClock::start())
 }

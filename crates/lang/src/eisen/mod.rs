@@ -138,6 +138,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         language: Language::Eisenscript,
         scene: built.scene,
         hierarchy: None,
+        drawing: None,
         primitives: built.objects,
         warnings: script.warnings,
         promised: built.promised,

@@ -106,7 +106,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     budget.release_memory(promised.saturating_add(movie.held_bytes));
     let (mut scene, primitives) = assemble(frames, animated, budget)?;
     scene.truncated = truncated;
-    Ok(Model { language: Language::Eisenscript, scene, hierarchy: None, primitives, warnings, promised: 0, seed })
+    Ok(Model { language: Language::Eisenscript, scene, hierarchy: None, drawing: None, primitives, warnings, promised: 0, seed })
 }
 
 /// The error for a `frame` the script does not save.

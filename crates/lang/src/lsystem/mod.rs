@@ -78,7 +78,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
             Ok(h) if req.hierarchy == HierarchyUse::Union && h.triangles(req.detail) <= EXACT_UNION_MAX_TRIANGLES => budget.rewind(mark),
             Ok(h) => {
                 let primitives = h.leaves();
-                return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), primitives, warnings: sys.warnings, promised: 0, seed });
+                return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), drawing: None, primitives, warnings: sys.warnings, promised: 0, seed });
             }
             Err(EvalError::Limit(_)) if truncating => budget.rewind(mark),
             Err(e) => return Err(e.into()),
@@ -102,7 +102,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
         Some(d) => turtle::interpret_stream(&sys, &opts, budget, &mut |sink| d.feed(d.root_index(), sink))?,
         None => string_drawing(&sys, seed, &opts, budget)?,
     };
-    Ok(Model { language: Language::Lsystem, scene: drawing.scene, hierarchy: None, primitives: drawing.segments, warnings: sys.warnings, promised: drawing.promised, seed })
+    Ok(Model { language: Language::Lsystem, scene: drawing.scene, hierarchy: None, drawing: None, primitives: drawing.segments, warnings: sys.warnings, promised: drawing.promised, seed })
 }
 
 /// The front end of `language: "lsystem"`.

@@ -6,6 +6,7 @@
 
 pub mod animation;
 pub mod camera;
+pub mod drawing;
 pub mod error;
 pub mod graph;
 pub mod hierarchy;
@@ -14,6 +15,7 @@ pub mod request;
 pub mod scene;
 
 pub use camera::Camera;
+pub use drawing::Drawing;
 pub use error::EvalError;
 pub use hierarchy::Hierarchy;
 pub use request::{BuildRequest, Downstream, HierarchyUse};
@@ -34,6 +36,11 @@ pub struct Model {
     /// flat scene (context-free L-systems and shareable MDG grammars, when
     /// the request can use it; the scene then keeps only the background).
     pub hierarchy: Option<Hierarchy>,
+    /// The flat 2D drawing, for a language that draws one (Context Free):
+    /// what `format=svg` writes and `format=png` rasterises instead of a
+    /// preview of the scene. `None` for the 3D languages, which the `svg`
+    /// format then refuses.
+    pub drawing: Option<Drawing>,
     /// Primitives as the language counts them (instances, segments, objects).
     pub primitives: u64,
     /// Parser and evaluator warnings.

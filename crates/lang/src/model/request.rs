@@ -97,4 +97,11 @@ pub struct BuildRequest<'a> {
     /// colour map and `#include`d files, for `language: "cpfg"`): a front
     /// end resolves the names a source gives only against these, never the disk.
     pub files: &'a std::collections::BTreeMap<String, Vec<u8>>,
+    /// The side in pixels of the picture the output is (`png`'s `size`),
+    /// `None` for every other output. Only a language whose evaluation
+    /// stops at a size in pixels reads it (Context Free ends recursion
+    /// below a minimum size in pixels and frames its border in pixels, so
+    /// its picture at 300 px is not its picture at 500 px scaled), as
+    /// `detail` is read by those that tessellate; it names no format.
+    pub canvas: Option<u32>,
 }

@@ -42,7 +42,7 @@ pub fn build_model(language: Language, program: Program, req: &BuildRequest<'_>,
     // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
     let seed = req.seed.or(program.directives.randseed).unwrap_or(0);
     if let Some(h) = hierarchy(&program, &params, &options, req, budget)? {
-        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(&program), ..Scene::default() }, hierarchy: Some(h), warnings: program.warnings });
+        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(&program), ..Scene::default() }, hierarchy: Some(h), drawing: None, warnings: program.warnings });
     }
     let scene = evaluate(&program, &params, &options, budget)?;
     Ok(Model {
@@ -52,6 +52,7 @@ pub fn build_model(language: Language, program: Program, req: &BuildRequest<'_>,
         promised: promised_bytes(&scene, &options),
         scene,
         hierarchy: None,
+        drawing: None,
         warnings: program.warnings,
     })
 }
