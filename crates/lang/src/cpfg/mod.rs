@@ -172,4 +172,4 @@ impl FrontEnd for Cpfg {
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
-mod figures;
+mod figures_tests;

@@ -60,7 +60,7 @@ fn count(s: &str, c: char) -> usize {
 
 /// The quadratic Koch curve of vlab's `01-quadratic-Koch` (the mirrored
 /// generator of ABOP Figure 1.6's island): every F becomes 8, so 8⁴
-/// segments after 4 steps. The figures themselves: `figures.rs`.
+/// segments after 4 steps. The figures themselves: `figures_tests.rs`.
 #[test]
 fn quadratic_koch_counts() {
     let s = derive_text(KOCH, None);
