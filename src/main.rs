@@ -482,6 +482,7 @@ fn render_failure(file: &str, e: RenderError) -> Failure {
         e @ RenderError::Unprintable(_) => Failure::new(EXIT_USAGE, format!("{file}: {e}")),
         e @ RenderError::TooLarge { .. } => Failure::new(EXIT_LIMIT, format!("{file}: {e}")),
         RenderError::Export(x) => Failure::new(EXIT_FAILURE, format!("{file}: {x}")),
+        e @ RenderError::Print(_) => Failure::new(EXIT_FAILURE, format!("{file}: {e}")),
     }
 }
 

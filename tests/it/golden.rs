@@ -108,7 +108,9 @@ fn cell(result: Result<rulemesh::RenderOutput, RenderError>) -> String {
         Err(RenderError::Limit(l)) => format!("error:limit:{:?}:{}", l.limit, l.reached),
         Err(RenderError::Parse(_)) => "error:parse".into(),
         Err(RenderError::Eval(_)) => "error:eval".into(),
-        Err(RenderError::Export(_)) => "error:export".into(),
+        // A print stage's internal failure was an export error before it had
+        // a variant of its own; the cell keeps its spelling.
+        Err(RenderError::Export(_) | RenderError::Print(_)) => "error:export".into(),
         Err(RenderError::BadRequest(_)) => "error:bad-request".into(),
         Err(RenderError::Unprintable(_)) => "error:unprintable".into(),
         Err(RenderError::TooLarge { .. }) => "error:too-large".into(),

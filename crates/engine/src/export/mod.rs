@@ -128,9 +128,6 @@ pub enum ExportError {
         /// What is wrong.
         detail: String,
     },
-    /// `print=true` could not make a printable solid.
-    #[error("print: {0}")]
-    Print(crate::print::PrintError),
     /// JSON serialisation failed.
     #[error("serialising glTF JSON: {0}")]
     Json(#[from] serde_json::Error),

@@ -162,6 +162,10 @@ pub enum RenderError {
         /// What overflowed.
         detail: String,
     },
+    /// The print stage failed inside the server (not the request's fault:
+    /// see [`RenderError::Unprintable`]).
+    #[error("print: {0}")]
+    Print(PrintError),
     /// Writing the output failed inside the server.
     #[error(transparent)]
     Export(ExportError),
@@ -196,7 +200,6 @@ impl From<ExportError> for RenderError {
         match e {
             ExportError::Limit(l) => RenderError::Limit(l),
             ExportError::TooLarge { format, detail } => RenderError::TooLarge { format, detail },
-            ExportError::Print(p) => p.into(),
             other => RenderError::Export(other),
         }
     }
@@ -209,7 +212,7 @@ impl From<PrintError> for RenderError {
             // The model has nothing closed to print, or an option is off: the request's fault.
             e @ (PrintError::NothingPrintable(_) | PrintError::SeparatePieces { .. }) => RenderError::Unprintable(e),
             e if e.is_bad_option() => RenderError::Unprintable(e),
-            other => RenderError::Export(ExportError::Print(other)),
+            other => RenderError::Print(other),
         }
     }
 }

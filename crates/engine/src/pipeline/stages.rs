@@ -48,14 +48,7 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
         Route::InstancedGltf { binary, flat: write } => instanced(model, provenance, binary, write, req, budget, clock),
         Route::InstancedHierarchy { write, flat: output } => match model.hierarchy.take() {
             Some(h) => {
-                let meta = ExportMeta {
-                    background: model.scene.background,
-                    truncated: h.truncated.is_some(),
-                    graph: None,
-                    material_per_mesh: false,
-                    camera: None,
-                    provenance: Some(provenance),
-                };
+                let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
                 let bytes = write(&h, req.detail, &meta, budget)?;
                 clock.lap(Phase::Export);
                 Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated))
@@ -124,14 +117,7 @@ fn print(mut model: Model, provenance: Provenance, report: bool, output: Output,
 /// graph is written flat) or one with no repeats, flat.
 fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     if let Some(h) = model.hierarchy.take() {
-        let meta = ExportMeta {
-            background: model.scene.background,
-            truncated: h.truncated.is_some(),
-            graph: None,
-            material_per_mesh: false,
-            camera: None,
-            provenance: Some(provenance),
-        };
+        let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
         // MDG's instances carry their colours, as its flat scenes' do; L-systems' meshes do.
         let per_instance_colour = model.language.front_end().colours_per_instance();
         let bytes = export::gltf::instanced::write_instanced(&h, req.detail, binary, &meta, per_instance_colour, budget)?;
@@ -200,6 +186,20 @@ fn flat(model: Model, provenance: Provenance, output: Output, graph: Option<Char
     let meta = flat_meta(&model, provenance, truncated, graph);
     let out = write_meshes(meshes, meta, truncated, output, req, budget, clock)?;
     Ok(summary(out.bytes, &model, out.triangles, out.truncated))
+}
+
+/// The scene-level metadata of a model written from its instances or its
+/// hierarchy (instanced glTF, usdz, streamed strips): the background and
+/// provenance only, no node graph, no camera, no material per mesh.
+fn hierarchy_meta(model: &Model, truncated: bool, provenance: Provenance) -> ExportMeta {
+    ExportMeta {
+        background: model.scene.background,
+        truncated,
+        graph: None,
+        material_per_mesh: false,
+        camera: None,
+        provenance: Some(provenance),
+    }
 }
 
 /// The scene-level metadata of meshes written flat: a camera path plays in
@@ -298,14 +298,7 @@ fn strips_from_model(mut model: Model, provenance: Provenance, empty: WriteMeshe
     clock.lap(Phase::Mesh);
     budget.set_stage_share(None);
     let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(survey.cut);
-    let meta = ExportMeta {
-        background: model.scene.background,
-        truncated: truncated.is_some(),
-        graph: None,
-        material_per_mesh: false,
-        camera: None,
-        provenance: Some(provenance),
-    };
+    let meta = hierarchy_meta(&model, truncated.is_some(), provenance);
     let written = export::strips::write_strips_model(&src, &survey, &req.export_options.strips, budget);
     let empty = |meta: &ExportMeta, budget: &mut Budget| empty(&[], meta, &req.export_options, budget);
     let (bytes, triangles, truncated) = empty_if_late(written, survey.triangles(), truncated, meta, req.on_limit, budget, empty)?;

@@ -172,6 +172,7 @@ impl From<RenderError> for ServiceError {
             RenderError::Export(x @ ExportError::InvalidOptions { .. }) => ServiceError::BadRequest(x.to_string()),
             RenderError::Export(ExportError::Limit(l)) => ServiceError::Limit(l),
             RenderError::Export(x) => ServiceError::Internal(x.to_string()),
+            e @ RenderError::Print(_) => ServiceError::Internal(e.to_string()),
         }
     }
 }
