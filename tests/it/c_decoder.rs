@@ -286,29 +286,29 @@ fn c_decoder_refuses_zstd_with_a_clear_message() {
     assert!(stderr.contains("error zstd: this payload is zstd-wrapped"), "{stderr}");
 }
 
-/// The libFuzzer target builds with clang (`-fsanitize=fuzzer,address,undefined`)
-/// and runs 20 000 inputs from the committed fixtures without a finding. The
-/// long runs are documented in clients/c/README.md.
-#[test]
-fn c_fuzz_target_survives_a_smoke_run() {
+/// Builds the libFuzzer target `clients/c/{target}.c` with `decoder` under
+/// clang (`-fsanitize=fuzzer,address,undefined`), seeds its corpus with the
+/// committed fixtures ending in `.{ext}` (at least two) and `extra` files,
+/// and runs 20 000 inputs: none may be a finding. The strips and scene
+/// decoders' smoke runs share it.
+pub(crate) fn fuzz_smoke(target: &str, decoder: &str, ext: &str, extra: &[(&str, Vec<u8>)]) {
     let dir = tempdir();
-    let exe = dir.path().join("fuzz_strips");
+    let exe = dir.path().join(target);
     let flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-g", "-O1", "-fsanitize=fuzzer,address,undefined", "-fno-sanitize-recover=all"];
-    compile("clang", &flags, &["fuzz_strips.c", "rulemesh_strips.c"], &exe);
-    // The fixtures' .strips files seed it (their .json neighbours are not strips).
+    compile("clang", &flags, &[&format!("{target}.c"), decoder], &exe);
     let corpus = dir.path().join("corpus");
     std::fs::create_dir_all(&corpus).expect("mkdir");
     let mut seeds = 0;
     for e in std::fs::read_dir(repo().join("clients/js/fixtures")).expect("fixtures").flatten() {
-        if e.path().extension().is_some_and(|x| x == "strips") {
+        if e.path().extension().is_some_and(|x| x == ext) {
             std::fs::copy(e.path(), corpus.join(e.file_name())).expect("copy seed");
             seeds += 1;
         }
     }
     assert!(seeds >= 2, "{seeds} seeds");
-    // And a version 3 file of two chunks (a real one is far over -max_len).
-    let gradient = std::fs::read(repo().join("clients/js/fixtures/gradient.strips")).expect("fixture");
-    std::fs::write(corpus.join("gradient.v3.strips"), as_chunks(&gradient, 2)).expect("write seed");
+    for (name, bytes) in extra {
+        std::fs::write(corpus.join(name), bytes).expect("write seed");
+    }
     let o = Command::new(&exe)
         .arg(&corpus)
         .args(["-runs=20000", "-seed=1", "-max_len=20000", "-timeout=10", "-rss_limit_mb=2048"])
@@ -318,3 +318,15 @@ fn c_fuzz_target_survives_a_smoke_run() {
     assert!(o.status.success(), "fuzz target found something:\n{stderr}");
     assert!(stderr.contains("Done 20000 runs"), "{stderr}");
 }
+
+/// The strips decoder's libFuzzer target runs 20 000 inputs from the
+/// committed fixtures without a finding. The long runs are documented in
+/// clients/c/README.md.
+#[test]
+fn c_fuzz_target_survives_a_smoke_run() {
+    // The fixtures' .strips files seed it (their .json neighbours are not
+    // strips), and a version 3 file of two chunks (a real one is far over -max_len).
+    let gradient = std::fs::read(repo().join("clients/js/fixtures/gradient.strips")).expect("fixture");
+    fuzz_smoke("fuzz_strips", "rulemesh_strips.c", "strips", &[("gradient.v3.strips", as_chunks(&gradient, 2))]);
+}
+

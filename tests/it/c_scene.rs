@@ -15,7 +15,7 @@
 //! golden scene row). A flipped bit in a transform, a colour or the detail
 //! is another valid scene, which both decoders decode to the same meshes.
 
-use crate::c_decoder::{assert_same_lines, c_lines, compile, every_grammar, exec, fnv1a64, SANITIZE, STRICT};
+use crate::c_decoder::{assert_same_lines, c_lines, compile, every_grammar, exec, fnv1a64, fuzz_smoke, SANITIZE, STRICT};
 use crate::common::{repo, run, tempdir};
 use rulemesh::decode::scene::{decode_scene_meshes, DecodedScene};
 use std::path::{Path, PathBuf};
@@ -224,33 +224,12 @@ fn c_scene_decoder_refuses_damage_as_rust_does() {
     assert_same_lines("hostile counts", &c_lines(&exec(&exe, &["--batch", path.to_str().expect("utf-8")])), &rust);
 }
 
-/// The libFuzzer target builds with clang (`-fsanitize=fuzzer,address,undefined`)
-/// and runs 20 000 inputs from the committed scene fixtures without a
-/// finding. The 10-minute run is recorded in docs/reliability.md.
+/// The scene decoder's libFuzzer target runs 20 000 inputs from the
+/// committed scene fixtures without a finding. The 10-minute run is
+/// recorded in docs/reliability.md.
 #[test]
 fn c_scene_fuzz_target_survives_a_smoke_run() {
-    let dir = tempdir();
-    let exe = dir.path().join("fuzz_scene");
-    let flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-g", "-O1", "-fsanitize=fuzzer,address,undefined", "-fno-sanitize-recover=all"];
-    compile("clang", &flags, &["fuzz_scene.c", "rulemesh_scene.c"], &exe);
-    let corpus = dir.path().join("corpus");
-    std::fs::create_dir_all(&corpus).expect("mkdir");
-    let mut seeds = 0;
-    for e in std::fs::read_dir(repo().join("clients/js/fixtures")).expect("fixtures").flatten() {
-        if e.path().extension().is_some_and(|x| x == "rmscene") {
-            std::fs::copy(e.path(), corpus.join(e.file_name())).expect("copy seed");
-            seeds += 1;
-        }
-    }
-    assert!(seeds >= 2, "{seeds} seeds");
-    let o = Command::new(&exe)
-        .arg(&corpus)
-        .args(["-runs=20000", "-seed=1", "-max_len=20000", "-timeout=10", "-rss_limit_mb=2048"])
-        .output()
-        .expect("run the fuzz target");
-    let stderr = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "fuzz target found something:\n{stderr}");
-    assert!(stderr.contains("Done 20000 runs"), "{stderr}");
+    fuzz_smoke("fuzz_scene", "rulemesh_scene.c", "rmscene", &[]);
 }
 
 /// `clients/c/module.modulemap` (Swift's `import RulemeshC`) is a valid
