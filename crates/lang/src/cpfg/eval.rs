@@ -73,6 +73,11 @@ pub struct Machine {
     pub choice: Rand48,
     /// The view's functions, `func(1, x)` first.
     pub funcs: Vec<super::func::Function>,
+    /// The ids `func` was called with that no function answers, each with
+    /// the first call's place: cpfg gives 0 for them with a message on its
+    /// console (`SplineFuncValue`), so a render says so in its warnings
+    /// (a model sent without its `.fset` otherwise draws every length 0).
+    pub missing_funcs: std::collections::BTreeMap<i64, Span>,
 }
 
 fn non_finite(span: Span, what: &str, v: f64) -> EvalError {
@@ -92,7 +97,7 @@ impl Machine {
                 (a.dims.clone(), v)
             })
             .collect();
-        Machine { globals: vec![0.0; sys.globals.len()], arrays, ran, gauss: None, choice, funcs: Vec::new() }
+        Machine { globals: vec![0.0; sys.globals.len()], arrays, ran, gauss: None, choice, funcs: Vec::new(), missing_funcs: Default::default() }
     }
 
     fn index(&mut self, a: u32, idx: &[Expr], span: Span, locals: &mut [f64], budget: &mut Budget) -> Result<usize, EvalError> {
@@ -172,7 +177,10 @@ impl Machine {
             // cpfg warns and gives 0 for an id without a function (`SplineFuncValue`).
             Func::Func => match (x as i64).checked_sub(1).and_then(|k| usize::try_from(k).ok()).and_then(|k| self.funcs.get(k)) {
                 Some(f) => f.value(v[1]),
-                None => 0.0,
+                None => {
+                    self.missing_funcs.entry(x as i64).or_insert(span);
+                    0.0
+                }
             },
             // The deterministic functions were answered by `pure::function`.
             _ => 0.0,

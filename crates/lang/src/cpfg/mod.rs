@@ -78,6 +78,16 @@ pub fn predefined(view: &view::View) -> Vec<(String, String)> {
     view.functions.iter().enumerate().filter(|(_, f)| !f.name.is_empty()).map(|(i, f)| (f.name.clone(), (i + 1).to_string())).collect()
 }
 
+/// One warning per `func` id that no function of the request's files
+/// answered, at its first call (`Machine::missing_funcs`).
+fn missing_function_warnings(machine: &eval::Machine) -> Vec<Diagnostic> {
+    machine
+        .missing_funcs
+        .iter()
+        .map(|(id, span)| Diagnostic::warning(*span, format!("func({id}, …) has no function: none of the files sent (a .fset or .func) defines function {id}, so it gives 0, as cpfg's does")))
+        .collect()
+}
+
 /// The number of derivation steps: the L-system's `derivation length:`,
 /// else the animation file's `last frame:`, else 0.
 pub fn steps(sys: &syntax::Cpfg, view: &view::View) -> u32 {
@@ -99,6 +109,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     let derived = d.derive(steps(&sys, &view), Some(&view), req.on_limit, budget)?;
     let drawn = d.homomorphism(&derived.string, budget)?;
     budget.release_memory(derived.string.bytes());
+    sys.warnings.extend(missing_function_warnings(&d.machine));
     let lowered = lower::lower(&drawn, &view, budget)?;
     budget.release_memory(drawn.bytes());
     let shell = lower::shell(&view);

@@ -304,6 +304,15 @@ fn functions_from_the_view() {
     let m = build(&super::Cpfg, src, &files, Limits::default()).expect("builds");
     let top = m.scene.lines.iter().flat_map(|l| l.points.iter()).map(|p| p.frame.translation.y).fold(0.0f64, f64::max);
     assert!((top - 5.0).abs() < 0.02, "{top}");
+    assert!(m.warnings.iter().all(|w| !w.message.contains("has no function")), "{:?}", m.warnings);
+    // Without the function set, func(1, …) gives 0 as cpfg's does, and the
+    // render says so once, at the first call's place.
+    let src = "Lsystem: 1\nderivation length: 2\nAxiom: A\nA --> F(10*func(1, 0.5))A\nendlsystem\n";
+    let m = cpfg(src).expect("builds");
+    let missing: Vec<_> = m.warnings.iter().filter(|w| w.message.contains("has no function")).collect();
+    assert_eq!(missing.len(), 1, "{:?}", m.warnings);
+    assert!(missing[0].message.starts_with("func(1, …)"), "{}", missing[0].message);
+    assert_eq!((missing[0].span.line, missing[0].span.column), (4, 12), "{:?}", missing[0].span);
 }
 
 /// Found over the vlab models: a continued production line starting with
