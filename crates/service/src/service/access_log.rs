@@ -9,8 +9,8 @@
 //! details are still there for whoever asks for them (`--log debug`, or the
 //! OTLP spans), and never cost a request that does not.
 //!
-//! The lines reach stderr through a non-blocking writer (tracing-appender's
-//! `NonBlocking`, installed by [`super::telemetry::init`]): a slow or
+//! The lines reach stderr through a batching writer ([`super::log_writer`],
+//! installed by [`super::telemetry::init`]): a slow or
 //! stalled log reader costs dropped lines, counted in
 //! `rulemesh_log_lines_dropped_total`, never a blocked worker.
 

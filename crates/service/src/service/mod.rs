@@ -19,6 +19,7 @@ pub mod http;
 pub mod http_batch;
 pub mod http_schema;
 pub mod library;
+pub mod log_writer;
 pub mod memory;
 pub mod metrics;
 pub mod phone;

@@ -11,11 +11,11 @@
 //! endpoint no exporter, layer or propagator is installed and the helpers
 //! here return at once: tracing costs nothing when off.
 //!
-//! Log lines go through tracing-appender's non-blocking writer (Tokio
-//! project, *tracing-appender*, 2019–2025): a thread of its own writes
-//! them to stderr from a bounded queue, so a worker never waits for a slow
-//! log reader; when the queue is full the line is dropped and counted
-//! ([`dropped_lines`], exported as `rulemesh_log_lines_dropped_total`).
+//! Log lines go through [`super::log_writer`]: a thread of its own writes
+//! them to stderr in batches from a bounded queue, so a worker never waits
+//! for a slow log reader (nor makes a system call per line); when the queue
+//! is full the line is dropped and counted ([`dropped_lines`], exported as
+//! `rulemesh_log_lines_dropped_total`).
 
 use crate::core::timing::PhaseTimes;
 use opentelemetry::trace::{Span as _, SpanKind, Tracer as _, TracerProvider as _};
@@ -24,7 +24,7 @@ use opentelemetry_otlp::WithExportConfig as _;
 use opentelemetry_sdk::trace::SdkTracerProvider;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::OnceLock;
-use tracing_appender::non_blocking::{ErrorCounter, NonBlockingBuilder, WorkerGuard};
+use super::log_writer::{BatchWriter, FlushGuard};
 use std::time::SystemTime;
 use tracing_opentelemetry::OpenTelemetrySpanExt as _;
 use tracing_subscriber::filter::LevelFilter;
@@ -64,13 +64,13 @@ pub fn tracing_on() -> bool {
     TRACING.load(Ordering::Relaxed)
 }
 
-/// The non-blocking writer's count of dropped lines, once [`init`] ran.
-static DROPPED: OnceLock<ErrorCounter> = OnceLock::new();
+/// The log writer, whose count of dropped lines [`dropped_lines`] reads, once [`init`] ran.
+static WRITER: OnceLock<BatchWriter> = OnceLock::new();
 
 /// Log lines dropped because the writer's queue was full (0 before
 /// [`init`], and in processes that log directly).
 pub fn dropped_lines() -> u64 {
-    DROPPED.get().map_or(0, |c| u64::try_from(c.dropped_lines()).unwrap_or(u64::MAX))
+    WRITER.get().map_or(0, BatchWriter::dropped)
 }
 
 /// The default length of the log writer's queue, in lines: about ten
@@ -83,7 +83,7 @@ pub const DEFAULT_LOG_BUFFER_LINES: usize = 65_536;
 pub struct Telemetry {
     provider: Option<SdkTracerProvider>,
     /// Flushes the log writer's queue when dropped.
-    log_writer: Option<WorkerGuard>,
+    log_writer: Option<FlushGuard>,
 }
 
 impl Telemetry {
@@ -164,12 +164,12 @@ pub fn stage_spans(started: SystemTime, phases: &PhaseTimes, language: &'static 
 /// stderr; with `otlp` (`http://host:4317`), also rulemesh's spans exported
 /// over OTLP/gRPC as service `rulemesh` (instance `worker`, if named) and
 /// W3C trace context read from requests. Lines queue for stderr through a
-/// non-blocking writer holding at most `buffer_lines` lines. Call it inside
+/// batching writer holding at most `buffer_lines` lines. Call it inside
 /// the Tokio runtime that will serve: the exporter's connection lives on it.
 pub fn init(level: LevelFilter, format: LogFormat, otlp: Option<&str>, worker: Option<&str>, buffer_lines: usize) -> Result<Telemetry, TelemetryError> {
     use std::io::IsTerminal;
-    let (writer, guard) = NonBlockingBuilder::default().lossy(true).buffered_lines_limit(buffer_lines.max(1)).thread_name("rulemesh-log").finish(std::io::stderr());
-    let _ = DROPPED.set(writer.error_counter());
+    let (writer, guard) = BatchWriter::start(std::io::stderr(), buffer_lines).map_err(|e| TelemetryError::Init(format!("cannot start the log writer thread: {e}")))?;
+    let _ = WRITER.set(writer.clone());
     let fmt = tracing_subscriber::fmt::layer().with_target(false).with_writer(writer);
     let fmt = match format {
         LogFormat::Text => fmt.with_ansi(std::io::stderr().is_terminal()).boxed(),
