@@ -7,7 +7,8 @@
 // line marked, all the while the URL following the state; then open links
 // (an L-system with a seed, an MDG grammar with a parameter, bad values,
 // a link pasted into the open tab) and see each restored and rendered as
-// GET /v1/models/NAME.EXT renders it. Every request the page makes must go
+// GET /v1/models/NAME.EXT renders it; and switch grammars while a slow
+// answer about the first is still coming. Every request the page makes must go
 // to the server itself (no CDN).
 //
 // Usage: node scripts/playground-check/check.mjs http://127.0.0.1:PORT
@@ -225,6 +226,23 @@ try {
   expect(seen.grammar === 'hogeweg' && seen.language === 'lsystem' && seen.seed === '3' && seen.format === 'glb' && seen.note === null && seen.outcome === 'model', `pasted link: ${JSON.stringify(seen)}`);
   expect(seen.hash === '#grammar=hogeweg&seed=3&format=glb', `the URL of the pasted link became ${seen.hash}`);
   links.pasted = seen;
+
+  // A slow answer about the grammar just left: icon-coin's schema arrives
+  // after hogeweg's, and must not rebuild the form (icon-coin's `points`
+  // would then be sent with hogeweg's source and refused as unknown).
+  await page.route('**/v1/schema', async (route) => {
+    if ((route.request().postData() || '').includes('startshape Coin')) await new Promise((ok) => setTimeout(ok, 1500));
+    await route.continue();
+  });
+  const beforeRace = Number(await page.evaluate(() => document.body.dataset.renders));
+  await page.selectOption('#grammar', 'icon-coin');
+  await page.waitForFunction(() => document.getElementById('source').value.includes('startshape Coin'), null, { timeout: 30000 });
+  await page.selectOption('#grammar', 'hogeweg');
+  state = await idleAfter(beforeRace);
+  await page.waitForTimeout(2000); // the delayed answer arrives and is dropped
+  seen = await shown();
+  await page.unroute('**/v1/schema');
+  expect(seen.grammar === 'hogeweg' && seen.outcome === 'model' && !('points' in seen.params) && seen.hash === '#grammar=hogeweg&seed=3&format=glb', `after a late answer about icon-coin: ${JSON.stringify(seen)}`);
 
   // Every API answer the page got was a success, but for the one source that does not parse.
   expect(apiErrors.length === 0, `API errors: ${apiErrors}`);

@@ -292,16 +292,25 @@ function showHeaders(response) {
   $('headers').textContent = lines.join('\n');
 }
 
-/** Checks the source (diagnostics) and reads its schema (the form); true when it parses. */
-async function analyse() {
+/**
+ * Checks the source (diagnostics) and reads its schema (the form); true when
+ * it parses. `mine` is the render asking: once a newer render has started,
+ * the answers are dropped, so a slow answer about the previous grammar can
+ * never rebuild the form after the new grammar's (its parameters would then
+ * be sent with the new source and refused as unknown).
+ */
+async function analyse(mine) {
   const body = { source: $('source').value };
   if ($('language').value) body.language = $('language').value;
   const check = await (await post('/v1/check', body)).json();
+  if (mine !== seq) return false;
   showDiagnostics(check.diagnostics || []);
   if (!check.ok) return false;
   const schema = await post('/v1/schema', body);
   if (!schema.ok) return false;
-  buildForm(await schema.json());
+  const json = await schema.json();
+  if (mine !== seq) return false;
+  buildForm(json);
   return true;
 }
 
@@ -316,7 +325,7 @@ async function render() {
     setState('idle', outcome);
   };
   try {
-    const parsed = await analyse();
+    const parsed = await analyse(mine);
     if (mine !== seq) return;
     applyPending(parsed);
     writeLink();
