@@ -10,6 +10,7 @@
 
 mod descriptor;
 mod formats;
+pub(crate) mod pace;
 pub mod gltf;
 pub mod png;
 pub mod provenance;
@@ -47,16 +48,11 @@ pub enum Instancing {
 
 rulemesh_core::choice!(Instancing { Gpu => "gpu", Flat => "flat" });
 
-/// Welds a mesh's vertices by exact position for formats that name shared
-/// vertices (3MF, UniGrafix): the distinct positions in first-use order, and
-/// each triangle's index in the mesh with its corners as indices into them;
-/// triangles that lose a corner to welding are dropped.
-pub(crate) fn welded(mesh: &crate::geom::Mesh) -> (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>) {
-    use crate::geom::weld;
-    let (points, remap) = weld::weld_by(mesh.positions.iter().copied(), weld::f32_key);
-    let tris = weld::welded_triangles(&mesh.indices, &remap).collect();
-    (points, tris)
-}
+/// A mesh welded by exact position for formats that name shared vertices
+/// (3MF, UniGrafix; [`pace::welded`]): the distinct positions in first-use
+/// order, and each triangle's index in the mesh with its corners as
+/// indices into them; triangles that lose a corner to welding are dropped.
+pub(crate) type Welded = (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>);
 
 /// Drops the normals and colours of `meshes`, which STL never writes (facet
 /// normals are recomputed from the winding, and STL has no colour), so that

@@ -235,10 +235,18 @@ fn write_meshes(mut meshes: Vec<NamedMesh>, meta: ExportMeta, truncated: Option<
     let drawn: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     let (bytes, triangles, truncated) = match output {
         Output::Picture(encode) => {
-            // A picture needs no fitting or scene metadata beyond its provenance.
-            let image = crate::preview::render(&meshes, &req.export_options.preview, budget).map_err(ExportError::from)?;
-            clock.lap(Phase::Preview);
-            (encode(&image, meta.provenance.as_ref(), budget)?, drawn, truncated)
+            // A picture needs no fitting or scene metadata beyond its
+            // provenance. Too late to draw under `truncate`: the background
+            // alone, saying why, as a late mesh writer answers an empty model.
+            let drawn_picture = crate::preview::render(&meshes, &req.export_options.preview, budget).map_err(ExportError::from).and_then(|image| {
+                clock.lap(Phase::Preview);
+                encode(&image, meta.provenance.as_ref(), budget)
+            });
+            let background = |meta: &ExportMeta, budget: &mut Budget| {
+                let image = crate::preview::render(&[], &req.export_options.preview, budget).map_err(ExportError::from)?;
+                encode(&image, meta.provenance.as_ref(), budget)
+            };
+            empty_if_late(drawn_picture, drawn, truncated, meta, req.on_limit, budget, background)?
         }
         Output::Meshes { write, fit } => {
             // Writing a large model takes a share of the deadline; a model that arrives here late is not started.

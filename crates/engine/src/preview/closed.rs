@@ -33,20 +33,25 @@
 //! outward (the winding test checks every grammar's triangles against their
 //! normals), so only a hand-made inward solid among outward ones could.
 
-use crate::geom::Mesh;
+use crate::geom::{Mesh, STOP_EVERY};
 
 /// Whether `mesh` is closed and outward, so its triangles facing away from
 /// the camera can never be seen. A mesh with no triangles, or with an index
-/// out of range, is not.
-pub fn closed_outward(mesh: &Mesh) -> bool {
+/// out of range, is not. `None` when `stop`, asked every
+/// [`STOP_EVERY`] triangles, said to give up (the deadline: one pass over
+/// millions of triangles is a quarter of a second).
+pub fn closed_outward_until(mesh: &Mesh, stop: &dyn Fn() -> bool) -> Option<bool> {
     let key = |i: u32| mesh.positions.get(i as usize).map(|p| p.map(|c| (c + 0.0).to_bits()));
     let Some(origin) = mesh.positions.first().map(|p| p.map(f64::from)) else {
-        return false;
+        return Some(false);
     };
     let (mut balance, mut volume) = ([0u64; 2], 0.0f64);
-    for t in mesh.indices.chunks_exact(3) {
+    for (n, t) in mesh.indices.chunks_exact(3).enumerate() {
+        if n % STOP_EVERY == STOP_EVERY - 1 && stop() {
+            return None;
+        }
         let (Some(a), Some(b), Some(c)) = (key(t[0]), key(t[1]), key(t[2])) else {
-            return false;
+            return Some(false);
         };
         for (p, q) in [(a, b), (b, c), (c, a)] {
             let (there, back) = (edge_hash(p, q), edge_hash(q, p));
@@ -60,7 +65,13 @@ pub fn closed_outward(mesh: &Mesh) -> bool {
         let [p, q, r] = [p, q, r].map(|v| [v[0] - origin[0], v[1] - origin[1], v[2] - origin[2]]);
         volume += p[0] * (q[1] * r[2] - q[2] * r[1]) + p[1] * (q[2] * r[0] - q[0] * r[2]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
     }
-    balance == [0, 0] && volume > 0.0
+    Some(balance == [0, 0] && volume > 0.0)
+}
+
+/// [`closed_outward_until`] to the end.
+#[cfg(test)]
+fn closed_outward(mesh: &Mesh) -> bool {
+    closed_outward_until(mesh, &|| false).unwrap_or(false)
 }
 
 /// Two independent 64-bit hashes of the directed edge `p → q` (each point
@@ -147,7 +158,7 @@ mod tests {
         for view in View::ALL {
             let options = PreviewOptions { size: 64, view, background: None };
             let frame = Framing::of(&meshes, view, 64, raster::samples_per_axis(64));
-            let verts = vec![raster::project(&meshes[0].mesh, &frame, &Lights::default())];
+            let verts = vec![raster::project(&meshes[0].mesh, &frame, &Lights::default(), &|| false).unwrap_or_default()];
             let draw = |cull: bool| {
                 let mut budget = Budget::new(Limits::default());
                 let image = raster::draw(&meshes, &verts, &[cull], &options, &mut budget).expect("drawn");

@@ -160,11 +160,29 @@ pub fn render(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budge
     let vertex_bytes: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64 * raster::VERTEX_BYTES).sum();
     budget.reserve_memory(vertex_bytes)?;
     // Which meshes are closed solids, their back faces culled (one linear pass each).
-    let cull: Vec<bool> = meshes.iter().map(|m| closed::closed_outward(&m.mesh)).collect();
+    let image = draw(meshes, options, budget);
+    budget.release_memory(vertex_bytes);
+    image
+}
+
+/// [`render`] once the vertices' memory is reserved: the closed-solid test,
+/// the framing, the projection and the raster, each looking at the
+/// deadline (the first three are one pass over every triangle or vertex,
+/// a quarter of a second each for millions).
+fn draw(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budget) -> Result<Image, PreviewError> {
+    let late = std::cell::Cell::new(None);
+    let stop = || match budget.check_deadline() {
+        Ok(()) => false,
+        Err(e) => {
+            late.set(Some(e));
+            true
+        }
+    };
+    let stopped = |late: &std::cell::Cell<Option<LimitExceeded>>| late.take().map_or(PreviewError::BadOptions("stopped before its deadline".into()), PreviewError::Limit);
+    // Which meshes are closed solids, their back faces culled (one linear pass each).
+    let cull = meshes.iter().map(|m| closed::closed_outward_until(&m.mesh, &stop)).collect::<Option<Vec<bool>>>().ok_or_else(|| stopped(&late))?;
     let frame = camera::Framing::of(meshes, options.view, options.size, raster::samples_per_axis(options.size));
     let lights = shade::Lights::default();
-    let vertices: Vec<Vec<raster::ScreenVertex>> = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights)).collect();
-    let image = raster::draw(meshes, &vertices, &cull, options, budget);
-    budget.release_memory(vertex_bytes);
-    Ok(image?)
+    let vertices = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights, &stop)).collect::<Option<Vec<_>>>().ok_or_else(|| stopped(&late))?;
+    Ok(raster::draw(meshes, &vertices, &cull, options, budget)?)
 }

@@ -23,7 +23,7 @@ use super::camera::Framing;
 use super::shade::{self, Lights, LINEAR_MAX};
 use super::{Image, PreviewOptions};
 use crate::core::budget::{Budget, LimitExceeded};
-use crate::geom::{Mesh, NamedMesh};
+use crate::geom::{Mesh, NamedMesh, STOP_EVERY};
 
 /// Fractional bits of a vertex's snapped sample position.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -93,8 +93,9 @@ pub struct ScreenVertex {
 pub const VERTEX_BYTES: u64 = std::mem::size_of::<ScreenVertex>() as u64 + 8;
 
 /// Places and lights every vertex of `mesh` (normals and colours missing
-/// from a mesh made by hand count as facing the camera and white).
-pub fn project(mesh: &Mesh, frame: &Framing, lights: &Lights) -> Vec<ScreenVertex> {
+/// from a mesh made by hand count as facing the camera and white). `None`
+/// when `stop`, asked every [`STOP_EVERY`] vertices, said to give up.
+pub fn project(mesh: &Mesh, frame: &Framing, lights: &Lights, stop: &dyn Fn() -> bool) -> Option<Vec<ScreenVertex>> {
     let [near, far] = frame.depth;
     let range = near - far;
     let snap = |v: f32| round(v * SUB as f32).clamp(-COORD_LIMIT, COORD_LIMIT);
@@ -104,6 +105,9 @@ pub fn project(mesh: &Mesh, frame: &Framing, lights: &Lights) -> Vec<ScreenVerte
         .iter()
         .enumerate()
         .map(|(i, &p)| {
+            if i % STOP_EVERY == STOP_EVERY - 1 && stop() {
+                return None;
+            }
             let [x, y, d] = frame.place(p);
             let z = if range > 0.0 { round(((near - d) / range) * Z_MAX as f32) } else { 0 };
             let key = (mesh.normals.get(i).copied().unwrap_or([0.0, 0.0, 0.0]), mesh.colours.get(i).copied().unwrap_or([255; 4]));
@@ -118,7 +122,7 @@ pub fn project(mesh: &Mesh, frame: &Framing, lights: &Lights) -> Vec<ScreenVerte
                     rgb
                 }
             };
-            ScreenVertex { x: snap(x), y: snap(y), z: z.clamp(0, Z_MAX), rgb }
+            Some(ScreenVertex { x: snap(x), y: snap(y), z: z.clamp(0, Z_MAX), rgb })
         })
         .collect()
 }

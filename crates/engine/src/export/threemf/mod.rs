@@ -14,7 +14,8 @@
 //! gives byte-identical files.
 
 use crate::export::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
-use crate::export::{ExportError, ExportMeta, ExportOptions, Provenance};
+use crate::export::pace::{self, Pace};
+use crate::export::{ExportError, ExportMeta, ExportOptions, Provenance, Welded};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
 use std::fmt::Write as _;
@@ -119,7 +120,7 @@ fn display_colour(c: [u8; 4]) -> String {
 /// `welded`) coloured from `colours` (their [`palette`]), with the core
 /// `Application` metadata and, when given, the model's provenance as
 /// `rulemesh:` metadata.
-fn model_xml(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], provenance: Option<&Provenance>) -> String {
+fn model_xml(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], provenance: Option<&Provenance>, pace: &mut Pace<'_>) -> Result<String, ExportError> {
     let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\"");
     if provenance.is_some() {
         let _ = write!(s, " xmlns:rulemesh=\"{PROVENANCE_NAMESPACE}\"");
@@ -144,10 +145,12 @@ fn model_xml(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], prove
         let default = index.get(&triangle_colour(&m.mesh, 0)).copied().unwrap_or(0);
         let _ = writeln!(s, "<object id=\"{id}\" type=\"model\" pid=\"{MATERIALS_ID}\" pindex=\"{default}\"><mesh><vertices>");
         for p in points {
+            pace.step()?;
             let _ = writeln!(s, "<vertex x=\"{}\" y=\"{}\" z=\"{}\"/>", p[0], p[1], p[2]);
         }
         s.push_str("</vertices><triangles>\n");
         for &(t, [a, b, c]) in tris {
+            pace.step()?;
             match index.get(&triangle_colour(&m.mesh, t)).copied().unwrap_or(default) {
                 p if p == default => {
                     let _ = writeln!(s, "<triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>");
@@ -164,11 +167,9 @@ fn model_xml(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], prove
         let _ = write!(s, "<item objectid=\"{id}\"/>");
     }
     s.push_str("</build>\n</model>\n");
-    s
+    Ok(s)
 }
 
-/// A mesh's shared points and its triangles (each with its index in the mesh).
-type Welded = (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>);
 
 /// Writes a 3MF package (with `provenance` as metadata when given),
 /// reserving its worst-case size first.
@@ -181,7 +182,14 @@ pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: 
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     let weld_bytes = positions.saturating_mul(12 + 4).saturating_add(t.saturating_mul(20));
     budget.reserve_memory(weld_bytes)?;
-    let welded: Vec<Welded> = meshes.iter().map(|m| crate::export::welded(&m.mesh)).collect();
+    let mut pace = Pace::new(budget);
+    let welded = match meshes.iter().map(|m| pace::welded(&m.mesh, &mut pace)).collect::<Result<Vec<Welded>, _>>() {
+        Ok(w) => w,
+        Err(e) => {
+            budget.release_memory(weld_bytes);
+            return Err(e);
+        }
+    };
     let v: u64 = welded.iter().map(|w| w.0.len() as u64).sum();
     // The XML text and the zip each hold about the estimate (plus the
     // colours: the materials and the triangles of their own colour); both
@@ -189,19 +197,66 @@ pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: 
     let (colours, own) = palette(meshes);
     let colour_bytes = (colours.len() as u64).saturating_mul(MATERIAL_BYTES).saturating_add(own.saturating_mul(TRIANGLE_COLOUR_BYTES));
     let bytes = THREEMF.size.of(v, t).saturating_add(colour_bytes).saturating_mul(2);
-    budget.reserve_memory(bytes)?;
-    let xml = model_xml(meshes, &welded, &colours, provenance);
-    drop(welded);
-    // The XML is most of the work; compressing it is the rest.
-    budget.check_deadline()?;
-    let mut zip = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
-    let options = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
-    let fail = |e: &dyn std::fmt::Display| ExportError::TooLarge { format: THREEMF.name, detail: e.to_string() };
-    for (name, body) in [("[Content_Types].xml", CONTENT_TYPES), ("_rels/.rels", RELS), ("3D/3dmodel.model", xml.as_str())] {
-        zip.start_file(name, options).map_err(|e| fail(&e))?;
-        zip.write_all(body.as_bytes()).map_err(|e| fail(&e))?;
+    if let Err(e) = budget.reserve_memory(bytes) {
+        budget.release_memory(weld_bytes);
+        return Err(e.into());
     }
-    let out = zip.finish().map_err(|e| fail(&e))?.into_inner();
+    let out = package(meshes, &welded, &colours, provenance, budget);
     budget.release_memory(bytes.saturating_add(weld_bytes));
-    Ok(out)
+    out
+}
+
+/// The zip's output, looking at the deadline at each piece the compressor
+/// writes out (deflate runs at tens of megabytes a second, so a 200 MB
+/// model is seconds of it). The deadline is looked at below the compressor,
+/// not by feeding it the XML in pieces: the pieces would change where
+/// deflate's blocks end, and so the file's bytes.
+struct Paced<'a> {
+    out: std::io::Cursor<Vec<u8>>,
+    budget: &'a Budget,
+    late: &'a std::cell::Cell<Option<crate::core::budget::LimitExceeded>>,
+}
+
+impl std::io::Write for Paced<'_> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if let Err(e) = self.budget.check_deadline() {
+            self.late.set(Some(e));
+            return Err(std::io::Error::other("deadline"));
+        }
+        self.out.write(buf)
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.out.flush()
+    }
+}
+
+impl std::io::Seek for Paced<'_> {
+    fn seek(&mut self, pos: std::io::SeekFrom) -> std::io::Result<u64> {
+        self.out.seek(pos)
+    }
+}
+
+/// The XML of `meshes` and its zip package, looking at the deadline as it
+/// writes the text and as the compressor writes its output.
+fn package(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], provenance: Option<&Provenance>, budget: &Budget) -> Result<Vec<u8>, ExportError> {
+    let xml = model_xml(meshes, welded, colours, provenance, &mut Pace::new(budget))?;
+    let late = std::cell::Cell::new(None);
+    let mut zip = zip::ZipWriter::new(Paced { out: std::io::Cursor::new(Vec::new()), budget, late: &late });
+    let options = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
+    let fail = |e: &dyn std::fmt::Display| match late.take() {
+        Some(late) => ExportError::from(late),
+        None => ExportError::TooLarge { format: THREEMF.name, detail: e.to_string() },
+    };
+    for (name, body) in [("[Content_Types].xml", CONTENT_TYPES), ("_rels/.rels", RELS), ("3D/3dmodel.model", xml.as_str())] {
+        if let Err(e) = zip.start_file(name, options) {
+            return Err(fail(&e));
+        }
+        if let Err(e) = zip.write_all(body.as_bytes()) {
+            return Err(fail(&e));
+        }
+    }
+    match zip.finish() {
+        Ok(paced) => Ok(paced.out.into_inner()),
+        Err(e) => Err(fail(&e)),
+    }
 }

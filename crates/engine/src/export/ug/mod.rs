@@ -7,6 +7,7 @@
 //! position so faces share them, as UG faces name vertices by id.
 
 use crate::export::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use crate::export::pace::{self, Pace};
 use crate::export::{ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
@@ -41,20 +42,28 @@ pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, Ex
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     let bytes = UG.size.of(v, t);
     budget.reserve_memory(bytes)?;
+    let text = ug_text(meshes, budget);
+    budget.release_memory(bytes);
+    text.map(String::into_bytes)
+}
+
+/// The UniGrafix text of `meshes`, looking at the deadline as it welds and
+/// writes ([`Pace`]).
+fn ug_text(meshes: &[NamedMesh], budget: &Budget) -> Result<String, ExportError> {
     let mut s = String::from("{ UniGrafix written by rulemesh }\n");
     let mut colours: HashMap<[u8; 4], String> = HashMap::new();
     let mut defs = Vec::new();
+    let mut pace = Pace::new(budget);
     for (k, m) in meshes.iter().enumerate() {
         let name = ident(&m.name, k);
         let _ = writeln!(s, "def {name};");
-        let (points, tris) = crate::export::welded(&m.mesh);
+        let (points, tris) = pace::welded(&m.mesh, &mut pace)?;
         for (n, p) in points.iter().enumerate() {
+            pace.step()?;
             let _ = writeln!(s, "  v v{n} {} {} {};", p[0], p[1], p[2]);
         }
         for (k, [a, b, c]) in tris {
-            if k % crate::export::DEADLINE_EVERY == 0 {
-                budget.check_deadline()?;
-            }
+            pace.step()?;
             // The colour of the triangle's first corner (flat per face in rulemesh meshes).
             let rgba = m.mesh.indices.get(3 * k).and_then(|&i| m.mesh.colours.get(i as usize)).copied().unwrap_or([255; 4]);
             let next = colours.len();
@@ -73,6 +82,5 @@ pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, Ex
     for d in defs {
         let _ = writeln!(s, "i ({d});");
     }
-    budget.release_memory(bytes);
-    Ok(s.into_bytes())
+    Ok(s)
 }

@@ -48,7 +48,7 @@ fn prototype_layer(k: usize, mesh: &NamedMesh, budget: &mut Budget) -> Result<(V
     let mut out = String::new();
     let _ = writeln!(out, "#usda 1.0\n(\n    defaultPrim = \"P_{k}\"\n    metersPerUnit = 1\n    upAxis = \"Y\"\n)\n\ndef Xform \"P_{k}\"\n{{");
     let group = Group { colour: mesh.mesh.colours.first().copied().unwrap_or([255; 4]), vertices: (0..mesh.mesh.positions.len() as u32).collect(), indices: mesh.mesh.indices.clone() };
-    layer::mesh_prim(&mut out, "Mesh", mesh, &group, false)?;
+    layer::mesh_prim(&mut out, "Mesh", mesh, &group, false, &mut layer::Pace::new(budget))?;
     layer::footer(&mut out);
     Ok((out.into_bytes(), bytes))
 }

@@ -12,6 +12,7 @@
 //! whole prim (a `GeomSubset` per colour would keep one prim per mesh;
 //! whole prims are the simpler form every reader binds).
 
+pub(super) use crate::export::pace::Pace;
 use crate::export::{ExportError, ExportMeta, Provenance};
 use crate::geom::{Mesh, NamedMesh};
 use std::collections::HashMap;
@@ -31,12 +32,13 @@ pub(super) struct Group {
 }
 
 /// Splits `mesh` by triangle colour, groups in order of first use (white
-/// for a mesh without colours).
-pub(super) fn groups(mesh: &Mesh) -> Vec<Group> {
+/// for a mesh without colours), keeping `pace`.
+pub(super) fn groups(mesh: &Mesh, pace: &mut Pace<'_>) -> Result<Vec<Group>, ExportError> {
     let mut out: Vec<Group> = Vec::new();
     let mut maps: Vec<HashMap<u32, u32>> = Vec::new();
     let mut by_colour: HashMap<[u8; 4], usize> = HashMap::new();
     for (k, tri) in mesh.indices.chunks_exact(3).enumerate() {
+        pace.step()?;
         let colour = mesh.triangle_colour(k).unwrap_or([255; 4]);
         let g = *by_colour.entry(colour).or_insert_with(|| {
             out.push(Group { colour, vertices: Vec::new(), indices: Vec::new() });
@@ -53,7 +55,7 @@ pub(super) fn groups(mesh: &Mesh) -> Vec<Group> {
             group.indices.push(local);
         }
     }
-    out
+    Ok(out)
 }
 
 /// A float as USD text, at most 16 characters: the shortest text that
@@ -167,8 +169,8 @@ pub(super) fn materials(out: &mut String, colours: &[[u8; 4]]) {
 /// vertex normals (when the mesh has them), constant display colour and
 /// opacity, and, when `bind`, its colour's material bound (a prototype's
 /// mesh is bound by its instances instead: a binding may not reach out of
-/// a referenced layer).
-pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &Group, bind: bool) -> Result<(), ExportError> {
+/// a referenced layer). Keeps `pace` per index and vertex written.
+pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &Group, bind: bool, pace: &mut Pace<'_>) -> Result<(), ExportError> {
     let m = &mesh.mesh;
     let mut lo = [f32::INFINITY; 3];
     let mut hi = [f32::NEG_INFINITY; 3];
@@ -197,6 +199,7 @@ pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &
     }
     out.push_str("]\n        int[] faceVertexIndices = [");
     for (k, i) in group.indices.iter().enumerate() {
+        pace.step()?;
         if k > 0 {
             out.push_str(", ");
         }
@@ -208,11 +211,11 @@ pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &
     }
     if !m.normals.is_empty() {
         out.push_str("        normal3f[] normals = [");
-        list(out, &m.normals, &group.vertices, mesh)?;
+        list(out, &m.normals, &group.vertices, mesh, pace)?;
         out.push_str("] (\n            interpolation = \"vertex\"\n        )\n");
     }
     out.push_str("        point3f[] points = [");
-    list(out, &m.positions, &group.vertices, mesh)?;
+    list(out, &m.positions, &group.vertices, mesh, pace)?;
     out.push_str("]\n        color3f[] primvars:displayColor = [");
     triple(out, rgb(group.colour));
     out.push_str("] (\n            interpolation = \"constant\"\n        )\n");
@@ -226,8 +229,9 @@ pub(super) fn mesh_prim(out: &mut String, name: &str, mesh: &NamedMesh, group: &
 }
 
 /// Writes `values[v]` for each `v` of `vertices`, comma-separated.
-fn list(out: &mut String, values: &[[f32; 3]], vertices: &[u32], mesh: &NamedMesh) -> Result<(), ExportError> {
+fn list(out: &mut String, values: &[[f32; 3]], vertices: &[u32], mesh: &NamedMesh, pace: &mut Pace<'_>) -> Result<(), ExportError> {
     for (k, &v) in vertices.iter().enumerate() {
+        pace.step()?;
         if k > 0 {
             out.push_str(", ");
         }

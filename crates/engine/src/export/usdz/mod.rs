@@ -26,7 +26,7 @@ pub mod package;
 
 use crate::core::budget::Budget;
 use crate::export::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
-use crate::export::{ExportError, ExportMeta, ExportOptions, DEADLINE_EVERY};
+use crate::export::{ExportError, ExportMeta, ExportOptions};
 use crate::geom::NamedMesh;
 
 /// Bytes of USD text a triangle takes at most: its three indices (up to
@@ -92,7 +92,17 @@ pub fn write_usdz(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) 
     // three vertex references, with their hash-map entries.
     let group_bytes = t.saturating_mul(3 * (4 + 4 + 16));
     budget.reserve_memory(group_bytes)?;
-    let split: Vec<Vec<layer::Group>> = meshes.iter().map(|m| layer::groups(&m.mesh)).collect();
+    let split: Result<Vec<Vec<layer::Group>>, ExportError> = {
+        let mut pace = layer::Pace::new(budget);
+        meshes.iter().map(|m| layer::groups(&m.mesh, &mut pace)).collect()
+    };
+    let split = match split {
+        Ok(split) => split,
+        Err(e) => {
+            budget.release_memory(group_bytes);
+            return Err(e);
+        }
+    };
     let mut colours: Vec<[u8; 4]> = Vec::new();
     for g in split.iter().flatten() {
         if !colours.contains(&g.colour) {
@@ -118,21 +128,16 @@ pub fn write_usdz(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) 
 }
 
 /// The layer's text: header, materials (`colours`), and a prim per group of
-/// `split` (each mesh's colour groups), looking at the deadline every
-/// [`DEADLINE_EVERY`] triangles.
-fn write_text(meshes: &[NamedMesh], meta: &ExportMeta, split: &[Vec<layer::Group>], colours: &[[u8; 4]], capacity: u64, budget: &mut Budget) -> Result<String, ExportError> {
+/// `split` (each mesh's colour groups), looking at the deadline as it
+/// writes ([`layer::Pace`]).
+fn write_text(meshes: &[NamedMesh], meta: &ExportMeta, split: &[Vec<layer::Group>], colours: &[[u8; 4]], capacity: u64, budget: &Budget) -> Result<String, ExportError> {
     let mut text = String::with_capacity(usize::try_from(capacity).unwrap_or(usize::MAX).min(1 << 30));
     layer::header(&mut text, meta);
     layer::materials(&mut text, colours);
-    let mut written = 0usize;
+    let mut pace = layer::Pace::new(budget);
     for (k, (mesh, groups)) in meshes.iter().zip(split).enumerate() {
         for (j, group) in groups.iter().enumerate() {
-            layer::mesh_prim(&mut text, &format!("Mesh_{k}_{j}"), mesh, group, true)?;
-            let before = written / DEADLINE_EVERY;
-            written += group.indices.len() / 3;
-            if written / DEADLINE_EVERY != before {
-                budget.check_deadline()?;
-            }
+            layer::mesh_prim(&mut text, &format!("Mesh_{k}_{j}"), mesh, group, true, &mut pace)?;
         }
     }
     layer::footer(&mut text);
