@@ -25,7 +25,7 @@ pub fn weld_by<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: 
 /// [`weld_by`] that asks `stop` every [`STOP_EVERY`] points whether to give
 /// up (`None`): welding millions of corners takes longer than a request's
 /// deadline may allow.
-pub fn weld_by_until<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K, stop: &dyn Fn() -> bool) -> Option<(Vec<P>, Vec<u32>)> {
+pub(crate) fn weld_by_until<P: Copy, K: Hash + Eq>(points: impl IntoIterator<Item = P>, key: impl Fn(&P) -> K, stop: &dyn Fn() -> bool) -> Option<(Vec<P>, Vec<u32>)> {
     let (distinct, remap, stopped) = weld_while(points, key, stop);
     (!stopped).then_some((distinct, remap))
 }
@@ -58,7 +58,7 @@ pub fn f32_key(p: &[f32; 3]) -> [u32; 3] {
 
 /// The exact key of an f64 point, with −0 taken as +0 (so a coordinate
 /// computed as −0.0 welds with 0.0).
-pub fn f64_key(p: &[f64; 3]) -> [u64; 3] {
+pub(crate) fn f64_key(p: &[f64; 3]) -> [u64; 3] {
     p.map(|c| (c + 0.0).to_bits())
 }
 

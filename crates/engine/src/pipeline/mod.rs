@@ -38,7 +38,7 @@ pub use crate::core::timing::PhaseTimes;
 
 /// Under `on_limit: truncate`, the share of the deadline the front end may
 /// use: what it made by then is kept.
-pub const EVAL_SHARE: f64 = 0.5;
+pub(crate) const EVAL_SHARE: f64 = 0.5;
 
 /// Under `on_limit: truncate`, the share of the time left after the front
 /// end that meshing may use (keeping the meshes made by then); the rest is
@@ -47,7 +47,7 @@ pub const EVAL_SHARE: f64 = 0.5;
 /// an idle machine and more than 2× when other processes share the memory
 /// bandwidth (a third, the share before, then left too little and the
 /// answer was an empty model), so export gets four times meshing's share.
-pub const MESH_SHARE: f64 = 0.2;
+pub(crate) const MESH_SHARE: f64 = 0.2;
 
 /// Everything that determines a render besides the source text.
 #[derive(Debug, Clone, PartialEq)]
@@ -255,7 +255,7 @@ pub fn check_source_with(source: &[u8], files: &BTreeMap<String, Vec<u8>>, langu
 /// one check of a request's options, which [`render`] runs and the service
 /// runs too when it plans a request (so a batch is refused whole, before
 /// any member renders).
-pub fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
+pub(crate) fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
         return Err(RenderError::BadRequest(format!("detail must be in {}..={}, got {}", geom::MIN_DETAIL, geom::MAX_DETAIL, req.detail)));
     }

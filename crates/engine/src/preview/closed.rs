@@ -38,7 +38,7 @@ use crate::geom::Mesh;
 /// Whether `mesh` is closed and outward, so its triangles facing away from
 /// the camera can never be seen. A mesh with no triangles, or with an index
 /// out of range, is not.
-pub fn closed_outward(mesh: &Mesh) -> bool {
+pub(crate) fn closed_outward(mesh: &Mesh) -> bool {
     let key = |i: u32| mesh.positions.get(i as usize).map(|p| p.map(|c| (c + 0.0).to_bits()));
     let Some(origin) = mesh.positions.first().map(|p| p.map(f64::from)) else {
         return false;

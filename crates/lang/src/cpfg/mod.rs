@@ -19,7 +19,7 @@
 pub mod companions;
 pub mod derive;
 pub mod eval;
-pub mod func;
+pub(crate) mod func;
 pub mod lower;
 pub mod string;
 pub mod syntax;
@@ -42,7 +42,7 @@ fn with_ext<'a>(files: &'a BTreeMap<String, Vec<u8>>, ext: &str) -> Vec<(&'a Str
 
 /// The view of a request: its `.v`, `.a` and `.map` files (the first of
 /// each in name order; the CLI sends the main file's own), with warnings.
-pub fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnostic>) -> view::View {
+pub(crate) fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnostic>) -> view::View {
     let mut v = view::View::default();
     let pick = |ext: &str, warnings: &mut Vec<Diagnostic>| {
         let all = with_ext(files, ext);
@@ -71,7 +71,7 @@ pub fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnosti
 
 /// The macros cpfg predefines for a function gallery's names (`-DNAME=id`,
 /// `cpfg/generate.c`, `PreprocessLsystem`).
-pub fn predefined(view: &view::View) -> Vec<(String, String)> {
+pub(crate) fn predefined(view: &view::View) -> Vec<(String, String)> {
     if !view.gallery {
         return Vec::new();
     }

@@ -42,7 +42,7 @@ impl FrontEnd for Etol {
 /// Builds the model of an ETOL token stream (Haglund 2009, Appendix A): the
 /// stream is translated into an L-system, built by [`crate::lsystem::build_model`], and
 /// diagnostics are mapped back into the token stream.
-pub fn build_etol_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+pub(crate) fn build_etol_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
     let t = syntax::translate(source)?;
     match crate::lsystem::build_model(t.source.as_bytes(), req, budget, clock) {
         Ok(mut model) => {

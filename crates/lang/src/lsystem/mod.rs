@@ -30,7 +30,8 @@ use syntax as lang_ls;
 use crate::model::request::EXACT_UNION_MAX_TRIANGLES;
 use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, HierarchyUse, Model};
 
-pub use derive::{derive, Derivation, ModuleString};
+pub use derive::derive;
+pub(crate) use derive::ModuleString;
 
 /// Builds the model of L-system `source` under `budget`.
 ///

@@ -22,7 +22,7 @@ use std::io::Write as _;
 
 /// `3mf`: XML text (about 60 bytes a vertex, 45 a triangle) before
 /// compression.
-pub const THREEMF: FormatInfo = FormatInfo {
+pub(crate) const THREEMF: FormatInfo = FormatInfo {
     name: "3mf",
     extensions: &["3mf"],
     mime: "model/3mf",
@@ -47,7 +47,7 @@ const RELS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 
 /// The namespace of rulemesh's own `<metadata>` names (3MF requires names
 /// that are not the core specification's to be namespace-qualified).
-pub const PROVENANCE_NAMESPACE: &str = "https://rulemesh.dev/3mf/provenance";
+pub(crate) const PROVENANCE_NAMESPACE: &str = "https://rulemesh.dev/3mf/provenance";
 
 /// Escapes text for an XML attribute or element body.
 fn xml_escape(text: &str) -> String {
@@ -172,7 +172,7 @@ type Welded = (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>);
 
 /// Writes a 3MF package (with `provenance` as metadata when given),
 /// reserving its worst-case size first.
-pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     // 3MF shares vertices: the estimate counts the welded ones (a printed
     // solid's flat mesh has three positions per triangle, about six times
     // as many as it shares; counted unwelded, the Sierpinski bush's million

@@ -15,7 +15,8 @@ mod select;
 mod shapes;
 mod share;
 
-pub use evaluator::{evaluate, evaluate_hierarchy, promised_bytes, EvalOptions};
+pub use evaluator::{evaluate, evaluate_hierarchy, EvalOptions};
+pub(crate) use evaluator::promised_bytes;
 pub use params::bind_params;
 
 use crate::core::budget::Budget;
