@@ -192,8 +192,14 @@ pub(crate) const CLOSING_FRACTION: f64 = 0.01;
 /// largest model here that prints exactly is hogeweg's 50,208 triangles
 /// (1.1 s); the knot's, spiral-rings' and sic-lattice's 96,000 to 98,304
 /// took most of the deadline to come out not watertight, or ran past it,
-/// and fused they print in 2 to 9 s.
-pub const EXACT_MAX_TRIANGLES: usize = crate::model::request::EXACT_UNION_MAX_TRIANGLES as usize;
+/// and fused they print in 2 to 9 s. Above it a flat model is fused
+/// (sampled), so the pipeline keeps a language's own-geometry hierarchy for
+/// printing only above it (`Route::keeps_hierarchy`): an L-system's capped
+/// segments are then united exactly once per distinct subtree (the
+/// Sierpinski bush: one exact shell in about 5 s, where fusing cannot
+/// resolve its tubes within the limits); below, the turtle's mitred sweeps
+/// are united exactly, and the print is what it always was.
+pub const EXACT_MAX_TRIANGLES: usize = 64_000;
 
 /// The exact union of `pieces`, placed, if it is one watertight shell:
 /// snapped to a grid first (src/print/union.rs, `snap_grid`: parts that

@@ -31,7 +31,7 @@ use crate::core::PrimitiveKind;
 use crate::geom::{primitives, sweep};
 use crate::ir::ParamDecl;
 use crate::lsystem::turtle;
-use crate::model::{BuildError, BuildRequest, EvalError, HierarchyUse, Model};
+use crate::model::{BuildError, BuildRequest, EvalError, Model};
 use crate::{Diagnostic, FrontEnd, Language, ParseError, Span};
 use std::collections::BTreeMap;
 
@@ -103,7 +103,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     budget.release_memory(drawn.bytes());
     let shell = lower::shell(&view);
     let seed = req.seed.or(sys.seed.map(|s| s as u64)).unwrap_or(0);
-    let wants = matches!(req.hierarchy, HierarchyUse::Required | HierarchyUse::Preferred) && lowered.spheres.is_empty() && derived.truncated.is_none();
+    let wants = req.hierarchy && lowered.spheres.is_empty() && derived.truncated.is_none();
     if wants {
         let flat = crate::lsystem::dag::from_string(&shell, &lowered.string, budget)?;
         let h = crate::lsystem::instance::build(&shell, &flat, budget)?;
@@ -163,6 +163,10 @@ impl FrontEnd for Cpfg {
     /// A cpfg model's colour is part of each mesh it instances, as an L-system's.
     fn colours_per_instance(&self) -> bool {
         false
+    }
+    /// Its hierarchy is the L-systems' (capped segments; the turtle sweeps tubes).
+    fn own_hierarchy_geometry(&self) -> bool {
+        true
     }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         build_model(source, req, budget, clock)

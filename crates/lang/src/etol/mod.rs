@@ -34,6 +34,10 @@ impl FrontEnd for Etol {
     fn colours_per_instance(&self) -> bool {
         false
     }
+    /// The hierarchy's segments are capped cylinders; the turtle sweeps mitred tubes.
+    fn own_hierarchy_geometry(&self) -> bool {
+        true
+    }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         build_etol_model(source, req, budget, clock)
     }
