@@ -47,6 +47,23 @@ pub trait FrontEnd: Sync {
         false
     }
 
+    /// Whether a [`Hierarchy`](crate::model::Hierarchy) this front end builds
+    /// draws the model differently from its flat geometry (an L-system's
+    /// capped segments, where its turtle sweeps mitred tubes) instead of
+    /// sharing the flat model's subtrees (MDG's memoised derivations, the
+    /// default). It is the one thing beyond yes or no ([`BuildRequest::hierarchy`])
+    /// that decides when the pipeline asks for a hierarchy, because it
+    /// decides which geometry a format shows: such a language is asked only
+    /// where the format instances (glTF, usdz, `scene`, so each shows one
+    /// geometry whatever its options) and for printing where the union per
+    /// subtree is needed (the pipeline's `print::EXACT_MAX_TRIANGLES`); a
+    /// sharing language wherever a route takes a hierarchy without merging
+    /// it (`scene`, instancing, streamed strips, printing). A language that
+    /// builds no hierarchy ignores the question.
+    fn own_hierarchy_geometry(&self) -> bool {
+        false
+    }
+
     /// Whether the models this front end makes carry a 2D
     /// [`Drawing`](crate::model::Drawing) (Context Free's designs do): the
     /// capability `drawing`, which a format written from a drawing (`svg`)

@@ -10,7 +10,7 @@ use crate::expr::Expr;
 use crate::Span;
 
 /// Index of a rule group in [`Program::groups`].
-pub type GroupId = u32;
+pub(crate) type GroupId = u32;
 
 /// A whole parsed program, ready to be bound to parameters and evaluated.
 #[derive(Debug, Clone, PartialEq)]
@@ -144,7 +144,7 @@ pub enum Target {
 impl Program {
     /// A program that draws one mesh and nothing else: what the stacking
     /// string and UniGrafix front ends lower to.
-    pub fn single_mesh(mesh: MeshDecl, warnings: Vec<crate::Diagnostic>) -> Program {
+    pub(crate) fn single_mesh(mesh: MeshDecl, warnings: Vec<crate::Diagnostic>) -> Program {
         Program {
             start: Target::Mesh(0),
             groups: Vec::new(),
@@ -163,7 +163,7 @@ impl Program {
     /// runs. The evaluator gives a program that never does a neutral grey
     /// base colour instead of black (docs/mdg.md, "Colour"); alpha alone
     /// does not count, since translucent black is no more meant than black.
-    pub fn sets_colour(&self) -> bool {
+    pub(crate) fn sets_colour(&self) -> bool {
         let mut pending: Vec<&Item> = self.groups.iter().flat_map(|g| &g.rules).flat_map(|r| &r.body).collect();
         let rgb = |adjust: &[Adjust]| adjust.iter().any(|a| matches!(a.op, AdjustOp::Colour { channel: 0..=2, .. }));
         while let Some(item) = pending.pop() {

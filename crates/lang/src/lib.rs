@@ -21,7 +21,7 @@ pub use crate::core::diagnostic::{Diagnostic, ParseError, Severity, Span};
 pub use frontend::FrontEnd;
 
 pub mod expr;
-pub mod frontend;
+pub(crate) mod frontend;
 pub mod ir;
 pub mod model;
 

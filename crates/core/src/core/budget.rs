@@ -70,7 +70,7 @@ pub const PRINT_MAX_MEMORY: u64 = 640 * 1024 * 1024;
 /// because another print shares the cores. 30 s holds the heaviest library
 /// print beside another with room to spare, and a server's ceiling still
 /// clamps it (`RULEMESH_CEILING_TIMEOUT_MS`, 60 s by default).
-pub const PRINT_TIMEOUT_MS: u64 = 30_000;
+pub(crate) const PRINT_TIMEOUT_MS: u64 = 30_000;
 
 impl Limits {
     /// The defaults of a request: [`Limits::default`], with the memory
@@ -368,7 +368,7 @@ impl Budget {
 
     /// The most accounted memory held at once since the budget was made
     /// (a rewind does not lower it: the abandoned route's memory was held).
-    pub fn memory_peak(&self) -> u64 {
+    pub(crate) fn memory_peak(&self) -> u64 {
         self.memory_peak
     }
 

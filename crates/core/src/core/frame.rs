@@ -84,7 +84,7 @@ impl Frame {
     }
 
     /// Maps a local direction (no translation) to the parent space, scale included.
-    pub fn transform_vector(&self, v: DVec3) -> DVec3 {
+    pub(crate) fn transform_vector(&self, v: DVec3) -> DVec3 {
         self.sign() * self.scale * (self.rotation * v)
     }
 

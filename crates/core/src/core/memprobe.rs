@@ -20,13 +20,13 @@ fn enabled() -> bool {
 }
 
 /// A field of `/proc/self/status` in bytes (`VmRSS`, `VmHWM`); `None` without it.
-pub fn status_bytes(field: &str) -> Option<u64> {
+pub(crate) fn status_bytes(field: &str) -> Option<u64> {
     let text = std::fs::read_to_string("/proc/self/status").ok()?;
     parse_status(&text, field)
 }
 
 /// `field` of a `/proc/PID/status` text (given in kB there) in bytes.
-pub fn parse_status(text: &str, field: &str) -> Option<u64> {
+pub(crate) fn parse_status(text: &str, field: &str) -> Option<u64> {
     let line = text.lines().find(|l| l.strip_prefix(field).is_some_and(|r| r.starts_with(':')))?;
     let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kb.saturating_mul(1024))
@@ -34,7 +34,7 @@ pub fn parse_status(text: &str, field: &str) -> Option<u64> {
 
 /// Resets the kernel's resident high-water mark to the resident size now
 /// (writing 5 to `/proc/self/clear_refs`); false where that is not allowed.
-pub fn reset_peak() -> bool {
+pub(crate) fn reset_peak() -> bool {
     std::fs::write("/proc/self/clear_refs", "5").is_ok()
 }
 

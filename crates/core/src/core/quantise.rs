@@ -11,7 +11,7 @@
 /// is exact in f32, so comparing it with 0.5 rounds exactly as `round` does;
 /// the unit test checks every tie's neighbourhood and a sample of [0, 1].
 #[inline]
-pub fn unit_to_u8(c: f32) -> u8 {
+pub(crate) fn unit_to_u8(c: f32) -> u8 {
     let x = c.clamp(0.0, 1.0) * 255.0;
     // `as` saturates and maps NaN to 0, as `round() as u8` does.
     let t = x as u8;

@@ -37,7 +37,7 @@ pub struct Assembly {
 /// `triangles`: the corners (24 each), their weld map entries (key, id and
 /// the table's slack: about 40), the remap (4), the distinct positions
 /// (24 at most) and the triangles (12 each).
-pub fn expansion_bytes(corners: u64, triangles: u64) -> u64 {
+pub(crate) fn expansion_bytes(corners: u64, triangles: u64) -> u64 {
     corners.saturating_mul(24 + 40 + 4 + 24).saturating_add(triangles.saturating_mul(12))
 }
 

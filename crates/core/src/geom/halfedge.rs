@@ -79,7 +79,7 @@ pub struct HalfEdgeMesh {
 }
 
 /// Bytes a half-edge mesh of `v` vertices and `f` triangles holds (for the memory budget).
-pub fn halfedge_bytes(v: u64, f: u64) -> u64 {
+pub(crate) fn halfedge_bytes(v: u64, f: u64) -> u64 {
     v.saturating_mul(24 + 4).saturating_add(f.saturating_mul(12 + 12))
 }
 
@@ -93,7 +93,7 @@ impl HalfEdgeMesh {
     /// whether to give up ([`HalfEdgeError::Stopped`]): building the edge map
     /// of a mesh of millions of triangles takes seconds, longer than a
     /// request's deadline may allow.
-    pub fn new_until(positions: Vec<DVec3>, tris: Vec<[u32; 3]>, stop: &dyn Fn() -> bool) -> Result<HalfEdgeMesh, HalfEdgeError> {
+    pub(crate) fn new_until(positions: Vec<DVec3>, tris: Vec<[u32; 3]>, stop: &dyn Fn() -> bool) -> Result<HalfEdgeMesh, HalfEdgeError> {
         if tris.len() >= (u32::MAX / 3) as usize || positions.len() >= u32::MAX as usize {
             return Err(HalfEdgeError::TooLarge { triangles: tris.len() });
         }
@@ -168,12 +168,12 @@ impl HalfEdgeMesh {
     }
 
     /// Number of half-edges (three per triangle).
-    pub fn halfedge_count(&self) -> usize {
+    pub(crate) fn halfedge_count(&self) -> usize {
         self.pair.len()
     }
 
     /// Number of undirected edges (paired half-edges count once).
-    pub fn edge_count(&self) -> usize {
+    pub(crate) fn edge_count(&self) -> usize {
         self.pair.iter().enumerate().filter(|&(h, &p)| p == NO_PAIR || (h as u32) < p).count()
     }
 
@@ -218,7 +218,7 @@ impl HalfEdgeMesh {
     }
 
     /// One outgoing half-edge of vertex `v`, or [`NO_PAIR`] if no face uses it.
-    pub fn outgoing(&self, v: u32) -> u32 {
+    pub(crate) fn outgoing(&self, v: u32) -> u32 {
         self.out.get(v as usize).copied().unwrap_or(NO_PAIR)
     }
 
@@ -267,7 +267,7 @@ impl HalfEdgeMesh {
     }
 
     /// True when `v` lies on an open edge.
-    pub fn is_boundary_vertex(&self, v: u32) -> bool {
+    pub(crate) fn is_boundary_vertex(&self, v: u32) -> bool {
         let h = self.outgoing(v);
         h != NO_PAIR && self.pair(h) == NO_PAIR
     }
@@ -285,7 +285,7 @@ impl HalfEdgeMesh {
     }
 
     /// The unit normal of face `f` (zero for a zero-area face).
-    pub fn face_normal(&self, f: usize) -> DVec3 {
+    pub(crate) fn face_normal(&self, f: usize) -> DVec3 {
         let [a, b, c] = self.corners(f);
         (b - a).cross(c - a).normalize_or_zero()
     }
@@ -296,7 +296,7 @@ impl HalfEdgeMesh {
     }
 
     /// Area-weighted vertex normals (unit, or zero for an unused vertex).
-    pub fn vertex_normals(&self) -> Vec<DVec3> {
+    pub(crate) fn vertex_normals(&self) -> Vec<DVec3> {
         let mut n = vec![DVec3::ZERO; self.positions.len()];
         for (f, t) in self.tris.iter().enumerate() {
             let [a, b, c] = self.corners(f);
@@ -326,7 +326,8 @@ impl HalfEdgeMesh {
     /// Checks the structure's invariants (the ones every operator must keep on
     /// a closed mesh, after Haglund 2009 §2.1.1): every pair is
     /// mutual and joins the same two vertices reversed, and `next³` is the identity.
-    pub fn check_invariants(&self) -> bool {
+    #[cfg(test)]
+    pub(crate) fn check_invariants(&self) -> bool {
         (0..self.pair.len() as u32).all(|h| {
             let p = self.pair(h);
             let paired = p == NO_PAIR || (self.pair(p) == h && self.tail(p) == self.head(h) && self.head(p) == self.tail(h));
@@ -337,7 +338,7 @@ impl HalfEdgeMesh {
     /// A flat-shaded prototype: three vertices per face carrying the face
     /// normal, positions rounded to f32 once per vertex so shared corners stay
     /// bit-identical (welding by position closes it again).
-    pub fn to_prototype(&self) -> super::primitives::Prototype {
+    pub(crate) fn to_prototype(&self) -> super::primitives::Prototype {
         flat_prototype(&self.positions, &self.tris)
     }
 }
@@ -345,14 +346,14 @@ impl HalfEdgeMesh {
 /// A flat-shaded prototype of any indexed triangles (no manifold check: UniGrafix
 /// models may share edges between touching parts): three vertices per face
 /// with its normal, positions rounded to f32 once per source vertex.
-pub fn flat_prototype(positions: &[DVec3], tris: &[[u32; 3]]) -> super::primitives::Prototype {
+pub(crate) fn flat_prototype(positions: &[DVec3], tris: &[[u32; 3]]) -> super::primitives::Prototype {
     let never = || false;
     flat_prototype_until(positions, tris, &never).unwrap_or_default()
 }
 
 /// [`flat_prototype`] that asks `stop` every [`STOP_EVERY`] triangles
 /// whether to give up (`None`), for imported models of millions of faces.
-pub fn flat_prototype_until(positions: &[DVec3], tris: &[[u32; 3]], stop: &dyn Fn() -> bool) -> Option<super::primitives::Prototype> {
+pub(crate) fn flat_prototype_until(positions: &[DVec3], tris: &[[u32; 3]], stop: &dyn Fn() -> bool) -> Option<super::primitives::Prototype> {
     let pos32: Vec<[f32; 3]> = positions.iter().map(|p| p.as_vec3().to_array()).collect();
     let mut proto = super::primitives::Prototype {
         positions: Vec::with_capacity(tris.len() * 3),

@@ -16,7 +16,7 @@ use std::collections::HashSet;
 
 /// Why a point set has no 3D hull.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum HullError {
+pub(crate) enum HullError {
     /// A coordinate is NaN or infinite.
     #[error("point {0} has a non-finite coordinate")]
     NonFinite(usize),
@@ -50,7 +50,7 @@ fn face(p: &[DVec3], v: [u32; 3]) -> Face {
 /// The convex hull of `points` as a closed, outward-oriented triangle mesh
 /// whose vertices are the hull's corners (interior and duplicate points are
 /// dropped). Coplanar hull faces come out as several triangles.
-pub fn convex_hull(points: &[DVec3]) -> Result<HalfEdgeMesh, HullError> {
+pub(crate) fn convex_hull(points: &[DVec3]) -> Result<HalfEdgeMesh, HullError> {
     if let Some(i) = points.iter().position(|p| !p.is_finite()) {
         return Err(HullError::NonFinite(i));
     }

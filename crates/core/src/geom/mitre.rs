@@ -32,7 +32,7 @@ use glam::{DQuat, DVec3};
 /// The longest a mitre may stretch a ring, as a multiple of its radius (the
 /// SVG `stroke-miterlimit` default): a turn whose mitre would stretch more,
 /// that is cos(½ turn) < 1/4, is a break instead.
-pub const MITRE_LIMIT: f64 = 4.0;
+pub(crate) const MITRE_LIMIT: f64 = 4.0;
 
 /// How one ring is turned.
 #[derive(Debug, Clone, Copy, PartialEq)]

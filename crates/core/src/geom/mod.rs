@@ -5,7 +5,7 @@
 
 pub mod assembly;
 pub mod halfedge;
-pub mod hull;
+pub(crate) mod hull;
 pub mod isosurface;
 pub mod mesh;
 pub mod mitre;

@@ -26,7 +26,7 @@ pub fn bounds(meshes: &[NamedMesh]) -> Option<([f64; 3], [f64; 3])> {
 /// The map `p ↦ (p − centre) · scale` that [`fit_unit_box`] applies:
 /// the bounding box's centre and the inverse of its longest side (1 for a
 /// flat or empty model). `None` when the meshes have no finite bounds.
-pub fn unit_box_map(meshes: &[NamedMesh]) -> Option<([f64; 3], f64)> {
+pub(crate) fn unit_box_map(meshes: &[NamedMesh]) -> Option<([f64; 3], f64)> {
     let (lo, hi) = bounds(meshes)?;
     let centre = [0, 1, 2].map(|a| (lo[a] + hi[a]) * 0.5);
     let ext = (0..3).map(|a| hi[a] - lo[a]).fold(0.0f64, f64::max);

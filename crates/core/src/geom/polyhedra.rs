@@ -89,7 +89,7 @@ impl Solid {
     }
 
     /// Vertex and face counts of the polygon faces: (V, F).
-    pub fn polygon_counts(self) -> (u64, u64) {
+    pub(crate) fn polygon_counts(self) -> (u64, u64) {
         match self {
             Solid::TruncatedTetrahedron => (12, 8),
             Solid::Cuboctahedron => (12, 14),
@@ -273,7 +273,7 @@ fn unit(v: Vec<DVec3>) -> Vec<DVec3> {
 }
 
 /// Vertex and triangle counts of the geodesic sphere of frequency `n`: (10n² + 2, 20n²).
-pub fn geodesic_size(n: u32) -> (u64, u64) {
+pub(crate) fn geodesic_size(n: u32) -> (u64, u64) {
     let n = u64::from(n);
     (10u64.saturating_mul(n).saturating_mul(n).saturating_add(2), 20u64.saturating_mul(n).saturating_mul(n))
 }

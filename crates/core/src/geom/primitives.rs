@@ -34,9 +34,9 @@ pub struct Prototype {
 }
 
 /// Major radius of the torus (centre of the tube to the origin).
-pub const TORUS_MAJOR: f64 = 0.375;
+pub(crate) const TORUS_MAJOR: f64 = 0.375;
 /// Minor radius of the torus (radius of the tube).
-pub const TORUS_MINOR: f64 = 0.125;
+pub(crate) const TORUS_MINOR: f64 = 0.125;
 
 /// Clamps a detail to the accepted range, so the counting functions and the
 /// tessellator agree even when handed an out-of-range value.

@@ -58,7 +58,7 @@ pub fn f32_key(p: &[f32; 3]) -> [u32; 3] {
 
 /// The exact key of an f64 point, with −0 taken as +0 (so a coordinate
 /// computed as −0.0 welds with 0.0).
-pub fn f64_key(p: &[f64; 3]) -> [u64; 3] {
+pub(crate) fn f64_key(p: &[f64; 3]) -> [u64; 3] {
     p.map(|c| (c + 0.0).to_bits())
 }
 

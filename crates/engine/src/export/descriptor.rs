@@ -116,24 +116,24 @@ impl SizeBound {
 }
 
 /// Writes meshes (after meshing or printing) with the request's options.
-pub type WriteMeshes = fn(&[NamedMesh], &ExportMeta, &ExportOptions, &mut Budget) -> Result<Vec<u8>, ExportError>;
+pub(crate) type WriteMeshes = fn(&[NamedMesh], &ExportMeta, &ExportOptions, &mut Budget) -> Result<Vec<u8>, ExportError>;
 
 /// Encodes the preview stage's picture, with the model's provenance where
 /// the format has metadata.
-pub type EncodePicture = fn(&Image, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
+pub(crate) type EncodePicture = fn(&Image, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
 
 /// Writes the model as it was made — its flat scene, or its hierarchy when
 /// it has one — at a tessellation detail and mesh layout the reader
 /// applies; returns the bytes and the triangles a reader tessellates.
-pub type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
+pub(crate) type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
 
 /// Writes an object-instancing hierarchy as it was made (each leaf shape
 /// once, placed per leaf) at a tessellation detail, with the model's
 /// metadata.
-pub type WriteHierarchy = fn(&Hierarchy, u32, &ExportMeta, &mut Budget) -> Result<Vec<u8>, ExportError>;
+pub(crate) type WriteHierarchy = fn(&Hierarchy, u32, &ExportMeta, &mut Budget) -> Result<Vec<u8>, ExportError>;
 /// Writes the model's 2D drawing (a Context Free design's marks), with the
 /// model's provenance where the format has metadata.
-pub type WriteDrawing = fn(&Drawing, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
+pub(crate) type WriteDrawing = fn(&Drawing, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
 
 /// How a format is written: from what, by which function.
 #[derive(Debug, Clone, Copy)]

@@ -221,7 +221,7 @@ pub fn export_with(
 /// Why a format written from a 2D drawing (`svg`) cannot be written from
 /// `what` (a language's models, or meshes from outside a render): the
 /// message of the typed refusal, naming the capability that is missing.
-pub fn no_drawing(format: &str, what: &str) -> String {
+pub(crate) fn no_drawing(format: &str, what: &str) -> String {
     format!("the {format} format needs a 2D drawing (capability `drawing`), which only Context Free designs (language `cfdg`) have; {what} are 3D, with no drawing (`png` draws a picture of them)")
 }
 

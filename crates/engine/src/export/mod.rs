@@ -22,11 +22,14 @@ pub mod threemf;
 pub mod ug;
 pub mod usdz;
 
-pub use descriptor::{Capabilities, EncodePicture, FormatInfo, OptionGroup, SizeBound, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
-pub use formats::{estimated_size, export, export_with, no_drawing, Format, FORMATS};
-pub use gltf::compact::{parse_compression, Compression, GltfOptions};
-pub use provenance::Provenance;
-pub use strips::StripsOptions;
+pub use descriptor::{OptionGroup, Writer};
+pub(crate) use descriptor::{EncodePicture, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel};
+pub use formats::{estimated_size, export, export_with, Format, FORMATS};
+pub(crate) use formats::no_drawing;
+pub use gltf::compact::Compression;
+pub(crate) use gltf::compact::{parse_compression, GltfOptions};
+pub(crate) use provenance::Provenance;
+pub(crate) use strips::StripsOptions;
 
 use crate::core::budget::LimitExceeded;
 use crate::geom::NamedMesh;
@@ -62,7 +65,7 @@ pub(crate) type Welded = (Vec<[f32; 3]>, Vec<(usize, [u32; 3])>);
 /// `docs/benchmarks.md`, big flat outputs). The pipeline calls it between
 /// meshing and export for a format whose writer reads positions and
 /// indices only ([`Capabilities::positions_only`]).
-pub fn keep_positions_only(meshes: &mut [NamedMesh]) {
+pub(crate) fn keep_positions_only(meshes: &mut [NamedMesh]) {
     for m in meshes {
         m.mesh.normals = Vec::new();
         m.mesh.colours = Vec::new();

@@ -37,7 +37,7 @@ impl Provenance {
     /// The parameters as one compact JSON object (keys sorted), in ASCII:
     /// every character beyond it is a `\uXXXX` escape, so the text fits
     /// PNG's Latin-1 `tEXt` and STL-era readers alike.
-    pub fn params_json(&self) -> String {
+    pub(crate) fn params_json(&self) -> String {
         let text = self.params_value().to_string();
         let mut out = String::with_capacity(text.len());
         for c in text.chars() {

@@ -52,7 +52,7 @@ pub fn is_drawable(instance: &Instance) -> bool {
 ///
 /// Fails with a memory [`LimitExceeded`] before allocating a mesh that does
 /// not fit, or whose vertex count would not fit 32-bit indices.
-pub fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
+pub(crate) fn build_meshes(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
     Ok(build_meshes_until(scene, detail, layout, OnLimit::Error, budget)?.0)
 }
 
@@ -105,7 +105,7 @@ impl Cutoff {
 /// [`build_meshes`], stopping at the deadline: under `on_limit: truncate`
 /// the meshes made by then are kept and the deadline is returned as the
 /// reason they are partial; under `error` the deadline fails the call.
-pub fn build_meshes_until(
+pub(crate) fn build_meshes_until(
     scene: &Scene,
     detail: u32,
     layout: MeshLayout,
@@ -140,7 +140,7 @@ pub fn build_meshes_until(
 /// Meshes each bone's geometry in the bone's own coordinates and builds the
 /// node graph (bones, animation samples, camera) that places them, for the
 /// outputs that carry a node hierarchy.
-pub fn build_with_graph(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<(Vec<NamedMesh>, NodeGraph), LimitExceeded> {
+pub(crate) fn build_with_graph(scene: &Scene, detail: u32, layout: MeshLayout, budget: &mut Budget) -> Result<(Vec<NamedMesh>, NodeGraph), LimitExceeded> {
     let mut meshes = Vec::new();
     let mut bones = Vec::new();
     match &scene.rig {
@@ -165,7 +165,7 @@ pub fn build_with_graph(scene: &Scene, detail: u32, layout: MeshLayout, budget: 
 /// One mesh per placed part — every primitive instance, shape placement and
 /// swept line on its own, then the free vertices — for printable output, which must unite closed parts and so
 /// needs them apart: merged, touching parts weld into non-manifold clumps.
-pub fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
+pub(crate) fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
     let mut parts = Vec::new();
     let mut protos: Vec<Option<Prototype>> = vec![None; PrimitiveKind::ALL.len()];
     let placed = scene.shape_instances.iter().filter_map(|s| {
@@ -242,7 +242,7 @@ fn placed_shapes(scene: &Scene, budget: &mut Budget, cutoff: &mut Cutoff) -> Res
 /// the order and winding the grammar gave (a trailing one or two are dropped).
 /// Public so the scene writer (`export::scene`) ships the very mesh the
 /// flat formats write.
-pub fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
+pub(crate) fn free_triangles(vertices: &[FreeVertex], budget: &mut Budget) -> Result<Option<Mesh>, LimitExceeded> {
     let t = vertices.len() / 3;
     if t == 0 {
         return Ok(None);
@@ -358,7 +358,7 @@ fn build_affine_meshes(scene: &Scene, detail: u32, budget: &mut Budget, cutoff: 
 /// Appends `proto` transformed by `inst` to `mesh`. Public so the scene
 /// decoder (`decode::scene`) places primitives with the same arithmetic as
 /// the flat formats, triangle for triangle.
-pub fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
+pub(crate) fn append_instance(mesh: &mut Mesh, proto: &Prototype, inst: &Instance) {
     append_mapped(mesh, proto, instance_map(inst), inst.colour, inst.parity);
 }
 
@@ -369,7 +369,7 @@ fn instance_map(inst: &Instance) -> (Mat3, Mat3, Vec3) {
 
 /// Appends `proto` mapped by the affine `inst` to `mesh` (public for the
 /// scene decoder, like [`append_instance`]).
-pub fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
+pub(crate) fn append_affine(mesh: &mut Mesh, proto: &Prototype, inst: &AffineInstance) {
     append_mapped(mesh, proto, (inst.linear, inst.normal_matrix(), inst.translation), inst.colour, inst.parity());
 }
 

@@ -49,7 +49,7 @@ impl Piece<'_> {
 
 /// Appends a [`Piece::Placed`] to `mesh` as the mesher would (a
 /// [`Piece::Whole`] is appended as it is).
-pub fn append_piece(mesh: &mut Mesh, piece: &Piece<'_>) {
+pub(crate) fn append_piece(mesh: &mut Mesh, piece: &Piece<'_>) {
     match *piece {
         Piece::Placed { proto, map, colour, flip } => append_mapped(mesh, proto, map, colour, flip),
         Piece::Whole(m) => {
@@ -69,7 +69,7 @@ pub fn append_piece(mesh: &mut Mesh, piece: &Piece<'_>) {
 /// the walk then stops and the deadline is returned as the reason the model
 /// is partial; under `error` it fails. Swept lines are charged to `budget`
 /// as the mesher charges them; placed pieces are the caller's to account.
-pub fn for_each_piece<E: From<LimitExceeded>>(
+pub(crate) fn for_each_piece<E: From<LimitExceeded>>(
     scene: &Scene,
     hierarchy: Option<&Hierarchy>,
     detail: u32,

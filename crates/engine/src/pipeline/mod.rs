@@ -38,7 +38,7 @@ pub use crate::core::timing::PhaseTimes;
 
 /// Under `on_limit: truncate`, the share of the deadline the front end may
 /// use: what it made by then is kept.
-pub const EVAL_SHARE: f64 = 0.5;
+pub(crate) const EVAL_SHARE: f64 = 0.5;
 
 /// Under `on_limit: truncate`, the share of the time left after the front
 /// end that meshing may use (keeping the meshes made by then); the rest is
@@ -47,7 +47,7 @@ pub const EVAL_SHARE: f64 = 0.5;
 /// an idle machine and more than 2× when other processes share the memory
 /// bandwidth (a third, the share before, then left too little and the
 /// answer was an empty model), so export gets four times meshing's share.
-pub const MESH_SHARE: f64 = 0.2;
+pub(crate) const MESH_SHARE: f64 = 0.2;
 
 /// Everything that determines a render besides the source text.
 #[derive(Debug, Clone, PartialEq)]
@@ -255,7 +255,7 @@ pub fn check_source_with(source: &[u8], files: &BTreeMap<String, Vec<u8>>, langu
 /// one check of a request's options, which [`render`] runs and the service
 /// runs too when it plans a request (so a batch is refused whole, before
 /// any member renders).
-pub fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
+pub(crate) fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
         return Err(RenderError::BadRequest(format!("detail must be in {}..={}, got {}", geom::MIN_DETAIL, geom::MAX_DETAIL, req.detail)));
     }
@@ -355,13 +355,14 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     // so the memory limit binds (or truncates) as primitives are made.
     let overhead = export::estimated_size(req.format, 0, 0);
     budget.reserve_memory(overhead)?;
-    let build = BuildRequest {
+    let own = language.front_end().own_hierarchy_geometry();
+    let mut build = BuildRequest {
         seed: req.seed,
         params: &req.params,
         detail: req.detail,
         on_limit: req.on_limit,
         downstream: downstream(req, &route, overhead),
-        hierarchy: route.hierarchy(),
+        hierarchy: route.wants_hierarchy(own),
         animated: route.animated(),
         script_dir: req.script_dir.as_deref(),
         frame: req.frame,
@@ -371,7 +372,25 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     crate::core::memprobe::mark("start", &budget);
+    let start = budget.mark();
     let mut model = build_model(language, source, &build, &mut budget, &mut clock)?;
+    // A hierarchy is charged as the route writes it; one over a limit under
+    // `truncate`, or one the route does not keep, is given up (its charges
+    // refunded, the clock running on) for the flat model, which stops at the limit.
+    let keep = match &model.hierarchy {
+        None => true,
+        Some(h) => match route.charge_hierarchy(h, req.detail, &budget) {
+            Ok(()) => route.keeps_hierarchy(h, req.detail, own),
+            Err(_) if truncating => false,
+            Err(e) => return Err(e.into()),
+        },
+    };
+    if !keep {
+        drop(model);
+        budget.rewind(start);
+        build.hierarchy = false;
+        model = build_model(language, source, &build, &mut budget, &mut clock)?;
+    }
     clock.lap(Phase::Eval);
     crate::core::memprobe::mark("eval", &budget);
     budget.check_deadline().or_else(|e| truncate_or_fail(req.on_limit, e, &mut model))?;

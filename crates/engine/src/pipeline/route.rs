@@ -5,11 +5,14 @@
 //! a dozen places, and two of them could disagree).
 //!
 //! The front end is told only what the route needs from it
-//! ([`Route::hierarchy`], [`Route::animated`]), never the format.
+//! ([`Route::wants_hierarchy`]: a hierarchy or not; [`Route::animated`]),
+//! never the format; a hierarchy it builds is charged here, as the route
+//! writes it ([`Route::charge_hierarchy`]).
 
 use super::RenderRequest;
 use crate::export::{EncodePicture, Instancing, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
-use crate::model::HierarchyUse;
+use crate::core::budget::{Budget, Limit, LimitExceeded};
+use crate::model::Hierarchy;
 
 /// The way a model is written, chosen by [`Route::of`].
 #[derive(Debug, Clone, Copy)]
@@ -86,16 +89,56 @@ impl Route {
         }
     }
 
-    /// Whether the front end should build an instancing hierarchy, and how
-    /// the limits charge it (`HierarchyUse` documents each answer).
-    pub(crate) fn hierarchy(&self) -> HierarchyUse {
+    /// Whether the front end is asked for an instancing hierarchy
+    /// (`BuildRequest::hierarchy`). A language whose hierarchy shares its
+    /// flat model's subtrees (MDG) is asked wherever the route takes one
+    /// without merging it into one mesh: `scene` writes it as it is,
+    /// instancing writes each leaf shape once, streamed strips tessellate
+    /// leaf by leaf, printing unites once per distinct subtree. A language
+    /// whose hierarchy is its own geometry (`own`: L-systems' capped
+    /// segments, where the turtle sweeps mitred tubes) is asked by the
+    /// formats that instance (so glTF and usdz show one geometry whatever
+    /// their options) and by printing, which keeps it only where the exact
+    /// flat union is not tried ([`Route::keeps_hierarchy`]); not by the flat
+    /// formats, strips included.
+    pub(crate) fn wants_hierarchy(&self, own: bool) -> bool {
         match self {
-            Route::Model(_) => HierarchyUse::Required,
-            Route::Print { .. } => HierarchyUse::Union,
-            Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Flat { hierarchy: true, .. } => HierarchyUse::Preferred,
-            Route::StreamedStrips { .. } => HierarchyUse::Streamed,
-            Route::Flat { hierarchy: false, .. } | Route::Drawing(_) => HierarchyUse::Never,
+            Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Print { .. } => true,
+            Route::StreamedStrips { .. } => !own,
+            Route::Flat { hierarchy, .. } => *hierarchy && own,
+            Route::Drawing(_) => false,
         }
+    }
+
+    /// Charges a hierarchy the front end built as this route writes it,
+    /// before anything is written or expanded, so a limit is refused by
+    /// name before the output is allocated: `scene` its entries and leaf
+    /// shapes (nothing is tessellated); instancing one placement per leaf
+    /// and the triangles of one mesh per (shape, colour); every other route
+    /// (streamed strips, printing, whose fallback expands, the flat formats)
+    /// the expansion's leaves and triangles, as flat geometry.
+    pub(crate) fn charge_hierarchy(&self, h: &Hierarchy, detail: u32, budget: &Budget) -> Result<(), LimitExceeded> {
+        match self {
+            Route::Model(_) => budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64)),
+            Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } => {
+                budget.check_total(Limit::Primitives, h.leaves())?;
+                let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(detail))).fold(0u64, u64::saturating_add);
+                budget.check_total(Limit::Triangles, meshes)
+            }
+            _ => {
+                budget.check_total(Limit::Primitives, h.leaves())?;
+                budget.check_total(Limit::Triangles, h.triangles(detail))
+            }
+        }
+    }
+
+    /// Whether the route keeps a hierarchy it asked for: printing keeps an
+    /// own-geometry hierarchy only when its expansion has more triangles than
+    /// [`print::EXACT_MAX_TRIANGLES`](crate::print::EXACT_MAX_TRIANGLES);
+    /// below, the flat model (the turtle's mitred sweeps, which meet face to
+    /// face) is united exactly instead, so the model is built again flat.
+    pub(crate) fn keeps_hierarchy(&self, h: &Hierarchy, detail: u32, own: bool) -> bool {
+        !(own && matches!(self, Route::Print { .. }) && h.triangles(detail) <= crate::print::EXACT_MAX_TRIANGLES as u64)
     }
 
     /// Whether the output plays the model's animation and camera path in a

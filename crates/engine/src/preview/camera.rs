@@ -22,12 +22,12 @@ pub const FILL: f32 = 0.8;
 /// extent may be before the outliers are framed out. A tree whose canopy
 /// holds most vertices has a whole extent twice its core; the backdrops of
 /// Structure Synth's `RoundTree.es` and `Nabla.es` are 7 and 90 times.
-pub const OUTLIER_FACTOR: f32 = 4.0;
+pub(crate) const OUTLIER_FACTOR: f32 = 4.0;
 /// The margin added on each side of a core that is framed instead of the
 /// whole extent, as a share of the core's extent.
-pub const CORE_MARGIN: f32 = 0.1;
+pub(crate) const CORE_MARGIN: f32 = 0.1;
 /// The share of vertices on each side of the core (1 %).
-pub const TAIL: usize = 100;
+pub(crate) const TAIL: usize = 100;
 
 /// Where the camera is and how the picture plane maps to samples.
 #[derive(Debug, Clone, Copy, PartialEq)]

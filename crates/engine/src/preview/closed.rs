@@ -40,7 +40,7 @@ use crate::geom::{Mesh, STOP_EVERY};
 /// out of range, is not. `None` when `stop`, asked every
 /// [`STOP_EVERY`] triangles, said to give up (the deadline: one pass over
 /// millions of triangles is a quarter of a second).
-pub fn closed_outward_until(mesh: &Mesh, stop: &dyn Fn() -> bool) -> Option<bool> {
+pub(crate) fn closed_outward_until(mesh: &Mesh, stop: &dyn Fn() -> bool) -> Option<bool> {
     let key = |i: u32| mesh.positions.get(i as usize).map(|p| p.map(|c| (c + 0.0).to_bits()));
     let Some(origin) = mesh.positions.first().map(|p| p.map(f64::from)) else {
         return Some(false);

@@ -30,7 +30,7 @@ use zeno::{Command, Mask, Point};
 
 /// Bounding-box pixels per budget step (the 3D rasteriser charges 64
 /// samples per step; a mask pixel is one cell's work or less).
-pub const PIXELS_PER_STEP: u64 = 256;
+pub(crate) const PIXELS_PER_STEP: u64 = 256;
 
 /// Bytes per pixel: the premultiplied canvas, its straight-alpha copy, and
 /// at most one mask byte.

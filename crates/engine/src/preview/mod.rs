@@ -26,11 +26,11 @@ use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::NamedMesh;
 
 /// Smallest picture side, in pixels.
-pub const MIN_SIZE: u32 = 16;
+pub(crate) const MIN_SIZE: u32 = 16;
 /// Largest picture side, in pixels (2048² RGBA is 16 MiB, drawn in bands).
 pub const MAX_SIZE: u32 = 2048;
 /// The picture side when the request names none: a phone icon's.
-pub const DEFAULT_SIZE: u32 = 256;
+pub(crate) const DEFAULT_SIZE: u32 = 256;
 
 /// Where the camera looks from. All views are orthographic, with +Y up
 /// (glTF's convention, which every exporter writes).
@@ -123,7 +123,7 @@ pub fn parse_background(text: &str) -> Result<Option<[u8; 3]>, String> {
 }
 
 /// The spelling of a background in the cache key and docs: `transparent` or `#rrggbb`.
-pub fn background_name(bg: Option<[u8; 3]>) -> String {
+pub(crate) fn background_name(bg: Option<[u8; 3]>) -> String {
     match bg {
         None => "transparent".into(),
         Some([r, g, b]) => format!("#{r:02x}{g:02x}{b:02x}"),

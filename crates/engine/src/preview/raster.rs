@@ -26,20 +26,20 @@ use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh, STOP_EVERY};
 
 /// Fractional bits of a vertex's snapped sample position.
-pub const SUBPIXEL_BITS: u32 = 8;
+pub(crate) const SUBPIXEL_BITS: u32 = 8;
 const SUB: i64 = 1 << SUBPIXEL_BITS;
 /// Snapped coordinates are clamped to ±2^29 (2 million samples): edge
 /// functions then stay below 2^62 in `i64`. Only a vertex hundreds of
 /// pictures away is moved, which a framed-out backdrop can be.
 const COORD_LIMIT: i64 = 1 << 29;
 /// The depth of the farthest vertex (the nearest is 0).
-pub const Z_MAX: i64 = (1 << 24) - 1;
+pub(crate) const Z_MAX: i64 = (1 << 24) - 1;
 /// Fractional bits of the interpolated depth and colour.
 const ATTR_BITS: u32 = 16;
 /// Samples of colour and depth held at once (4 Mi × 8 bytes = 32 MiB).
-pub const BAND_SAMPLES: u64 = 1 << 22;
+pub(crate) const BAND_SAMPLES: u64 = 1 << 22;
 /// Bounding-box samples per budget step.
-pub const SAMPLES_PER_STEP: u64 = 64;
+pub(crate) const SAMPLES_PER_STEP: u64 = 64;
 /// Steps gathered before they are charged (and the deadline checked); a
 /// triangle of this many steps' samples or more is charged on its own.
 const CHARGE_EVERY: u64 = 4096;
@@ -68,7 +68,7 @@ fn triangles<'a>(mesh: &'a Mesh, verts: &'a [ScreenVertex]) -> impl Iterator<Ite
 /// Samples per pixel side: 4×4 up to 128 px (icons, where edges matter
 /// most), 2×2 above; both at least 4 samples a pixel, and at most 512² samples
 /// up to 256 px, which keeps a 100k-triangle preview within its time.
-pub fn samples_per_axis(size: u32) -> u32 {
+pub(crate) fn samples_per_axis(size: u32) -> u32 {
     if size <= 128 {
         4
     } else {

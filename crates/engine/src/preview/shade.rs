@@ -82,16 +82,16 @@ impl Lights {
 }
 
 /// Bits of the linear colour values the rasteriser interpolates and stores.
-pub const LINEAR_BITS: u32 = 10;
+pub(crate) const LINEAR_BITS: u32 = 10;
 /// The largest linear value (1.0).
-pub const LINEAR_MAX: i64 = (1 << LINEAR_BITS) - 1;
+pub(crate) const LINEAR_MAX: i64 = (1 << LINEAR_BITS) - 1;
 /// Entries of [`srgb_of_linear`]'s table: two more bits than the stored
 /// values, so averaging supersamples keeps some precision.
-pub const RESOLVE_STEPS: usize = 1 << (LINEAR_BITS + 2);
+pub(crate) const RESOLVE_STEPS: usize = 1 << (LINEAR_BITS + 2);
 
 /// The sRGB byte of a linear value in `0..RESOLVE_STEPS` (a table computed
 /// once with `libm`, so the same on every machine).
-pub fn srgb_of_linear(v: usize) -> u8 {
+pub(crate) fn srgb_of_linear(v: usize) -> u8 {
     static TABLE: OnceLock<Vec<u8>> = OnceLock::new();
     let t = TABLE.get_or_init(|| {
         (0..RESOLVE_STEPS)
@@ -106,7 +106,7 @@ pub fn srgb_of_linear(v: usize) -> u8 {
 }
 
 /// The linear value (`0..=LINEAR_MAX`) of an sRGB byte, for a background colour.
-pub fn linear_of_srgb(s: u8) -> i64 {
+pub(crate) fn linear_of_srgb(s: u8) -> i64 {
     let s = f64::from(s) / 255.0;
     let l = if s <= 0.040_45 { s / 12.92 } else { libm::pow((s + 0.055) / 1.055, 2.4) };
     (l * LINEAR_MAX as f64).round() as i64

@@ -29,7 +29,7 @@ use glam::DVec3;
 
 /// Samples the grid may have: about 8 million (a 203³ cube), some 150 MB
 /// of working arrays at most.
-pub const MAX_SAMPLES: usize = 1 << 23;
+pub(crate) const MAX_SAMPLES: usize = 1 << 23;
 
 /// Samples aimed at: the spacing is the closing radius's half, but no finer
 /// than this many samples over the box needs.
@@ -191,7 +191,7 @@ pub(super) fn fuse(parts: &[Piece<'_>], colours: &[Vec<[u8; 4]>], closing: f64, 
 /// sets it): plant-e's fused surface, 1,062,796 triangles, took the
 /// process from 82 to 563 MiB resident, 474 bytes a triangle; 540 bounds
 /// it (docs/print.md, "Memory"). It was 200 before issue 38.
-pub const SIMPLIFY_BYTES_PER_TRIANGLE: u64 = 540;
+pub(crate) const SIMPLIFY_BYTES_PER_TRIANGLE: u64 = 540;
 
 /// The surface (shared positions, CCW triangles) simplified by Manifold
 /// within `tolerance` (model units): marching tetrahedra cut every cell the

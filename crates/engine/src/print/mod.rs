@@ -24,9 +24,9 @@ mod tetra;
 pub mod thickness;
 mod union;
 
-pub use findings::{Finding, FindingCode};
-pub use profile::PrinterProfile;
-pub use report::{measure, PrintReport, PrintSummary, ProfileReport};
+pub(crate) use profile::PrinterProfile;
+pub use report::{measure, PrintSummary};
+pub(crate) use report::PrintReport;
 
 use crate::core::budget::{Budget, LimitExceeded};
 use crate::geom::{Mesh, NamedMesh};
@@ -49,11 +49,11 @@ pub struct PrintOptions {
 }
 
 /// The colour of a triangle whose mesh has none (linear RGBA8, light grey).
-pub const PLAIN: [u8; 4] = [200, 200, 200, 255];
+pub(crate) const PLAIN: [u8; 4] = [200, 200, 200, 255];
 
 /// The thickest wall an open surface is given, as a fraction of the model's
 /// longest side.
-pub const MAX_WALL_FRACTION: f64 = 0.05;
+pub(crate) const MAX_WALL_FRACTION: f64 = 0.05;
 
 /// Why no printable solid could be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -98,7 +98,7 @@ impl PrintError {
 }
 
 /// Reads a `size_mm` value into micrometres.
-pub fn size_um(size_mm: f64) -> Result<u32, PrintError> {
+pub(crate) fn size_um(size_mm: f64) -> Result<u32, PrintError> {
     if !(size_mm > 0.0 && size_mm <= 10_000.0) {
         return Err(PrintError::BadSize(size_mm));
     }
@@ -110,7 +110,7 @@ pub fn size_um(size_mm: f64) -> Result<u32, PrintError> {
 /// With `options.report`, also measures the walls and judges the result
 /// against the printer profile (the findings); without, the report is only
 /// the measurements the response headers need.
-pub fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
+pub(crate) fn make_printable(meshes: &[NamedMesh], options: &PrintOptions, budget: &mut Budget) -> Result<(Vec<NamedMesh>, PrintReport), PrintError> {
     options.profile.validate()?;
     let min_wall = options.profile.min_wall_mm();
     // Open surfaces become walls of the thinnest printable thickness at the
@@ -185,15 +185,21 @@ fn fused(pieces: &[union::Piece<'_>], colours: &[Vec<[u8; 4]>], extent: f64, sum
 /// model's longest side: a model printed at its own size (one unit a
 /// millimetre, often a few millimetres across) would otherwise have every
 /// gap under the printer's minimum wall closed, detail and all.
-pub const CLOSING_FRACTION: f64 = 0.01;
+pub(crate) const CLOSING_FRACTION: f64 = 0.01;
 
 /// Most triangles (over all parts) for which the exact union is tried
 /// before fusing. Its cost grows with the triangles that overlap: the
 /// largest model here that prints exactly is hogeweg's 50,208 triangles
 /// (1.1 s); the knot's, spiral-rings' and sic-lattice's 96,000 to 98,304
 /// took most of the deadline to come out not watertight, or ran past it,
-/// and fused they print in 2 to 9 s.
-pub const EXACT_MAX_TRIANGLES: usize = crate::model::request::EXACT_UNION_MAX_TRIANGLES as usize;
+/// and fused they print in 2 to 9 s. Above it a flat model is fused
+/// (sampled), so the pipeline keeps a language's own-geometry hierarchy for
+/// printing only above it (`Route::keeps_hierarchy`): an L-system's capped
+/// segments are then united exactly once per distinct subtree (the
+/// Sierpinski bush: one exact shell in about 5 s, where fusing cannot
+/// resolve its tubes within the limits); below, the turtle's mitred sweeps
+/// are united exactly, and the print is what it always was.
+pub const EXACT_MAX_TRIANGLES: usize = 64_000;
 
 /// The exact union of `pieces`, placed, if it is one watertight shell:
 /// snapped to a grid first (src/print/union.rs, `snap_grid`: parts that
@@ -340,7 +346,7 @@ struct Placed {
 /// with normal and colour per triangle). Measured (RULEMESH_MEMORY_TRACE):
 /// the Sierpinski bush's 1,007,446 triangles take 152 MiB over the union
 /// read back, 158 bytes a triangle; 200 bounds it (docs/print.md, "Memory").
-pub const FINISH_BYTES_PER_TRIANGLE: u64 = 200;
+pub(crate) const FINISH_BYTES_PER_TRIANGLE: u64 = 200;
 
 /// Places `united` as [`place`] does, after charging its finishing to
 /// `budget` (refused by the memory limit before anything is allocated).
@@ -405,7 +411,7 @@ fn collapse_short_edges(positions: Vec<[f32; 3]>, indices: &[u32], eps: f64) -> 
 
 /// Most volume a connected piece of the union may have, relative to the cube
 /// of its bounding box's diagonal, and still count as flat (no material).
-pub const FLAT_SHELL: f64 = 1e-6;
+pub(crate) const FLAT_SHELL: f64 = 1e-6;
 
 /// Drops the connected pieces of the mesh that enclose no volume: pairs of
 /// triangles back to back, or flat fans, that Manifold 3.5.4 leaves beside

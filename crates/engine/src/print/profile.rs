@@ -12,23 +12,23 @@ use serde::{Deserialize, Serialize};
 
 /// The thinnest wall or feature most FDM printers reproduce (a 0.4 mm
 /// nozzle's two perimeters), in micrometres: the default minimum.
-pub const DEFAULT_MIN_WALL_UM: u32 = 800;
+pub(crate) const DEFAULT_MIN_WALL_UM: u32 = 800;
 
 /// A common desktop printer's build volume (x, y, z) in micrometres
 /// (Prusa MK4 class: 250 × 210 × 210 mm).
-pub const DEFAULT_BUILD_UM: [u32; 3] = [250_000, 210_000, 210_000];
+pub(crate) const DEFAULT_BUILD_UM: [u32; 3] = [250_000, 210_000, 210_000];
 
 /// The polygon ceiling print services apply (Shapeways: one million).
-pub const DEFAULT_TRIANGLE_CEILING: u32 = 1_000_000;
+pub(crate) const DEFAULT_TRIANGLE_CEILING: u32 = 1_000_000;
 
 /// The largest minimum wall accepted (mm): anything thicker is not a printer.
-pub const MAX_MIN_WALL_MM: f64 = 100.0;
+pub(crate) const MAX_MIN_WALL_MM: f64 = 100.0;
 
 /// The largest build-volume side accepted (mm), as for `size_mm`.
-pub const MAX_BUILD_MM: f64 = 10_000.0;
+pub(crate) const MAX_BUILD_MM: f64 = 10_000.0;
 
 /// The largest triangle ceiling accepted.
-pub const MAX_TRIANGLE_CEILING: u64 = 100_000_000;
+pub(crate) const MAX_TRIANGLE_CEILING: u64 = 100_000_000;
 
 /// What the printer can make. Part of [`PrintOptions`](super::PrintOptions)
 /// and so of the cache key (only when it differs from the default, so
@@ -54,7 +54,7 @@ impl PrinterProfile {
     /// The profile a request names, each value checked: `None` keeps the
     /// default. The minimum wall is in (0, 100] mm, each build side in
     /// (0, 10 000] mm, the ceiling in 1..=10⁸ triangles.
-    pub fn from_request(min_wall_mm: Option<f64>, build_volume_mm: Option<&[f64]>, triangle_ceiling: Option<u64>) -> Result<Self, PrintError> {
+    pub(crate) fn from_request(min_wall_mm: Option<f64>, build_volume_mm: Option<&[f64]>, triangle_ceiling: Option<u64>) -> Result<Self, PrintError> {
         let mut p = PrinterProfile::default();
         if let Some(mm) = min_wall_mm {
             if !(mm > 0.0 && mm <= MAX_MIN_WALL_MM) {
@@ -93,7 +93,7 @@ impl PrinterProfile {
     }
 
     /// The build volume in millimetres.
-    pub fn build_mm(&self) -> [f64; 3] {
+    pub(crate) fn build_mm(&self) -> [f64; 3] {
         self.build_um.map(|v| f64::from(v) / 1000.0)
     }
 }
@@ -101,7 +101,7 @@ impl PrinterProfile {
 /// Reads a build volume written `XxYxZ` or `X,Y,Z` (millimetres), as the
 /// CLI's `--build-volume-mm` and the models route's query take it. Range
 /// checks are [`PrinterProfile::from_request`]'s.
-pub fn parse_build_volume(text: &str) -> Result<Vec<f64>, PrintError> {
+pub(crate) fn parse_build_volume(text: &str) -> Result<Vec<f64>, PrintError> {
     text.split(['x', 'X', ','])
         .map(|s| s.trim().parse::<f64>().map_err(|_| PrintError::BadBuildVolume(format!("`{text}`: expected three millimetre sizes, as 250x210x210"))))
         .collect()

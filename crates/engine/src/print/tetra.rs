@@ -112,7 +112,7 @@ pub(super) fn surface(values: &[f32], grid: &Grid, budget: &mut Budget) -> Resul
 /// copy Manifold imports (12), about two triangles' indices (24), and its
 /// share of the two layers' edge map; a marching-tetrahedra surface has
 /// about two triangles per vertex (plant-e's: 1,062,796 triangles).
-pub const SURFACE_BYTES_PER_VERTEX: u64 = 80;
+pub(crate) const SURFACE_BYTES_PER_VERTEX: u64 = 80;
 
 /// Vertices charged at a time.
 const CHARGE_STEP: u64 = 16_384;

@@ -28,11 +28,11 @@ use glam::DVec3;
 /// Most rays cast: above this many triangles, an evenly spaced sample of
 /// them (every k-th, deterministic) is measured, each standing for k
 /// triangles' area. 20,000 rays take a few hundredths of a second.
-pub const MAX_RAYS: usize = 20_000;
+pub(crate) const MAX_RAYS: usize = 20_000;
 
 /// The thinnest place found and how the measurement went.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Walls {
+pub(crate) struct Walls {
     /// The thinnest wall over at least `min_wall²` of surface (mm, see the
     /// module's comment) and where it starts on the surface (the centre of
     /// the triangle the ray left from, mm); `None` when no ray found the
@@ -52,7 +52,7 @@ pub struct Walls {
 /// one per ray (the search is a few microseconds a ray, far cheaper per
 /// step than the union it follows), checks the deadline every 1,024 rays,
 /// and reserves the hierarchy's memory while it works.
-pub fn measure_walls(positions: &[[f32; 3]], indices: &[u32], min_wall: f64, budget: &mut Budget) -> Result<Walls, LimitExceeded> {
+pub(crate) fn measure_walls(positions: &[[f32; 3]], indices: &[u32], min_wall: f64, budget: &mut Budget) -> Result<Walls, LimitExceeded> {
     let at = |i: u32| positions.get(i as usize).map_or(DVec3::ZERO, |p| DVec3::from_array(p.map(f64::from)));
     let corners: Vec<[u32; 3]> = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
     let tris: Vec<[DVec3; 3]> = corners.iter().map(|t| t.map(at)).collect();

@@ -38,7 +38,7 @@ pub(super) struct Parts {
 /// Most triangles of open or non-manifold parts that are thickened into
 /// walls (each becomes a prism of its own for the union, eight triangles):
 /// a surface of 10⁵ free triangles must not make a union of 10⁵ prisms.
-pub const MAX_THICKENED_TRIANGLES: usize = 5_000;
+pub(crate) const MAX_THICKENED_TRIANGLES: usize = 5_000;
 
 /// Welds each mesh by exact position (never across meshes: touching parts
 /// must stay apart) and splits its triangles into connected components, each
@@ -167,7 +167,7 @@ fn prism(t: &[DVec3; 3], wall: f64) -> Option<HalfEdgeMesh> {
 /// Bits of precision a part's coordinates keep below the largest coordinate
 /// of the model: coordinates are snapped to a grid of `2^(e - SNAP_BITS)`,
 /// where `2^e` bounds every coordinate (about a millionth of the model).
-pub const SNAP_BITS: i32 = 20;
+pub(crate) const SNAP_BITS: i32 = 20;
 
 /// The snapping grid of `parts`: a power of two such that every coordinate
 /// is less than `2^SNAP_BITS` steps from the origin (so a snapped coordinate

@@ -11,7 +11,7 @@ pub type Reader<'a> = dyn Fn(&str) -> Option<Vec<u8>> + 'a;
 
 /// Whether `name` is a plain file name (no folder, no `..`), the only
 /// names a companion may have.
-pub fn plain_name(name: &str) -> bool {
+pub(crate) fn plain_name(name: &str) -> bool {
     !name.is_empty() && !name.contains(['/', '\\']) && name != "." && name != ".."
 }
 

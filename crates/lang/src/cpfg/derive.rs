@@ -36,7 +36,7 @@ impl Ctx<'_> {
 }
 
 /// A derivation in progress: the machine and the system.
-pub struct Deriver<'a> {
+pub(crate) struct Deriver<'a> {
     sys: &'a Cpfg,
     /// Globals, arrays and random streams.
     pub machine: Machine,
@@ -44,11 +44,9 @@ pub struct Deriver<'a> {
 }
 
 /// The derived string, with the machine after it and the limit that cut it short.
-pub struct Derived {
+pub(crate) struct Derived {
     /// The string after the last step.
     pub string: CString,
-    /// Steps completed.
-    pub steps: u32,
     /// Set when a limit stopped the derivation (`on_limit: truncate`).
     pub truncated: Option<LimitExceeded>,
 }
@@ -100,7 +98,6 @@ impl<'a> Deriver<'a> {
         if let Some(v) = queries {
             super::lower::fill_queries(&mut cur, v, budget)?;
         }
-        let mut done = 0;
         let mut truncated = None;
         let mut locals = vec![0.0; self.sys.block_locals as usize];
         for _ in 0..steps {
@@ -120,13 +117,12 @@ impl<'a> Deriver<'a> {
                 }
                 Err(e) => return Err(e),
             }
-            done += 1;
             self.machine.run(&self.sys.end_each, &mut locals, budget)?;
         }
         if truncated.is_none() {
             self.machine.run(&self.sys.end, &mut locals, budget)?;
         }
-        Ok(Derived { string: cur, steps: done, truncated })
+        Ok(Derived { string: cur, truncated })
     }
 
     /// One derivation step.

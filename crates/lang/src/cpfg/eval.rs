@@ -20,7 +20,7 @@ use crate::model::EvalError;
 /// production choice and `ran`/`nran`; `next` is X / 2⁴⁸ as glibc's
 /// `erand48` builds it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Rand48 {
+pub(crate) struct Rand48 {
     x: u64,
 }
 
@@ -28,7 +28,7 @@ const MASK48: u64 = (1 << 48) - 1;
 
 impl Rand48 {
     /// The state of `seed48({s0, s1, s2})` or of an `erand48` buffer.
-    pub fn from_words(w: [u16; 3]) -> Rand48 {
+    pub(crate) fn from_words(w: [u16; 3]) -> Rand48 {
         Rand48 { x: u64::from(w[0]) | u64::from(w[1]) << 16 | u64::from(w[2]) << 32 }
     }
 
@@ -39,7 +39,7 @@ impl Rand48 {
 
     /// The state of cpfg's production choice after `seed: s` (`cpfg/control.c`:
     /// `seed48({seed, 0, 155})` when the seed is not 0).
-    pub fn cpfg_choice(seed: i64) -> Rand48 {
+    pub(crate) fn cpfg_choice(seed: i64) -> Rand48 {
         if seed as u16 == 0 {
             return Rand48::unseeded();
         }
@@ -47,7 +47,7 @@ impl Rand48 {
     }
 
     /// The state `srand(a)` gives `main_xsubi` (`cpfg/utility.c`, `Do_srand`).
-    pub fn cpfg_srand(a: i64) -> Rand48 {
+    pub(crate) fn cpfg_srand(a: i64) -> Rand48 {
         Rand48::from_words([0x330E, (a & 0xFFFF) as u16, ((a >> 16) & 0xFFFF) as u16])
     }
 
@@ -60,7 +60,7 @@ impl Rand48 {
 
 /// The state blocks and productions work on: globals, arrays and the random streams.
 #[derive(Debug, Clone)]
-pub struct Machine {
+pub(crate) struct Machine {
     /// Global variables.
     pub globals: Vec<f64>,
     /// Global arrays, row-major, with their dimensions.

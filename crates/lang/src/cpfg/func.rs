@@ -7,7 +7,7 @@
 //! samples precomputed and interpolated linearly.
 
 /// Most control points or samples accepted from one file.
-pub const MAX_POINTS: usize = 10_000;
+pub(crate) const MAX_POINTS: usize = 10_000;
 
 /// One function.
 #[derive(Debug, Clone, PartialEq)]
@@ -157,12 +157,12 @@ fn read_one<'a>(lines: &mut impl Iterator<Item = &'a str>, samples: usize) -> Re
 }
 
 /// A `.func` file.
-pub fn read_function(text: &str, samples: usize) -> Result<Function, String> {
+pub(crate) fn read_function(text: &str, samples: usize) -> Result<Function, String> {
     read_one(&mut text.lines().filter(|l| !l.trim().is_empty()), samples)
 }
 
 /// A function gallery (`.fset`): `funcgalleryver`, `items: n`, then the functions.
-pub fn read_set(text: &str) -> Result<Vec<Function>, String> {
+pub(crate) fn read_set(text: &str) -> Result<Vec<Function>, String> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
     lines.next();
     let items: usize = field(lines.next(), "items:")?.parse().map_err(|_| "bad items:")?;

@@ -122,7 +122,7 @@ pub fn lower(s: &CString, view: &View, budget: &mut Budget) -> Result<Lowered, E
 }
 
 /// Pixels across the largest extent of a drawing with pixel lines.
-pub const PIXELS_ACROSS: f64 = 250.0;
+pub(crate) const PIXELS_ACROSS: f64 = 250.0;
 
 /// One walk: the lowered string and the largest extent of the positions visited.
 fn walk(s: &CString, view: &View, width_unit: f64, budget: &mut Budget) -> Result<(Lowered, f64), EvalError> {
@@ -288,14 +288,14 @@ fn walk(s: &CString, view: &View, width_unit: f64, budget: &mut Budget) -> Resul
 
 /// Whether `sys` queries the turtle, so every step is followed by an
 /// interpretation that fills the queries in (manual §6.9).
-pub fn has_queries(sys: &super::syntax::Cpfg) -> bool {
+pub(crate) fn has_queries(sys: &super::syntax::Cpfg) -> bool {
     let q = |m: &[super::syntax::Module]| m.windows(2).any(|w| w[0].sym == '?' && w[0].args.is_empty() && "PHUL".contains(w[1].sym));
     q(&sys.axiom) || sys.productions.iter().any(|p| q(&p.succ))
 }
 
 /// Writes into every query module of `s` what the turtle sees there: the
 /// first parameters get x, y (and z); extra parameters are kept.
-pub fn fill_queries(s: &mut CString, view: &View, budget: &mut Budget) -> Result<(), EvalError> {
+pub(crate) fn fill_queries(s: &mut CString, view: &View, budget: &mut Budget) -> Result<(), EvalError> {
     let l = lower(s, view, budget)?;
     budget.release_memory(8 * l.string.syms.len() as u64 + 8 * l.string.params.len() as u64);
     for (i, v) in l.queries {

@@ -19,7 +19,7 @@
 pub mod companions;
 pub mod derive;
 pub mod eval;
-pub mod func;
+pub(crate) mod func;
 pub mod lower;
 pub mod string;
 pub mod syntax;
@@ -31,7 +31,7 @@ use crate::core::PrimitiveKind;
 use crate::geom::{primitives, sweep};
 use crate::ir::ParamDecl;
 use crate::lsystem::turtle;
-use crate::model::{BuildError, BuildRequest, EvalError, HierarchyUse, Model};
+use crate::model::{BuildError, BuildRequest, EvalError, Model};
 use crate::{Diagnostic, FrontEnd, Language, ParseError, Span};
 use std::collections::BTreeMap;
 
@@ -42,7 +42,7 @@ fn with_ext<'a>(files: &'a BTreeMap<String, Vec<u8>>, ext: &str) -> Vec<(&'a Str
 
 /// The view of a request: its `.v`, `.a` and `.map` files (the first of
 /// each in name order; the CLI sends the main file's own), with warnings.
-pub fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnostic>) -> view::View {
+pub(crate) fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnostic>) -> view::View {
     let mut v = view::View::default();
     let pick = |ext: &str, warnings: &mut Vec<Diagnostic>| {
         let all = with_ext(files, ext);
@@ -71,7 +71,7 @@ pub fn read_view(files: &BTreeMap<String, Vec<u8>>, warnings: &mut Vec<Diagnosti
 
 /// The macros cpfg predefines for a function gallery's names (`-DNAME=id`,
 /// `cpfg/generate.c`, `PreprocessLsystem`).
-pub fn predefined(view: &view::View) -> Vec<(String, String)> {
+pub(crate) fn predefined(view: &view::View) -> Vec<(String, String)> {
     if !view.gallery {
         return Vec::new();
     }
@@ -114,7 +114,7 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
     budget.release_memory(drawn.bytes());
     let shell = lower::shell(&view);
     let seed = req.seed.or(sys.seed.map(|s| s as u64)).unwrap_or(0);
-    let wants = matches!(req.hierarchy, HierarchyUse::Required | HierarchyUse::Preferred) && lowered.spheres.is_empty() && derived.truncated.is_none();
+    let wants = req.hierarchy && lowered.spheres.is_empty() && derived.truncated.is_none();
     if wants {
         let flat = crate::lsystem::dag::from_string(&shell, &lowered.string, budget)?;
         let h = crate::lsystem::instance::build(&shell, &flat, budget)?;
@@ -174,6 +174,10 @@ impl FrontEnd for Cpfg {
     /// A cpfg model's colour is part of each mesh it instances, as an L-system's.
     fn colours_per_instance(&self) -> bool {
         false
+    }
+    /// Its hierarchy is the L-systems' (capped segments; the turtle sweeps tubes).
+    fn own_hierarchy_geometry(&self) -> bool {
+        true
     }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         build_model(source, req, budget, clock)

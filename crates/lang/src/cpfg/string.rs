@@ -17,9 +17,9 @@ pub struct CString {
 }
 
 /// Bytes accounted per module and per parameter.
-pub const MODULE_BYTES: u64 = 8;
+pub(crate) const MODULE_BYTES: u64 = 8;
 /// Bytes accounted per parameter.
-pub const PARAM_BYTES: u64 = 8;
+pub(crate) const PARAM_BYTES: u64 = 8;
 
 impl CString {
     /// An empty string.
@@ -38,7 +38,7 @@ impl CString {
     }
 
     /// Parameters of module `i`.
-    pub fn params_of(&self, i: usize) -> &[f64] {
+    pub(crate) fn params_of(&self, i: usize) -> &[f64] {
         &self.params[self.starts[i] as usize..self.starts[i + 1] as usize]
     }
 
@@ -77,7 +77,7 @@ impl CString {
     }
 
     /// For every `[` the index of its `]` and back; `usize::MAX` when unmatched.
-    pub fn partners(&self) -> Vec<usize> {
+    pub(crate) fn partners(&self) -> Vec<usize> {
         let mut p = vec![usize::MAX; self.len()];
         let mut stack = Vec::new();
         for (i, &s) in self.syms.iter().enumerate() {

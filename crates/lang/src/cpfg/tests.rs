@@ -9,7 +9,7 @@ use super::derive::Deriver;
 use super::syntax::parse_with;
 use crate::core::budget::{Budget, Limit, Limits, OnLimit};
 use crate::core::timing::StageClock;
-use crate::model::{BuildError, BuildRequest, Downstream, EvalError, HierarchyUse, Model};
+use crate::model::{BuildError, BuildRequest, Downstream, EvalError, Model};
 use std::collections::BTreeMap;
 
 fn derive_text(src: &str, seed: Option<u64>) -> String {
@@ -28,7 +28,7 @@ fn build(front: &dyn crate::FrontEnd, src: &str, files: &BTreeMap<String, Vec<u8
         detail: 8,
         on_limit: OnLimit::Error,
         downstream: Downstream::default(),
-        hierarchy: HierarchyUse::Never,
+        hierarchy: false,
         animated: false,
         script_dir: None,
         frame: None,

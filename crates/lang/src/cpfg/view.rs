@@ -20,7 +20,7 @@ pub enum LineStyle {
 
 /// World units per pixel of width when lines are pixels, before the
 /// drawing's extent is known (`lower` then takes a pixel as a fraction of it).
-pub const PIXEL: f64 = 0.05;
+pub(crate) const PIXEL: f64 = 0.05;
 
 /// What the view, animation and colour map files say.
 #[derive(Debug, Clone, PartialEq)]
@@ -188,7 +188,7 @@ impl View {
     /// Any positive count a `u32` holds is kept, however large, as the
     /// L-system's own `derivation length:` is: the step budget, not this
     /// reader, refuses a derivation too long to run.
-    pub fn read_animation(&mut self, text: &str) {
+    pub(crate) fn read_animation(&mut self, text: &str) {
         for line in uncomment(text).lines() {
             if let Some((cmd, rest)) = line.split_once(':') {
                 if cmd.trim().eq_ignore_ascii_case("last frame") {
@@ -201,7 +201,7 @@ impl View {
     }
 
     /// Reads a colour map: 256 entries of 3 bytes (palette's `.map`).
-    pub fn read_map(&mut self, bytes: &[u8]) {
+    pub(crate) fn read_map(&mut self, bytes: &[u8]) {
         if bytes.len() >= 768 {
             self.palette = Some(bytes[..768].chunks(3).map(|c| [c[0] as f64 / 255.0, c[1] as f64 / 255.0, c[2] as f64 / 255.0]).collect());
         }

@@ -35,13 +35,12 @@ use crate::model::EvalError;
 use glam::{DMat4, DVec3};
 
 /// Structure Synth's default `maxdepth` (generations; Builder.cpp:22).
-pub const DEFAULT_MAX_GENERATIONS: i64 = 1000;
+pub(crate) const DEFAULT_MAX_GENERATIONS: i64 = 1000;
 /// Structure Synth's default `maxobjects` (Builder.cpp:23).
-pub const DEFAULT_MAX_OBJECTS: i64 = 100_000;
+pub(crate) const DEFAULT_MAX_OBJECTS: i64 = 100_000;
 /// Default half-thickness of `line`, `grid` and `dot` solids, in units of the local frame.
 pub const DEFAULT_LINE_RADIUS: f64 = 0.01;
 
-pub use super::view::{DEFAULT_PERSPECTIVE_ANGLE, DEFAULT_VIEW_TRANSLATION};
 
 /// What the builder needs besides the script.
 #[derive(Debug, Clone, Copy, PartialEq)]

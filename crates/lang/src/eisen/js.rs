@@ -32,11 +32,11 @@ use std::rc::Rc;
 
 /// Budget steps charged each time QuickJS polls the interrupt handler; QuickJS
 /// polls once every 10 000 loop iterations or calls (its `JS_INTERRUPT_COUNTER_INIT`).
-pub const JS_STEPS_PER_POLL: u64 = 10_000;
+pub(crate) const JS_STEPS_PER_POLL: u64 = 10_000;
 
 /// The interpreter's stack limit in bytes: deep JavaScript recursion ends in
 /// a `RangeError` long before it could overflow a 2 MiB thread stack.
-pub const JS_STACK_BYTES: usize = 256 * 1024;
+pub(crate) const JS_STACK_BYTES: usize = 256 * 1024;
 
 /// Most warnings kept from one script (`Debug.Info` in a loop must not grow without bound).
 const MAX_WARNINGS: usize = 100;

@@ -74,7 +74,7 @@ fn bind(script_params: &[lang_es::GuiParam], given: &BTreeMap<String, ParamValue
 }
 
 /// Parses `source` with the request's parameters bound to its GUI defines.
-pub fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u64) -> Result<(Script, f64), BuildError> {
+pub(crate) fn parse_bound(source: &[u8], params: &BTreeMap<String, ParamValue>, seed: u64) -> Result<(Script, f64), BuildError> {
     // The defines are only known after a first parse; request values then
     // replace their defaults in a second one.
     let first = lang_es::parse(source, &ParseOptions { params: BTreeMap::new(), seed })?;

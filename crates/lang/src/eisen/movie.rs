@@ -29,7 +29,7 @@ use js::Loader;
 use super::js;
 
 /// Frames per second of a movie: one frame per picture the script saved.
-pub const MOVIE_FPS: f64 = 30.0;
+pub(crate) const MOVIE_FPS: f64 = 30.0;
 
 /// Builds the model of the JavaScript script `source` under `budget`.
 pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {

@@ -7,9 +7,9 @@ use crate::model::Camera;
 use glam::{DMat3, DVec3};
 
 /// Structure Synth's default view: the model 20 units in front of the eye.
-pub const DEFAULT_VIEW_TRANSLATION: [f64; 3] = [0.0, 0.0, -20.0];
+pub(crate) const DEFAULT_VIEW_TRANSLATION: [f64; 3] = [0.0, 0.0, -20.0];
 /// Structure Synth's default vertical field of view, degrees.
-pub const DEFAULT_PERSPECTIVE_ANGLE: f64 = 22.0;
+pub(crate) const DEFAULT_PERSPECTIVE_ANGLE: f64 = 22.0;
 
 /// The viewer settings seen so far: Structure Synth's view maps a world
 /// point p to `translation + rotation · (scale · (p − pivot))`, the eye at

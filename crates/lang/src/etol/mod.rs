@@ -34,6 +34,10 @@ impl FrontEnd for Etol {
     fn colours_per_instance(&self) -> bool {
         false
     }
+    /// The hierarchy's segments are capped cylinders; the turtle sweeps mitred tubes.
+    fn own_hierarchy_geometry(&self) -> bool {
+        true
+    }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         build_etol_model(source, req, budget, clock)
     }
@@ -42,7 +46,7 @@ impl FrontEnd for Etol {
 /// Builds the model of an ETOL token stream (Haglund 2009, Appendix A): the
 /// stream is translated into an L-system, built by [`crate::lsystem::build_model`], and
 /// diagnostics are mapped back into the token stream.
-pub fn build_etol_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+pub(crate) fn build_etol_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
     let t = syntax::translate(source)?;
     match crate::lsystem::build_model(t.source.as_bytes(), req, budget, clock) {
         Ok(mut model) => {

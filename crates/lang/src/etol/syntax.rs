@@ -41,7 +41,7 @@ pub struct Translated {
 impl Translated {
     /// Moves the positions of `e` (found in [`Translated::source`]) back to
     /// the ETOL tokens the lines came from.
-    pub fn map_error(&self, mut e: ParseError) -> ParseError {
+    pub(crate) fn map_error(&self, mut e: ParseError) -> ParseError {
         for d in &mut e.diagnostics {
             remap(d, &self.origins);
         }
@@ -49,7 +49,7 @@ impl Translated {
     }
 
     /// [`Translated::map_error`] for warnings.
-    pub fn map_warnings(&self, warnings: &mut [Diagnostic]) {
+    pub(crate) fn map_warnings(&self, warnings: &mut [Diagnostic]) {
         for d in warnings {
             remap(d, &self.origins);
         }

@@ -24,7 +24,7 @@ use super::{BinOp, Expr, Func};
 use crate::core::{ParseError, Span};
 
 /// The deepest expression tree accepted (and the nesting hosts bound their recursion by).
-pub const MAX_NESTING: u32 = 256;
+pub(crate) const MAX_NESTING: u32 = 256;
 
 /// An operator or punctuation token of an expression; front ends map their
 /// spellings onto these (an L-system's `=` and `|` are `Eq` and `Or`).
@@ -159,7 +159,7 @@ fn deeper(depth: u32, at: Span) -> Result<u32, ParseError> {
 }
 
 /// `-a`, folding a literal (`-2` is the number −2, exactly as `Neg(2)` evaluates).
-pub fn negate(a: Parsed, at: Span) -> Result<Parsed, ParseError> {
+pub(crate) fn negate(a: Parsed, at: Span) -> Result<Parsed, ParseError> {
     if let Expr::Num(v) = a.expr {
         return Ok(Parsed::leaf(Expr::Num(-v)));
     }
@@ -168,7 +168,7 @@ pub fn negate(a: Parsed, at: Span) -> Result<Parsed, ParseError> {
 }
 
 /// `a op b`; `at` locates a depth error.
-pub fn combine(op: BinOp, a: Parsed, b: Parsed, at: Span) -> Result<Parsed, ParseError> {
+pub(crate) fn combine(op: BinOp, a: Parsed, b: Parsed, at: Span) -> Result<Parsed, ParseError> {
     let depth = deeper(a.depth.max(b.depth) + 1, at)?;
     Ok(Parsed { expr: Expr::Binary(op, Box::new(a.expr), Box::new(b.expr)), depth, nodes: a.nodes + b.nodes + 1 })
 }
@@ -260,7 +260,7 @@ fn expect_close<'a>(h: &mut impl Host<'a>, context: impl FnOnce() -> String) -> 
 
 /// A primary: a number, `( expression )`, a call or a name (no operators
 /// around it: MDG's arguments outside parentheses are primaries).
-pub fn primary<'a>(h: &mut impl Host<'a>) -> Result<Parsed, ParseError> {
+pub(crate) fn primary<'a>(h: &mut impl Host<'a>) -> Result<Parsed, ParseError> {
     let (t, at) = h.peek();
     match t {
         Token::Num(v) => {

@@ -104,7 +104,7 @@ impl Func {
     }
 
     /// How many arguments the function takes: (min, max); `None` max means "any number ≥ min".
-    pub fn arity(self) -> (usize, Option<usize>) {
+    pub(crate) fn arity(self) -> (usize, Option<usize>) {
         match self {
             Func::Atan2 | Func::Pow => (2, Some(2)),
             Func::Min | Func::Max => (1, None),
@@ -211,7 +211,7 @@ impl Expr {
     }
 
     /// True when the expression contains no `rand()`, so its value depends only on parameters.
-    pub fn is_deterministic(&self) -> bool {
+    pub(crate) fn is_deterministic(&self) -> bool {
         match self {
             Expr::Num(_) | Expr::Param(_) => true,
             Expr::Rand(_) | Expr::Coord(_) => false,

@@ -33,7 +33,7 @@ use std::collections::HashMap;
 
 /// Deepest derivation instanced: the DAG and its walks recurse once per step,
 /// so deeper systems are derived in full instead.
-pub const MAX_INSTANCED_STEPS: u32 = 256;
+pub(crate) const MAX_INSTANCED_STEPS: u32 = 256;
 
 /// Stream site of the per-key random stream of a variant.
 const KEY_SITE: u32 = 0x4441_4700; // "DAG"
@@ -73,7 +73,7 @@ pub fn not_instanceable(sys: &LSystem) -> Option<&'static str> {
 }
 
 /// Derivation steps including the termination table.
-pub fn total_steps(sys: &LSystem) -> u32 {
+pub(crate) fn total_steps(sys: &LSystem) -> u32 {
     sys.iterations.saturating_add(u32::from(!sys.terminate.is_empty()))
 }
 
@@ -131,7 +131,7 @@ impl StringDag {
     }
 
     /// The parameters of a terminal module item.
-    pub fn params_of(&self, start: u32, len: u32) -> &[f64] {
+    pub(crate) fn params_of(&self, start: u32, len: u32) -> &[f64] {
         self.params.get(start as usize..(start as usize).saturating_add(len as usize)).unwrap_or(&[])
     }
 

@@ -40,7 +40,7 @@ pub struct ModuleString {
 }
 
 /// Accounted bytes of a string with `modules` modules and `params` parameters.
-pub fn string_bytes(modules: u64, params: u64) -> u64 {
+pub(crate) fn string_bytes(modules: u64, params: u64) -> u64 {
     modules.saturating_mul(8).saturating_add(4).saturating_add(params.saturating_mul(8))
 }
 
@@ -62,7 +62,7 @@ impl ModuleString {
     }
 
     /// The parameters of module `i`.
-    pub fn params_of(&self, i: usize) -> &[f64] {
+    pub(crate) fn params_of(&self, i: usize) -> &[f64] {
         let (a, b) = (self.starts[i] as usize, self.starts[i + 1] as usize);
         &self.params[a..b]
     }
@@ -238,7 +238,7 @@ fn predict(sys: &LSystem, iterations: u32, budget: &Budget) -> Result<(), LimitE
 }
 
 /// One table of productions, indexed for rewriting.
-pub struct Rewriter<'a> {
+pub(crate) struct Rewriter<'a> {
     sys: &'a LSystem,
     prods: &'a [Production],
     /// Production indices per predecessor symbol, in source order.

@@ -27,17 +27,18 @@ use crate::geom::{primitives, sweep};
 use crate::ir::ParamDecl;
 use crate::{Diagnostic, FrontEnd, Language, ParseError};
 use syntax as lang_ls;
-use crate::model::request::EXACT_UNION_MAX_TRIANGLES;
-use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, HierarchyUse, Model};
+use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, Model};
 
-pub use derive::{derive, Derivation, ModuleString};
+pub use derive::derive;
+pub(crate) use derive::ModuleString;
 
 /// Builds the model of L-system `source` under `budget`.
 ///
 /// Systems that [instance](dag::not_instanceable) are derived as a DAG of
-/// distinct subtrees, never as a string. Where the request can use a
-/// hierarchy ([`HierarchyUse`]) the model is that [`Hierarchy`]; otherwise
-/// the DAG is walked through the turtle. Other systems are derived in full.
+/// distinct subtrees, never as a string. Where the request asks for a
+/// hierarchy ([`BuildRequest::hierarchy`]) the model is that [`Hierarchy`]
+/// (the pipeline charges its size as the route writes it); otherwise the
+/// DAG is walked through the turtle. Other systems are derived in full.
 ///
 /// Under `on_limit: truncate` a route that runs out of a limit is abandoned
 /// for the string route, which stops at the limit; the work thrown away is
@@ -64,18 +65,9 @@ pub fn build_model(source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, c
             Err(e) => return Err(e.into()),
         },
     };
-    let wants = match req.hierarchy {
-        HierarchyUse::Required | HierarchyUse::Preferred | HierarchyUse::Union => dag.is_some(),
-        // Flat strips sweep the segments into tubes.
-        HierarchyUse::Never | HierarchyUse::Streamed => false,
-    };
-    if wants {
+    if req.hierarchy && dag.is_some() {
         let mark = budget.mark();
         match hierarchy(&sys, dag.as_ref(), seed, req, budget) {
-            // Printing unites the turtle's mitred sweeps (their runs meet
-            // face to face) where that union is tried exactly; the
-            // hierarchy's capped segments only above that size.
-            Ok(h) if req.hierarchy == HierarchyUse::Union && h.triangles(req.detail) <= EXACT_UNION_MAX_TRIANGLES => budget.rewind(mark),
             Ok(h) => {
                 let primitives = h.leaves();
                 return Ok(Model { language: Language::Lsystem, scene: Default::default(), hierarchy: Some(h), drawing: None, primitives, warnings: sys.warnings, promised: 0, seed });
@@ -126,6 +118,10 @@ impl FrontEnd for Lsystem {
     fn colours_per_instance(&self) -> bool {
         false
     }
+    /// The hierarchy's segments are capped cylinders; the turtle sweeps mitred tubes.
+    fn own_hierarchy_geometry(&self) -> bool {
+        true
+    }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         build_model(source, req, budget, clock)
     }
@@ -158,8 +154,8 @@ fn string_drawing(sys: &lang_ls::LSystem, seed: u64, opts: &turtle::TurtleOption
 }
 
 /// The object hierarchy of `sys` (from its DAG when it has a balanced one,
-/// else from the string derived in full), refused before any expansion when
-/// its segments or triangles exceed the limits.
+/// else from the string derived in full), charged for what building it
+/// makes; the pipeline charges its size or expansion as the route writes it.
 fn hierarchy(sys: &lang_ls::LSystem, dag: Option<&dag::StringDag>, seed: u64, req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Hierarchy, EvalError> {
     let h = match dag {
         Some(d) if d.balanced() => instance::build(sys, d, budget)?,
@@ -172,13 +168,5 @@ fn hierarchy(sys: &lang_ls::LSystem, dag: Option<&dag::StringDag>, seed: u64, re
             h
         }
     };
-    if req.hierarchy == HierarchyUse::Required {
-        // `format=scene` writes the hierarchy as it is: the primitive limit
-        // charges its entries and leaf shapes, and no triangle is made.
-        budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?;
-    } else {
-        budget.check_total(Limit::Primitives, h.leaves())?;
-        budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
-    }
     Ok(h)
 }

@@ -25,9 +25,9 @@ use crate::core::Span;
 use glam::{DQuat, DVec3};
 
 /// Default colour of segments (linear RGBA): a bark brown.
-pub const DEFAULT_COLOUR: [f64; 4] = [0.32, 0.2, 0.1, 1.0];
+pub(crate) const DEFAULT_COLOUR: [f64; 4] = [0.32, 0.2, 0.1, 1.0];
 /// Factor `!` without an argument multiplies the width by.
-pub const WIDTH_DECREMENT: f64 = 0.7;
+pub(crate) const WIDTH_DECREMENT: f64 = 0.7;
 
 /// What a symbol does to the turtle.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -154,7 +154,7 @@ fn query_kind(name: &str) -> Option<u8> {
 
 /// True when `sys` uses an environment query, so every derivation step must
 /// be followed by an interpretation that fills the queries in.
-pub fn has_queries(sys: &LSystem) -> bool {
+pub(crate) fn has_queries(sys: &LSystem) -> bool {
     sys.symbols.iter().any(|n| query_kind(n).is_some())
 }
 
@@ -163,7 +163,7 @@ pub fn has_queries(sys: &LSystem) -> bool {
 /// its axes. A query with fewer parameters gets the first ones; extra
 /// parameters are kept. Each module read costs one step, so the queries
 /// after every derivation step are budgeted like the step itself.
-pub fn fill_queries(sys: &LSystem, s: &mut ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
+pub(crate) fn fill_queries(sys: &LSystem, s: &mut ModuleString, budget: &mut Budget) -> Result<(), EvalError> {
     let kinds: Vec<Option<u8>> = sys.symbols.iter().map(|n| query_kind(n)).collect();
     let opts = TurtleOptions { detail: 0, on_limit: OnLimit::Error, line_point_bytes: 0, downstream_bytes: [0; 9] };
     let mut t = LeafTurtle::new(sys, &opts, sys.width, DEFAULT_COLOUR);
@@ -204,7 +204,7 @@ pub fn fill_queries(sys: &LSystem, s: &mut ModuleString, budget: &mut Budget) ->
 }
 
 /// A sink the modules of a string are fed into, one at a time, in string order.
-pub type ModuleSink<'s> = dyn FnMut(u32, &[f64]) -> Result<(), EvalError> + 's;
+pub(crate) type ModuleSink<'s> = dyn FnMut(u32, &[f64]) -> Result<(), EvalError> + 's;
 
 fn non_finite(what: &str, v: f64) -> EvalError {
     EvalError::NonFinite { span: Span::default(), what: what.to_string(), value: format!("{v}") }

@@ -21,10 +21,10 @@ use crate::ir::CameraLens;
 use std::collections::BTreeMap;
 
 /// Frames per second when the grammar sets no `fps`.
-pub const DEFAULT_FPS: f64 = 30.0;
+pub(crate) const DEFAULT_FPS: f64 = 30.0;
 
 /// Animation length in seconds when the grammar sets no `duration`.
-pub const DEFAULT_DURATION: f64 = 10.0;
+pub(crate) const DEFAULT_DURATION: f64 = 10.0;
 
 /// When frames are sampled: `samples` ticks of `1 / fps` seconds from time 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,7 +55,7 @@ impl Timeline {
 }
 
 /// Frame `k` of a stream that loops; the identity for an empty stream.
-pub fn looped(frames: &[Frame], k: usize) -> Frame {
+pub(crate) fn looped(frames: &[Frame], k: usize) -> Frame {
     match frames.len() {
         0 => Frame::IDENTITY,
         n => frames[k % n],
@@ -104,7 +104,7 @@ pub struct Rig {
 }
 
 /// Bytes accounted per bone (its record and its four tag vectors' share).
-pub const BONE_BYTES: u64 = std::mem::size_of::<Bone>() as u64 + 32;
+pub(crate) const BONE_BYTES: u64 = std::mem::size_of::<Bone>() as u64 + 32;
 
 impl Rig {
     /// An empty rig: just the root bone.
@@ -220,7 +220,7 @@ impl Rig {
 /// model 20 units in front of a camera looking down −z (C.3's "adjust camera
 /// distance here"). The camera's place in the world is the inverse frame.
 #[derive(Debug, Clone, PartialEq)]
-pub struct CameraPath {
+pub(crate) struct CameraPath {
     /// When the frames are sampled.
     pub timeline: Timeline,
     /// One view frame per sample (a single frame for a still camera).

@@ -13,7 +13,7 @@ use crate::model::graph::Trs;
 
 /// Near clipping distance of a camera whose source sets none (glTF requires
 /// one; its far plane is then infinite).
-pub const DEFAULT_ZNEAR: f32 = 0.01;
+pub(crate) const DEFAULT_ZNEAR: f32 = 0.01;
 
 /// A perspective camera and its placement over time.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,7 +35,7 @@ pub struct Camera {
 
 impl Camera {
     /// The camera of an MDG `camerarule` path: each view frame's inverse.
-    pub fn from_path(path: &CameraPath) -> Camera {
+    pub(crate) fn from_path(path: &CameraPath) -> Camera {
         Camera {
             name: Some("camerarule".to_string()),
             yfov: path.lens.fov_degrees.to_radians() as f32,

@@ -37,7 +37,7 @@ impl Trs {
 
     /// The camera node of a view frame: its inverse, without scale or
     /// reflection (a glTF camera node should be a rigid motion).
-    pub fn of_view(view: &Frame) -> Trs {
+    pub(crate) fn of_view(view: &Frame) -> Trs {
         // The camera sits at the point the view maps to the eye's origin,
         // turned by the inverse rotation; a view with zero scale has no inverse.
         let inv = view.inverse().unwrap_or(Frame::IDENTITY);

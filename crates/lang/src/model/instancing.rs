@@ -69,13 +69,13 @@ pub struct Placement {
 
 /// The largest |cos| between two columns of a linear map that still counts
 /// as orthogonal: about ten times the rounding of a frame stored in f32.
-pub const ORTHOGONALITY: f32 = 1e-6;
+pub(crate) const ORTHOGONALITY: f32 = 1e-6;
 
 /// Splits a linear map into rotation, positive per-axis scale and whether
 /// it mirrors, when its columns are orthogonal: `L = R·diag(s)` or, mirrored,
 /// `L = R·diag(s)·(−I)` with `R` a rotation. `None` for a sheared, flat or
 /// non-finite map.
-pub fn decompose(linear: Mat3) -> Option<(Quat, Vec3, bool)> {
+pub(crate) fn decompose(linear: Mat3) -> Option<(Quat, Vec3, bool)> {
     let cols = [linear.x_axis, linear.y_axis, linear.z_axis];
     let scale = Vec3::new(cols[0].length(), cols[1].length(), cols[2].length());
     if !scale.is_finite() || scale.min_element() <= 0.0 {
@@ -100,7 +100,7 @@ impl Placement {
     /// The mesh a drawable similarity instance places: [`Placement::of_instance`]'s
     /// key without the rest, which the evaluator's per-primitive charge
     /// ([`Tally::cost`]) does not need.
-    pub fn key_of_instance(i: &Instance) -> Option<MeshKey> {
+    pub(crate) fn key_of_instance(i: &Instance) -> Option<MeshKey> {
         i.is_drawable().then_some(MeshKey { class: 0, source: Source::Primitive(i.kind), mirrored: i.parity })
     }
 
@@ -116,7 +116,7 @@ impl Placement {
     }
 
     /// A drawable affine instance (EisenScript) whose linear part has a TRS form.
-    pub fn of_affine(a: &AffineInstance) -> Option<Placement> {
+    pub(crate) fn of_affine(a: &AffineInstance) -> Option<Placement> {
         if !a.is_drawable() {
             return None;
         }
@@ -126,7 +126,7 @@ impl Placement {
     }
 
     /// A drawable placement of a scene shape, mapped as the mesh stage maps it.
-    pub fn of_shape(s: &ShapeInstance) -> Option<Placement> {
+    pub(crate) fn of_shape(s: &ShapeInstance) -> Option<Placement> {
         let i = Instance::new(PrimitiveKind::Box, &s.frame, s.colour.map(f64::from));
         let p = Placement::of_instance(&i)?;
         Some(Placement { key: MeshKey { source: Source::Shape(s.shape), ..p.key }, ..p })

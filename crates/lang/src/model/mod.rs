@@ -18,7 +18,7 @@ pub use camera::Camera;
 pub use drawing::Drawing;
 pub use error::EvalError;
 pub use hierarchy::Hierarchy;
-pub use request::{BuildRequest, Downstream, HierarchyUse};
+pub use request::{BuildRequest, Downstream};
 pub use scene::{Instance, Scene};
 
 use crate::core::{Diagnostic, LimitExceeded, ParseError};

@@ -31,43 +31,6 @@ impl Downstream {
     }
 }
 
-/// Whether the stages can use an instancing [`Hierarchy`](crate::model::Hierarchy).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum HierarchyUse {
-    /// Flat geometry only (STL, strips, printing, …).
-    Never,
-    /// A hierarchy where the language builds one cheaply (glTF: instanced or
-    /// expanded), else flat geometry.
-    Preferred,
-    /// The output walks a hierarchy leaf by leaf and tessellates each leaf as
-    /// it writes (flat `strips`, written in chunks), so it never needs the
-    /// expanded scene: MDG's memoised derivations come as a hierarchy, charged
-    /// as the flat geometry they stand for (every leaf a primitive, every
-    /// triangle); other languages give flat geometry, as for [`HierarchyUse::Never`].
-    Streamed,
-    /// The output writes a hierarchy as it is (`format=scene`), so its size,
-    /// not its expansion's, is what the limits charge; where the language
-    /// builds none cheaply, flat geometry, as for [`HierarchyUse::Preferred`]
-    /// (so a scene holds the same model as the flat formats).
-    Required,
-    /// A hierarchy where the language builds one, for printing, whose union
-    /// works once per distinct subtree (`print::make_printable_hierarchy`)
-    /// and falls back to the expansion; else flat geometry. The limits
-    /// charge the expansion's leaves and triangles, as flat geometry.
-    /// L-systems give theirs only when its expansion has more than
-    /// [`EXACT_UNION_MAX_TRIANGLES`]: below, the flat route unites the
-    /// turtle's mitred sweeps exactly, and the print is what it always was.
-    Union,
-}
-
-/// Most triangles whose flat union the print stage tries exactly
-/// (`print::EXACT_MAX_TRIANGLES` is this). Above it a flat model is fused
-/// (sampled), so an L-system's hierarchy, whose capped segments are united
-/// exactly once per distinct subtree, is offered instead (the Sierpinski
-/// bush: one exact shell in about 5 s, where fusing cannot resolve its
-/// tubes within the limits).
-pub const EXACT_UNION_MAX_TRIANGLES: u64 = 64_000;
-
 /// One front end call: everything besides the source that decides the model.
 #[derive(Debug, Clone, Copy)]
 pub struct BuildRequest<'a> {
@@ -82,8 +45,13 @@ pub struct BuildRequest<'a> {
     pub on_limit: OnLimit,
     /// What later stages need per vertex and triangle (see [`Downstream`]).
     pub downstream: Downstream,
-    /// Whether a hierarchy is wanted.
-    pub hierarchy: HierarchyUse,
+    /// Whether to build an instancing [`Hierarchy`](crate::model::Hierarchy)
+    /// where the language can (else flat geometry). This is all a front end
+    /// learns of the route: the pipeline, which knows it, decides this from
+    /// the route and [`FrontEnd::own_hierarchy_geometry`](crate::FrontEnd::own_hierarchy_geometry),
+    /// and charges a hierarchy's size or expansion as the route writes it
+    /// (the front end charges only what it makes while building it).
+    pub hierarchy: bool,
     /// Whether the output plays animation (plain glTF): a Structure Synth
     /// movie then keeps every frame instead of showing the first.
     pub animated: bool,

@@ -129,7 +129,7 @@ impl AffineInstance {
 }
 
 /// Bytes accounted per stored affine instance.
-pub const AFFINE_INSTANCE_BYTES: u64 = std::mem::size_of::<AffineInstance>() as u64;
+pub(crate) const AFFINE_INSTANCE_BYTES: u64 = std::mem::size_of::<AffineInstance>() as u64;
 
 pub use crate::geom::sweep::{LinePoint, Polyline};
 
@@ -156,13 +156,13 @@ pub struct ShapeInstance {
 }
 
 /// Bytes accounted per stored shape placement.
-pub const SHAPE_INSTANCE_BYTES: u64 = std::mem::size_of::<ShapeInstance>() as u64;
+pub(crate) const SHAPE_INSTANCE_BYTES: u64 = std::mem::size_of::<ShapeInstance>() as u64;
 
 /// Bytes accounted per stored free vertex.
-pub const FREE_VERTEX_BYTES: u64 = std::mem::size_of::<FreeVertex>() as u64;
+pub(crate) const FREE_VERTEX_BYTES: u64 = std::mem::size_of::<FreeVertex>() as u64;
 
 /// Bytes accounted per stored line point (for the memory budget).
-pub const LINE_POINT_BYTES: u64 = std::mem::size_of::<LinePoint>() as u64;
+pub(crate) const LINE_POINT_BYTES: u64 = std::mem::size_of::<LinePoint>() as u64;
 
 /// Everything an evaluation produced.
 #[derive(Debug, Clone, Default, PartialEq)]

@@ -116,7 +116,7 @@ impl DiskTier {
     }
 
     /// Bytes held by cache files.
-    pub fn used_bytes(&self) -> u64 {
+    pub(crate) fn used_bytes(&self) -> u64 {
         self.used.load(Ordering::Relaxed)
     }
 

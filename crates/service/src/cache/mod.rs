@@ -9,8 +9,8 @@ pub mod observe;
 pub mod redis;
 pub mod store;
 
-pub use disk::{DiskError, DiskTier};
+pub(crate) use disk::{DiskError, DiskTier};
 pub use crate::pipeline::key::{normalize_source, CacheKey};
-pub use observe::{CacheObserver, Lookup, Tier};
-pub use self::redis::{RedisError, RedisSettings, RedisTier};
-pub use store::{CacheOutcome, ModelCache, Rendered};
+pub(crate) use observe::{CacheObserver, Lookup, Tier};
+pub(crate) use self::redis::{RedisError, RedisSettings, RedisTier};
+pub(crate) use store::{CacheOutcome, ModelCache, Rendered};

@@ -32,7 +32,7 @@ impl Tier {
 
 /// Receives every tier lookup the cache makes, with its result and latency,
 /// so that hit ratios and lookup latency can be shown per tier.
-pub trait CacheObserver: Send + Sync + std::fmt::Debug {
+pub(crate) trait CacheObserver: Send + Sync + std::fmt::Debug {
     /// One lookup of `tier`: whether it found a (valid) model, and how long it took.
     fn lookup(&self, tier: Tier, hit: bool, took: Duration);
 }

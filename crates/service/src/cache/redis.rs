@@ -29,7 +29,7 @@ use std::time::{Duration, Instant};
 use tokio::sync::Mutex;
 
 /// How long the tier is skipped after a failure before Redis is tried again.
-pub const RETRY_AFTER: Duration = Duration::from_secs(1);
+pub(crate) const RETRY_AFTER: Duration = Duration::from_secs(1);
 /// Interval at which a worker waiting on another worker's lock polls for the value.
 const POLL: Duration = Duration::from_millis(20);
 /// Prefix of model keys.
@@ -101,13 +101,13 @@ impl std::fmt::Debug for RedisTier {
 
 impl RedisSettings {
     /// These settings with any password in the URL replaced by `***`, for logs.
-    pub fn redacted(&self) -> String {
+    pub(crate) fn redacted(&self) -> String {
         redact_url(&self.url)
     }
 }
 
 /// `url` with the password (between `:` and `@` after the scheme) hidden.
-pub fn redact_url(url: &str) -> String {
+pub(crate) fn redact_url(url: &str) -> String {
     let Some((scheme, rest)) = url.split_once("://") else { return url.to_string() };
     let (auth, host) = match rest.rsplit_once('@') {
         Some((a, h)) => (a, h),
@@ -174,7 +174,7 @@ impl RedisTier {
     }
 
     /// Of the [`errors`](RedisTier::errors), those that were timeouts (Redis slow, not refusing).
-    pub fn timeouts(&self) -> u64 {
+    pub(crate) fn timeouts(&self) -> u64 {
         self.timeouts.load(Ordering::Relaxed)
     }
 
@@ -184,12 +184,12 @@ impl RedisTier {
     }
 
     /// Renders that waited on another worker's lock.
-    pub fn lock_waits(&self) -> u64 {
+    pub(crate) fn lock_waits(&self) -> u64 {
         self.lock_waits.load(Ordering::Relaxed)
     }
 
     /// True while Redis is being skipped after a failure.
-    pub fn is_degraded(&self) -> bool {
+    pub(crate) fn is_degraded(&self) -> bool {
         self.degraded.load(Ordering::Relaxed)
     }
 
@@ -382,7 +382,8 @@ impl RedisTier {
     /// The model for `key` from Redis, or from `render` (under the lock when
     /// enabled); a complete render is written back. The flag is true when
     /// the model came from Redis.
-    pub async fn read_or_render<E, Fut>(self: &Arc<Self>, key: CacheKey, render: impl FnOnce() -> Fut) -> Result<(Rendered, bool), E>
+    #[cfg(test)]
+    pub(crate) async fn read_or_render<E, Fut>(self: &Arc<Self>, key: CacheKey, render: impl FnOnce() -> Fut) -> Result<(Rendered, bool), E>
     where
         Fut: std::future::Future<Output = Result<Rendered, E>>,
     {
@@ -396,7 +397,7 @@ impl RedisTier {
     /// lock when enabled (or from Redis, if the worker holding the lock
     /// stores it meanwhile: the flag is then true); a complete render is
     /// written back.
-    pub async fn render_locked<E, Fut>(self: &Arc<Self>, key: CacheKey, render: impl FnOnce() -> Fut) -> Result<(Rendered, bool), E>
+    pub(crate) async fn render_locked<E, Fut>(self: &Arc<Self>, key: CacheKey, render: impl FnOnce() -> Fut) -> Result<(Rendered, bool), E>
     where
         Fut: std::future::Future<Output = Result<Rendered, E>>,
     {

@@ -42,7 +42,7 @@ pub struct Rendered {
 
 impl Rendered {
     /// Wraps a pipeline output.
-    pub fn from_output(out: crate::RenderOutput, content_type: &'static str) -> Rendered {
+    pub(crate) fn from_output(out: crate::RenderOutput, content_type: &'static str) -> Rendered {
         let etag = blake3::hash(&out.bytes).to_hex()[..32].to_string();
         Rendered {
             bytes: bytes::Bytes::from(out.bytes),
@@ -115,14 +115,14 @@ impl ModelCache {
 
     /// The same store, reading from and writing complete models to `disk`
     /// behind the in-process tier.
-    pub fn with_disk(mut self, disk: DiskTier) -> ModelCache {
+    pub(crate) fn with_disk(mut self, disk: DiskTier) -> ModelCache {
         self.disk = Some(Arc::new(disk));
         self
     }
 
     /// The same store, reading from and writing complete models to a Redis
     /// shared with other workers, after the disk tier (if any).
-    pub fn with_redis(mut self, redis: RedisTier) -> ModelCache {
+    pub(crate) fn with_redis(mut self, redis: RedisTier) -> ModelCache {
         self.redis = Some(Arc::new(redis));
         self
     }
@@ -138,7 +138,7 @@ impl ModelCache {
     }
 
     /// Reports every tier lookup to `observer` (the service's metrics).
-    pub fn with_observer(mut self, observer: Arc<dyn CacheObserver>) -> ModelCache {
+    pub(crate) fn with_observer(mut self, observer: Arc<dyn CacheObserver>) -> ModelCache {
         self.observer = Some(observer);
         self
     }
@@ -160,7 +160,7 @@ impl ModelCache {
     /// under its distributed lock when enabled. A model read from disk or
     /// Redis counts as a hit; a model read from Redis is also written to disk.
     /// The [`Lookup`] says which tier answered and how long the reads took.
-    pub async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, Lookup), E>
+    pub(crate) async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, Lookup), E>
     where
         E: Clone + Send + Sync + 'static,
         F: FnOnce() -> Fut,
@@ -264,12 +264,12 @@ impl ModelCache {
     }
 
     /// Bytes charged to stored models.
-    pub fn weighted_bytes(&self) -> u64 {
+    pub(crate) fn weighted_bytes(&self) -> u64 {
         self.inner.weighted_size()
     }
 
     /// Models evicted to stay within the byte budget.
-    pub fn evictions(&self) -> u64 {
+    pub(crate) fn evictions(&self) -> u64 {
         self.evictions.load(Ordering::Relaxed)
     }
 

@@ -243,7 +243,7 @@ impl Access {
 
 /// The key a request presents: `Authorization: Bearer KEY`, else `X-Api-Key: KEY`.
 /// `get` reads a header (HTTP) or metadata entry (gRPC) by lowercase name.
-pub fn presented_key<'a>(get: impl Fn(&str) -> Option<&'a str>) -> Option<&'a str> {
+pub(crate) fn presented_key<'a>(get: impl Fn(&str) -> Option<&'a str>) -> Option<&'a str> {
     let bearer = get("authorization").and_then(|v| {
         let (scheme, token) = v.trim().split_once(' ')?;
         scheme.eq_ignore_ascii_case("bearer").then(|| token.trim())

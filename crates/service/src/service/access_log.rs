@@ -36,7 +36,7 @@ pub enum AccessLog {
 }
 
 /// The sampling period of [`AccessLog::Sampled`].
-pub const SAMPLE_EVERY: u64 = 100;
+pub(crate) const SAMPLE_EVERY: u64 = 100;
 
 /// The mode [`set_mode`] chose (an `AccessLog` as its index; `All` until set).
 static MODE: AtomicU8 = AtomicU8::new(0);
@@ -97,7 +97,7 @@ pub struct Finished<'a> {
 /// `fields` alone; in text, no span prefix with the 64-digit cache key),
 /// then, when DEBUG is on, the DEBUG line with the details inside `span`
 /// (so that it carries the request's language, cache key and result).
-pub fn log_request(r: &Finished<'_>, span: &tracing::Span) {
+pub(crate) fn log_request(r: &Finished<'_>, span: &tracing::Span) {
     let internal = r.status == Some(500) || r.code == Some("internal");
     if wanted(internal) {
         let cache = r.timing.map(|t| match (t.lookup.outcome, t.lookup.tier) {

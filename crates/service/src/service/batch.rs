@@ -20,7 +20,7 @@ use tracing::Instrument;
 /// one API-key share for all its members, so an unbounded one could keep a
 /// worker busy for as long as its client liked; 256 variations is more than
 /// a picker shows at once and, at the default deadline, bounded in time.
-pub const MAX_MEMBERS: usize = 256;
+pub(crate) const MAX_MEMBERS: usize = 256;
 
 /// What varies across a batch's members.
 #[derive(Debug, Clone, PartialEq)]

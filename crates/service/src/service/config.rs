@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 /// Largest configuration file read, in bytes.
-pub const MAX_CONFIG_BYTES: u64 = 1024 * 1024;
+pub(crate) const MAX_CONFIG_BYTES: u64 = 1024 * 1024;
 
 /// `rulemesh serve` options.
 #[derive(Debug, Clone, PartialEq, Serialize, clap::Args)]
@@ -336,7 +336,7 @@ impl ServeConfig {
 
     /// Prints running at once: the setting, or one per two cores (at least
     /// one); never more than [`ServeConfig::concurrency`].
-    pub fn print_concurrency(&self) -> usize {
+    pub(crate) fn print_concurrency(&self) -> usize {
         let n = if self.max_print_concurrency > 0 {
             self.max_print_concurrency
         } else {
@@ -393,7 +393,7 @@ impl ServeConfig {
     }
 
     /// The HTTP keep-alive idle timeout (at least 1 ms).
-    pub fn idle_timeout(&self) -> Duration {
+    pub(crate) fn idle_timeout(&self) -> Duration {
         Duration::from_millis(self.idle_timeout_ms.max(1))
     }
 

@@ -34,7 +34,7 @@ use tokio::sync::{watch, OwnedSemaphorePermit, Semaphore};
 
 /// Serves `app` on `listener` until `stop` turns true, then stops accepting,
 /// lets every open connection finish its request and waits for all to close.
-pub async fn serve_http(listener: TcpListener, app: Router, state: Arc<AppState>, mut stop: watch::Receiver<bool>) -> Result<(), ServeError> {
+pub(crate) async fn serve_http(listener: TcpListener, app: Router, state: Arc<AppState>, mut stop: watch::Receiver<bool>) -> Result<(), ServeError> {
     let max = state.config.max_connections.clamp(1, u32::MAX as usize);
     let slots = Arc::new(Semaphore::new(max));
     loop {

@@ -231,7 +231,7 @@ impl Engine {
 /// does check its deadline answers first, with its own error or, under
 /// `on_limit=truncate`, its truncated model. Either way the request ends
 /// within 1.1× its deadline plus the time to send the answer.
-pub fn watchdog_after(timeout_ms: u64) -> Duration {
+pub(crate) fn watchdog_after(timeout_ms: u64) -> Duration {
     let deadline = Duration::from_millis(timeout_ms);
     deadline.saturating_add((deadline / 10).clamp(Duration::from_millis(10), Duration::from_secs(1)))
 }

@@ -179,7 +179,7 @@ impl From<RenderError> for ServiceError {
 
 impl ServiceError {
     /// The HTTP status.
-    pub fn http_status(&self) -> StatusCode {
+    pub(crate) fn http_status(&self) -> StatusCode {
         match self {
             ServiceError::BadRequest(_) | ServiceError::Parse(_) | ServiceError::Eval(_) => StatusCode::BAD_REQUEST,
             ServiceError::Limit(l) if l.limit == Limit::Deadline => StatusCode::GATEWAY_TIMEOUT,
@@ -200,7 +200,7 @@ impl ServiceError {
     }
 
     /// The gRPC status code.
-    pub fn grpc_code(&self) -> tonic::Code {
+    pub(crate) fn grpc_code(&self) -> tonic::Code {
         match self {
             ServiceError::BadRequest(_) | ServiceError::Parse(_) | ServiceError::Eval(_) => tonic::Code::InvalidArgument,
             ServiceError::Limit(l) if l.limit == Limit::Deadline => tonic::Code::DeadlineExceeded,
@@ -295,7 +295,7 @@ impl ServiceError {
 
     /// The gRPC status: the message, with the JSON body as details and the
     /// limit fields as metadata.
-    pub fn to_status(&self) -> tonic::Status {
+    pub(crate) fn to_status(&self) -> tonic::Status {
         let body = self.body();
         let mut status = tonic::Status::with_details(self.grpc_code(), self.to_string(), body.to_string().into_bytes().into());
         let md = status.metadata_mut();

@@ -17,14 +17,14 @@ pub mod pb {
 }
 
 /// The encoded protobuf descriptors of `rulemesh.v1`, served by gRPC reflection.
-pub const FILE_DESCRIPTOR_SET: &[u8] = tonic::include_file_descriptor_set!("rulemesh_descriptor");
+pub(crate) const FILE_DESCRIPTOR_SET: &[u8] = tonic::include_file_descriptor_set!("rulemesh_descriptor");
 
 use pb::rulemesh_server::{Rulemesh, RulemeshServer};
 use std::time::Instant;
 use tracing::Instrument;
 
 /// Bytes per `RenderStream` chunk.
-pub const CHUNK_BYTES: usize = 64 * 1024;
+pub(crate) const CHUNK_BYTES: usize = 64 * 1024;
 
 /// The gRPC service over the shared engine.
 pub struct GrpcService {

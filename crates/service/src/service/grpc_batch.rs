@@ -12,12 +12,12 @@ use std::sync::Arc;
 use tonic::Status;
 
 /// The stream `RenderBatch` answers with.
-pub type ItemStream = std::pin::Pin<Box<dyn Stream<Item = Result<pb::RenderBatchItem, Status>> + Send>>;
+pub(crate) type ItemStream = std::pin::Pin<Box<dyn Stream<Item = Result<pb::RenderBatchItem, Status>> + Send>>;
 
 /// The batch a `RenderBatchRequest` asks for, validated against `ceiling`
 /// (a malformed batch fails whole, before anything renders), and whether
 /// its members bypass the cache.
-pub fn batch_of(request: pb::RenderBatchRequest, ceiling: &crate::core::Limits) -> Result<(Batch, bool), ServiceError> {
+pub(crate) fn batch_of(request: pb::RenderBatchRequest, ceiling: &crate::core::Limits) -> Result<(Batch, bool), ServiceError> {
     let render = request.render.unwrap_or_default();
     let no_cache = render.no_cache;
     let mut base = RenderBody::from(render);

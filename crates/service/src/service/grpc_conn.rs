@@ -28,7 +28,7 @@ use tonic::transport::server::{Connected, TcpConnectInfo};
 /// The accepted connections, each holding one of `max` slots until it is
 /// dropped, as the stream tonic's `serve_with_incoming` takes. The accept
 /// loop ends when the server drops the stream.
-pub fn capped_incoming(listener: TcpListener, max: usize, preface_timeout: Duration) -> ReceiverStream<io::Result<Capped>> {
+pub(crate) fn capped_incoming(listener: TcpListener, max: usize, preface_timeout: Duration) -> ReceiverStream<io::Result<Capped>> {
     let (tx, rx) = mpsc::channel(1);
     let slots = Arc::new(Semaphore::new(max.clamp(1, Semaphore::MAX_PERMITS)));
     tokio::spawn(async move {
@@ -56,7 +56,7 @@ pub fn capped_incoming(listener: TcpListener, max: usize, preface_timeout: Durat
 /// A TCP connection that holds its slot of the cap until it is dropped,
 /// and fails its reads if no byte arrives before the preface timeout.
 #[derive(Debug)]
-pub struct Capped {
+pub(crate) struct Capped {
     stream: TcpStream,
     _slot: OwnedSemaphorePermit,
     /// Running until the first byte is read.

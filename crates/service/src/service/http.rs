@@ -31,9 +31,9 @@ use std::time::Instant;
 use tracing::Instrument;
 
 /// `Cache-Control` of a model whose every input is pinned by its URL.
-pub const CACHE_IMMUTABLE: &str = "public, max-age=31536000, immutable";
+pub(crate) const CACHE_IMMUTABLE: &str = "public, max-age=31536000, immutable";
 /// `Cache-Control` of a model whose seed is not pinned by its URL.
-pub const CACHE_SHORT: &str = "public, max-age=300";
+pub(crate) const CACHE_SHORT: &str = "public, max-age=300";
 
 /// The HTTP router with every route, the body limit, response compression
 /// and request metrics.
@@ -93,7 +93,7 @@ fn cors(origins: &[String]) -> Option<tower_http::cors::CorsLayer> {
 /// Who is calling: the ceiling their limits are clamped to (the server's,
 /// lowered by their API key's). Inserted by [`access`] into every request.
 #[derive(Debug, Clone, Copy)]
-pub struct Caller {
+pub(crate) struct Caller {
     /// The ceiling for this request.
     pub ceiling: Limits,
 }
@@ -180,17 +180,17 @@ async fn openapi_json() -> Response {
 }
 
 /// Responses smaller than this are sent as they are.
-pub const COMPRESS_MIN_BYTES: u16 = 256;
+pub(crate) const COMPRESS_MIN_BYTES: u16 = 256;
 
 /// Marks a response whose body is text (glTF JSON, ASCII STL) so that it may
 /// be compressed although its type is `model/*`.
 #[derive(Debug, Clone, Copy)]
-pub struct TextModel;
+pub(crate) struct TextModel;
 
 /// Compresses JSON and text bodies and models marked [`TextModel`]; binary
 /// models (GLB, binary STL, strips) go out as they are.
 #[derive(Debug, Clone, Copy)]
-pub struct TextBodies;
+pub(crate) struct TextBodies;
 
 impl Predicate for TextBodies {
     fn should_compress<B>(&self, response: &axum::http::Response<B>) -> bool
@@ -222,7 +222,7 @@ async fn etag_per_encoding(req: Request, next: Next) -> Response {
 static REQUEST_ID: AtomicU64 = AtomicU64::new(1);
 
 /// A new request id, unique in this process (shared by HTTP and gRPC).
-pub fn next_request_id() -> u64 {
+pub(crate) fn next_request_id() -> u64 {
     REQUEST_ID.fetch_add(1, Ordering::Relaxed)
 }
 
@@ -550,7 +550,7 @@ pub struct CheckReport {
 /// The shape of a [`Diagnostic`] in JSON (for the OpenAPI document).
 #[derive(Debug, Serialize, ToSchema)]
 #[schema(as = Diagnostic)]
-pub struct DiagnosticSchema {
+pub(crate) struct DiagnosticSchema {
     /// `error` or `warning`.
     pub severity: String,
     /// 1-based line.

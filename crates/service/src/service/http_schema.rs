@@ -19,7 +19,7 @@ use axum::Extension;
 use std::sync::Arc;
 
 /// The media type of a JSON Schema document.
-pub const SCHEMA_JSON: &str = "application/schema+json";
+pub(crate) const SCHEMA_JSON: &str = "application/schema+json";
 
 /// The schema of `source` as a JSON response, or the parse error (with line and column).
 fn schema_response(title: &str, description: &str, source: &[u8], language: Option<crate::lang::Language>, ceiling: &Limits) -> Response {
@@ -42,7 +42,7 @@ fn schema_response(title: &str, description: &str, source: &[u8], language: Opti
         (status = 404, description = "No such grammar", body = ErrorBody),
         (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
-pub async fn grammar_schema(Extension(caller): Extension<Caller>, Path(name): Path<String>) -> Response {
+pub(crate) async fn grammar_schema(Extension(caller): Extension<Caller>, Path(name): Path<String>) -> Response {
     match library::find_route_name(&name) {
         Ok(b) => schema_response(b.name, &library::description(b.source), b.source.as_bytes(), Some(b.language), &caller.ceiling),
         Err(e) => e.into_response(),
@@ -60,7 +60,7 @@ pub async fn grammar_schema(Extension(caller): Extension<Caller>, Path(name): Pa
         (status = 422, description = "The source exceeds the source-size limit", body = ErrorBody),
         (status = 429, description = "The API key is over its rate or concurrency share (with Retry-After)", body = ErrorBody)
     ))]
-pub async fn schema_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, body: Result<Bytes, BytesRejection>) -> Response {
+pub(crate) async fn schema_post(State(st): State<Arc<AppState>>, Extension(caller): Extension<Caller>, body: Result<Bytes, BytesRejection>) -> Response {
     let body = match super::http::body_bytes(body, st.config.body_limit).and_then(|b| from_json::<CheckBody>(&b)) {
         Ok(b) => b,
         Err(e) => return e.into_response(),

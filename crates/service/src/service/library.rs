@@ -35,7 +35,7 @@ pub fn find(name: &str) -> Option<Builtin> {
 /// The built-in grammar a route names (`gem`, or with its file's extension,
 /// `gem.mdg`, `hogeweg.ls`), or the 404 that every grammar route answers for
 /// a name the library does not have.
-pub fn find_route_name(name: &str) -> Result<Builtin, super::ServiceError> {
+pub(crate) fn find_route_name(name: &str) -> Result<Builtin, super::ServiceError> {
     let name = Language::ALL
         .iter()
         .flat_map(|l| l.front_end().extensions())

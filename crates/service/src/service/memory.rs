@@ -27,7 +27,7 @@ use std::time::Duration;
 /// when no ceiling is configured: 15/16, so that the kernel's own use in
 /// the cgroup (page tables, socket buffers, the page cache it may not
 /// reclaim at once) has room before the OOM killer is reached.
-pub const CGROUP_SHARE: (u64, u64) = (15, 16);
+pub(crate) const CGROUP_SHARE: (u64, u64) = (15, 16);
 
 /// How often a render waiting for memory looks at the resident size again.
 const POLL: Duration = Duration::from_millis(50);
@@ -41,7 +41,7 @@ pub trait ResidentReader: Send + Sync {
 
 /// The real reader: `/proc/self/statm`'s resident pages times the page size.
 #[derive(Debug, Default, Clone, Copy)]
-pub struct Statm;
+pub(crate) struct Statm;
 
 impl ResidentReader for Statm {
     fn resident(&self) -> Option<u64> {
@@ -50,13 +50,13 @@ impl ResidentReader for Statm {
 }
 
 /// The process's resident bytes from `/proc/self/statm`; `None` without it.
-pub fn resident_bytes() -> Option<u64> {
+pub(crate) fn resident_bytes() -> Option<u64> {
     let text = std::fs::read_to_string("/proc/self/statm").ok()?;
     Some(parse_statm(&text)?.saturating_mul(page_size()))
 }
 
 /// The resident pages (the second field) of a `statm` line.
-pub fn parse_statm(text: &str) -> Option<u64> {
+pub(crate) fn parse_statm(text: &str) -> Option<u64> {
     text.split_whitespace().nth(1)?.parse().ok()
 }
 
@@ -69,13 +69,13 @@ fn page_size() -> u64 {
 /// A cgroup memory limit file's value: bytes, or `None` for `max` (no
 /// limit) or a value so large it means none (cgroup v1 writes
 /// 9223372036854771712 for "unlimited").
-pub fn parse_cgroup_limit(text: &str) -> Option<u64> {
+pub(crate) fn parse_cgroup_limit(text: &str) -> Option<u64> {
     let v: u64 = text.trim().parse().ok()?;
     (v > 0 && v < 1 << 60).then_some(v)
 }
 
 /// The cgroup's memory limit in bytes, if the process runs under one.
-pub fn cgroup_limit() -> Option<u64> {
+pub(crate) fn cgroup_limit() -> Option<u64> {
     ["/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"]
         .iter()
         .find_map(|p| std::fs::read_to_string(Path::new(p)).ok().and_then(|t| parse_cgroup_limit(&t)))
@@ -83,7 +83,7 @@ pub fn cgroup_limit() -> Option<u64> {
 
 /// The ceiling the guard enforces: `configured` when given (0: off), else
 /// [`CGROUP_SHARE`] of `cgroup` when there is one, else off.
-pub fn effective_ceiling(configured: Option<u64>, cgroup: Option<u64>) -> Option<u64> {
+pub(crate) fn effective_ceiling(configured: Option<u64>, cgroup: Option<u64>) -> Option<u64> {
     match configured {
         Some(0) => None,
         Some(c) => Some(c),
@@ -168,7 +168,7 @@ impl MemoryGuard {
 
 /// The size from which glibc's malloc maps each block on its own (and
 /// unmaps it when freed): 1 MiB, fixed.
-pub const MMAP_THRESHOLD: i32 = 1 << 20;
+pub(crate) const MMAP_THRESHOLD: i32 = 1 << 20;
 
 /// Fixes glibc's mmap threshold at [`MMAP_THRESHOLD`]. By default glibc
 /// raises the threshold to the size of the largest mapped block freed (up

@@ -22,7 +22,7 @@ use super::request::RenderBody;
 use axum::http::HeaderMap;
 
 /// The `Vary` value of a response whose bytes depend on whether the caller is a phone.
-pub const VARY: &str = "Sec-CH-UA-Mobile, User-Agent";
+pub(crate) const VARY: &str = "Sec-CH-UA-Mobile, User-Agent";
 
 /// Adds `Vary: Sec-CH-UA-Mobile, User-Agent` to a response in `format`
 /// when a phone's default could have changed its bytes (a format with GPU
@@ -37,7 +37,7 @@ pub fn vary(h: &mut axum::http::HeaderMap, format: crate::export::Format) {
 const PHONE_AGENTS: &[&str] = &["Android", "Dalvik", "okhttp/", "iPhone", "iPad", "iOS", "CFNetwork/"];
 
 /// Whether the request's headers say it comes from a phone (see the module documentation).
-pub fn is_phone(headers: &HeaderMap) -> bool {
+pub(crate) fn is_phone(headers: &HeaderMap) -> bool {
     let hint = headers.get("sec-ch-ua-mobile").and_then(|v| v.to_str().ok()).is_some_and(|v| v.trim() == "?1");
     let agent = headers.get("user-agent").and_then(|v| v.to_str().ok()).unwrap_or("");
     hint || PHONE_AGENTS.iter().any(|token| agent.contains(token))
@@ -47,7 +47,7 @@ impl RenderBody {
     /// The body with a phone's default filled in: `instancing: flat` when
     /// the caller is a phone and the body names no instancing. Applied
     /// before [`RenderBody::plan`], so the key and the bytes follow it.
-    pub fn with_phone_default(mut self, phone: bool) -> RenderBody {
+    pub(crate) fn with_phone_default(mut self, phone: bool) -> RenderBody {
         if phone && self.options.instancing.is_none() {
             self.options.instancing = Some(crate::core::Choice::name(crate::export::Instancing::Flat).to_string());
         }

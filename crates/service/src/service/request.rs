@@ -35,7 +35,10 @@ impl From<InvalidOptions> for ServiceError {
 #[derive(Debug, Clone, PartialEq, serde::Serialize, ToSchema)]
 #[serde(untagged)]
 #[schema(as = ParamValue)]
-pub enum ParamValueSchema {
+// Only its shape is read (utoipa derives the OpenAPI schema from it); nothing
+// constructs it, so rustc would call its variants dead.
+#[allow(dead_code, reason = "a schema-only type: utoipa reads its shape, nothing constructs it")]
+pub(crate) enum ParamValueSchema {
     /// A number.
     Number(f64),
     /// A boolean.
@@ -49,7 +52,10 @@ pub enum ParamValueSchema {
 #[derive(Debug, Clone, PartialEq, serde::Serialize, ToSchema)]
 #[serde(untagged)]
 #[schema(as = Seed)]
-pub enum SeedSchema {
+// Only its shape is read (utoipa derives the OpenAPI schema from it); nothing
+// constructs it, so rustc would call its variants dead.
+#[allow(dead_code, reason = "a schema-only type: utoipa reads its shape, nothing constructs it")]
+pub(crate) enum SeedSchema {
     /// A whole number from 0 to 2^64 − 1.
     Number(u64),
     /// The same as decimal digits (up to 20).
@@ -240,7 +246,7 @@ pub fn query_body(source: &str, language: Language, ext: &str, query_pairs: &[(S
 }
 
 /// Reads a JSON body into `T`, with serde's message (and position) on failure.
-pub fn from_json<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, ServiceError> {
+pub(crate) fn from_json<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, ServiceError> {
     serde_json::from_slice(body).map_err(|e| ServiceError::BadRequest(format!("malformed JSON request: {e}")))
 }
 

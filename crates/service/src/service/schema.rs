@@ -23,7 +23,7 @@ use crate::pipeline::options::{Doors, RenderOptions};
 use serde_json::{json, Map, Value};
 
 /// The dialect every schema declares.
-pub const DIALECT: &str = "https://json-schema.org/draft/2020-12/schema";
+pub(crate) const DIALECT: &str = "https://json-schema.org/draft/2020-12/schema";
 
 /// The request schema for a grammar called `title` in `language` with the
 /// parameters `params` (in declaration order).

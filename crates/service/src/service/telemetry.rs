@@ -60,7 +60,7 @@ pub enum TelemetryError {
 static TRACING: AtomicBool = AtomicBool::new(false);
 
 /// Whether spans are being exported.
-pub fn tracing_on() -> bool {
+pub(crate) fn tracing_on() -> bool {
     TRACING.load(Ordering::Relaxed)
 }
 
@@ -69,7 +69,7 @@ static WRITER: OnceLock<BatchWriter> = OnceLock::new();
 
 /// Log lines dropped because the writer's queue was full (0 before
 /// [`init`], and in processes that log directly).
-pub fn dropped_lines() -> u64 {
+pub(crate) fn dropped_lines() -> u64 {
     WRITER.get().map_or(0, BatchWriter::dropped)
 }
 
@@ -121,7 +121,7 @@ impl opentelemetry::propagation::Extractor for Carrier {
 
 /// Makes `span` the child of the caller's trace when the request carries a
 /// `traceparent` (`header` looks a header or metadata entry up by name).
-pub fn adopt_parent<'a>(span: &tracing::Span, header: impl Fn(&str) -> Option<&'a str>) {
+pub(crate) fn adopt_parent<'a>(span: &tracing::Span, header: impl Fn(&str) -> Option<&'a str>) {
     if !tracing_on() {
         return;
     }
@@ -136,7 +136,7 @@ pub fn adopt_parent<'a>(span: &tracing::Span, header: impl Fn(&str) -> Option<&'
 /// Exports one child span of the current (request) span per stage that ran
 /// in a render that began at `started`, back to back as the stage clock
 /// lapped them, with the stage, language and format as attributes.
-pub fn stage_spans(started: SystemTime, phases: &PhaseTimes, language: &'static str, format: &'static str) {
+pub(crate) fn stage_spans(started: SystemTime, phases: &PhaseTimes, language: &'static str, format: &'static str) {
     if !tracing_on() {
         return;
     }

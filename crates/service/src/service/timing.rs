@@ -51,7 +51,7 @@ impl RequestTiming {
     /// milliseconds): `queue;dur=0.004, parse;dur=0.210, eval;dur=1.020,
     /// mesh;dur=0.800, export;dur=0.310, cache;desc=miss;dur=0.015`, and on
     /// a hit `cache;desc=hit;dur=0.002, tier;desc=memory`.
-    pub fn header_value(&self) -> String {
+    pub(crate) fn header_value(&self) -> String {
         let mut s = String::new();
         for (name, d) in self.parts() {
             if !s.is_empty() {
@@ -71,12 +71,12 @@ impl RequestTiming {
     }
 
     /// A stage's time in milliseconds, when it ran (for log fields).
-    pub fn stage_ms(&self, phase: Phase) -> Option<f64> {
+    pub(crate) fn stage_ms(&self, phase: Phase) -> Option<f64> {
         self.ran.filter(|r| r.phases.did_run(phase)).map(|r| ms(r.phases.get(phase)))
     }
 
     /// The queue wait in milliseconds, when a render ran.
-    pub fn queue_ms(&self) -> Option<f64> {
+    pub(crate) fn queue_ms(&self) -> Option<f64> {
         self.ran.map(|r| ms(r.queue))
     }
 

@@ -18,8 +18,9 @@ mod spikeify;
 mod subdivide;
 pub mod syntax;
 
-pub use extrude::{Extrude, FaceSelect};
-pub use subdivide::loop_beta;
+pub(crate) use extrude::{Extrude, FaceSelect};
+#[cfg(test)]
+pub(crate) use subdivide::loop_beta;
 
 use super::assembly::Assembly;
 use super::halfedge::{halfedge_bytes, HalfEdgeError, HalfEdgeMesh};
@@ -263,7 +264,7 @@ pub enum ModifyError {
 /// Output vertex and triangle counts of `m` applied to a mesh of `v`
 /// vertices, `e` edges and `f` faces, computed without building anything.
 /// Saturates instead of overflowing, so a huge request still fails the budget.
-pub fn output_size(m: &Modifier, v: u64, e: u64, f: u64) -> (u64, u64, u64) {
+pub(crate) fn output_size(m: &Modifier, v: u64, e: u64, f: u64) -> (u64, u64, u64) {
     match m {
         Modifier::Subdivide { levels, .. } => {
             let (mut v, mut e, mut f) = (v, e, f);
@@ -302,7 +303,7 @@ fn admit(budget: &mut Budget, v: u64, f: u64) -> Result<u64, LimitExceeded> {
 /// budget before it is built; intermediate meshes' memory is released as
 /// they are dropped, and the result's own memory is released on return (the
 /// caller accounts for whatever it keeps).
-pub fn apply_all(mesh: HalfEdgeMesh, ops: &[Modifier], budget: &mut Budget) -> Result<HalfEdgeMesh, ModifyError> {
+pub(crate) fn apply_all(mesh: HalfEdgeMesh, ops: &[Modifier], budget: &mut Budget) -> Result<HalfEdgeMesh, ModifyError> {
     let mut held = admit(budget, mesh.vertex_count() as u64, mesh.face_count() as u64)?;
     let mut mesh = mesh;
     for op in ops {
@@ -337,7 +338,7 @@ pub fn apply(mesh: &HalfEdgeMesh, op: &Modifier) -> Result<HalfEdgeMesh, ModifyE
 /// to give up ([`ModifyError::Stopped`]): one subdivision of a mesh of
 /// millions of triangles takes seconds, so checking the deadline only
 /// between modifiers overran it threefold (issue 17's stacking string).
-pub fn apply_until(mesh: &HalfEdgeMesh, op: &Modifier, stop: &dyn Fn() -> bool) -> Result<HalfEdgeMesh, ModifyError> {
+pub(crate) fn apply_until(mesh: &HalfEdgeMesh, op: &Modifier, stop: &dyn Fn() -> bool) -> Result<HalfEdgeMesh, ModifyError> {
     let name = op.name();
     let invalid = |message: String| ModifyError::Invalid { modifier: name, message };
     let rebuild = |positions: Vec<DVec3>, tris: Vec<[u32; 3]>| {

@@ -6,7 +6,7 @@ use glam::DVec3;
 
 /// β of Haglund 2009 eq 2.6 for a vertex of valence `n`:
 /// (1/n)·(5/8 − (3 + 2·cos(2π/n))²/64). 3/16 at n = 3, 1/16 at n = 6.
-pub fn loop_beta(n: usize) -> f64 {
+pub(crate) fn loop_beta(n: usize) -> f64 {
     if n == 0 {
         return 0.0;
     }

@@ -86,9 +86,9 @@ fn axis(op: &str, k: Option<String>) -> Result<Axis, String> {
 
 /// Most subdivision levels one stage may ask for (20·4¹² is already 335M faces;
 /// the budget stops far earlier, this only bounds the size arithmetic).
-pub const MAX_LEVELS: f64 = 12.0;
+pub(crate) const MAX_LEVELS: f64 = 12.0;
 /// Most stacked extrusion steps per face.
-pub const MAX_STEPS: f64 = 1000.0;
+pub(crate) const MAX_STEPS: f64 = 1000.0;
 
 /// Parses one stage: the modifier `name` (case-insensitive) and its words.
 pub fn stage(name: &str, words: &[Word]) -> Result<Modifier, String> {

@@ -67,13 +67,13 @@ pub struct GltfOptions {
 
 impl GltfOptions {
     /// Whether every option is off (the plain writer applies).
-    pub fn is_plain(&self) -> bool {
+    pub(crate) fn is_plain(&self) -> bool {
         !self.weld && !self.quantize && self.compress == Compression::None
     }
 }
 
 /// Reads a compression name (`none` or `meshopt`), as the CLI and the routes spell it.
-pub fn parse_compression(name: &str) -> Result<Compression, String> {
+pub(crate) fn parse_compression(name: &str) -> Result<Compression, String> {
     match name.trim().to_ascii_lowercase().as_str() {
         "" | "none" => Ok(Compression::None),
         "meshopt" => Ok(Compression::Meshopt),
@@ -417,7 +417,7 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
 
 /// Writes a compact binary glTF (.glb) as `opts` say. Reserves the output
 /// size in `budget` before assembling it.
-pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let built = build(meshes, meta, opts)?;
     // Building (welding, quantising, compressing) is the work; writing is a copy.
     budget.check_deadline()?;
@@ -447,7 +447,7 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, bu
 }
 
 /// Writes a compact JSON glTF with buffer 0 embedded as a base64 data URI.
-pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let mut built = build(meshes, meta, opts)?;
     budget.check_deadline()?;
     if let Some(b0) = built.root.buffers.get_mut(DATA_BUFFER as usize) {

@@ -24,7 +24,7 @@ pub(super) const EXT_MESHOPT: &str = "EXT_meshopt_compression";
 /// `KHR_mesh_quantization`: integer vertex attributes.
 pub(super) const KHR_QUANT: &str = "KHR_mesh_quantization";
 /// `EXT_mesh_gpu_instancing`: per-node instance transforms.
-pub const EXT_INSTANCING: &str = "EXT_mesh_gpu_instancing";
+pub(crate) const EXT_INSTANCING: &str = "EXT_mesh_gpu_instancing";
 
 /// `EXT_meshopt_compression` on a buffer view: where its encoded bytes are
 /// and how to decode them into the view's (fallback) layout.

@@ -11,7 +11,6 @@ use super::buffer::{
     accessor, align4, base64_len, find, invalid, place, view, write_buffer, Base64, Sink, Tracks, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
 };
 use super::document::{plain, InstanceAccessors};
-pub use super::document::EXT_INSTANCING;
 use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
@@ -25,7 +24,7 @@ use json::accessor::{ComponentType, Type};
 /// every instance (the extension's default), so a mesh whose instances are
 /// only moved carries 12 bytes per instance.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct InstanceLayout {
+pub(crate) struct InstanceLayout {
     /// Write ROTATION.
     pub rotation: bool,
     /// Write SCALE.
@@ -43,7 +42,7 @@ impl InstanceLayout {
 
 /// One instance as written (rotation, scale and colour only where its mesh's layout has them).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct InstanceData {
+pub(crate) struct InstanceData {
     /// Translation.
     pub translation: [f32; 3],
     /// Unit rotation (x, y, z, w).
@@ -55,7 +54,7 @@ pub struct InstanceData {
 }
 
 /// Receives one instance: the index of its mesh and its data.
-pub type InstanceSink<'s> = dyn FnMut(usize, &InstanceData) + 's;
+pub(crate) type InstanceSink<'s> = dyn FnMut(usize, &InstanceData) + 's;
 
 /// Where one instanced mesh's per-instance data lives in the buffer.
 #[derive(Debug, Clone, Copy)]
@@ -79,7 +78,7 @@ struct Region {
 /// next slot, so memory stays at the output size however many there are.
 /// Fails with [`ExportError::InvalidMesh`] if `feed` gives other counts or
 /// an instanced mesh has no triangles.
-pub fn write_instanced(
+pub(crate) fn write_instanced(
     meshes: &[NamedMesh],
     counts: &[u64],
     layouts: &[InstanceLayout],

@@ -22,12 +22,12 @@ use glam::{Quat, Vec3};
 
 /// The most per-instance attributes an instanced scene's mesh carries:
 /// placements rotate, scale per axis and each has its own colour.
-pub const SCENE_LAYOUT: InstanceLayout = InstanceLayout { rotation: true, scale: true, colour: true };
+pub(crate) const SCENE_LAYOUT: InstanceLayout = InstanceLayout { rotation: true, scale: true, colour: true };
 
 /// Output bytes per instance of an instanced scene at most (what a front
 /// end promises per placement after a mesh's first, before it knows which
 /// attributes vary).
-pub const SCENE_INSTANCE_BYTES: u64 = SCENE_LAYOUT.bytes();
+pub(crate) const SCENE_INSTANCE_BYTES: u64 = SCENE_LAYOUT.bytes();
 
 /// The attributes a mesh's instances carry: those that vary between them.
 fn layout(v: &Varying) -> InstanceLayout {
@@ -67,7 +67,7 @@ pub fn prototypes(plan: &Plan, scene: &Scene, detail: u32, budget: &mut Budget) 
 /// [`prototypes`]), each drawn once per placement, then the `plain` meshes
 /// of the rest (the meshed [`Plan::residual`]). The placements are read
 /// from `scene` as `plan` walks it and written straight into the output.
-pub fn write_scene(
+pub(crate) fn write_scene(
     scene: &Scene,
     plan: &Plan,
     prototypes: Vec<NamedMesh>,
@@ -98,7 +98,7 @@ pub fn write_scene(
 /// makes of the expanded scene; without it (L-systems) one mesh per (leaf
 /// shape, colour) with TRANSLATION and ROTATION, and SCALE only when some
 /// entry scales. `meta` carries the background, truncation and provenance.
-pub fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta, per_instance_colour: bool, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_instanced(h: &Hierarchy, detail: u32, glb: bool, meta: &ExportMeta, per_instance_colour: bool, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let counts = h.leaf_counts();
     // Mesh of each (shape, colour): by shape alone when colours are per instance.
     let mut index: Vec<Vec<([u8; 4], usize)>> = vec![Vec::new(); h.shapes.len()];

@@ -46,7 +46,7 @@ use crate::geom::NamedMesh;
 use buffer::{align4, animation_tracks, base64_len, find, invalid, place, write_buffer_until, Base64, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES};
 use document::document;
 
-pub use gpu_instancing::{write_instanced, InstanceData, InstanceLayout, InstanceSink, EXT_INSTANCING};
+pub(crate) use gpu_instancing::{write_instanced, InstanceData, InstanceLayout};
 
 /// What both glTF containers carry: GPU instancing of repeated meshes and
 /// hierarchies, and a node graph (bones, animation, a camera path).
@@ -66,7 +66,7 @@ pub const GLB: FormatInfo = FormatInfo {
 /// `gltf`: glTF 2.0 JSON with the buffer as a data URI. base64 inflates
 /// the buffer by 4/3; instanced, it is built raw and then encoded, so an
 /// instance costs its raw and its base64 bytes.
-pub const GLTF: FormatInfo = FormatInfo {
+pub(crate) const GLTF: FormatInfo = FormatInfo {
     name: "gltf",
     extensions: &["gltf"],
     mime: "model/gltf+json",
@@ -98,7 +98,7 @@ fn write_gltf_with(meshes: &[NamedMesh], meta: &ExportMeta, options: &ExportOpti
 ///
 /// Reserves the exact output size in `budget` before allocating it; fails
 /// with [`ExportError::TooLarge`] beyond the format's 4 GiB limit.
-pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let (placed, meshes_end) = place(meshes)?;
     budget.check_deadline()?;
     let tracks = animation_tracks(meta, meshes_end, budget)?;
@@ -136,7 +136,7 @@ pub fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -
 /// The JSON is serialised with an empty data URI and the base64 text is
 /// streamed into the output at that point, so the buffer is never held twice.
 /// Reserves the exact output size in `budget` before allocating it.
-pub fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let (placed, meshes_end) = place(meshes)?;
     budget.check_deadline()?;
     let tracks = animation_tracks(meta, meshes_end, budget)?;

@@ -30,13 +30,13 @@ fn encode(image: &Image, provenance: Option<&Provenance>, budget: &mut Budget) -
 
 /// `tEXt` keywords and values to write (each under 80 Latin-1 bytes; a
 /// handful, so a phone icon stays small).
-pub type TextChunks = Vec<(&'static str, String)>;
+pub(crate) type TextChunks = Vec<(&'static str, String)>;
 
 /// The text chunks of a picture: `Software` (the engine, PNG's registered
 /// keyword) and, for a rendered model, its provenance (`rulemesh:seed`, …),
 /// so a picture found on its own can be traced to its request. All values
 /// are ASCII ([`Provenance::params_json`] escapes the rest), as `tEXt` needs.
-pub fn text_chunks(provenance: Option<&Provenance>) -> TextChunks {
+pub(crate) fn text_chunks(provenance: Option<&Provenance>) -> TextChunks {
     let mut text = vec![("Software", Provenance::engine())];
     text.extend(provenance.map(Provenance::pairs).unwrap_or_default());
     text
@@ -45,7 +45,7 @@ pub fn text_chunks(provenance: Option<&Provenance>) -> TextChunks {
 /// An upper bound on the PNG of a `width`×`height` picture with `text`
 /// chunks: the raw rows (a filter byte each) plus deflate's worst-case
 /// growth of 5 bytes per 16 KiB block, the chunk framing and the text.
-pub fn max_png_bytes(width: u32, height: u32, text: &TextChunks) -> u64 {
+pub(crate) fn max_png_bytes(width: u32, height: u32, text: &TextChunks) -> u64 {
     let raw = u64::from(height) * (u64::from(width) * 4 + 1);
     let text: u64 = text.iter().map(|(k, v)| 12 + k.len() as u64 + 1 + v.len() as u64).sum();
     raw + (raw / 16_384 + 1) * 5 + 1024 + text
@@ -53,13 +53,13 @@ pub fn max_png_bytes(width: u32, height: u32, text: &TextChunks) -> u64 {
 
 /// Encodes `image` as an RGBA PNG with `text`, reserving the output's
 /// worst-case size in `budget` first.
-pub fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     write_rgba(image.size, image.size, &image.rgba, text, budget)
 }
 
 /// Encodes `width`×`height` RGBA8 pixels (a preview, or a contact sheet,
 /// which is not square) the same pinned way as [`write_png`].
-pub fn write_rgba(width: u32, height: u32, rgba: &[u8], text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_rgba(width: u32, height: u32, rgba: &[u8], text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     budget.reserve_memory(max_png_bytes(width, height, text))?;
     let bad = |e: ::png::EncodingError| ExportError::Png(e.to_string());
     let mut out = Vec::new();

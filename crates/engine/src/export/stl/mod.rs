@@ -34,7 +34,7 @@ pub const STL: FormatInfo = FormatInfo {
 /// `stl-ascii`: ASCII STL, at most [`ASCII_FACET_MAX`] bytes a facet. It
 /// shares `.stl` with binary STL, which claims it first: an `.stl` file is
 /// binary unless the format is named.
-pub const STL_ASCII: FormatInfo = FormatInfo {
+pub(crate) const STL_ASCII: FormatInfo = FormatInfo {
     name: "stl-ascii",
     extensions: &["stl"],
     mime: "model/stl",
@@ -97,7 +97,8 @@ fn facet_normal(c: &[[f32; 3]; 3]) -> [f32; 3] {
 /// triangle count, then per triangle the facet normal, three vertices (f32
 /// little-endian) and a zero attribute word. The exact size, 84 + 50·T bytes,
 /// is reserved in `budget` first.
-pub fn write_binary(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+#[cfg(test)]
+pub(crate) fn write_binary(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     write_binary_titled(meshes, &title(None), budget)
 }
 
@@ -114,7 +115,7 @@ pub fn title(provenance: Option<&crate::export::Provenance>) -> String {
 }
 
 /// [`write_binary`] with `title` in the header (cut at 80 bytes).
-pub fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let count = triangle_total(meshes)?;
     let count32 = u32::try_from(count)
         .map_err(|_| ExportError::TooLarge { format: STL.name, detail: format!("{count} triangles exceed the u32 triangle count") })?;
@@ -148,7 +149,7 @@ pub fn write_binary_titled(meshes: &[NamedMesh], title: &str, budget: &mut Budge
 /// identical and the output is deterministic. A facet is at most 284 bytes
 /// (each number at most 15 characters); [`ASCII_FACET_MAX`] per facet is
 /// reserved first and the unused part released once the text is written.
-pub fn write_ascii(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_ascii(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     const HEAD: &str = "solid rulemesh\n";
     const TAIL: &str = "endsolid rulemesh\n";
     let count = triangle_total(meshes)?;

@@ -23,7 +23,7 @@ use std::collections::{BTreeMap, BTreeSet};
 /// working set (about 10 MB) stays below the output of a big model; and
 /// every model up to 65 536 triangles (icons) is one chunk, written as
 /// version 2. docs/strips-format.md ("Chunks") has the measurements.
-pub const CHUNK_TRIANGLES: usize = 1 << 16;
+pub(crate) const CHUNK_TRIANGLES: usize = 1 << 16;
 
 /// Part of a chunk: some triangles of a mesh (indices into its vertices).
 pub type Part<'a> = (&'a Mesh, &'a [u32]);
@@ -35,7 +35,7 @@ type Quantised = [u16; 8];
 /// use, the colours they use (while at most 256), and the chunks and
 /// triangles the model cuts into.
 #[derive(Debug, Clone)]
-pub struct Survey {
+pub(crate) struct Survey {
     lo: [f32; 3],
     hi: [f32; 3],
     colours: BTreeSet<[u8; 4]>,
@@ -59,7 +59,7 @@ impl Survey {
     /// Takes in one piece without tessellating it: a placed piece's corners
     /// are mapped as the mesher maps them (positions only, with the same
     /// arithmetic), its one colour is its vertices' colour.
-    pub fn add_piece(&mut self, piece: &Piece<'_>) -> Result<(), ExportError> {
+    pub(crate) fn add_piece(&mut self, piece: &Piece<'_>) -> Result<(), ExportError> {
         let Piece::Placed { proto, map: (linear, _, translation), colour, .. } = *piece else {
             let Piece::Whole(m) = *piece else { return Ok(()) };
             return self.add(&[(m, &m.indices)]);
@@ -133,7 +133,7 @@ impl Survey {
 
 /// Quantisation shared by every chunk: the model's bounding box, the bit
 /// counts and the palette.
-pub struct Quantiser {
+pub(crate) struct Quantiser {
     lo: [f32; 3],
     ext: [f64; 3],
     pmax: u32,
@@ -186,7 +186,7 @@ impl Quantiser {
 }
 
 /// One coded chunk.
-pub struct EncodedChunk {
+pub(crate) struct EncodedChunk {
     /// Vertices after welding.
     pub vertices: u32,
     /// Triangles kept (zero-area ones dropped).
@@ -198,7 +198,7 @@ pub struct EncodedChunk {
 }
 
 /// A chunk welded and stripified, ready for the codecs ([`WeldedChunk::code`]).
-pub struct WeldedChunk {
+pub(crate) struct WeldedChunk {
     vertices: Vec<Quantised>,
     triangles: Vec<u32>,
 }
@@ -206,12 +206,12 @@ pub struct WeldedChunk {
 /// Codes one chunk: the parts' triangles with the vertices they use. The
 /// result does not depend on how the parts number their vertices (welding
 /// numbers them by first use), only on the triangles' corners, in order.
-pub fn encode_chunk(parts: &[Part<'_>], q: &Quantiser) -> Result<EncodedChunk, ExportError> {
+pub(crate) fn encode_chunk(parts: &[Part<'_>], q: &Quantiser) -> Result<EncodedChunk, ExportError> {
     weld_chunk(parts, q).code()
 }
 
 /// The first half of [`encode_chunk`]: quantise, weld and stripify.
-pub fn weld_chunk(parts: &[Part<'_>], q: &Quantiser) -> WeldedChunk {
+pub(crate) fn weld_chunk(parts: &[Part<'_>], q: &Quantiser) -> WeldedChunk {
     let mut quantised: Vec<Quantised> = Vec::new();
     let mut indices: Vec<u32> = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
     for &(mesh, tris) in parts {
@@ -255,7 +255,7 @@ impl WeldedChunk {
 /// completed it) at a time: placed pieces are tessellated into a buffer,
 /// whole meshes are copied a chunk's window at a time.
 #[derive(Default)]
-pub struct Chunker {
+pub(crate) struct Chunker {
     buf: Mesh,
     /// Pieces taken so far.
     pub pieces: u64,
@@ -263,7 +263,7 @@ pub struct Chunker {
 
 impl Chunker {
     /// Bytes the buffer holds now.
-    pub fn buffer_bytes(&self) -> u64 {
+    pub(crate) fn buffer_bytes(&self) -> u64 {
         let m = &self.buf;
         (m.positions.capacity() * 12 + m.normals.capacity() * 12 + m.colours.capacity() * 4 + m.indices.capacity() * 4) as u64
     }

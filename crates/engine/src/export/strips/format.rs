@@ -10,13 +10,13 @@ pub const MAGIC: [u8; 4] = *b"RMST";
 /// list of independently coded chunks, so neither the encoder nor a decoder
 /// ever holds more than one chunk's working arrays. The decoders read it and
 /// [`VERSION_ONE_MESH`].
-pub const VERSION: u8 = 3;
+pub(crate) const VERSION: u8 = 3;
 /// The format version of a model of one chunk (at most [`CHUNK_TRIANGLES`](super::chunk::CHUNK_TRIANGLES)
 /// triangles): the body is that chunk's two streams, byte for byte what
 /// version 2 always was (so icons did not change). Version 2 stores the
 /// strip as its triangles (index buffer codec) where version 1 stored the
 /// strip indices (index sequence codec); version 1 is not read.
-pub const VERSION_ONE_MESH: u8 = 2;
+pub(crate) const VERSION_ONE_MESH: u8 = 2;
 /// Bytes before the body: magic, version, flags, bits, bounding box, counts, lengths.
 pub const HEADER_LEN: usize = 52;
 /// Bytes after the body: the CRC32.
@@ -32,7 +32,7 @@ pub const MAX_PALETTE: usize = 256;
 /// The decoder refuses a zstd body that claims to expand more than this
 /// many times (plus 64 KiB): our bodies are already compressed, so a larger
 /// claim can only be a hostile file asking for a huge allocation.
-pub const MAX_ZSTD_RATIO: u64 = 64;
+pub(crate) const MAX_ZSTD_RATIO: u64 = 64;
 /// A block of up to 256 vertices costs at least 4 control bytes in the
 /// vertex codec (version 1), so a stream of `n` bytes cannot hold more than
 /// `64·n` vertices (plus one block); the decoder refuses larger counts
@@ -82,7 +82,7 @@ impl StripsOptions {
 
 /// Octahedral encoding of a normal to two values in `0..=max` (zero normals
 /// encode as +Z, so decoding always yields a unit vector).
-pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
+pub(crate) fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
     let [x, y, z] = n.map(f64::from);
     let l1 = x.abs() + y.abs() + z.abs();
     let (mut u, mut v) = if l1 > 0.0 && l1.is_finite() { (x / l1, y / l1) } else { (0.0, 0.0) };
@@ -101,7 +101,7 @@ pub fn oct_encode(n: [f32; 3], max: u32) -> [u16; 2] {
 /// clamped to `-1..=max + 1` first, which rounds to the same clamped
 /// result, so the cast truncates exactly; half-way cases go away from
 /// zero, as `f64::round` does.
-pub fn quantise_unit(v: f64, max: u32) -> u16 {
+pub(crate) fn quantise_unit(v: f64, max: u32) -> u16 {
     let max = f64::from(max);
     // `clamp` keeps NaN, and NaN casts to 0, as before.
     let x = (v * max).clamp(-1.0, max + 1.0);

@@ -20,7 +20,7 @@
 mod chunk;
 pub mod format;
 
-pub use chunk::CHUNK_TRIANGLES;
+pub(crate) use chunk::CHUNK_TRIANGLES;
 use chunk::{encode_chunk, weld_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
 pub use format::*;
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
@@ -36,7 +36,7 @@ use crate::model::{Hierarchy, Scene};
 /// cases: a vertex block costs at most 4164 bytes per 256 16-byte vertices
 /// (and one partial block), a strip at most 5 indices per triangle at 5
 /// bytes each; zstd's worst-case growth fits in the per-vertex slack.
-pub const STRIPS: FormatInfo = FormatInfo {
+pub(crate) const STRIPS: FormatInfo = FormatInfo {
     name: "strips",
     extensions: &["strips"],
     mime: "application/vnd.rulemesh.strips",
@@ -198,7 +198,7 @@ fn mesh_chunks(meshes: &[NamedMesh], chunk: &mut dyn FnMut(&[Part<'_>]) -> Resul
 /// Encodes `meshes` (merged into one) as a strips file. Deterministic: the
 /// same meshes and options give the same bytes, and the same bytes as
 /// [`write_strips_model`] of the model they were meshed from.
-pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
     budget.reserve_memory(STRIPS.size.of(v, t))?;
@@ -220,7 +220,7 @@ pub fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Bud
 /// hierarchy whose leaves it stands for, not expanded), at a detail, its
 /// pieces in the order of the merged meshes of `layout`.
 #[derive(Debug, Clone, Copy)]
-pub struct ModelSource<'a> {
+pub(crate) struct ModelSource<'a> {
     /// The flat part of the model.
     pub scene: &'a Scene,
     /// An instancing hierarchy, walked leaf by leaf after the scene.
@@ -234,7 +234,7 @@ pub struct ModelSource<'a> {
 /// What the first pass over a model found: bounds, palette, chunk and
 /// triangle counts, and where it stopped.
 #[derive(Debug, Clone)]
-pub struct ModelSurvey {
+pub(crate) struct ModelSurvey {
     survey: Survey,
     pieces: u64,
     /// The limit that cut the model short under `truncate` (the pass stops there, and so will the writer).
@@ -251,7 +251,7 @@ impl ModelSurvey {
 /// Bytes one chunk's coding needs at most besides its output: quantised
 /// vertices, weld tables, the strip and meshoptimizer's own arrays for up to
 /// three vertices per triangle.
-pub const CHUNK_WORKING_SET: u64 = 3 * CHUNK_TRIANGLES as u64 * 128;
+pub(crate) const CHUNK_WORKING_SET: u64 = 3 * CHUNK_TRIANGLES as u64 * 128;
 
 /// Feeds the model's pieces to `chunker` (the first `limit` of them, or all),
 /// reserving the chunker's buffer in `budget` as it grows.
@@ -290,7 +290,7 @@ fn feed(
 /// placed piece's corners, positions only) for the bounding box, the
 /// palette and the chunk count. Under `truncate`, the deadline
 /// stops it (as it stops meshing), and the writer then stops at the same piece.
-pub fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budget) -> Result<ModelSurvey, ExportError> {
+pub(crate) fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budget) -> Result<ModelSurvey, ExportError> {
     let mut survey = Survey::default();
     let mut pieces = 0u64;
     let cut = for_each_piece::<ExportError>(src.scene, src.hierarchy, src.detail, src.layout, on_limit, budget, &mut |piece, _| {
@@ -305,7 +305,7 @@ pub fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budge
 /// model-sized mesh: the same bytes as [`write_strips`] of the merged
 /// meshes of the same model. `survey` is [`survey_model`]'s answer for the
 /// same source; the deadline fails the call.
-pub fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
     budget.check_deadline()?;
     let palette = survey.survey.palette();

@@ -48,7 +48,7 @@ fn write_with(drawing: &Drawing, _: Option<&Provenance>, budget: &mut Budget) ->
 }
 
 /// Formats `v` as C++'s `setprecision(8)` in default notation (`%.8g`).
-pub fn g8(v: f64) -> String {
+pub(crate) fn g8(v: f64) -> String {
     if v == 0.0 {
         // iostream keeps the sign of a negative zero.
         return if v.is_sign_negative() { "-0".into() } else { "0".into() };

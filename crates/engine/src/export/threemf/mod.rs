@@ -23,7 +23,7 @@ use std::io::Write as _;
 
 /// `3mf`: XML text (about 60 bytes a vertex, 45 a triangle) before
 /// compression.
-pub const THREEMF: FormatInfo = FormatInfo {
+pub(crate) const THREEMF: FormatInfo = FormatInfo {
     name: "3mf",
     extensions: &["3mf"],
     mime: "model/3mf",
@@ -48,7 +48,7 @@ const RELS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 
 /// The namespace of rulemesh's own `<metadata>` names (3MF requires names
 /// that are not the core specification's to be namespace-qualified).
-pub const PROVENANCE_NAMESPACE: &str = "https://rulemesh.dev/3mf/provenance";
+pub(crate) const PROVENANCE_NAMESPACE: &str = "https://rulemesh.dev/3mf/provenance";
 
 /// Escapes text for an XML attribute or element body.
 fn xml_escape(text: &str) -> String {
@@ -173,7 +173,7 @@ fn model_xml(meshes: &[NamedMesh], welded: &[Welded], colours: &[[u8; 4]], prove
 
 /// Writes a 3MF package (with `provenance` as metadata when given),
 /// reserving its worst-case size first.
-pub fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_3mf(meshes: &[NamedMesh], provenance: Option<&Provenance>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     // 3MF shares vertices: the estimate counts the welded ones (a printed
     // solid's flat mesh has three positions per triangle, about six times
     // as many as it shares; counted unwelded, the Sierpinski bush's million

@@ -37,7 +37,7 @@ fn ident(name: &str, k: usize) -> String {
 }
 
 /// Writes the model as UniGrafix text, reserving its worst-case size first.
-pub fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_ug(meshes: &[NamedMesh], budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let v: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64).sum();
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     let bytes = UG.size.of(v, t);

@@ -75,7 +75,7 @@ fn matrix(out: &mut String, leaf: &PlacedLeaf) {
 /// Writes `h` as a USDZ package of prototypes and instances (see the
 /// module comment), with `meta`'s provenance; a leaf's prototype is its
 /// (shape, colour).
-pub fn write_usdz_hierarchy(h: &Hierarchy, detail: u32, meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_usdz_hierarchy(h: &Hierarchy, detail: u32, meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     let counts = h.leaf_counts();
     let mut index: HashMap<(u32, [u8; 4]), usize> = HashMap::new();
     let mut prototypes: Vec<NamedMesh> = Vec::new();

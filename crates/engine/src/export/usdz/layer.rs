@@ -19,7 +19,7 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 
 /// The default prim: every mesh and material is below it.
-pub const ROOT: &str = "Model";
+pub(crate) const ROOT: &str = "Model";
 
 /// A mesh's triangles of one colour, re-indexed over the vertices they use.
 pub(super) struct Group {

@@ -85,7 +85,7 @@ fn check_mesh(m: &NamedMesh) -> Result<(), ExportError> {
 /// Writes a USDZ package of `meshes` with `meta`'s provenance, reserving
 /// its worst-case size first. Meshes without triangles are left out (an
 /// empty model is a stage with its materials scope only).
-pub fn write_usdz(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+pub(crate) fn write_usdz(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     meshes.iter().try_for_each(check_mesh)?;
     let t: u64 = meshes.iter().map(|m| m.mesh.triangle_count() as u64).sum();
     // The split by colour: each triangle's three local indices and up to

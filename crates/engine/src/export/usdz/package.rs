@@ -16,15 +16,15 @@ use std::io::Write as _;
 
 /// The alignment of every entry's data, in bytes (the usdz specification's
 /// rule, so that a reader can map a layer or texture in place).
-pub const ALIGNMENT: u16 = 64;
+pub(crate) const ALIGNMENT: u16 = 64;
 
 /// The extra-field header id of the alignment padding: Pixar's
 /// (`zipFile.cpp` writes its padding under `0x1986`).
-pub const PADDING_HEADER_ID: u16 = 0x1986;
+pub(crate) const PADDING_HEADER_ID: u16 = 0x1986;
 
 /// The name of the default layer inside the package: the package's first
 /// entry, which a usdz reader opens as the stage's root layer.
-pub const LAYER_NAME: &str = "model.usda";
+pub(crate) const LAYER_NAME: &str = "model.usda";
 
 /// Packs `layer` (the default layer's text, named [`LAYER_NAME`]) and then
 /// `others` (name, bytes: the prototype layers it references) as a usdz

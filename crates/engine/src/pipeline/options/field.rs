@@ -27,7 +27,7 @@ impl Doors {
     /// gRPC's `RenderRequest` (or, in a group, its `Limits` message) has a field of this name.
     pub const GRPC: Doors = Doors(8);
     /// Every door but the URL query.
-    pub const NOT_QUERY: Doors = Doors(1 | 2 | 8);
+    pub(crate) const NOT_QUERY: Doors = Doors(1 | 2 | 8);
     /// Every door.
     pub const ALL: Doors = Doors(1 | 2 | 4 | 8);
 
@@ -158,7 +158,7 @@ impl OptionField {
 }
 
 /// A doc comment's lines as one paragraph.
-pub fn paragraph(lines: &[&str]) -> String {
+pub(crate) fn paragraph(lines: &[&str]) -> String {
     lines.iter().map(|l| l.trim()).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
 }
 

@@ -8,7 +8,7 @@ use serde::Deserialize;
 
 /// `f` as a `u64` when it is a whole number from 0 to 2^64 − 1 (`8.0`):
 /// JSON Schema's `integer` admits such numbers, so the server reads them.
-pub fn integral_u64(f: f64) -> Option<u64> {
+pub(crate) fn integral_u64(f: f64) -> Option<u64> {
     (f.fract() == 0.0 && (0.0..18_446_744_073_709_551_616.0).contains(&f)).then_some(f as u64)
 }
 
@@ -32,7 +32,7 @@ where
 /// Reads `limits` as a JSON object only: serde would also read a struct
 /// from an array of its fields in order, which the published schema (an
 /// object) does not allow. Null reads as absent.
-pub fn limits_object<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<super::LimitsOptions>, D::Error> {
+pub(crate) fn limits_object<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<super::LimitsOptions>, D::Error> {
     match Option::<serde_json::Map<String, serde_json::Value>>::deserialize(d)? {
         None => Ok(None),
         Some(map) => serde_json::from_value(serde_json::Value::Object(map)).map(Some).map_err(serde::de::Error::custom),
@@ -46,7 +46,7 @@ pub fn limits_object<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<su
 /// the value and build an error for every variant tried first, and the
 /// URL query's seed (text) came third, so every `GET /v1/models` built two
 /// errors it threw away (issue 33's cached path).
-pub fn seed_number_or_text<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u64>, D::Error> {
+pub(crate) fn seed_number_or_text<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u64>, D::Error> {
     d.deserialize_option(OptionalSeed)
 }
 

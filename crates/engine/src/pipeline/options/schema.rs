@@ -11,7 +11,7 @@ use serde_json::{json, Map, Value};
 
 /// The schema of a seed: a whole number from 0 to 2^64 − 1, or the same as
 /// decimal digits.
-pub fn seed_schema() -> Value {
+pub(crate) fn seed_schema() -> Value {
     json!({
         "description": "Random seed: any 64-bit unsigned value, as a number or (beyond 2^53, where JSON numbers lose precision) a decimal string",
         "anyOf": [
@@ -43,7 +43,7 @@ pub fn seed_text_pattern() -> String {
 }
 
 /// A group's schema (the limits): an object of its fields' schemas, nothing else.
-pub fn group_schema(fields: &[OptionField], description: &str) -> Value {
+pub(crate) fn group_schema(fields: &[OptionField], description: &str) -> Value {
     let properties: Map<String, Value> = fields.iter().map(|f| (f.name.to_string(), f.schema.clone())).collect();
     json!({ "type": "object", "additionalProperties": false, "description": description, "properties": properties })
 }

@@ -4,7 +4,7 @@
 //! operators; an identifier left over counts as 0.
 
 /// Evaluates `s`; an error message when it is not an expression.
-pub fn eval_condition(s: &str) -> Result<i64, String> {
+pub(crate) fn eval_condition(s: &str) -> Result<i64, String> {
     let toks = tokens(s)?;
     let mut p = P { t: &toks, i: 0, depth: 0 };
     let v = p.ternary()?;

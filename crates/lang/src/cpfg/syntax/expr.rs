@@ -12,7 +12,7 @@ use super::{BinOp, Expr, Func, Stmt, Target, UnOp};
 use crate::core::{ParseError, Span};
 
 /// Deepest expression or block nesting accepted (the parser recurses).
-pub const MAX_NESTING: u32 = 200;
+pub(crate) const MAX_NESTING: u32 = 200;
 
 /// Names in scope while parsing.
 #[derive(Debug, Default)]
@@ -47,7 +47,7 @@ impl Names {
 }
 
 /// A cursor over the preprocessed text.
-pub struct Cur<'a> {
+pub(crate) struct Cur<'a> {
     /// The characters.
     pub c: Vec<char>,
     /// Position.
@@ -92,7 +92,7 @@ impl<'a> Cur<'a> {
     }
 
     /// The source position of index `i`.
-    pub fn span_at(&self, i: usize) -> Span {
+    pub(crate) fn span_at(&self, i: usize) -> Span {
         let line = self.line_starts.partition_point(|&s| s <= i);
         let col = i - self.line_starts[line - 1] + 1;
         self.pp.span(line as u32, col as u32)
@@ -109,7 +109,7 @@ impl<'a> Cur<'a> {
     }
 
     /// An error at index `i`.
-    pub fn err_at<T>(&self, i: usize, msg: impl Into<String>) -> Result<T, ParseError> {
+    pub(crate) fn err_at<T>(&self, i: usize, msg: impl Into<String>) -> Result<T, ParseError> {
         let line = self.line_starts.partition_point(|&s| s <= i) as u32;
         let msg = msg.into();
         let msg = match self.pp.included_file(line) {
@@ -131,7 +131,7 @@ impl<'a> Cur<'a> {
 
     /// Skips blanks: spaces, tabs, `\r`, a newline followed by a tab, and
     /// inside braces every newline.
-    pub fn blanks(&mut self) {
+    pub(crate) fn blanks(&mut self) {
         while let Some(ch) = self.peek() {
             match ch {
                 ' ' | '\t' | '\r' => self.i += 1,
@@ -142,13 +142,13 @@ impl<'a> Cur<'a> {
     }
 
     /// At a line end (or the end of the text) after blanks.
-    pub fn at_eol(&mut self) -> bool {
+    pub(crate) fn at_eol(&mut self) -> bool {
         self.blanks();
         matches!(self.peek(), None | Some('\n'))
     }
 
     /// Skips to the start of the next line.
-    pub fn next_line(&mut self) {
+    pub(crate) fn next_line(&mut self) {
         while let Some(ch) = self.peek() {
             self.i += 1;
             if ch == '\n' && self.c.get(self.i) != Some(&'\t') {
@@ -217,12 +217,12 @@ impl<'a> Cur<'a> {
     }
 
     /// The next token, not consumed.
-    pub fn peek_tok(&mut self) -> Result<Tok, ParseError> {
+    pub(crate) fn peek_tok(&mut self) -> Result<Tok, ParseError> {
         Ok(self.scan()?.0)
     }
 
     /// Consumes and returns the next token.
-    pub fn tok(&mut self) -> Result<Tok, ParseError> {
+    pub(crate) fn tok(&mut self) -> Result<Tok, ParseError> {
         let (t, e) = self.scan()?;
         self.i = e;
         Ok(t)
@@ -238,7 +238,7 @@ impl<'a> Cur<'a> {
     }
 
     /// Consumes operator `op` when it comes next.
-    pub fn eat(&mut self, op: &str) -> Result<bool, ParseError> {
+    pub(crate) fn eat(&mut self, op: &str) -> Result<bool, ParseError> {
         let (t, e) = self.scan()?;
         if t == Tok::Op(leak(op)) {
             self.i = e;

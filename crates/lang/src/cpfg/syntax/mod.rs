@@ -15,7 +15,8 @@ mod parser;
 pub mod preprocess;
 pub mod pure;
 
-pub use parser::{parse, parse_with};
+pub use parser::parse;
+pub(crate) use parser::parse_with;
 
 use crate::core::{Diagnostic, Span};
 
@@ -296,18 +297,4 @@ pub struct Cpfg {
     pub arrays: Vec<Array>,
     /// Non-fatal diagnostics.
     pub warnings: Vec<Diagnostic>,
-}
-
-impl Cpfg {
-    /// True when every production (and decomposition) is context-free and
-    /// deterministic and no block has side effects, so equal modules derive
-    /// equal subtrees (what instancing needs).
-    pub fn context_free(&self) -> bool {
-        let plain = |p: &Production| p.left.is_empty() && p.right.is_empty() && p.pred.len() == 1 && p.pre.is_empty() && p.post.is_empty();
-        self.seed.is_none()
-            && self.start_each.is_empty()
-            && self.end_each.is_empty()
-            && self.productions.iter().all(plain)
-            && self.decomposition.productions.iter().all(plain)
-    }
 }

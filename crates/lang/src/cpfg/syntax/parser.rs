@@ -9,7 +9,7 @@ use crate::core::{Diagnostic, ParseError};
 use std::collections::BTreeMap;
 
 /// Largest array accepted (elements), so a declaration cannot exhaust memory.
-pub const MAX_ARRAY_ELEMENTS: usize = 1 << 20;
+pub(crate) const MAX_ARRAY_ELEMENTS: usize = 1 << 20;
 
 /// Parses a cpfg L-system with no files beside it.
 pub fn parse(source: &[u8]) -> Result<Cpfg, ParseError> {
@@ -18,7 +18,7 @@ pub fn parse(source: &[u8]) -> Result<Cpfg, ParseError> {
 
 /// Parses a cpfg L-system, resolving `#include` against `files`, with
 /// macros predefined (the view's function names, as cpfg passes `-D`).
-pub fn parse_with(source: &[u8], files: &BTreeMap<String, Vec<u8>>, predefined: &[(String, String)]) -> Result<Cpfg, ParseError> {
+pub(crate) fn parse_with(source: &[u8], files: &BTreeMap<String, Vec<u8>>, predefined: &[(String, String)]) -> Result<Cpfg, ParseError> {
     let pp = preprocess(source, files, predefined)?;
     parse_text(&pp)
 }

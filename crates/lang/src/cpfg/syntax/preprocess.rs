@@ -23,11 +23,11 @@ use crate::core::{ParseError, Span};
 use std::collections::{BTreeMap, HashMap};
 
 /// Deepest `#include` nesting accepted.
-pub const MAX_INCLUDE_DEPTH: usize = 16;
+pub(crate) const MAX_INCLUDE_DEPTH: usize = 16;
 /// Deepest macro-within-macro expansion accepted.
-pub const MAX_EXPANSION_DEPTH: usize = 64;
+pub(crate) const MAX_EXPANSION_DEPTH: usize = 64;
 /// Largest preprocessed text accepted (macro bombs stop here).
-pub const MAX_OUTPUT_BYTES: usize = 8 << 20;
+pub(crate) const MAX_OUTPUT_BYTES: usize = 8 << 20;
 
 /// Headers of the C library that models include without using; they are empty.
 const SYSTEM_HEADERS: &[&str] = &["math.h", "stdio.h", "stdlib.h", "memory.h", "string.h"];
@@ -58,7 +58,7 @@ impl Preprocessed {
     }
 
     /// The file of output line `line` (1-based), when it is not the main source.
-    pub fn included_file(&self, line: u32) -> Option<&str> {
+    pub(crate) fn included_file(&self, line: u32) -> Option<&str> {
         match self.origins.get(line.saturating_sub(1) as usize) {
             Some(&(f, _)) if f > 0 => self.files.get(f as usize).map(String::as_str),
             _ => None,

@@ -67,7 +67,7 @@ pub fn parse(text: &str) -> Option<[u8; 3]> {
 
 /// Qt's `QColor::toHsv` of 8-bit RGB: hue in whole degrees (−1 for greys),
 /// saturation and value in [0, 1] on Qt's 0–255 grid.
-pub fn rgb_to_hsv(rgb: [u8; 3]) -> [f64; 3] {
+pub(crate) fn rgb_to_hsv(rgb: [u8; 3]) -> [f64; 3] {
     let [r, g, b] = rgb.map(f64::from);
     let max = r.max(g).max(b);
     let min = r.min(g).min(b);

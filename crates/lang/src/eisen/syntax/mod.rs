@@ -27,7 +27,7 @@ pub mod preprocess;
 use crate::core::{Diagnostic, ParseError, Span};
 use glam::{DMat4, DVec3};
 
-pub use preprocess::GuiParam;
+pub(crate) use preprocess::GuiParam;
 
 /// True when `text` is a Structure Synth JavaScript script (its first
 /// non-blank line starts with `#javascript`).
@@ -44,7 +44,7 @@ use tokens::tokenize;
 /// Guesses whether `text` is EisenScript (used when no language is named).
 /// Looks for what MDG and L-systems never write: `#define`/`#javascript`
 /// lines, `set maxdepth|maxobjects|background|…` lines and `md`/`w` rule modifiers.
-pub fn looks_like_eisenscript(text: &str) -> bool {
+pub(crate) fn looks_like_eisenscript(text: &str) -> bool {
     const SETS: [&str; 10] =
         ["maxdepth", "maxobjects", "background", "colorpool", "seed", "minsize", "maxsize", "translation", "rotation", "raytracer::"];
     text.lines().any(|l| {
@@ -136,7 +136,7 @@ impl Default for Transform {
 impl Transform {
     /// True when applying it draws a colour from the pool (`color random`,
     /// which Structure Synth stores as an absolute hue above 360).
-    pub fn draws_colour(&self) -> bool {
+    pub(crate) fn draws_colour(&self) -> bool {
         self.absolute && self.delta_h > 360.0
     }
 

@@ -16,9 +16,9 @@ use crate::{Diagnostic, Span};
 use crate::core::PrimitiveKind;
 
 /// Symbol id of `[` (push the turtle state); interned first in every system.
-pub const SYM_PUSH: u32 = 0;
+pub(crate) const SYM_PUSH: u32 = 0;
 /// Symbol id of `]` (pop the turtle state); interned second in every system.
-pub const SYM_POP: u32 = 1;
+pub(crate) const SYM_POP: u32 = 1;
 
 /// A module in an axiom or successor: a symbol and its argument expressions.
 #[derive(Debug, Clone, PartialEq)]
@@ -118,13 +118,13 @@ pub struct LSystem {
 
 impl LSystem {
     /// The id of a symbol by name, if the system uses it.
-    pub fn symbol(&self, name: &str) -> Option<u32> {
+    pub(crate) fn symbol(&self, name: &str) -> Option<u32> {
         self.symbols.iter().position(|s| s == name).map(|i| i as u32)
     }
 
     /// True when every production is context-free, condition-free, deterministic and
     /// parameter-free, so string lengths can be predicted per level by counting symbols.
-    pub fn is_d0l(&self) -> bool {
+    pub(crate) fn is_d0l(&self) -> bool {
         let plain = |p: &Production| {
             p.left.is_empty()
                 && p.right.is_empty()

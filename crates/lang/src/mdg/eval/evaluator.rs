@@ -45,7 +45,7 @@ pub struct EvalOptions {
 }
 
 /// The memory promised for later stages by `scene`'s instances under `options`.
-pub fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
+pub(crate) fn promised_bytes(scene: &Scene, options: &EvalOptions) -> u64 {
     let d = &options.downstream;
     // The machine's charges replayed: primitives and shapes are tallied apart.
     let mut tally = Tally::new(d.per_instance);
@@ -77,7 +77,7 @@ impl Default for EvalOptions {
 /// in every format (glTF, 3MF, coloured STL, the PNG preview) instead of a
 /// black silhouette. A program that sets any colour starts at black as the
 /// thesis says, so explicit colours (black included) are kept exactly.
-pub const NEUTRAL_GREY: f64 = 0.8;
+pub(crate) const NEUTRAL_GREY: f64 = 0.8;
 
 /// The colour offsets evaluation starts from: black, or [`NEUTRAL_GREY`]
 /// when the program never adds to red, green or blue ([`Program::sets_colour`]).

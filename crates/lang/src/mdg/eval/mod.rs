@@ -15,16 +15,17 @@ mod select;
 mod shapes;
 mod share;
 
-pub use evaluator::{evaluate, evaluate_hierarchy, promised_bytes, EvalOptions};
+pub use evaluator::{evaluate, evaluate_hierarchy, EvalOptions};
+pub(crate) use evaluator::promised_bytes;
 pub use params::bind_params;
 
 use crate::core::budget::Budget;
 use crate::core::timing::{Phase, StageClock};
 use crate::ir::Program;
 use crate::Language;
-use crate::core::budget::{Limit, OnLimit};
+use crate::core::budget::OnLimit;
 use crate::model::scene::Scene;
-use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, HierarchyUse, Model};
+use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, Model};
 
 /// Binds the request's parameters to `program` (parsed from MDG, a
 /// stacking string or UniGrafix: `language` says which) and evaluates it
@@ -57,41 +58,17 @@ pub fn build_model(language: Language, program: Program, req: &BuildRequest<'_>,
     })
 }
 
-/// The program's hierarchy when the request's output uses one as it is and
-/// the program shares something, charged as that output materialises it:
-/// `format=scene` its entries and leaf shapes, instanced glTF one transform
-/// per leaf and one mesh per (shape, colour). Under `truncate` a hierarchy
-/// that does not fit is given up (its charges refunded) for the flat
-/// derivation, which stops at the limit.
+/// The program's hierarchy when the request asks for one and the program
+/// shares something, charged for what building it makes (the pipeline
+/// charges its size or expansion as the route writes it). Under `truncate`
+/// a hierarchy that does not fit is given up (its charges refunded) for the
+/// flat derivation, which stops at the limit.
 fn hierarchy(program: &Program, params: &[f64], options: &EvalOptions, req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Option<Hierarchy>, BuildError> {
-    let wanted = match req.hierarchy {
-        HierarchyUse::Required | HierarchyUse::Union | HierarchyUse::Streamed => true,
-        HierarchyUse::Preferred => req.downstream.per_instance.is_some(),
-        HierarchyUse::Never => false,
-    };
-    if !wanted {
+    if !req.hierarchy {
         return Ok(None);
     }
     let mark = budget.mark();
-    let built = evaluate_hierarchy(program, params, options, budget).and_then(|h| {
-        let Some(h) = h else { return Ok(None) };
-        match req.hierarchy {
-            HierarchyUse::Required => budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64))?,
-            // Streamed strips tessellate every leaf as they write it, and the
-            // union's fallback expands every leaf: charged as the flat derivation would be.
-            HierarchyUse::Streamed | HierarchyUse::Union => {
-                budget.check_total(Limit::Primitives, h.leaves())?;
-                budget.check_total(Limit::Triangles, h.triangles(req.detail))?;
-            }
-            HierarchyUse::Preferred | HierarchyUse::Never => {
-                budget.check_total(Limit::Primitives, h.leaves())?;
-                let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(req.detail))).fold(0u64, u64::saturating_add);
-                budget.check_total(Limit::Triangles, meshes)?;
-            }
-        }
-        Ok(Some(h))
-    });
-    match built {
+    match evaluate_hierarchy(program, params, options, budget) {
         Ok(h) => Ok(h),
         Err(EvalError::Limit(_)) if req.on_limit == OnLimit::Truncate => {
             budget.rewind(mark);

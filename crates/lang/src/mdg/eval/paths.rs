@@ -28,7 +28,7 @@ pub(super) struct Capture {
 /// How many path, profile or camera rules may be evaluated one inside
 /// another (a path rule whose body uses an animated rule whose path uses …).
 /// Real grammars nest two or three; the bound keeps the call stack small.
-pub const MAX_CAPTURE_NESTING: usize = 32;
+pub(crate) const MAX_CAPTURE_NESTING: usize = 32;
 
 impl<'p, 'b> Machine<'p, 'b> {
     /// Records which bone a new piece of geometry belongs to (when the scene has a rig).

@@ -10,7 +10,7 @@ use crate::core::{ParseError, Span};
 
 /// A token kind.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Tok<'a> {
+pub(crate) enum Tok<'a> {
     /// A name or keyword.
     Ident(&'a str),
     /// A number literal with its optional suffix (`t` or `d`).
@@ -44,7 +44,7 @@ impl std::fmt::Display for Tok<'_> {
 
 /// A token with its position.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Token<'a> {
+pub(crate) struct Token<'a> {
     /// What it is.
     pub tok: Tok<'a>,
     /// Where it is in the original source.

@@ -2,7 +2,7 @@
 //! preprocessor and parser producing the shared IR. The language as built is
 //! described in `docs/mdg.md`.
 
-pub mod lexer;
+pub(crate) mod lexer;
 pub mod parser;
 pub mod preprocess;
 

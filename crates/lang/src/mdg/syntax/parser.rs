@@ -39,16 +39,16 @@ mod rules;
 use params::Define;
 
 /// Maximum nesting of blocks, iterator chains, parentheses and expression trees.
-pub const MAX_NESTING: u32 = crate::expr::grammar::MAX_NESTING;
+pub(crate) const MAX_NESTING: u32 = crate::expr::grammar::MAX_NESTING;
 
 /// The parameter `@presets` declares.
-pub const PRESET_PARAM: &str = "preset";
+pub(crate) const PRESET_PARAM: &str = "preset";
 
 /// The largest `fps` a grammar may set (frames are sampled per tick).
-pub const MAX_FPS: f64 = 240.0;
+pub(crate) const MAX_FPS: f64 = 240.0;
 
 /// The longest `duration` a grammar may set, in seconds.
-pub const MAX_DURATION: f64 = 3600.0;
+pub(crate) const MAX_DURATION: f64 = 3600.0;
 
 type PResult<T> = Result<T, ParseError>;
 

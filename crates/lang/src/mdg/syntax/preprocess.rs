@@ -11,7 +11,7 @@ use crate::core::{Diagnostic, ParseError, Span};
 use std::collections::{HashMap, HashSet};
 
 /// Maximum nesting of `@expand` inside macro bodies.
-pub const MAX_EXPAND_DEPTH: usize = 16;
+pub(crate) const MAX_EXPAND_DEPTH: usize = 16;
 
 /// How the columns of one output line map back to the source.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -304,7 +304,7 @@ fn run(st: &mut State, lines: &[(u32, ColMap, &str)], depth: usize) -> Result<()
 }
 
 /// Most nested `@import`s (a grammar importing one that imports …).
-pub const MAX_IMPORT_DEPTH: usize = 8;
+pub(crate) const MAX_IMPORT_DEPTH: usize = 8;
 
 /// `@import NAME`: the built-in grammar `grammars/NAME.mdg`, preprocessed in
 /// place, without its `startshape` lines (the importer's start applies).

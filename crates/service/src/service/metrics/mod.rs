@@ -33,17 +33,17 @@ use std::time::Duration;
 /// Upper bounds (seconds) of the request, render, stage and queue-wait
 /// histogram buckets: from 10 µs (a cached answer, or a stage of a small
 /// grammar) to 30 s (a render at the ceiling's deadline).
-pub const BUCKETS: [f64; 20] =
+pub(crate) const BUCKETS: [f64; 20] =
     [0.00001, 0.000025, 0.00005, 0.0001, 0.00025, 0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0, 30.0];
 
 /// Upper bounds (seconds) of the cache lookup histogram buckets: memory
 /// answers in microseconds, disk and Redis in fractions of a millisecond.
-pub const LOOKUP_BUCKETS: [f64; 13] = [0.00001, 0.00005, 0.0001, 0.00025, 0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25];
+pub(crate) const LOOKUP_BUCKETS: [f64; 13] = [0.00001, 0.00005, 0.0001, 0.00025, 0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25];
 
 /// The content type of the OpenMetrics text exposition.
-pub const OPENMETRICS: &str = "application/openmetrics-text; version=1.0.0; charset=utf-8";
+pub(crate) const OPENMETRICS: &str = "application/openmetrics-text; version=1.0.0; charset=utf-8";
 /// The content type of the classic Prometheus text exposition.
-pub const PROMETHEUS_TEXT: &str = "text/plain; version=0.0.4; charset=utf-8";
+pub(crate) const PROMETHEUS_TEXT: &str = "text/plain; version=0.0.4; charset=utf-8";
 
 type Hist = fn() -> Histogram;
 
@@ -142,7 +142,7 @@ impl Default for Metrics {
 
 impl Metrics {
     /// Metrics whose every sample carries `worker="<id>"` (none when `None`).
-    pub fn for_worker(worker: Option<String>) -> Metrics {
+    pub(crate) fn for_worker(worker: Option<String>) -> Metrics {
         let labels: Vec<(Cow<'static, str>, Cow<'static, str>)> =
             worker.filter(|w| !w.is_empty()).map(|w| (Cow::Borrowed("worker"), Cow::Owned(w))).into_iter().collect();
         let mut registry = Registry::with_prefix_and_labels("rulemesh", labels.into_iter());
@@ -205,13 +205,13 @@ impl Metrics {
     /// Lets the scrape read the cache's own figures (bytes, entries, tier
     /// counters). Pass a handle made before [`ModelCache::with_observer`],
     /// so that the cache and these metrics do not hold each other.
-    pub fn attach_cache(&self, cache: ModelCache) {
+    pub(crate) fn attach_cache(&self, cache: ModelCache) {
         let _ = self.cache.set(cache);
     }
 
     /// Lets the scrape read the process's resident bytes and the memory
     /// guard's ceiling.
-    pub fn attach_memory(&self, guard: Arc<crate::service::memory::MemoryGuard>) {
+    pub(crate) fn attach_memory(&self, guard: Arc<crate::service::memory::MemoryGuard>) {
         let _ = self.memory.set(guard);
     }
 
@@ -221,7 +221,7 @@ impl Metrics {
     }
 
     /// Counts a render that waited for memory and then started.
-    pub fn memory_waited(&self) {
+    pub(crate) fn memory_waited(&self) {
         self.memory_waits.inc();
     }
 
@@ -233,12 +233,12 @@ impl Metrics {
     }
 
     /// Counts model bytes sent in `format`.
-    pub fn bytes_out(&self, protocol: &'static str, format: Format, bytes: usize) {
+    pub(crate) fn bytes_out(&self, protocol: &'static str, format: Format, bytes: usize) {
         self.response_bytes.get_or_create(&BytesLabels { protocol, format: format.name() }).inc_by(bytes as u64);
     }
 
     /// Records one pipeline run and its duration.
-    pub fn render_done(&self, took: Duration) {
+    pub(crate) fn render_done(&self, took: Duration) {
         self.renders.inc();
         self.render_seconds.observe(took.as_secs_f64());
     }
@@ -252,7 +252,7 @@ impl Metrics {
     }
 
     /// Records how long a render waited for its slot.
-    pub fn queue_wait(&self, took: Duration) {
+    pub(crate) fn queue_wait(&self, took: Duration) {
         self.queue_wait_seconds.observe(took.as_secs_f64());
     }
 
@@ -277,7 +277,7 @@ impl Metrics {
     }
 
     /// Adjusts the in-flight renders gauge.
-    pub fn in_flight(&self, delta: i64) {
+    pub(crate) fn in_flight(&self, delta: i64) {
         self.in_flight.inc_by(delta);
     }
 
@@ -302,22 +302,22 @@ impl Metrics {
     }
 
     /// Counts an HTTP connection the server closed, by reason (`header_timeout`, `idle`).
-    pub fn connection_closed(&self, reason: &'static str) {
+    pub(crate) fn connection_closed(&self, reason: &'static str) {
         self.connections_closed.get_or_create(&ReasonLabel { reason }).inc();
     }
 
     /// Counts a request refused by access control, by reason (`unauthorized`, `rate_limited`, `javascript_disabled`).
-    pub fn access_rejected(&self, reason: &'static str) {
+    pub(crate) fn access_rejected(&self, reason: &'static str) {
         self.access_rejections.get_or_create(&ReasonLabel { reason }).inc();
     }
 
     /// Counts a render the deadline watchdog ended (the pipeline ran past its deadline).
-    pub fn watchdog_fired(&self) {
+    pub(crate) fn watchdog_fired(&self) {
         self.watchdog.inc();
     }
 
     /// The exposition: OpenMetrics text when `openmetrics`, else the classic text format.
-    pub fn render_text(&self, openmetrics: bool) -> String {
+    pub(crate) fn render_text(&self, openmetrics: bool) -> String {
         let mut s = String::new();
         let encoded = if openmetrics {
             prometheus_client::encoding::text::encode(&mut s, &self.registry)
@@ -332,7 +332,7 @@ impl Metrics {
 }
 
 /// Whether an `Accept` header asks for OpenMetrics (as Prometheus's scraper does).
-pub fn wants_openmetrics(accept: Option<&str>) -> bool {
+pub(crate) fn wants_openmetrics(accept: Option<&str>) -> bool {
     accept.is_some_and(|a| a.split(',').any(|t| t.trim().starts_with("application/openmetrics-text")))
 }
 
