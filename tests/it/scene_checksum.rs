@@ -100,7 +100,7 @@ fn checksum_is_a_scene_option_refused_elsewhere_by_name() {
         }
     }
     let err = body_key(json!({ "format": "strips", "checksum": true })).expect_err("refused");
-    assert!(err.contains("strips always ends with a CRC-32"), "{err}");
+    assert!(err.contains("checksum needs format=scene (format=strips always ends with a CRC-32 of its own)"), "{err}");
     // A request built in Rust, past the validator, is refused by the pipeline.
     let req = RenderRequest { format: Format::Glb, export_options: rulemesh::export::ExportOptions { checksum: true, ..Default::default() }, ..RenderRequest::default() };
     assert!(render(SOURCE.as_bytes(), &req).is_err_and(|e| e.to_string().contains("checksum needs format=scene")));

@@ -180,12 +180,11 @@ pub fn preview_options(format: Format, size: Option<u32>, view: Option<&str>, ba
 pub fn checksum_option(format: Format, checksum: Option<bool>) -> Result<bool, InvalidOptions> {
     if format.info().options != OptionGroup::Scene && checksum.is_some() {
         let scenes: Vec<String> = Format::reading(OptionGroup::Scene).iter().map(|f| format!("format={}", f.name())).collect();
-        return Err(InvalidOptions(format!(
-            "checksum needs {} (format={} carries none rulemesh adds{})",
-            scenes.join(" or "),
-            format.name(),
-            if format.info().options == OptionGroup::Strips { "; strips always ends with a CRC-32" } else { "" }
-        )));
+        let why = match format.info().options {
+            OptionGroup::Strips => format!("format={} always ends with a CRC-32 of its own", format.name()),
+            _ => format!("format={} carries none", format.name()),
+        };
+        return Err(InvalidOptions(format!("checksum needs {} ({why})", scenes.join(" or "))));
     }
     Ok(checksum.unwrap_or(false))
 }
