@@ -5,10 +5,13 @@
  *     -fno-sanitize-recover=all clients/c/fuzz_scene.c clients/c/rulemesh_scene.c -lm -o fuzz_scene
  *   mkdir -p corpus && ./fuzz_scene corpus clients/js/fixtures -max_len=20000
  *
- * The scene format has no checksum, so every mutation reaches the parser
- * as it is. Each input is decoded as given and, when it is at least a
- * header long, again with the header made plausible (magic, version 2, the
- * known flag bits, a detail of 3–10): random bytes rarely start "RMSC".
+ * Each input is decoded as given and, when it is at least a header long,
+ * again with the header made plausible (magic, version 2, the known flag
+ * bits, a detail of 3–10): random bytes rarely start "RMSC". When that
+ * copy's CHECKSUM flag is set, its last four bytes are rewritten to the
+ * CRC-32 of the rest (rulemesh_crc32.inc), as fuzz_strips.c does: without
+ * it nearly every mutation of a checksummed seed would stop at the CRC and
+ * the parser behind it would never see damaged data.
  * The triangle limit is 200 000 and the scratch 64 MiB, so one input costs
  * milliseconds (a real app picks its own limits; these only keep the fuzzer
  * fast).
@@ -24,6 +27,8 @@
 
 #include <stdlib.h>
 #include <string.h>
+
+#include "rulemesh_crc32.inc"
 
 #define MAX_TRIANGLES 200000u
 #define MAX_SCRATCH (64u << 20)
@@ -85,10 +90,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     memcpy(fixed, "RMSC", 4);
     fixed[4] = 2;
     fixed[5] = 0;
-    fixed[6] &= 7;
+    fixed[6] &= 15;
     fixed[7] = 0;
     fixed[8] = (uint8_t)(3 + fixed[8] % 8);
     fixed[9] = fixed[10] = fixed[11] = 0;
+    if (fixed[6] & 8) {
+        const uint32_t crc = rmcrc32(fixed, size - 4);
+        for (int i = 0; i < 4; i++) fixed[size - 4 + (size_t)i] = (uint8_t)(crc >> (8 * i));
+    }
     decode_checked(fixed, size);
     free(fixed);
     return 0;

@@ -11,7 +11,7 @@
  * is the shared kernel: rulemesh_tessellate.inc, rulemesh_place.inc and
  * rulemesh_shape.inc, also compiled into the JavaScript decoder's
  * WebAssembly. rulemesh_text.inc checks UTF-8 and JSON, rulemesh_walk.inc
- * expands hierarchies.
+ * expands hierarchies, rulemesh_crc32.inc checks a checksummed file's CRC.
  */
 #include "rulemesh_scene.h"
 
@@ -46,12 +46,15 @@ typedef uint32_t u32;
 #include "rulemesh_place.inc"
 #include "rulemesh_shape.inc"
 #include "rulemesh_text.inc"
+#include "rulemesh_crc32.inc"
 
 /* ---- format constants (docs/scene-format.md) ---- */
 
 #define FLAG_TRUNCATED 1u
 #define FLAG_PROVENANCE 2u
 #define FLAG_SCALED 4u
+#define FLAG_CHECKSUM 8u
+#define CHECKSUM_BYTES 4u
 #define SHAPE_BIT 0x80000000u
 #define PARITY_BIT 0x80u
 #define KINDS 9u
@@ -122,6 +125,7 @@ const char *rmsc_status_name(rmsc_status status) {
         case RMSC_ERR_NON_FINITE: return "non_finite";
         case RMSC_ERR_RECORD: return "record";
         case RMSC_ERR_TOO_LARGE: return "too_large";
+        case RMSC_ERR_CHECKSUM: return "checksum";
     }
     return "unknown";
 }
@@ -224,8 +228,20 @@ static rmsc_status parse_header(parser *p, uint32_t v1_detail) {
     TRY(read_u16(p, &version));
     if (version != 1 && version != 2) return fail(p->err, RMSC_ERR_MAGIC, "not a rulemesh scene (version 1 or 2) file: version %u", (unsigned)version);
     TRY(read_u16(p, &flags));
-    known = FLAG_TRUNCATED | FLAG_PROVENANCE | (version == 2 ? FLAG_SCALED : 0u);
+    known = FLAG_TRUNCATED | FLAG_PROVENANCE | (version == 2 ? FLAG_SCALED | FLAG_CHECKSUM : 0u);
     if (flags & ~known) return fail(p->err, RMSC_ERR_HEADER, "scene header is malformed: unknown flag bits %#x", (unsigned)flags);
+    if (flags & FLAG_CHECKSUM) {
+        /* Checked before anything else is read (as the Rust decoder does),
+         * so a damaged byte after the flags is this error; the rest is then
+         * read as if the file ended before the CRC. */
+        uint32_t stored, computed;
+        TRY(need(p, CHECKSUM_BYTES));
+        stored = u32_at(p->b + p->size - CHECKSUM_BYTES);
+        computed = rmcrc32(p->b, p->size - CHECKSUM_BYTES);
+        if (stored != computed)
+            return fail(p->err, RMSC_ERR_CHECKSUM, "scene file is corrupted: CRC-32 is %08lx, the file says %08lx", (unsigned long)computed, (unsigned long)stored);
+        p->size -= CHECKSUM_BYTES;
+    }
     p->version = (uint16_t)version;
     p->flags = (uint16_t)flags;
     if (version == 1) {

@@ -18,6 +18,9 @@
  *      bytes validates the whole file and fills rmsc_info: the meshes, the
  *      vertex and triangle counts, and the scratch rmsc_decode() needs.
  *   2. rmsc_decode() fills the arrays and the mesh table.
+ * A file written with `checksum: true` (the header's CHECKSUM flag) ends
+ * with a CRC-32 of its bytes, checked before anything else is read: any
+ * damaged byte of it is RMSC_ERR_CHECKSUM (docs/scene-format.md, "Checksum").
  * Every count is checked against the bytes that are left before it is used;
  * damaged, truncated or hostile input returns an error status with a
  * message, and nothing is read or written outside the payload and the
@@ -56,8 +59,10 @@ typedef enum rmsc_status {
     RMSC_ERR_RECORD = 9,    /* a mesh, run or record is malformed (index beyond
                                the vertices or the palette, unknown run type,
                                name not UTF-8, missing prototype) */
-    RMSC_ERR_TOO_LARGE = 10 /* more triangles than the caller allows, or counts
+    RMSC_ERR_TOO_LARGE = 10, /* more triangles than the caller allows, or counts
                                that do not fit this platform's size_t */
+    RMSC_ERR_CHECKSUM = 11  /* the header's CHECKSUM flag is set and the CRC-32
+                               at the end does not match: a damaged byte */
 } rmsc_status;
 
 /* Filled on failure (status and a NUL-terminated English message); on
@@ -88,7 +93,8 @@ typedef struct rmsc_mesh {
 /* What rmsc_inspect() reads. */
 typedef struct rmsc_info {
     uint16_t version;        /* 1 or 2 */
-    uint16_t flags;          /* the header's flags */
+    uint16_t flags;          /* the header's flags (bit 3, 8: the file ended with a
+                                CRC-32, which matched) */
     uint32_t detail;         /* the detail primitives are tessellated at */
     int truncated;           /* a limit cut the model short on the server */
     uint32_t mesh_count;     /* rmsc_mesh entries rmsc_decode fills */

@@ -1,6 +1,7 @@
 // Decoder for rulemesh's `scene` format (application/vnd.rulemesh.scene,
 // .rmscene), specified byte by byte in docs/scene-format.md. Reads versions
-// 1 and 2. Dependency-free ES module.
+// 1 and 2, with or without the CRC-32 a `checksum: true` request adds.
+// Dependency-free ES module.
 //
 // The decoder tessellates every primitive instance (primitives.mjs) and
 // places it with the arithmetic of rulemesh's mesher (src/mesh/mod.rs,
@@ -23,17 +24,24 @@
 import { prototype, triangleCount, MIN_DETAIL, MAX_DETAIL } from './primitives.mjs';
 import { kernel, HEAP_BASE, reserve } from './kernel.mjs';
 
-/** Thrown for any payload that is not a valid scene file. */
+/**
+ * Thrown for any payload that is not a valid scene file. `code` is
+ * 'checksum' when a checksummed file's CRC-32 does not match its bytes (a
+ * damaged byte), else 'malformed'.
+ */
 export class SceneError extends Error {
-  constructor(message) {
+  constructor(message, code = 'malformed') {
     super(message);
     this.name = 'SceneError';
+    this.code = code;
   }
 }
 
 const FLAG_TRUNCATED = 1;
 const FLAG_PROVENANCE = 2;
 const FLAG_SCALED = 4; // version 2: hierarchy entries carry an f64 uniform scale (MDG)
+const FLAG_CHECKSUM = 8; // version 2: the file ends with a CRC-32 of the bytes before it
+const CHECKSUM_BYTES = 4;
 const SHAPE_BIT = 0x80000000;
 const RUN_PRIMITIVES = 1, RUN_AFFINE = 2, RUN_PLACED = 3, RUN_MESH = 4, RUN_HIERARCHY = 5;
 const PARITY_BIT = 0x80;
@@ -58,6 +66,26 @@ class Reader {
   f64() { this.need(8); const x = this.v.getFloat64(this.at, true); this.at += 8; return x; }
   bytes(n) { this.need(n); const s = this.b.subarray(this.at, this.at + n); this.at += n; return s; }
   f32s(n) { const a = new Array(n); for (let i = 0; i < n; i++) a[i] = this.f32(); return a; }
+}
+
+let crcTable = null;
+/**
+ * CRC-32 of IEEE 802.3 (reflected polynomial 0xEDB88320, as zlib, PNG and
+ * strips.mjs compute it) of `bytes`, unsigned. strips.mjs has its own copy:
+ * each decoder stays loadable without the other.
+ */
+function crc32(bytes) {
+  if (!crcTable) {
+    crcTable = new Uint32Array(256);
+    for (let n = 0; n < 256; n++) {
+      let c = n;
+      for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+      crcTable[n] = c >>> 0;
+    }
+  }
+  let c = 0xffffffff;
+  for (let i = 0; i < bytes.length; i++) c = crcTable[(c ^ bytes[i]) & 0xff] ^ (c >>> 8);
+  return (c ^ 0xffffffff) >>> 0;
 }
 
 const decoder = new TextDecoder('utf-8', { fatal: true });
@@ -312,7 +340,19 @@ const readHeader = (function readHeader(r) {
   const version = r.u16();
   if (version !== 1 && version !== 2) throw new SceneError(`unknown scene version ${version}`);
   const flags = r.u16();
-  if (flags & ~(FLAG_TRUNCATED | FLAG_PROVENANCE | (version === 2 ? FLAG_SCALED : 0))) throw new SceneError('unknown flag bits');
+  if (flags & ~(FLAG_TRUNCATED | FLAG_PROVENANCE | (version === 2 ? FLAG_SCALED | FLAG_CHECKSUM : 0))) throw new SceneError('unknown flag bits');
+  if (flags & FLAG_CHECKSUM) {
+    // Checked before anything else is read (as the Rust and C decoders do);
+    // the rest is then read as if the file ended before the CRC.
+    r.need(CHECKSUM_BYTES);
+    const end = r.b.length - CHECKSUM_BYTES;
+    const stored = r.v.getUint32(end, true), computed = crc32(r.b.subarray(0, end));
+    if (stored !== computed) {
+      const hex = (x) => x.toString(16).padStart(8, '0');
+      throw new SceneError(`scene file is corrupted: CRC-32 is ${hex(computed)}, the file says ${hex(stored)}`, 'checksum');
+    }
+    r.b = r.b.subarray(0, end);
+  }
   let detail = null, counts;
   if (version === 1) {
     counts = [r.u32(), r.u32()];
@@ -441,7 +481,7 @@ export const decodeScene = (function decodeScene(bytes, { detail: v1Detail = 16,
     parsed = parseV2(r, header);
     detail = header.detail;
   }
-  if (r.at !== bytes.length) throw new SceneError('scene file is followed by trailing bytes');
+  if (r.at !== r.b.length) throw new SceneError('scene file is followed by trailing bytes');
   // Sizes first: refuse, then allocate each mesh once.
   const h = parsed.hierarchy;
   const leafProtos = [];

@@ -59,3 +59,35 @@ test('damaged files are SceneErrors', () => {
     assert.throws(() => decodeScene(good.subarray(0, n)), SceneError, `cut at ${n}`);
   }
 });
+
+// A checksummed file (X.crc.rmscene: `checksum: true`, docs/scene-format.md,
+// "Checksum") refuses every truncation and every byte flipped three ways:
+// past the magic, version and flags (8 bytes) always as a checksum error
+// (`code` 'checksum'). The flag bit cleared leaves the CRC as trailing
+// bytes; set on an unchecked file, its last four bytes are no CRC.
+test('checksummed files refuse every damaged byte', () => {
+  const crcNames = names.filter((n) => n.endsWith('.crc.rmscene'));
+  assert.ok(crcNames.length > 0, `no .crc.rmscene files in ${dir}`);
+  for (const name of crcNames) {
+    const good = new Uint8Array(readFileSync(join(dir, name)));
+    assert.equal(good[6] & 8, 8, `${name}: the CHECKSUM flag`);
+    assert.equal(crc32(good.subarray(0, good.length - 4)), new DataView(good.buffer, good.byteOffset).getUint32(good.length - 4, true), `${name}: the CRC`);
+    for (let n = 0; n < good.length; n++) {
+      assert.throws(() => decodeScene(good.subarray(0, n)), (e) => e instanceof SceneError && (n < 12 || e.code === 'checksum'), `${name} cut at ${n}`);
+    }
+    for (const x of [0x01, 0x80, 0xff]) {
+      for (let i = 0; i < good.length; i++) {
+        const bad = good.slice();
+        bad[i] ^= x;
+        assert.throws(() => decodeScene(bad), (e) => e instanceof SceneError && (i < 8 || e.code === 'checksum'), `${name} xor ${x} at ${i}`);
+      }
+    }
+    const cleared = good.slice();
+    cleared[6] ^= 8;
+    assert.throws(() => decodeScene(cleared), /trailing bytes/, `${name}: the flag cleared`);
+  }
+  const plain = names.find((n) => !n.startsWith('v1-') && !n.endsWith('.crc.rmscene'));
+  const set = new Uint8Array(readFileSync(join(dir, plain)));
+  set[6] ^= 8;
+  assert.throws(() => decodeScene(set), (e) => e instanceof SceneError && e.code === 'checksum', `${plain}: the flag set`);
+});

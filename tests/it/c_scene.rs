@@ -9,11 +9,15 @@
 //! libFuzzer target must build with clang and survive a short run. Needs
 //! gcc and clang (scripts/test installs both).
 //!
-//! Why "refused or decoded as Rust decodes it" for flipped bytes, where the
-//! strips tests say "refused": the scene format has no checksum
-//! (docs/scene-format.md, "Layout"; a flag bit for one would change every
-//! golden scene row). A flipped bit in a transform, a colour or the detail
-//! is another valid scene, which both decoders decode to the same meshes.
+//! Why "refused or decoded as Rust decodes it" for flipped bytes of
+//! `gem.rmscene`, where the strips tests say "refused": a scene carries a
+//! checksum only when the request asks for one (`checksum: true`,
+//! docs/scene-format.md, "Checksum"; by default none, so deployed decoders
+//! and the golden scene rows stay as they were). Without it a flipped bit in
+//! a transform, a colour or the detail is another valid scene, which both
+//! decoders decode to the same meshes. The checksummed fixture
+//! (`gem.crc.rmscene`) has every truncation and every flipped byte refused
+//! by both decoders with the same error code.
 
 use crate::c_decoder::{assert_same_lines, c_lines, compile, every_grammar, exec, fnv1a64, fuzz_smoke, SANITIZE, STRICT};
 use crate::common::{repo, run, tempdir};
@@ -112,10 +116,15 @@ fn c_scene_decoder_matches_rust_on_every_grammar() {
     }
     assert!(hierarchies >= 5 && triangles > 1_000_000, "{hierarchies} hierarchies, {triangles} triangles");
     // The committed fixtures, version 1 included (its detail is the caller's: 16).
-    for f in ["gem.rmscene", "v1-sierpinski-tetrahedron.rmscene"] {
+    for f in ["gem.rmscene", "gem.crc.rmscene", "v1-sierpinski-tetrahedron.rmscene"] {
         let bytes = std::fs::read(repo().join("clients/js/fixtures").join(f)).expect("fixture");
         same_as_rust(&exe, dir.path(), f, &bytes);
     }
+    // A checksummed hierarchy (`--checksum`) decodes as the Rust decoder decodes it.
+    let g = repo().join("grammars/sierpinski-bush.ls");
+    let out = run(&["render", g.to_str().expect("utf-8"), "--format", "scene", "--checksum"], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    same_as_rust(&exe, dir.path(), "sierpinski-bush --checksum", &out.stdout);
     // The -O2 build (the one apps use) decodes identically too.
     let bytes = render_scene(&repo().join("grammars/sierpinski-bush.ls"));
     same_as_rust(&dir.path().join("scene_dump_o2"), dir.path(), "sierpinski-bush -O2", &bytes);
@@ -190,7 +199,7 @@ fn c_scene_decoder_refuses_damage_as_rust_does() {
         })
         .collect();
     assert_same_lines("gem.rmscene xor 0x80 (clang)", &c, &rust);
-    // Flips in transforms and colours survive (there is no checksum): both
+    // Flips in transforms and colours survive (gem.rmscene has no checksum): both
     // decoders decode them to the same changed meshes.
     assert!(accepted > 100, "{accepted} flipped files decoded: the comparison saw mostly refusals");
 
@@ -222,6 +231,101 @@ fn c_scene_decoder_refuses_damage_as_rust_does() {
     let path = dir.path().join("batch");
     std::fs::write(&path, &batch).expect("write");
     assert_same_lines("hostile counts", &c_lines(&exec(&exe, &["--batch", path.to_str().expect("utf-8")])), &rust);
+}
+
+/// The C driver's result lines with their error names ("err checksum"),
+/// which `c_lines` folds into "err".
+fn status_lines(o: &std::process::Output) -> Vec<String> {
+    assert!(o.status.success(), "driver failed: {}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8_lossy(&o.stdout).lines().map(str::to_string).collect()
+}
+
+/// The Rust decoder's result for `bytes` as the C driver names it: "ok" or
+/// "err <rmsc_status_name>" (for the errors a damaged checksummed file can
+/// meet; any other is "err other", which no C line equals).
+fn rust_status(bytes: &[u8]) -> String {
+    use rulemesh::decode::scene::SceneError;
+    match decode_scene_meshes(bytes, V1_DETAIL, MAX_TRIANGLES) {
+        Ok(_) => "ok".into(),
+        Err(e) => format!(
+            "err {}",
+            match e {
+                SceneError::NotScene => "magic",
+                SceneError::Length("truncated") => "truncated",
+                SceneError::Length(_) => "trailing",
+                SceneError::Header(_) => "header",
+                SceneError::Checksum { .. } => "checksum",
+                _ => "other",
+            }
+        ),
+    }
+}
+
+/// `gem.crc.rmscene` (gem written with `checksum: true`): every truncation
+/// and every byte flipped three ways (xor 0x01, 0x80, 0xff) is refused by
+/// the C and the Rust decoder with the same error code: past the 8 bytes of
+/// magic, version and flags, always `checksum`; within them `magic`,
+/// `header` (an unknown flag bit) or `checksum` (a known flag toggled).
+/// Clearing the `CHECKSUM` bit alone leaves the CRC as trailing bytes
+/// (`trailing`), and setting it on the unchecked gem reads its last four
+/// bytes as a CRC that does not match (`checksum`): a flipped flag never
+/// turns one kind of file into a valid file of the other. The fixture
+/// decodes to gem.rmscene's meshes.
+#[test]
+fn c_scene_decoder_refuses_every_damage_of_a_checksummed_file() {
+    let dir = tempdir();
+    let exe = driver(dir.path());
+    let fixtures = repo().join("clients/js/fixtures");
+    let path = fixtures.join("gem.crc.rmscene");
+    let p = path.to_str().expect("utf-8");
+    let bytes = std::fs::read(&path).expect("fixture");
+    let plain = std::fs::read(fixtures.join("gem.rmscene")).expect("fixture");
+    assert_eq!(u16::from_le_bytes([bytes[6], bytes[7]]) & 8, 8, "the CHECKSUM flag is set");
+    assert_eq!(&bytes[bytes.len() - 4..], &crc32fast::hash(&bytes[..bytes.len() - 4]).to_le_bytes(), "the last four bytes are the CRC-32");
+    let meshes = |b: &[u8]| rust_dump(&decode_scene_meshes(b, V1_DETAIL, MAX_TRIANGLES).expect("decodes"));
+    assert!(meshes(&bytes) == meshes(&plain), "the checksummed gem decodes to gem's meshes");
+    // Every truncation.
+    let c = status_lines(&exec(&exe, &["--truncate", p]));
+    let rust: Vec<String> = (0..bytes.len()).map(|n| rust_status(&bytes[..n])).collect();
+    assert_eq!(c, rust, "truncations: C and Rust differ");
+    for (n, line) in rust.iter().enumerate() {
+        let want = if n < 12 { "err truncated" } else { "err checksum" };
+        assert_eq!(line, want, "cut at {n}");
+    }
+    // Every byte flipped three ways.
+    for x in [0x01u8, 0x80, 0xff] {
+        let c = status_lines(&exec(&exe, &["--mutate", p, &x.to_string()]));
+        let rust: Vec<String> = (0..bytes.len())
+            .map(|i| {
+                let mut b = bytes.clone();
+                b[i] ^= x;
+                rust_status(&b)
+            })
+            .collect();
+        assert_eq!(c.len(), bytes.len());
+        if let Some(i) = (0..c.len()).find(|&i| c[i] != rust[i]) {
+            panic!("xor {x:#04x} at byte {i}: C says {:?}, Rust says {:?}", c[i], rust[i]);
+        }
+        for (i, line) in rust.iter().enumerate() {
+            let allowed: &[&str] = if i < 6 { &["err magic"] } else if i < 8 { &["err header", "err checksum"] } else { &["err checksum"] };
+            assert!(allowed.contains(&line.as_str()), "xor {x:#04x} at byte {i}: {line}");
+        }
+    }
+    // The flag bit itself, both ways.
+    let mut cleared = bytes.clone();
+    cleared[6] ^= 8;
+    let mut set = plain.clone();
+    set[6] ^= 8;
+    let mut batch = Vec::new();
+    for b in [&cleared, &set] {
+        batch.extend_from_slice(&u32::try_from(b.len()).expect("fits").to_le_bytes());
+        batch.extend_from_slice(b);
+    }
+    let batch_path = dir.path().join("flags");
+    std::fs::write(&batch_path, &batch).expect("write");
+    let c = status_lines(&exec(&exe, &["--batch", batch_path.to_str().expect("utf-8")]));
+    assert_eq!(c, [rust_status(&cleared), rust_status(&set)]);
+    assert_eq!(c, ["err trailing", "err checksum"]);
 }
 
 /// The scene decoder's libFuzzer target runs 20 000 inputs from the

@@ -91,6 +91,8 @@ pub(crate) fn variants(language: Language) -> Vec<(&'static str, RenderRequest)>
     // glb/gltf instance repeated meshes by default; the flat files are pinned too.
     v.push(("glb-flat", with(Format::Glb, &|r| r.export_options.instancing = Instancing::Flat)));
     v.push(("gltf-flat", with(Format::Gltf, &|r| r.export_options.instancing = Instancing::Flat)));
+    // The scene with its opt-in CRC-32 (docs/scene-format.md, "Checksum"); the plain `scene` rows are unchanged by it.
+    v.push(("scene-checksum", with(Format::Scene, &|r| r.export_options.checksum = true)));
     v
 }
 

@@ -149,8 +149,12 @@ fn malformed_scene_files_are_errors_not_panics() {
     json[24] = b'[';
     assert_eq!(decode_scene(&json).map(|_| ()), Err(SceneError::Header("provenance is not a JSON object")));
     let mut flags = good.clone();
-    flags[6] |= 8;
+    flags[6] |= 16;
     assert_eq!(decode_scene(&flags).map(|_| ()), Err(SceneError::Header("unknown flag bits")));
+    // Flag 8 (a CRC-32 at the end, docs/scene-format.md, "Checksum"): the last four bytes are no CRC.
+    let mut checksum = good.clone();
+    checksum[6] |= 8;
+    assert!(matches!(decode_scene(&checksum), Err(SceneError::Checksum { .. })));
     // Flag 4 (scaled entries, MDG) makes every entry 8 bytes longer: this file is then short.
     let mut scaled = good.clone();
     scaled[6] |= 4;

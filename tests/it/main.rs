@@ -42,6 +42,7 @@ mod provenance;
 mod print;
 mod print_memory;
 mod scene;
+mod scene_checksum;
 mod selectors;
 mod sheet;
 mod ssfidelity;

@@ -183,11 +183,19 @@ fn decoded_scene_is_the_flat_glb_triangle_for_triangle_in_rust_and_js() {
     let gem = jobs.iter().find(|c| c.name == "grammars/gem.mdg").expect("gem is a case");
     let bytes = render(&gem.source, &request(gem, Format::Scene)).expect("gem renders").bytes;
     let d = decode_scene_meshes(&bytes, 16, u64::MAX).expect("gem decodes");
+    // gem with `checksum: true` (docs/scene-format.md, "Checksum"), also for Node.
+    let mut checked_req = request(gem, Format::Scene);
+    checked_req.export_options.checksum = true;
+    let crc = render(&gem.source, &checked_req).expect("gem renders with a checksum").bytes;
+    let crc_d = decode_scene_meshes(&crc, 16, u64::MAX).expect("checksummed gem decodes");
+    assert!(crc_d.meshes == d.meshes, "the checksummed gem has gem's meshes");
+    write_fixture(dir.path(), "gem.crc", &crc, &crc_d);
     if std::env::var_os("RULEMESH_BLESS").is_some() {
         write_fixture(&fixtures, "gem", &bytes, &d);
+        write_fixture(&fixtures, "gem.crc", &crc, &crc_d);
         write_fixture(&fixtures, "v1-sierpinski-tetrahedron", &v1, &v1d);
     }
-    for (name, bytes, d) in [("gem", &bytes, &d), ("v1-sierpinski-tetrahedron", &v1, &v1d)] {
+    for (name, bytes, d) in [("gem", &bytes, &d), ("gem.crc", &crc, &crc_d), ("v1-sierpinski-tetrahedron", &v1, &v1d)] {
         let committed = std::fs::read(fixtures.join(format!("{name}.rmscene"))).expect("fixture exists (RULEMESH_BLESS=1 makes it)");
         assert!(&committed == bytes, "clients/js/fixtures/{name}.rmscene is stale: rerun with RULEMESH_BLESS=1");
         let json: Value = serde_json::from_slice(&std::fs::read(fixtures.join(format!("{name}.scene.json"))).expect("fixture json")).expect("json");

@@ -265,6 +265,7 @@ fn grpc_requests_carry_every_declared_option() {
         view: "top".into(),
         background: "#ff8000".into(),
         frame: Some(1),
+        checksum: Some(true),
         files: [("model.v".to_string(), b"angle factor: 8\n".to_vec())].into(),
     };
     let body = RenderBody::from(request);

@@ -89,6 +89,8 @@ pub enum OptionGroup {
     Strips,
     /// `size`, `view` and `background`: the preview stage's picture.
     Preview,
+    /// `checksum` (scene: a CRC-32 after the last mesh, docs/scene-format.md).
+    Scene,
 }
 
 /// An upper bound on a file's size, linear in what it holds, so the budget
@@ -124,8 +126,9 @@ pub(crate) type EncodePicture = fn(&Image, Option<&Provenance>, &mut Budget) -> 
 
 /// Writes the model as it was made — its flat scene, or its hierarchy when
 /// it has one — at a tessellation detail and mesh layout the reader
-/// applies; returns the bytes and the triangles a reader tessellates.
-pub(crate) type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
+/// applies, with the request's export options (its format's group);
+/// returns the bytes and the triangles a reader tessellates.
+pub(crate) type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, &ExportOptions, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
 
 /// Writes an object-instancing hierarchy as it was made (each leaf shape
 /// once, placed per leaf) at a tessellation detail, with the model's

@@ -163,6 +163,11 @@ pub struct ExportOptions {
     pub print: crate::print::PrintOptions,
     /// Size, view and background of the `png` preview (`docs/preview.md`).
     pub preview: crate::preview::PreviewOptions,
+    /// `scene`: end the file with a CRC-32 of its bytes
+    /// (`docs/scene-format.md`, "Checksum"); off by default, so files stay
+    /// readable by decoders from before the flag.
+    #[serde(default)]
+    pub checksum: bool,
 }
 
 /// Triangles a writer writes between two looks at the deadline: often enough

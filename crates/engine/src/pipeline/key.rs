@@ -134,7 +134,7 @@ fn model_encoder(engine: &str, source: &[u8], req: &RenderRequest, params: &BTre
         frame,
         files,
     } = req;
-    let ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview } = export_options;
+    let ExportOptions { strips, gltf, fit_unit_box, instancing, print, preview, checksum } = export_options;
     let format = *format;
     let mut e = Encoder(blake3::Hasher::new());
     e.field("engine", engine.as_bytes());
@@ -189,6 +189,12 @@ fn model_encoder(engine: &str, source: &[u8], req: &RenderRequest, params: &BTre
             e.u64("preview.size", size.into());
             e.field("preview.view", view.name().as_bytes());
             e.field("preview.background", crate::preview::background_name(background).as_bytes());
+        }
+        // Only when asked for, so every scene without it keeps its key.
+        OptionGroup::Scene => {
+            if *checksum {
+                e.field("scene.checksum", b"crc32");
+            }
         }
         OptionGroup::None => {}
     }

@@ -259,10 +259,15 @@ pub(crate) fn check_request(req: &RenderRequest) -> Result<(), RenderError> {
     if !(geom::MIN_DETAIL..=geom::MAX_DETAIL).contains(&req.detail) {
         return Err(RenderError::BadRequest(format!("detail must be in {}..={}, got {}", geom::MIN_DETAIL, geom::MAX_DETAIL, req.detail)));
     }
-    match req.format.info().options {
+    let group = req.format.info().options;
+    if req.export_options.checksum && group != OptionGroup::Scene {
+        // A request built in Rust, past the validator: the same refusal.
+        return Err(RenderError::BadRequest(format!("checksum needs format=scene, not format={}", req.format.name())));
+    }
+    match group {
         OptionGroup::Strips => req.export_options.strips.validate().map_err(RenderError::BadRequest),
         OptionGroup::Preview => req.export_options.preview.validate().map_err(RenderError::BadRequest),
-        OptionGroup::Gltf | OptionGroup::None => Ok(()),
+        OptionGroup::Gltf | OptionGroup::Scene | OptionGroup::None => Ok(()),
     }
 }
 

@@ -20,7 +20,7 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
         Route::Model(write) => {
             // Instances, hierarchy and the meshes that are not instances, as made (docs/scene-format.md).
             let h = model.hierarchy.take();
-            let (bytes, triangles) = write(&model.scene, h.as_ref(), req.detail, req.layout, Some(&provenance), budget)?;
+            let (bytes, triangles) = write(&model.scene, h.as_ref(), req.detail, req.layout, &req.export_options, Some(&provenance), budget)?;
             clock.lap(Phase::Export);
             let truncated = h.as_ref().map_or(model.scene.truncated, |h| h.truncated);
             Ok(summary(bytes, &model, triangles, truncated))

@@ -73,6 +73,7 @@ impl From<pb::RenderRequest> for RenderBody {
             background,
             frame,
             files,
+            checksum,
         } = r;
         let options = RenderOptions {
             language: non_empty(language),
@@ -91,6 +92,7 @@ impl From<pb::RenderRequest> for RenderBody {
             position_bits: position_bits.map(|b| u8::try_from(b).unwrap_or(0)),
             normal_bits: normal_bits.map(|b| u8::try_from(b).unwrap_or(0)),
             zstd,
+            checksum,
             weld,
             quantize,
             compress: non_empty(compress),

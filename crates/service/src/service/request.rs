@@ -213,6 +213,7 @@ impl RenderBody {
 /// fields with [`Doors::QUERY`](crate::pipeline::options::Doors::QUERY),
 /// and `p.NAME` for a grammar parameter. The picture's options apply to
 /// the picture formats (the registry's `OptionGroup::Preview`: `png`) and are ignored for the other extensions (checked all the same),
+/// as `checksum` applies to `scene` (`OptionGroup::Scene`) and is ignored for the others,
 /// so one query string serves every format of a model (docs/service.md).
 pub fn query_body(source: &str, language: Language, ext: &str, query_pairs: &[(String, String)]) -> Result<RenderBody, ServiceError> {
     use crate::pipeline::options::Doors;
@@ -241,6 +242,11 @@ pub fn query_body(source: &str, language: Language, ext: &str, query_pairs: &[(S
         let (size, view, background) = (options.size.take(), options.view.take(), options.background.take());
         let picture = Format::picture().unwrap_or(format);
         preview_options(picture, size, view.as_deref(), background.as_deref())?;
+    }
+    // `checksum` likewise applies to `scene` alone and is ignored for the
+    // other extensions (checked as a boolean all the same, by the read above).
+    if format.info().options != OptionGroup::Scene {
+        options.checksum = None;
     }
     Ok(RenderBody { source: source.to_string(), files: BTreeMap::new(), options })
 }

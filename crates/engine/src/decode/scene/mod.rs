@@ -209,7 +209,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Hierarchy, SceneError> {
     let mut h = if header.version == VERSION_1 {
         let (nshapes, nobjects) = header.counts;
         let h = read_hierarchy(&mut r, nshapes, nobjects, false, false)?;
-        if r.at != bytes.len() {
+        if r.at != r.bytes.len() {
             return Err(SceneError::Length("followed by trailing bytes"));
         }
         h
@@ -264,7 +264,7 @@ pub fn decode_scene_meshes(bytes: &[u8], v1_detail: u32, max_triangles: u64) -> 
     let (parsed, detail) = if header.version == VERSION_1 {
         let (nshapes, nobjects) = header.counts;
         let hierarchy = read_hierarchy(&mut r, nshapes, nobjects, false, false)?;
-        if r.at != bytes.len() {
+        if r.at != r.bytes.len() {
             return Err(SceneError::Length("followed by trailing bytes"));
         }
         let meshes = if hierarchy.leaves() > 0 { vec![("isosurfaces".to_string(), vec![Run::Hierarchy])] } else { Vec::new() };

@@ -5,7 +5,8 @@
 
 use crate::core::PrimitiveKind;
 use crate::export::scene::format::{
-    ENTRY_BYTES, ENTRY_BYTES_SCALED, ENTRY_BYTES_V1, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION, VERSION_1,
+    CHECKSUM_BYTES, ENTRY_BYTES, ENTRY_BYTES_SCALED, ENTRY_BYTES_V1, FLAG_CHECKSUM, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION,
+    VERSION_1,
 };
 use crate::model::hierarchy::{Entry, Hierarchy, LeafShape, Object, Target};
 use glam::{DQuat, DVec3};
@@ -47,6 +48,15 @@ pub enum SceneError {
     /// Decoding would make more triangles than the caller allows.
     #[error("scene expands to {0} triangles, more than allowed")]
     TooLarge(u64),
+    /// The header's `CHECKSUM` flag is set and the CRC-32 at the end does
+    /// not match the bytes before it: a damaged byte (or a cut file).
+    #[error("scene file is corrupted: CRC-32 is {computed:08x}, the file says {stored:08x}")]
+    Checksum {
+        /// The CRC-32 stored in the file's last four bytes.
+        stored: u32,
+        /// The CRC-32 of the bytes before them.
+        computed: u32,
+    },
 }
 
 /// A cursor over the input that fails with [`SceneError::Length`] at the end.
@@ -129,9 +139,22 @@ pub(crate) fn read_header(r: &mut Reader<'_>) -> Result<Header, SceneError> {
         return Err(SceneError::NotScene);
     }
     let flags = r.u16()?;
-    let known = FLAG_TRUNCATED | FLAG_PROVENANCE | if version == VERSION { FLAG_SCALED } else { 0 };
+    let known = FLAG_TRUNCATED | FLAG_PROVENANCE | if version == VERSION { FLAG_SCALED | FLAG_CHECKSUM } else { 0 };
     if flags & !known != 0 {
         return Err(SceneError::Header("unknown flag bits"));
+    }
+    if flags & FLAG_CHECKSUM != 0 {
+        // Checked before anything else is read, so every damaged byte after
+        // the flags is this error; the rest of the file is then read as if
+        // it ended before the CRC (trailing bytes there are still refused).
+        let body = r.bytes.len().checked_sub(CHECKSUM_BYTES).filter(|&n| n >= r.at).ok_or(SceneError::Length("truncated"))?;
+        let (data, crc) = r.bytes.split_at(body);
+        let stored = u32::from_le_bytes(crc.try_into().map_err(|_| SceneError::Length("truncated"))?);
+        let computed = crc32fast::hash(data);
+        if stored != computed {
+            return Err(SceneError::Checksum { stored, computed });
+        }
+        r.bytes = data;
     }
     let (detail, counts) = if version == VERSION_1 {
         let counts = (r.u32()?, r.u32()?);

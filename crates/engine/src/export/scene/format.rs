@@ -22,6 +22,16 @@ pub const FLAG_PROVENANCE: u16 = 2;
 /// MDG hierarchies need; set only when some entry's scale is not 1, so a
 /// rigid (L-system) hierarchy is written exactly as before the flag existed.
 pub const FLAG_SCALED: u16 = 4;
+/// Header flag (version 2): the file ends with [`CHECKSUM_BYTES`] bytes, a
+/// little-endian CRC-32 (IEEE 802.3's polynomial, reflected `0xEDB88320`,
+/// as zlib, PNG and the `strips` format compute it) of every byte before
+/// them. Written only when a request asks for it (`checksum: true`), so
+/// every other file, its golden row and every deployed decoder stay as they
+/// were; a decoder from before the flag refuses such a file (an unknown
+/// flag bit) rather than misread it.
+pub const FLAG_CHECKSUM: u16 = 8;
+/// Bytes of the CRC-32 after the last mesh under [`FLAG_CHECKSUM`].
+pub const CHECKSUM_BYTES: usize = 4;
 /// Bytes of the version 1 header.
 pub const HEADER_BYTES_V1: usize = 24;
 /// Bytes of the version 2 header.

@@ -18,7 +18,7 @@
 pub mod format;
 mod write;
 
-pub use format::{ENTRY_BYTES, ENTRY_BYTES_V1, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, HEADER_BYTES_V1, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION, VERSION_1};
+pub use format::{CHECKSUM_BYTES, ENTRY_BYTES, ENTRY_BYTES_V1, FLAG_CHECKSUM, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, HEADER_BYTES_V1, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION, VERSION_1};
 pub use write::{write_scene, MAX_RECORD_BYTES};
 
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
@@ -31,7 +31,7 @@ pub const SCENE: FormatInfo = FormatInfo {
     extensions: &["rmscene"],
     mime: "application/vnd.rulemesh.scene",
     caps: Capabilities::NONE,
-    options: OptionGroup::None,
+    options: OptionGroup::Scene,
     size: SizeBound { fixed: 1024, per_vertex: 0, per_triangle: 0, per_instance: MAX_RECORD_BYTES },
     writer: Writer::Model(write_scene),
 };

@@ -12,10 +12,10 @@
 //! to one byte a record for most models.
 
 use super::format::{
-    index_width, put_hierarchy, ENTRY_BYTES, ENTRY_BYTES_SCALED, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY,
+    index_width, put_hierarchy, CHECKSUM_BYTES, ENTRY_BYTES, ENTRY_BYTES_SCALED, FLAG_CHECKSUM, FLAG_PROVENANCE, FLAG_SCALED, FLAG_TRUNCATED, HEADER_BYTES, MAGIC, PARITY_BIT, RUN_AFFINE, RUN_HIERARCHY,
     RUN_MESH, RUN_PLACED, RUN_PRIMITIVES, SHAPE_BIT, SHAPE_BYTES, VERSION,
 };
-use crate::export::{ExportError, Provenance};
+use crate::export::{ExportError, ExportOptions, Provenance};
 use crate::core::budget::Budget;
 use crate::core::PrimitiveKind;
 use crate::geom::primitives::{self, Prototype};
@@ -177,14 +177,18 @@ fn put_similarity(out: &mut Vec<u8>, i: &Instance) {
 
 /// Writes `scene` (or, when there is one, `hierarchy`: the model's flat
 /// scene is then its expansion) as a version 2 scene file, its meshes
-/// grouped as `layout` says, with `provenance` after the header. Reserves
-/// the exact size in `budget` before allocating it. Returns the bytes and
-/// the triangles a reader tessellates (what the flat formats would write).
+/// grouped as `layout` says, with `provenance` after the header and, when
+/// `options.checksum` asks for it, the CRC-32 of the whole file after the
+/// last mesh ([`FLAG_CHECKSUM`]; without it the bytes are exactly those of
+/// files written before the option existed). Reserves the exact size in
+/// `budget` before allocating it. Returns the bytes and the triangles a
+/// reader tessellates (what the flat formats would write).
 pub fn write_scene(
     scene: &Scene,
     hierarchy: Option<&Hierarchy>,
     detail: u32,
     layout: MeshLayout,
+    options: &ExportOptions,
     provenance: Option<&Provenance>,
     budget: &mut Budget,
 ) -> Result<(Vec<u8>, u64), ExportError> {
@@ -216,6 +220,9 @@ pub fn write_scene(
     let entry_bytes = if scaled { ENTRY_BYTES_SCALED } else { ENTRY_BYTES };
     size += 8 + SHAPE_BYTES * h.shapes.len() as u64 + 4 * h.objects.len() as u64 + entry_bytes * h.entry_count();
     size += 4;
+    if options.checksum {
+        size += CHECKSUM_BYTES as u64;
+    }
     let mut triangles = 0u64;
     for m in &plan {
         size += 2 + m.name.len() as u64 + 4;
@@ -233,7 +240,8 @@ pub fn write_scene(
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&VERSION.to_le_bytes());
     let truncated = hierarchy.map_or(scene.truncated, |h| h.truncated);
-    let flags = if truncated.is_some() { FLAG_TRUNCATED } else { 0 } | if block.is_empty() { 0 } else { FLAG_PROVENANCE } | if scaled { FLAG_SCALED } else { 0 };
+    let flags = if truncated.is_some() { FLAG_TRUNCATED } else { 0 } | if block.is_empty() { 0 } else { FLAG_PROVENANCE } | if scaled { FLAG_SCALED } else { 0 }
+        | if options.checksum { FLAG_CHECKSUM } else { 0 };
     out.extend_from_slice(&flags.to_le_bytes());
     // Fits: the pipeline checked detail ≤ MAX_DETAIL.
     out.extend_from_slice(&(detail as u16).to_le_bytes());
@@ -270,6 +278,11 @@ pub fn write_scene(
             budget.check_deadline()?;
             put_run(&mut out, scene, run, &palette, w);
         }
+    }
+    if options.checksum {
+        // crc32fast: the IEEE CRC-32 the strips writer uses too.
+        let crc = crc32fast::hash(&out);
+        put_u32(&mut out, crc);
     }
     debug_assert_eq!(out.len() as u64, size);
     Ok((out, triangles))

@@ -35,7 +35,7 @@ mod tests;
 pub(crate) use field::declare_options;
 pub use field::{Doors, Key, Kind, OptionField};
 pub use read::SeedValue;
-pub use validate::{parse_format, parse_language, preview_options, InvalidOptions};
+pub use validate::{checksum_option, parse_format, parse_language, preview_options, InvalidOptions};
 
 
 /// A whole-number schema from `min` to `max`.
@@ -53,6 +53,13 @@ fn needs_print() -> Option<(&'static str, serde_json::Value)> {
 fn needs_png() -> Option<(&'static str, serde_json::Value)> {
     let picture = Format::picture().map_or("png", Format::name);
     Some(("format", json!(picture)))
+}
+
+/// `format: scene`, which `checksum` needs: the format registry's formats
+/// that read [`OptionGroup::Scene`](crate::export::OptionGroup::Scene).
+fn needs_scene() -> Option<(&'static str, serde_json::Value)> {
+    let scene = Format::reading(crate::export::OptionGroup::Scene).first().map_or("scene", |f| f.name());
+    Some(("format", json!(scene)))
 }
 
 declare_options! {
@@ -174,6 +181,16 @@ declare_options! {
         zstd: Option<bool> => {
             doors: Doors::NOT_QUERY, cli_flag: Some(json!(true)), kind: Kind::Bool, schema: json!({ "type": "boolean", "default": false }),
             example: json!(true), context: json!({ "format": "strips" }),
+        },
+        /// `scene` only: end the file with a CRC-32 of its bytes, so a
+        /// decoder refuses any damaged byte (default false: the file then
+        /// reads in decoders from before the checksum existed;
+        /// docs/scene-format.md, "Checksum"). Refused with any other format
+        /// (`strips` always carries one; the others carry none rulemesh adds).
+        checksum: Option<bool> => {
+            cli_flag: Some(json!(true)), kind: Kind::Bool, needs: needs_scene(),
+            schema: json!({ "type": "boolean", "default": false }),
+            example: json!(true), context: json!({ "format": "scene" }),
         },
         /// `glb`/`gltf` only: weld identical vertices and drop degenerate
         /// triangles (default false).

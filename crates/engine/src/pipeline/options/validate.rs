@@ -59,6 +59,7 @@ impl RenderOptions {
             position_bits,
             normal_bits,
             zstd,
+            checksum,
             weld,
             quantize,
             compress,
@@ -76,6 +77,7 @@ impl RenderOptions {
         } = self;
         let format = parse_format(format.as_deref())?;
         let preview = preview_options(format, size, view.as_deref(), background.as_deref())?;
+        let checksum = checksum_option(format, checksum)?;
         let print = print_options(print, size_mm, print_report, min_wall_mm, build_volume_mm.as_deref(), triangle_ceiling)?;
         let strips = {
             let d = StripsOptions::default();
@@ -104,6 +106,7 @@ impl RenderOptions {
                 instancing: parse_name::<Instancing>("instancing", instancing.as_deref())?.unwrap_or(Instancing::Gpu),
                 print,
                 preview,
+                checksum,
             },
             script_dir: None,
             frame,
@@ -167,6 +170,23 @@ pub fn preview_options(format: Format, size: Option<u32>, view: Option<&str>, ba
     let options = PreviewOptions { size: size.unwrap_or(crate::preview::DEFAULT_SIZE), view, background };
     options.validate().map_err(InvalidOptions)?;
     Ok(options)
+}
+
+/// Reads `checksum`, which needs a format that carries it (the registry's
+/// [`OptionGroup::Scene`]: `scene`). Given at all with another format, it
+/// is refused by name, as the schema's `dependentSchemas` refuses it: a
+/// client that asks for an integrity check must not get a file without
+/// one, and `false` with a format that has no such option is a mistake too.
+pub fn checksum_option(format: Format, checksum: Option<bool>) -> Result<bool, InvalidOptions> {
+    if format.info().options != OptionGroup::Scene && checksum.is_some() {
+        let scenes: Vec<String> = Format::reading(OptionGroup::Scene).iter().map(|f| format!("format={}", f.name())).collect();
+        let why = match format.info().options {
+            OptionGroup::Strips => format!("format={} always ends with a CRC-32 of its own", format.name()),
+            _ => format!("format={} carries none", format.name()),
+        };
+        return Err(InvalidOptions(format!("checksum needs {} ({why})", scenes.join(" or "))));
+    }
+    Ok(checksum.unwrap_or(false))
 }
 
 /// Reads a `fit` value: `"unit"` → fit the unit box; `"none"` or absent → leave the model as it is.
