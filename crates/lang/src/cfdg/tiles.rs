@@ -47,6 +47,8 @@ pub fn scene(p: &Picture, _req: &BuildRequest<'_>, budget: &mut Budget) -> Resul
                 // The cylinder's axis is +Y: send it to +Z.
                 scene.affine.push(AffineInstance { kind: PrimitiveKind::Cylinder, linear: Mat3::from_cols(u, w, v), translation: centre, colour, class: 0 });
             }
+            // Paths: not made solid yet (docs/cfdg.md).
+            3.. => {}
             _ => {
                 budget.reserve_memory(24 * FREE_VERTEX_BYTES)?;
                 let pts: Vec<DVec3> = super::eval::frame::polygon(2)

@@ -8,10 +8,11 @@ fn drawing() -> Drawing {
         height: 80,
         background: [255; 4],
         marks: vec![
-            Mark { kind: MarkKind::Square, matrix: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], raster: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], rgba: [255, 0, 0, 255] },
-            Mark { kind: MarkKind::Circle, matrix: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], raster: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], rgba: [0, 128, 255, 128] },
-            Mark { kind: MarkKind::Triangle, matrix: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], raster: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], rgba: [1, 2, 3, 0] },
+            Mark { kind: MarkKind::Square, matrix: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], raster: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], rgba: [255, 0, 0, 255], path: 0 },
+            Mark { kind: MarkKind::Circle, matrix: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], raster: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], rgba: [0, 128, 255, 128], path: 0 },
+            Mark { kind: MarkKind::Triangle, matrix: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], raster: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], rgba: [1, 2, 3, 0], path: 0 },
         ],
+        paths: Vec::new(),
     }
 }
 
