@@ -361,8 +361,9 @@ pub fn bounds(v: &[Vertex], t: &Affine, flags: u32, width: f64, miter: f64, accu
                 add((q.0 + half * a.cos(), q.1 + half * a.sin()));
             }
         };
-        for k in 0..n.saturating_sub(1) {
-            let (a, c) = (p[k], p[k + 1]);
+        let segments = if *closed { n } else { n.saturating_sub(1) };
+        for k in 0..segments {
+            let (a, c) = (p[k], p[(k + 1) % n]);
             let (dx, dy) = dir(a, c);
             for q in [a, c] {
                 add((q.0 - dy * half, q.1 + dx * half));
@@ -370,22 +371,40 @@ pub fn bounds(v: &[Vertex], t: &Affine, flags: u32, width: f64, miter: f64, accu
             }
         }
         // Joins at inner vertices (and at the start of a closed outline).
-        let m = if *closed { n } else { n.saturating_sub(1) };
-        for k in 1..m.max(1) {
-            let (prev, here, next) = (p[k - 1], p[k % n], p[(k + 1) % n]);
+        let joins = if *closed { 0..n } else { 1..n.saturating_sub(1) };
+        for k in joins {
+            let (prev, here, next) = (p[(k + n - 1) % n], p[k], p[(k + 1) % n]);
             if join == 2 {
                 round(here, &mut add);
                 continue;
             }
             let (d1, d2) = (dir(prev, here), dir(here, next));
-            let (bx, by) = (d1.0 - d2.0, d1.1 - d2.1);
-            let bl = bx.hypot(by);
-            let cos_half = ((1.0 + d1.0 * d2.0 + d1.1 * d2.1) / 2.0).max(0.0).sqrt();
-            if join == 3 || bl == 0.0 || cos_half == 0.0 {
+            if join == 3 {
                 continue;
             }
-            let len = (half / cos_half).min(miter * half);
-            add((here.0 + bx / bl * len, here.1 + by / bl * len));
+            // AGG's `math_stroke::calc_miter` on each side: the miter
+            // tip within the limit, else the miter clipped at the limit.
+            let lim = miter * half;
+            for side in [1.0, -1.0] {
+                let (n1, n2) = ((-d1.1 * half * side, d1.0 * half * side), (-d2.1 * half * side, d2.0 * half * side));
+                let (a1, a2) = ((here.0 + n1.0, here.1 + n1.1), (here.0 + n2.0, here.1 + n2.1));
+                let den = d1.0 * d2.1 - d1.1 * d2.0;
+                if den.abs() < 1e-12 {
+                    continue;
+                }
+                let t = ((a2.0 - a1.0) * d2.1 - (a2.1 - a1.1) * d2.0) / den;
+                let xi = (a1.0 + d1.0 * t, a1.1 + d1.1 * t);
+                let di = (xi.0 - here.0).hypot(xi.1 - here.1);
+                if di <= lim {
+                    add(xi);
+                } else {
+                    let mid = ((a1.0 + a2.0) / 2.0, (a1.1 + a2.1) / 2.0);
+                    let dbevel = (mid.0 - here.0).hypot(mid.1 - here.1);
+                    let f = (lim - dbevel) / (di - dbevel);
+                    add((a1.0 + (xi.0 - a1.0) * f, a1.1 + (xi.1 - a1.1) * f));
+                    add((a2.0 + (xi.0 - a2.0) * f, a2.1 + (xi.1 - a2.1) * f));
+                }
+            }
         }
         if !*closed && n > 0 {
             for (end, toward) in [(p[0], if n > 1 { p[1] } else { p[0] }), (p[n - 1], if n > 1 { p[n - 2] } else { p[n - 1] })] {

@@ -708,7 +708,7 @@ impl Parser<'_> {
                 Tok::Punct("^") => ('^', 10, true),
                 _ => break,
             };
-            if prec < min || (prec == min && !right_assoc) {
+            if prec < min {
                 break;
             }
             let span = self.span();

@@ -91,7 +91,7 @@ fn error(op_line: crate::Span, message: &str) -> EvalError {
 
 impl Ctx {
     fn new() -> Ctx {
-        Ctx { store: PathStorage::default(), cmds: Vec::new(), index: 0, next_index: 0, last: (0.0, 0.0), want_move_to: true, want_command: false, closed: false, stop: false }
+        Ctx { store: PathStorage::default(), cmds: Vec::new(), index: 0, next_index: 0, last: (0.0, 0.0), want_move_to: true, want_command: true, closed: false, stop: false }
     }
 
     /// `ASTcompiledPath::finish`; returns whether the default command is needed.
@@ -216,7 +216,9 @@ impl Renderer<'_> {
     /// Finishes path shape `shape` in `state` (`traversePath` in bounds mode).
     pub(super) fn path_shape(&mut self, shape: usize, state: State, params: Vec<f64>) -> Result<(), EvalError> {
         let Some(&(_, body)) = self.rules.by_shape[shape].first() else { return Ok(()) };
-        let saved_rand = std::mem::replace(&mut self.current, state.seed);
+        // traversePath takes the shape's stream and leaves it as the
+        // renderer's current one: the rule that made the path goes on with it.
+        self.current = state.seed;
         let saved_params = std::mem::replace(&mut self.params, params);
         let depth = self.scope.vars.len();
         for (n, v) in self.rules.params[shape].iter().zip(&self.params) {
@@ -226,7 +228,6 @@ impl Renderer<'_> {
         let walked = self.path_body(body, &state, false, &mut ctx);
         self.scope.vars.truncate(depth);
         self.params = saved_params;
-        self.current = saved_rand;
         self.budget.release_memory(VERTEX_BYTES.saturating_mul(ctx.store.v.len() as u64));
         walked?;
         if ctx.finish(true) {
