@@ -131,6 +131,11 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
             params.push(&r.params);
             is_path.push(r.is_path);
         }
+        // A path named as a primitive replaces the primitive (trisvgtest).
+        if r.is_path {
+            is_path[i] = true;
+            params[i] = &r.params;
+        }
         by_shape[i].push((r.weight, 0.0, r.percent, &r.body));
     }
     // CFDGImpl::rulesLoaded: normalise, percentages apart, cumulative, the last 1.
