@@ -220,6 +220,27 @@ fn designs_become_flat_models() {
     assert_eq!(Language::detect(b"startshape A\nshape A { SQUARE [] }\n"), Some(Language::Cfdg));
 }
 
+/// Paths become thin slabs in the 3D formats: a filled square path is 12
+/// triangles in STL (two on top, two below, two per wall); a stroked arc
+/// and an even-odd star give a valid glb.
+#[test]
+fn paths_become_slabs() {
+    let square = b"startshape P\npath P {\n MOVETO(0, 0)\n LINETO(1, 0)\n LINETO(1, 1)\n LINETO(0, 1)\n CLOSEPOLY()\n}\n";
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Stl, ..RenderRequest::default() };
+    let stl = render(square, &req).expect("renders");
+    assert_eq!(u32::from_le_bytes(stl.bytes[80..84].try_into().expect("count")), 12);
+    let src = b"startshape A\nshape A {\n P []\n Q [x 3]\n}\npath P {\n MOVETO(1, 0)\n ARCTO(-1, 0, 1)\n STROKE(0.2)[]\n}\npath Q {\n MOVETO(0, 1)\n loop 5 [r 144] LINETO(0, 1)\n CLOSEPOLY()\n FILL(CF::EvenOdd)[b 0.5]\n}\n";
+    let glb = render(src, &RenderRequest { format: Format::Glb, ..req.clone() }).expect("renders");
+    let dir = tempdir();
+    let path = dir.path().join("p.glb");
+    std::fs::write(&path, &glb.bytes).expect("write");
+    for (errors, _, report) in validate_gltf(&[path]) {
+        assert_eq!(errors, 0, "{report}");
+    }
+    let stl = render(src, &req).expect("renders");
+    assert!(u32::from_le_bytes(stl.bytes[80..84].try_into().expect("count")) > 40);
+}
+
 /// Parse errors carry line, column and message through the pipeline.
 #[test]
 fn parse_errors_have_positions() {
