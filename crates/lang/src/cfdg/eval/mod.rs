@@ -120,10 +120,8 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
     let mut is_path = vec![false; 3];
     for r in &g.rules {
         // A rule for a primitive's name replaces the primitive (cfdg's shape
-        // type becomes a rule type, `CFDGImpl::addRule`); FILL cannot have rules.
-        if r.name == "FILL" {
-            return Err(ParseError::single(r.span, "`FILL` is a path command and cannot have rules"));
-        }
+        // type becomes a rule type, `CFDGImpl::addRule`); so does a 2.x
+        // `rule FILL` (quadcity_v2), FILL outside a path being a shape name.
         let n = index.len();
         let i = *index.entry(r.name.as_str()).or_insert(n);
         if i == by_shape.len() {

@@ -395,7 +395,7 @@ impl Parser<'_> {
                 Ok(Element::Transform { clone: word == "clone", adjusts, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
-            w if is_path_op(w) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
+            w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
             _ => {
                 let (shape, span) = self.name("a shape name")?;
@@ -438,7 +438,7 @@ impl Parser<'_> {
                 let body = if self.is_punct("{") { self.body_v2()? } else { vec![self.replacement_v2()?] };
                 Ok(Element::Loop(Loop { var: None, args: Expr::Num(value, n), adjust, body, finally: Vec::new(), v2: true, span }))
             }
-            Tok::Word(w) if is_path_op(&w) => self.path_element(),
+            Tok::Word(w) if is_path_op(&w) && (self.path.in_path || !matches!(w.as_str(), "FILL" | "STROKE")) => self.path_element(),
             Tok::Word(_) => {
                 let (shape, span) = self.name("a shape name")?;
                 let adjust = self.adjustment()?;
