@@ -94,9 +94,11 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         max_shapes = 500_000_000;
     }
     let border = opts.border;
-    let fixed_border = FIXED_BORDER * if border <= 1.0 { border } else { 1.0 };
+    // RendererImpl::init: CF::BorderFixed and CF::BorderDynamic override the border mode's.
+    let fixed_border = setting(g, "CF::BorderFixed", &scope)?.unwrap_or(FIXED_BORDER * if border <= 1.0 { border } else { 1.0 });
     let fixed_border = if 2.0 * fixed_border.abs().floor() >= f64::from(opts.width.min(opts.height)) { 0.0 } else { fixed_border };
-    let shape_border = if border <= 1.0 { 1.0 } else { border };
+    let shape_border = setting(g, "CF::BorderDynamic", &scope)?.unwrap_or(if border <= 1.0 { 1.0 } else { border });
+    let shape_border = if shape_border <= 0.0 { 1.0 } else { shape_border };
     let background = background(g, &scope)?;
     let sized = sized(g, &scope)?;
     let mut r = Renderer {
