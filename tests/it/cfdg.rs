@@ -112,6 +112,8 @@ fn a_dozen_examples_match_cfdg() {
         ("tests/curves.cfdg", "ABC"),
         // A start shape with an adjustment and parameters passed on with (=).
         ("tests/grass.cfdg", "ABC"),
+        // A 2.x `rule FILL`: FILL outside a path is a shape name.
+        ("quadcity_v2.cfdg", "ABC"),
         // Other variation codes, letters and a number, give cfdg's shapes too.
         ("mtree.cfdg", "XYZ"),
         ("demo1.cfdg", "12345"),
@@ -141,6 +143,10 @@ fn paths_match_cfdg() {
         "tests/wiggle.cfdg",
         "i_polygons.cfdg",
         "ciliasun.cfdg",
+        // A path named TRIANGLE replaces the primitive; six-number transforms; CF::BorderDynamic.
+        "tests/trisvgtest.cfdg",
+        "tests/transformtest.cfdg",
+        "tests/bigpathtest.cfdg",
     ] {
         let file = example(name);
         let cf = cfdg_svg(&file, "ABC");
