@@ -110,10 +110,18 @@ pub fn slab(d: &PathDraw, z: f64, h: f64, px: f64, colour: [f32; 4], scene: &mut
         let (x, y) = if local { t.apply(f64::from(x), f64::from(y)) } else { (f64::from(x), f64::from(y)) };
         DVec3::new(x, y, z)
     };
+    // lyon may emit one point under several indices: weld them by exact
+    // position, so the outline is found by shared edges.
+    let mut weld: HashMap<(u32, u32), u32> = HashMap::new();
+    let canon: Vec<u32> = (0..buf.vertices.len() as u32).map(|k| *weld.entry((buf.vertices[k as usize][0].to_bits(), buf.vertices[k as usize][1].to_bits())).or_insert(k)).collect();
     // Triangles turned counter-clockwise seen from above; edges counted to find the outline.
     let mut tris = Vec::with_capacity(buf.indices.len() / 3);
     let mut edges: HashMap<(u32, u32), u32> = HashMap::new();
     for c in buf.indices.chunks_exact(3) {
+        let c = [canon[c[0] as usize], canon[c[1] as usize], canon[c[2] as usize]];
+        if c[0] == c[1] || c[1] == c[2] || c[0] == c[2] {
+            continue;
+        }
         let (a, b, e) = (at(c[0]), at(c[1]), at(c[2]));
         let ccw = (b - a).cross(e - a).z >= 0.0;
         let tri = if ccw { [c[0], c[1], c[2]] } else { [c[0], c[2], c[1]] };
