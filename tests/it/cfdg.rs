@@ -25,13 +25,14 @@ fn shapes(svg_text: &str) -> Vec<Shape> {
     let mut out = Vec::new();
     for chunk in svg_text.split('<').skip(1) {
         let kind = chunk.split([' ', '\n']).next().unwrap_or("").to_string();
-        if !matches!(kind.as_str(), "circle" | "rect" | "use") {
+        // A path is its <g> (paint and transform); the <use> of a path inside it is not a shape.
+        if !matches!(kind.as_str(), "circle" | "rect" | "use" | "g") || chunk.starts_with("use xlink:href=\"#path") {
             continue;
         }
-        let attr = |name: &str| chunk.split(&format!("{name}=\"")).nth(1).and_then(|s| s.split('"').next()).map(str::to_string);
-        let fill = attr("fill").unwrap_or_default();
+        let attr = |name: &str| chunk.split(&format!(" {name}=\"")).nth(1).and_then(|s| s.split('"').next()).map(str::to_string);
+        let fill = attr("fill").filter(|f| f.starts_with('#')).or_else(|| attr("stroke")).unwrap_or_default();
         let hex = |i: usize| u8::from_str_radix(fill.get(1 + 2 * i..3 + 2 * i).unwrap_or("00"), 16).unwrap_or(0);
-        let alpha = attr("fill-opacity").and_then(|a| a.parse().ok()).unwrap_or(1.0);
+        let alpha = attr("fill-opacity").or_else(|| attr("stroke-opacity")).and_then(|a| a.parse().ok()).unwrap_or(1.0);
         let m = attr("transform").unwrap_or_default();
         let nums: Vec<f64> = m.trim_start_matches("matrix(").trim_end_matches(')').split_whitespace().filter_map(|v| v.parse().ok()).collect();
         let mut t = [0.0; 6];
@@ -111,6 +112,8 @@ fn a_dozen_examples_match_cfdg() {
         ("tests/curves.cfdg", "ABC"),
         // A start shape with an adjustment and parameters passed on with (=).
         ("tests/grass.cfdg", "ABC"),
+        // A 2.x `rule FILL`: FILL outside a path is a shape name.
+        ("quadcity_v2.cfdg", "ABC"),
         // Other variation codes, letters and a number, give cfdg's shapes too.
         ("mtree.cfdg", "XYZ"),
         ("demo1.cfdg", "12345"),
@@ -119,6 +122,73 @@ fn a_dozen_examples_match_cfdg() {
     for (name, var) in named {
         let file = example(name);
         assert_same(name, &cfdg_svg(&file, var), &rulemesh_svg(&file, var));
+    }
+}
+
+/// Paths (`path`, MOVETO … CLOSEPOLY, STROKE and FILL with widths, joins,
+/// caps, even-odd and iso, loops of operations): the same elements as
+/// cfdg -V, transforms within 10⁻⁴ of the picture, colours within a step.
+#[test]
+fn paths_match_cfdg() {
+    for name in [
+        "tests/pathtest1.cfdg",
+        "tests/trtest.cfdg",
+        "tests/trill.cfdg",
+        "tests/multistroketest.cfdg",
+        "tests/polytest1.cfdg",
+        "tests/polytest6.cfdg",
+        "tests/roundcaptest.cfdg",
+        "tests/recttest.cfdg",
+        "tests/looptest1.cfdg",
+        "tests/wiggle.cfdg",
+        "i_polygons.cfdg",
+        "ciliasun.cfdg",
+        // A path named TRIANGLE replaces the primitive; six-number transforms; CF::BorderDynamic.
+        "tests/trisvgtest.cfdg",
+        "tests/transformtest.cfdg",
+        "tests/bigpathtest.cfdg",
+    ] {
+        let file = example(name);
+        let cf = cfdg_svg(&file, "ABC");
+        assert!(cf.contains("<g "), "{name} has paths");
+        assert_same(name, &cf, &rulemesh_svg(&file, "ABC"));
+    }
+}
+
+/// Hostile paths end in typed errors: millions of operations (a step
+/// each), a huge loop in a path (a step per iteration), NaN and infinite
+/// coordinates and widths, a command before any operation; errors name
+/// line and column.
+#[test]
+fn hostile_paths_end_in_typed_errors() {
+    use rulemesh::model::EvalError;
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() };
+    let limit = |e: &RenderError| matches!(e, RenderError::Limit(_) | RenderError::Eval(EvalError::Limit(_)));
+    let ops = format!("startshape P\npath P {{\n MOVETO(0, 0)\n{}}}\n", " LINETO(1, 1)\n LINETO(0, 1)\n".repeat(60_000));
+    let cases: [(&str, &dyn Fn(&RenderError) -> bool); 7] = [
+        ("startshape P\npath P {\n loop 2000 [] loop 2000 [r 1] LINETO(1, 0)\n}\n", &limit),
+        ("startshape P\npath P {\n MOVETO(0, 0)\n loop 1e12 [r 1] LINETO(1, 0)\n STROKE[]\n}\n", &limit),
+        ("startshape P\npath P {\n MOVETO(0/0, 1)\n LINETO(1, 1)\n}\n", &|e| matches!(e, RenderError::Eval(EvalError::NonFinite { span, .. }) if span.line == 3)),
+        ("startshape P\npath P {\n MOVETO(0, 0)\n LINETO(1e308 * 10, 1)\n}\n", &|e| matches!(e, RenderError::Eval(EvalError::NonFinite { .. }))),
+        ("startshape P\npath P {\n MOVETO(0, 0)\n LINETO(1, 1)\n STROKE(sqrt(-1))[]\n}\n", &|e| matches!(e, RenderError::Eval(EvalError::NonFinite { .. }))),
+        ("startshape P\npath P {\n STROKE[]\n}\n", &|e| matches!(e, RenderError::Eval(EvalError::BadParam { message, .. }) if message.starts_with("3:2:"))),
+        (&ops, &limit),
+    ];
+    for (src, ok) in cases {
+        let mut r = req.clone();
+        r.limits.max_steps = 100_000;
+        r.limits.max_source_bytes = 4 * 1024 * 1024;
+        match render(src.as_bytes(), &r) {
+            Err(e) => assert!(ok(&e), "{}: {e:?}", &src[..src.len().min(80)]),
+            Ok(_) => panic!("{}: rendered", &src[..src.len().min(80)]),
+        }
+    }
+    // Parse errors in paths have positions.
+    for (src, at) in [("startshape P\npath P {\n LINETO(1)\n}\n", (3, 2)), ("startshape P\npath P {\n ARCTO{x 1 z 2}\n}\n", (3, 12)), ("startshape P\nshape P {\n LINETO(1, 1)\n}\n", (3, 2))] {
+        match render(src.as_bytes(), &req) {
+            Err(RenderError::Parse(e)) => assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), at, "{src}: {e}"),
+            other => panic!("{src}: {:?}", other.map(|o| o.bytes.len())),
+        }
     }
 }
 
@@ -154,6 +224,27 @@ fn designs_become_flat_models() {
     assert!(triangles >= 5 * 12 + 8, "{triangles}");
     // Detected from `startshape` without a language.
     assert_eq!(Language::detect(b"startshape A\nshape A { SQUARE [] }\n"), Some(Language::Cfdg));
+}
+
+/// Paths become thin slabs in the 3D formats: a filled square path is 12
+/// triangles in STL (two on top, two below, two per wall); a stroked arc
+/// and an even-odd star give a valid glb.
+#[test]
+fn paths_become_slabs() {
+    let square = b"startshape P\npath P {\n MOVETO(0, 0)\n LINETO(1, 0)\n LINETO(1, 1)\n LINETO(0, 1)\n CLOSEPOLY()\n}\n";
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Stl, ..RenderRequest::default() };
+    let stl = render(square, &req).expect("renders");
+    assert_eq!(u32::from_le_bytes(stl.bytes[80..84].try_into().expect("count")), 12);
+    let src = b"startshape A\nshape A {\n P []\n Q [x 3]\n}\npath P {\n MOVETO(1, 0)\n ARCTO(-1, 0, 1)\n STROKE(0.2)[]\n}\npath Q {\n MOVETO(0, 1)\n loop 5 [r 144] LINETO(0, 1)\n CLOSEPOLY()\n FILL(CF::EvenOdd)[b 0.5]\n}\n";
+    let glb = render(src, &RenderRequest { format: Format::Glb, ..req.clone() }).expect("renders");
+    let dir = tempdir();
+    let path = dir.path().join("p.glb");
+    std::fs::write(&path, &glb.bytes).expect("write");
+    for (errors, _, report) in validate_gltf(&[path]) {
+        assert_eq!(errors, 0, "{report}");
+    }
+    let stl = render(src, &req).expect("renders");
+    assert!(u32::from_le_bytes(stl.bytes[80..84].try_into().expect("count")) > 40);
 }
 
 /// Parse errors carry line, column and message through the pipeline.

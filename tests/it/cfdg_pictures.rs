@@ -131,6 +131,28 @@ fn pngs_cover_cfdgs_pixels() {
     assert!(failures.is_empty(), "PNGs not covering cfdg's pixels:\n{}", failures.join("\n"));
 }
 
+/// Paths, filled and stroked (joins, caps, even-odd, iso widths, curves
+/// and arcs), cover cfdg's pixels at the same size and variation.
+#[test]
+fn path_pngs_cover_cfdgs_pixels() {
+    const SIZE: u32 = 300;
+    let mut failures = Vec::new();
+    for name in ["tests/pathtest1.cfdg", "tests/trtest.cfdg", "tests/trill.cfdg", "tests/multistroketest.cfdg", "tests/polytest1.cfdg", "tests/roundcaptest.cfdg", "i_polygons.cfdg", "ciliasun.cfdg"] {
+        let file = example(name);
+        let src = std::fs::read(&file).expect("read");
+        let mut req = request(&file, "ABC", Format::Png);
+        req.export_options.preview.size = SIZE;
+        let out = render(&src, &req).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let ours = png_compare::decode(&out.bytes).expect("our PNG decodes");
+        let theirs = png_compare::decode(&cfdg(&file, "ABC", &["-s", &SIZE.to_string()], "png")).expect("cfdg's PNG decodes");
+        let score = png_compare::compare(&theirs, &ours, background(&file, "ABC", SIZE)).unwrap_or_else(|| panic!("{name}: sizes differ"));
+        if !score.passes() {
+            failures.push(format!("{name}: {score:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "path PNGs not covering cfdg's pixels:\n{}", failures.join("\n"));
+}
+
 /// Re-runs give the same bytes, SVG and PNG.
 #[test]
 fn pictures_rerun_byte_identical() {

@@ -4,6 +4,7 @@
 //! inputs: it knows nothing about languages, scenes or formats.
 
 pub mod assembly;
+pub mod curves;
 pub mod halfedge;
 pub(crate) mod hull;
 pub mod isosurface;

@@ -25,8 +25,9 @@
 
 use super::{Image, PreviewError, PreviewOptions};
 use crate::core::budget::Budget;
-use crate::model::drawing::{Drawing, MarkKind};
-use zeno::{Command, Mask, Point};
+use crate::geom::curves::{flatten_cubic, flatten_quad};
+use crate::model::drawing::{Drawing, DrawnPath, MarkKind, PathStyle, Segment};
+use zeno::{Cap, Command, Fill, Join, Mask, Point, Stroke, Style, Transform};
 
 /// Bounding-box pixels per budget step (the 3D rasteriser charges 64
 /// samples per step; a mask pixel is one cell's work or less).
@@ -65,7 +66,11 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
     let mut mask: Vec<u8> = Vec::new();
     for mark in &drawing.marks {
         let m = mark.raster.map(|v| v * fit);
-        let corners = outline(mark.kind, &m, &mut path);
+        let (corners, style, transform) = match (mark.kind, drawing.paths.get(mark.path as usize)) {
+            (MarkKind::Path, Some(p)) => path_outline(p, &m, &mut path),
+            (MarkKind::Path, None) => continue,
+            (kind, _) => (outline(kind, &m, &mut path), Style::Fill(Fill::NonZero), None),
+        };
         let Some((x0, y0, x1, y1)) = corners else { continue };
         // The box on the canvas, in whole pixels.
         let (bx0, by0) = (x0.floor().max(0.0), y0.floor().max(0.0));
@@ -78,7 +83,14 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         let (w, h) = (w as u32, h as u32);
         mask.clear();
         mask.resize(w as usize * h as usize, 0);
-        Mask::new(&path).size(w, h).offset(zeno::Vector::new(-bx0 as f32, -by0 as f32)).render_into(&mut mask, None);
+        let mut job = Mask::new(&path);
+        job.size(w, h).style(style);
+        match transform {
+            // The box offset goes into the map, applied after the pen.
+            Some(t) => job.transform(Some(Transform::new(t.xx, t.xy, t.yx, t.yy, t.x - bx0 as f32, t.y - by0 as f32))),
+            None => job.offset(zeno::Vector::new(-bx0 as f32, -by0 as f32)),
+        };
+        job.render_into(&mut mask, None);
         let [r, g, b, a] = mark.rgba;
         let (left, top) = (bx0 as usize, by0 as usize);
         for (row, covers) in mask.chunks_exact(w as usize).enumerate() {
@@ -126,6 +138,80 @@ fn blend(px: &mut [u8; 4], rgb: [u8; 3], alpha: u8) {
     px[3] = alpha.saturating_add(mul(px[3], keep));
 }
 
+/// The outline of path `p` placed by `m` into `cmds`, with its style and
+/// the map zeno applies after its pen (a stroke not `iso` is drawn with a
+/// pen in the path's own units, then mapped, as AGG's
+/// `conv_transform<conv_stroke<…>>` in `pathIterator`), and its box on the
+/// canvas. Curves are flattened here as AGG flattens them for drawing
+/// (approximation scale: pixels per unit), so zeno gets cfdg's polygons.
+type Outline = (Option<(f64, f64, f64, f64)>, Style<'static>, Option<Transform>);
+
+fn path_outline(p: &DrawnPath, m: &[f64; 6], cmds: &mut Vec<Command>) -> Outline {
+    cmds.clear();
+    let none = (None, Style::Fill(Fill::NonZero), None);
+    if !m.iter().all(|v| v.is_finite()) {
+        return none;
+    }
+    let at = |(x, y): (f64, f64)| (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5]);
+    let det = (m[0] * m[3] - m[1] * m[2]).abs();
+    let scale = det.sqrt();
+    let (local, half, style) = match p.style {
+        PathStyle::Fill { even_odd } => (false, 0.0, Style::Fill(if even_odd { Fill::EvenOdd } else { Fill::NonZero })),
+        PathStyle::Stroke { width, iso, join, cap, miter_limit } => {
+            let w = if iso { width * scale } else { width };
+            let mut s = Stroke::new(w as f32);
+            s.join(match join {
+                2 => Join::Round,
+                3 => Join::Bevel,
+                _ => Join::Miter,
+            })
+            .cap(match cap {
+                1 => Cap::Square,
+                2 => Cap::Round,
+                _ => Cap::Butt,
+            })
+            .miter_limit(miter_limit as f32);
+            (!iso, w / 2.0 * miter_limit.max(1.0) * if iso { 1.0 } else { m[0].hypot(m[1]).max(m[2].hypot(m[3])) }, Style::Stroke(s))
+        }
+    };
+    // Points in the frame the pen works in: the path's units, or pixels.
+    let frame = |q: (f64, f64)| if local { q } else { at(q) };
+    let approx = if local { scale.max(1e-9) } else { 1.0 };
+    let mut pts: Vec<(f64, f64)> = Vec::new();
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    let mut last = (0.0, 0.0);
+    let pt = |(x, y): (f64, f64)| Point::new(x as f32, y as f32);
+    for s in &p.segments {
+        pts.clear();
+        match *s {
+            Segment::MoveTo([x, y]) => {
+                last = frame((x, y));
+                cmds.push(Command::MoveTo(pt(last)));
+                pts.push(last);
+            }
+            Segment::LineTo([x, y]) => pts.push(frame((x, y))),
+            Segment::QuadTo([cx, cy], [x, y]) => flatten_quad(last, frame((cx, cy)), frame((x, y)), approx, &mut pts),
+            Segment::CubicTo([ax, ay], [bx, by], [x, y]) => flatten_cubic(last, frame((ax, ay)), frame((bx, by)), frame((x, y)), approx, &mut pts),
+            Segment::Close => cmds.push(Command::Close),
+        }
+        if !matches!(s, Segment::MoveTo(_) | Segment::Close) {
+            cmds.extend(pts.iter().map(|&q| Command::LineTo(pt(q))));
+        }
+        if let Some(&q) = pts.last() {
+            last = q;
+        }
+        for &q in &pts {
+            let (x, y) = if local { at(q) } else { q };
+            (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
+        }
+    }
+    if cmds.is_empty() || !(x0 <= x1 && y0 <= y1) {
+        return none;
+    }
+    let transform = local.then(|| Transform::new(m[0] as f32, m[1] as f32, m[2] as f32, m[3] as f32, m[4] as f32, m[5] as f32));
+    (Some((x0 - half, y0 - half, x1 + half, y1 + half)), style, transform)
+}
+
 /// Writes the outline of a unit mark placed by `m` (canvas pixels, y down)
 /// into `path` and returns its box, or `None` when the map is not finite.
 /// A circle is flattened as AGG flattens it (`fast_ellipse`), with
@@ -144,6 +230,8 @@ fn outline(kind: MarkKind, m: &[f64; 6], path: &mut Vec<Command>) -> Option<(f64
             path.push(Command::MoveTo(pt(points[0])));
             path.extend(points[1..].iter().map(|&p| Command::LineTo(pt(p))));
         }
+        // Drawn by `path_outline`.
+        MarkKind::Path => return None,
         MarkKind::Triangle => {
             points.extend(MarkKind::TRIANGLE.iter().map(|&(x, y)| at(x, y)));
             path.push(Command::MoveTo(pt(points[0])));

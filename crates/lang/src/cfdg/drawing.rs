@@ -6,9 +6,11 @@
 //! canvas's y flip and the centring of the drawn area on the canvas. The
 //! engine's `svg` writer prints it and its preview stage fills it.
 
-use super::eval::{state::Affine, Picture};
+use super::eval::agg::{CLOSE, CURVE3, CURVE4, END_POLY, LINE_TO, MOVE_TO, STOP};
+use super::eval::{state::Affine, PathDraw, Picture};
+use crate::cfdg::syntax::path_flags as pf;
 use crate::core::budget::Budget;
-use crate::model::drawing::{Drawing, Mark, MarkKind, MARK_BYTES};
+use crate::model::drawing::{DrawnPath, Drawing, Mark, MarkKind, PathStyle, Segment, MARK_BYTES, SEGMENT_BYTES};
 use crate::model::EvalError;
 
 /// Quantises a channel to 8 bits as AGG's `rgba8` does (round to nearest).
@@ -40,7 +42,8 @@ const SMALL: f64 = 5.0;
 /// (`aggCanvas::start`: `(mWidth − width) / 2` in integers), and flipped
 /// to y down (the AGG buffer is attached inverted).
 fn raster(kind: usize, t: &Affine, p: &Picture) -> [f64; 6] {
-    let grow = GROW.get(kind).copied().unwrap_or(0.5);
+    // A path is not grown (`aggCanvas::path`).
+    let grow = GROW.get(kind).copied().unwrap_or(0.0);
     let scale = |size: f64| if size < SMALL { (SMALL + grow) / SMALL } else { (size + grow) / size };
     let (gx, gy) = (scale(t.sx.hypot(t.shy)), scale(t.shx.hypot(t.sy)));
     let off_x = f64::from((p.canvas_width.saturating_sub(p.width)) / 2);
@@ -49,25 +52,90 @@ fn raster(kind: usize, t: &Affine, p: &Picture) -> [f64; 6] {
     [t.sx * gx, -t.shy * gx, t.shx * gy, -t.sy * gy, t.tx + off_x, h - (t.ty + off_y)]
 }
 
-/// The drawing of `p`, charging the memory its marks take.
+/// A command's path sequence as drawing segments (AGG's vertices: curve
+/// points come in twos and threes, an `end_poly` with the close flag closes).
+fn segments(d: &PathDraw) -> Vec<Segment> {
+    let v = &d.vertices;
+    let mut out = Vec::with_capacity(v.len());
+    let mut i = 0;
+    while i < v.len() {
+        let p = |k: usize| [v[k].x, v[k].y];
+        match v[i].cmd {
+            MOVE_TO => out.push(Segment::MoveTo(p(i))),
+            LINE_TO => out.push(Segment::LineTo(p(i))),
+            CURVE3 if i + 1 < v.len() => {
+                out.push(Segment::QuadTo(p(i), p(i + 1)));
+                i += 1;
+            }
+            CURVE4 if i + 2 < v.len() => {
+                out.push(Segment::CubicTo(p(i), p(i + 1), p(i + 2)));
+                i += 2;
+            }
+            STOP => break,
+            c if c & END_POLY == END_POLY && c & CLOSE != 0 => out.push(Segment::Close),
+            _ => {}
+        }
+        i += 1;
+    }
+    out
+}
+
+fn style(d: &PathDraw) -> PathStyle {
+    if d.flags & pf::FILL != 0 {
+        PathStyle::Fill { even_odd: d.flags & pf::EVEN_ODD != 0 }
+    } else {
+        PathStyle::Stroke {
+            width: d.width,
+            iso: d.flags & pf::ISO_WIDTH != 0,
+            join: (d.flags & pf::JOIN_MASK) as u8,
+            cap: ((d.flags & pf::CAP_MASK) >> pf::CAP_SHIFT) as u8,
+            miter_limit: d.miter,
+        }
+    }
+}
+
+/// The drawing of `p`, charging the memory its marks and paths take: one
+/// mark per primitive, one per path command (as cfdg's canvases get one
+/// `path` call per command).
 pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
-    budget.reserve_memory(MARK_BYTES.saturating_mul(p.shapes.len() as u64))?;
+    let commands: usize = p.shapes.iter().filter(|s| s.kind == 3).map(|s| p.paths.get(s.path).map_or(0, Vec::len)).sum();
+    budget.reserve_memory(MARK_BYTES.saturating_mul((p.shapes.len() + commands) as u64))?;
     let base = canvas_transform(p);
-    let marks = p
-        .shapes
-        .iter()
-        .map(|s| {
-            let mut up = s.transform;
-            up.multiply(&p.to_pixels);
-            let mut t = s.transform;
-            t.multiply(&base);
-            let kind = match s.kind {
-                0 => MarkKind::Circle,
-                1 => MarkKind::Square,
-                _ => MarkKind::Triangle,
-            };
-            Mark { kind, matrix: [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty], raster: raster(s.kind, &up, p), rgba: s.rgba.map(to_u8) }
-        })
-        .collect();
-    Ok(Drawing { width: p.canvas_width, height: p.canvas_height, background: p.background.map(to_u8), marks })
+    let mark = |kind: MarkKind, k: usize, transform: &Affine, rgba: [f64; 4], path: u32| {
+        let mut up = *transform;
+        up.multiply(&p.to_pixels);
+        let mut t = *transform;
+        t.multiply(&base);
+        Mark { kind, matrix: [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty], raster: raster(k, &up, p), rgba: rgba.map(to_u8), path }
+    };
+    let mut marks = Vec::with_capacity(p.shapes.len() + commands);
+    let mut paths = Vec::new();
+    let mut seen: std::collections::HashMap<String, u32> = std::collections::HashMap::new();
+    for s in &p.shapes {
+        let kind = match s.kind {
+            0 => MarkKind::Circle,
+            1 => MarkKind::Square,
+            2 => MarkKind::Triangle,
+            _ => {
+                for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
+                    // Identical outlines are kept once (cfdg writes a `<use>` of a cached path).
+                    let drawn = DrawnPath { segments: segments(d), style: style(d) };
+                    let key = format!("{drawn:?}");
+                    let index = match seen.get(&key) {
+                        Some(&i) => i,
+                        None => {
+                            budget.reserve_memory(SEGMENT_BYTES.saturating_mul(drawn.segments.len() as u64).saturating_add(key.len() as u64))?;
+                            seen.insert(key, paths.len() as u32);
+                            paths.push(drawn);
+                            paths.len() as u32 - 1
+                        }
+                    };
+                    marks.push(mark(MarkKind::Path, 3, &d.transform, d.rgba, index));
+                }
+                continue;
+            }
+        };
+        marks.push(mark(kind, s.kind, &s.transform, s.rgba, 0));
+    }
+    Ok(Drawing { width: p.canvas_width, height: p.canvas_height, background: p.background.map(to_u8), marks, paths })
 }

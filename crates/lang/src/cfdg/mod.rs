@@ -15,6 +15,7 @@
 pub mod drawing;
 pub mod eval;
 pub mod rand64;
+pub mod solid;
 pub mod syntax;
 pub mod tiles;
 pub mod variation;

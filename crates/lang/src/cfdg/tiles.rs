@@ -1,6 +1,7 @@
 //! A rendered CFDG picture as a flat 3D model: every primitive a thin tile
 //! (SQUARE a box, CIRCLE a cylinder on its side, TRIANGLE a prism of free
-//! triangles, since the Model has no triangular prototype), all of one
+//! triangles, since the Model has no triangular prototype; a path a slab
+//! of its tessellated fill or stroke, [`super::solid`]), all of one
 //! thickness, each lifted a little above the one drawn before it, so that
 //! seen from above the model shows what cfdg draws and every 3D format
 //! (glb, stl, 3mf, scene) can write it.
@@ -46,6 +47,13 @@ pub fn scene(p: &Picture, _req: &BuildRequest<'_>, budget: &mut Budget) -> Resul
                 budget.reserve_memory(AFFINE_INSTANCE_BYTES)?;
                 // The cylinder's axis is +Y: send it to +Z.
                 scene.affine.push(AffineInstance { kind: PrimitiveKind::Cylinder, linear: Mat3::from_cols(u, w, v), translation: centre, colour, class: 0 });
+            }
+            // A path: each command's fill or stroke a slab of the same thickness (solid.rs).
+            3.. => {
+                for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
+                    let c = [linear(d.rgba[0]), linear(d.rgba[1]), linear(d.rgba[2]), d.rgba[3].clamp(0.0, 1.0) as f32];
+                    super::solid::slab(d, z, h, scale, c, &mut scene, budget)?;
+                }
             }
             _ => {
                 budget.reserve_memory(24 * FREE_VERTEX_BYTES)?;

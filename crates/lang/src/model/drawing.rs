@@ -21,6 +21,9 @@ pub enum MarkKind {
     /// (before the y flip of the canvas): `(0, 0.57735)`, `(-0.5, -0.288675)`,
     /// `(0.5, -0.288675)` as cfdg's SVG `<defs>` writes it.
     Triangle,
+    /// A path (Context Free's `path`): the drawing's [`Drawing::paths`]
+    /// entry [`Mark::path`] names, in the mark's own units.
+    Path,
 }
 
 impl MarkKind {
@@ -45,6 +48,57 @@ pub struct Mark {
     pub raster: [f64; 6],
     /// Its fill, 8-bit sRGB with straight alpha (as cfdg quantises it).
     pub rgba: [u8; 4],
+    /// For a [`MarkKind::Path`], its index in [`Drawing::paths`] (0 otherwise).
+    pub path: u32,
+}
+
+/// One piece of a path outline, in the mark's own units (before its matrix).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Segment {
+    /// Starts a new subpath at a point.
+    MoveTo([f64; 2]),
+    /// A straight line to a point.
+    LineTo([f64; 2]),
+    /// A quadratic Bézier curve: control point, end point.
+    QuadTo([f64; 2], [f64; 2]),
+    /// A cubic Bézier curve: two control points, end point.
+    CubicTo([f64; 2], [f64; 2], [f64; 2]),
+    /// Closes the subpath back to its start.
+    Close,
+}
+
+/// How a path is painted: filled, or stroked with a pen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PathStyle {
+    /// Filled, by the non-zero rule or the even-odd rule.
+    Fill {
+        /// The even-odd rule (else non-zero).
+        even_odd: bool,
+    },
+    /// Stroked along its outline.
+    Stroke {
+        /// Pen width in the path's units (in pixels of the untransformed
+        /// path scaled by the matrix's mean scale when `iso`).
+        width: f64,
+        /// The pen keeps its width whatever the matrix (Context Free's
+        /// `iso`: the outline is transformed first, then stroked).
+        iso: bool,
+        /// Line join: 0 miter, 2 round, 3 bevel (AGG's numbers).
+        join: u8,
+        /// Line cap: 0 butt, 1 square, 2 round (AGG's numbers).
+        cap: u8,
+        /// Miter limit, in half widths.
+        miter_limit: f64,
+    },
+}
+
+/// A path's outline and paint, shared by every mark that draws it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DrawnPath {
+    /// The outline.
+    pub segments: Vec<Segment>,
+    /// Fill or stroke.
+    pub style: PathStyle,
 }
 
 /// Bytes a [`Mark`] takes in a drawing, charged to the memory budget by the
@@ -62,4 +116,9 @@ pub struct Drawing {
     pub background: [u8; 4],
     /// The marks, first drawn first.
     pub marks: Vec<Mark>,
+    /// The paths the [`MarkKind::Path`] marks draw.
+    pub paths: Vec<DrawnPath>,
 }
+
+/// Bytes a path segment takes in a drawing (charged by the front end).
+pub const SEGMENT_BYTES: u64 = std::mem::size_of::<Segment>() as u64;

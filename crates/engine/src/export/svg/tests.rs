@@ -8,10 +8,11 @@ fn drawing() -> Drawing {
         height: 80,
         background: [255; 4],
         marks: vec![
-            Mark { kind: MarkKind::Square, matrix: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], raster: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], rgba: [255, 0, 0, 255] },
-            Mark { kind: MarkKind::Circle, matrix: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], raster: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], rgba: [0, 128, 255, 128] },
-            Mark { kind: MarkKind::Triangle, matrix: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], raster: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], rgba: [1, 2, 3, 0] },
+            Mark { kind: MarkKind::Square, matrix: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], raster: [10.0, 0.0, 0.0, 10.0, 50.0, 40.0], rgba: [255, 0, 0, 255], path: 0 },
+            Mark { kind: MarkKind::Circle, matrix: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], raster: [0.5, 0.25, -0.25, 0.5, 1e-6, 123456789.0], rgba: [0, 128, 255, 128], path: 0 },
+            Mark { kind: MarkKind::Triangle, matrix: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], raster: [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], rgba: [1, 2, 3, 0], path: 0 },
         ],
+        paths: Vec::new(),
     }
 }
 
@@ -52,4 +53,25 @@ fn the_memory_limit_is_named() {
         Err(ExportError::Limit(e)) => assert_eq!(e.limit, Limit::Memory),
         other => panic!("expected the memory limit, got {other:?}"),
     }
+}
+
+#[test]
+fn a_path_is_a_group_around_its_outline_then_a_use_of_it() {
+    use crate::model::drawing::{DrawnPath, PathStyle, Segment};
+    let path = |kind, matrix, rgba| Mark { kind, matrix, raster: matrix, rgba, path: 0 };
+    let d = Drawing {
+        width: 100,
+        height: 100,
+        background: [255; 4],
+        marks: vec![path(MarkKind::Path, [10.0, 0.0, 0.0, -10.0, 50.0, 50.0], [255, 0, 0, 128]), path(MarkKind::Path, [10.0, 0.0, 0.0, -10.0, 60.0, 50.0], [0, 0, 0, 255])],
+        paths: vec![DrawnPath {
+            segments: vec![Segment::MoveTo([0.0, 0.0]), Segment::LineTo([1.0, 0.0]), Segment::CubicTo([1.0, 1.0], [0.5, 1.0], [0.0, 1.0]), Segment::Close],
+            style: PathStyle::Fill { even_odd: true },
+        }],
+    };
+    let text = String::from_utf8(write_svg(&d, &mut Budget::new(Limits::default())).expect("writes")).expect("utf-8");
+    // Precision 6 before the first transform, as cfdg's stream.
+    assert!(text.contains("\n  <g stroke=\"none\" fill=\"#ff0000\" fill-opacity=\"0.501961\" fill-rule=\"evenodd\"\n     transform=\"matrix(        10          0          0        -10         50         50)\">\n    <path id=\"path1\" d=\"M 0,0 L 1,0 C 1,1 0.5,1 0,1 Z\"/>\n  </g>"), "{text}");
+    assert!(text.contains("\n    <use xlink:href=\"#path1\" />\n  </g>"), "{text}");
+    assert_eq!(text.matches("<g ").count(), 2);
 }

@@ -7,6 +7,7 @@
 //! shapes sorted by z, then by the order they were finished.
 
 pub mod adjust;
+pub mod agg;
 pub mod expr;
 pub mod frame;
 pub mod state;
@@ -49,7 +50,7 @@ impl Default for Options {
 /// One finished primitive.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Finished {
-    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE.
+    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE, 3 a path.
     pub kind: usize,
     /// Its map from the unit primitive to design space.
     pub transform: Affine,
@@ -61,6 +62,8 @@ pub struct Finished {
     pub order: u64,
     /// The area of its bounding box in design units (`m_Z.sz` of a finished shape).
     pub box_area: f64,
+    /// A path's index in [`Picture::paths`] (0 for a primitive).
+    pub path: usize,
 }
 
 /// A rendered picture: the shapes cfdg would draw, in drawing order, and the framing.
@@ -84,6 +87,8 @@ pub struct Picture {
     pub variation: i32,
     /// Every primitive finished, including those too small to draw.
     pub finished: u64,
+    /// What each path shape draws: one entry per command, in order.
+    pub paths: Vec<Vec<PathDraw>>,
 }
 
 #[derive(Debug, Clone)]
@@ -101,6 +106,8 @@ struct Rules<'g> {
     by_shape: Vec<Vec<(f64, &'g [Element])>>,
     /// Per shape number: its parameters' names.
     params: Vec<&'g [String]>,
+    /// Per shape number: whether it is a `path`.
+    is_path: Vec<bool>,
 }
 
 fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
@@ -110,17 +117,22 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
     }
     let mut by_shape: Vec<Vec<(f64, f64, bool, &[Element])>> = vec![Vec::new(); 3];
     let mut params: Vec<&[String]> = vec![&[]; 3];
+    let mut is_path = vec![false; 3];
     for r in &g.rules {
         // A rule for a primitive's name replaces the primitive (cfdg's shape
-        // type becomes a rule type, `CFDGImpl::addRule`); FILL cannot have rules.
-        if r.name == "FILL" {
-            return Err(ParseError::single(r.span, "`FILL` is a path command and cannot have rules"));
-        }
+        // type becomes a rule type, `CFDGImpl::addRule`); so does a 2.x
+        // `rule FILL` (quadcity_v2), FILL outside a path being a shape name.
         let n = index.len();
         let i = *index.entry(r.name.as_str()).or_insert(n);
         if i == by_shape.len() {
             by_shape.push(Vec::new());
             params.push(&r.params);
+            is_path.push(r.is_path);
+        }
+        // A path named as a primitive replaces the primitive (trisvgtest).
+        if r.is_path {
+            is_path[i] = true;
+            params[i] = &r.params;
         }
         by_shape[i].push((r.weight, 0.0, r.percent, &r.body));
     }
@@ -150,7 +162,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
                 .collect()
         })
         .collect();
-    Ok(Rules { index, by_shape, params })
+    Ok(Rules { index, by_shape, params, is_path })
 }
 
 /// Checks that every shape a design names exists, so a missing rule is a
@@ -176,7 +188,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
                     walk(otherwise, rules)?;
                 }
                 Element::Transform { body, .. } => walk(body, rules)?,
-                Element::Define(_) => {}
+                Element::Define(_) | Element::PathOp(_) | Element::PathCommand(_) => {}
             }
         }
         Ok(())
@@ -211,7 +223,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
 }
 
 mod run;
-pub use run::render;
+pub use run::{render, PathDraw};
 
 /// The terms of an adjustment in evaluation order, cached per adjustment.
 pub(crate) fn terms_of(adj: &syntax::Adjustment) -> Vec<Term> {

@@ -13,6 +13,9 @@ use crate::core::budget::Budget;
 use crate::model::EvalError;
 use std::collections::HashMap;
 
+mod path;
+pub use path::PathDraw;
+
 /// Bytes accounted per unfinished or finished shape.
 const SHAPE_BYTES: u64 = 160;
 /// cfdg's fixed border in pixels (`FIXED_BORDER`).
@@ -39,6 +42,8 @@ struct Renderer<'g> {
     params: Vec<f64>,
     /// The fixed bounds of a `CF::Size` design.
     sized: Option<Bounds>,
+    /// What each finished path shape draws, by [`Finished::path`].
+    paths: Vec<Vec<PathDraw>>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -89,9 +94,11 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         max_shapes = 500_000_000;
     }
     let border = opts.border;
-    let fixed_border = FIXED_BORDER * if border <= 1.0 { border } else { 1.0 };
+    // RendererImpl::init: CF::BorderFixed and CF::BorderDynamic override the border mode's.
+    let fixed_border = setting(g, "CF::BorderFixed", &scope)?.unwrap_or(FIXED_BORDER * if border <= 1.0 { border } else { 1.0 });
     let fixed_border = if 2.0 * fixed_border.abs().floor() >= f64::from(opts.width.min(opts.height)) { 0.0 } else { fixed_border };
-    let shape_border = if border <= 1.0 { 1.0 } else { border };
+    let shape_border = setting(g, "CF::BorderDynamic", &scope)?.unwrap_or(if border <= 1.0 { 1.0 } else { border });
+    let shape_border = if shape_border <= 0.0 { 1.0 } else { shape_border };
     let background = background(g, &scope)?;
     let sized = sized(g, &scope)?;
     let mut r = Renderer {
@@ -113,6 +120,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         polygons: [bounds_polygon(0), bounds_polygon(1), bounds_polygon(2)],
         params: Vec::new(),
         sized: None,
+        paths: Vec::new(),
     };
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
     // offsets the start shape (RendererImpl::initBounds, getInitialShape).
@@ -221,6 +229,9 @@ impl Renderer<'_> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
+        if self.rules.is_path[shape] {
+            return self.path_shape(shape, state, params);
+        }
         if shape >= 3 || !self.rules.by_shape[shape].is_empty() {
             let area = state.area();
             if !self.bounds.valid() || area * self.scale_area >= self.min_area {
@@ -235,6 +246,14 @@ impl Renderer<'_> {
         if !b.valid() {
             return Ok(());
         }
+        let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
+        self.finish_shape(shape, state, b, box_area, 0)
+    }
+
+    /// Keeps a finished shape of bounds `b` (unless a sized design drops it
+    /// off the canvas), growing the picture's bounds and scale
+    /// (`processPrimShapeSiblings`).
+    fn finish_shape(&mut self, kind: usize, state: State, b: Bounds, box_area: f64, path: usize) -> Result<(), EvalError> {
         match &self.sized {
             // Off-canvas shapes are dropped from a sized design.
             Some(fixed) => {
@@ -251,8 +270,7 @@ impl Renderer<'_> {
         self.shape_count += 1;
         self.budget.charge_primitive(2)?;
         self.budget.reserve_memory(SHAPE_BYTES)?;
-        let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
-        self.finished.push(Finished { kind: shape, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area });
+        self.finished.push(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path });
         Ok(())
     }
 
@@ -295,21 +313,7 @@ impl Renderer<'_> {
                 self.process(shape, child, params)
             }
             Element::Loop(l) => {
-                let key = l as *const syntax::Loop as usize;
-                let var = l.var.clone().unwrap_or_else(|| "~~inaccessiblevar~~".into());
-                let (terms, seed) = cached(&mut self.cache, key, || (prepare(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).clone();
-                self.current.xor(seed);
-                let mut a = Vec::new();
-                super::expr::eval(&l.args, &self.scope, &mut self.current, &mut a)?;
-                let (start, end, step) = match a.as_slice() {
-                    [n] => (0.0, *n, 1.0),
-                    [s, e] => (*s, *e, 1.0),
-                    [s, e, st] => (*s, *e, *st),
-                    _ => return Err(EvalError::BadIteration { span: l.span, value: format!("{} loop arguments", a.len()) }),
-                };
-                if !(start.is_finite() && end.is_finite() && step.is_finite()) || step == 0.0 {
-                    return Err(EvalError::BadIteration { span: l.span, value: format!("{start}, {end}, {step}") });
-                }
+                let (terms, var, start, end, step) = self.loop_setup(l)?;
                 let mut child = *parent;
                 let mut index = start;
                 self.scope.vars.push((var, vec![index]));
@@ -355,6 +359,8 @@ impl Renderer<'_> {
                 }
                 Ok(())
             }
+            // The parser allows these only in a path, which `path_shape` walks.
+            Element::PathOp(_) | Element::PathCommand(_) => Ok(()),
             Element::Define(d) => {
                 // A constant definition is folded at compile time and never
                 // traversed (ASTdefine::traverse returns for non-stack defines).
@@ -369,6 +375,26 @@ impl Renderer<'_> {
                 Ok(())
             }
         }
+    }
+
+    /// A loop's adjustment, index name and range, its seed mixed in (`ASTloop::setupLoop`).
+    fn loop_setup(&mut self, l: &syntax::Loop) -> Result<(Prepared, String, f64, f64, f64), EvalError> {
+        let key = l as *const syntax::Loop as usize;
+        let var = l.var.clone().unwrap_or_else(|| "~~inaccessiblevar~~".into());
+        let (terms, seed) = cached(&mut self.cache, key, || (prepare(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).clone();
+        self.current.xor(seed);
+        let mut a = Vec::new();
+        super::expr::eval(&l.args, &self.scope, &mut self.current, &mut a)?;
+        let (start, end, step) = match a.as_slice() {
+            [n] => (0.0, *n, 1.0),
+            [s, e] => (*s, *e, 1.0),
+            [s, e, st] => (*s, *e, *st),
+            _ => return Err(EvalError::BadIteration { span: l.span, value: format!("{} loop arguments", a.len()) }),
+        };
+        if !(start.is_finite() && end.is_finite() && step.is_finite()) || step == 0.0 {
+            return Err(EvalError::BadIteration { span: l.span, value: format!("{start}, {end}, {step}") });
+        }
+        Ok((terms, var, start, end, step))
     }
 
     /// Sorts, frames and drops what cfdg would not draw (`outputFinal`, `drawShape`).
@@ -393,6 +419,7 @@ impl Renderer<'_> {
             background,
             variation: self.opts.variation,
             finished,
+            paths: self.paths,
         }
     }
 }

@@ -71,9 +71,10 @@ impl Affine {
         let y2 = 2.0 * ux * uy;
         Affine { sx: 2.0 * ux * ux - 1.0, shy: y2, shx: y2, sy: 2.0 * uy * uy - 1.0, tx: 0.0, ty: 0.0 }
     }
-    /// The map taking the unit square to the parallelogram `p` (three corners, `rect_to_parl`).
+    /// The map taking the unit square to the parallelogram `p` (three
+    /// corners: (0,0) → p0, (1,0) → p1, (1,1) → p2, AGG's `rect_to_parl`).
     pub fn parallelogram(p: &[f64; 6]) -> Affine {
-        Affine { sx: p[2] - p[0], shy: p[3] - p[1], shx: p[4] - p[0], sy: p[5] - p[1], tx: p[0], ty: p[1] }
+        Affine { sx: p[2] - p[0], shy: p[3] - p[1], shx: p[4] - p[2], sy: p[5] - p[3], tx: p[0], ty: p[1] }
     }
     /// The determinant of the linear part.
     pub fn determinant(&self) -> f64 {

@@ -15,7 +15,7 @@ pub mod lexer;
 mod parser;
 
 pub use entropy::{adjust_entropy, define_seed, loop_seed, term_seed};
-pub use parser::{parse, parse_with, Loader, REUSE};
+pub use parser::{is_path_op, parse, parse_with, Loader, REUSE};
 
 use crate::Span;
 
@@ -142,6 +142,94 @@ pub enum Element {
     },
     /// A local definition.
     Define(Define),
+    /// A path operation (`MOVETO`, `LINETO`, `ARCTO`, `CURVETO`, their
+    /// relative forms, `CLOSEPOLY`) inside a `path`.
+    PathOp(PathOp),
+    /// A path command (`STROKE`, `FILL`) inside a `path`.
+    PathCommand(PathCommand),
+}
+
+/// The path operations (`ASTpathOp`'s `pathOpEnum`), in cfdg's order: an
+/// implicit MOVETO is inserted before any operation after `MoveRel`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum PathOpKind {
+    /// `MOVETO x y`.
+    MoveTo,
+    /// `MOVEREL dx dy`.
+    MoveRel,
+    /// `LINETO x y`.
+    LineTo,
+    /// `LINEREL dx dy`.
+    LineRel,
+    /// `ARCTO x y r` or `ARCTO x y rx ry angle`.
+    ArcTo,
+    /// `ARCREL`.
+    ArcRel,
+    /// `CURVETO x y x1 y1 [x2 y2]`.
+    CurveTo,
+    /// `CURVEREL`.
+    CurveRel,
+    /// `CLOSEPOLY`.
+    ClosePoly,
+}
+
+/// A path operation with its positional arguments, as cfdg's
+/// `ASTpathOp::makePositional` and `checkArguments` leave it: the end
+/// point, then the radius (or radii and angle in degrees) of an arc, or
+/// the control points of a curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathOp {
+    /// Which operation.
+    pub kind: PathOpKind,
+    /// Its numeric arguments (flags removed).
+    pub args: Vec<Expr>,
+    /// Its flags (`CF::ArcCW`, `CF::ArcLarge`, `CF::Continuous`, `CF::Align`: [`path_flags`]).
+    pub flags: u32,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// A path command: fill or stroke the operations since the last command.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathCommand {
+    /// `FILL` (else `STROKE`).
+    pub fill: bool,
+    /// Its adjustment (colour and transform of what it draws).
+    pub adjust: Adjustment,
+    /// Its stroke width, when given (cfdg's default is 0.1).
+    pub width: Option<Expr>,
+    /// Its flags (joins, caps, `evenodd`, `iso`: [`path_flags`]).
+    pub flags: u32,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// Context Free's path flags (`ast.h` `FlagTypes`, with AGG's join and cap numbers).
+pub mod path_flags {
+    /// Mask of the line join (AGG: 0 miter, 2 round, 3 bevel).
+    pub const JOIN_MASK: u32 = 0x7;
+    /// A join was given.
+    pub const JOIN_PRESENT: u32 = 8;
+    /// Shift of the line cap (AGG: 0 butt, 1 square, 2 round).
+    pub const CAP_SHIFT: u32 = 4;
+    /// Mask of the line cap.
+    pub const CAP_MASK: u32 = 0x7 << CAP_SHIFT;
+    /// A cap was given.
+    pub const CAP_PRESENT: u32 = 8 << CAP_SHIFT;
+    /// Arc clockwise.
+    pub const ARC_CW: u32 = 1 << 8;
+    /// The large arc.
+    pub const ARC_LARGE: u32 = 1 << 9;
+    /// A smooth curve (control point reflected).
+    pub const CONTINUOUS: u32 = 1 << 10;
+    /// CLOSEPOLY moves the last point onto the first.
+    pub const ALIGN: u32 = 1 << 11;
+    /// Even-odd fill.
+    pub const EVEN_ODD: u32 = 1 << 12;
+    /// Stroke width in pixels of the untransformed path (`iso`).
+    pub const ISO_WIDTH: u32 = 1 << 13;
+    /// Fill (else stroke).
+    pub const FILL: u32 = 1 << 14;
 }
 
 /// A loop.

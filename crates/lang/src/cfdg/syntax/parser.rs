@@ -7,6 +7,9 @@ use super::lexer::{lex, Tok, Token};
 use super::{Adjustment, Define, Element, Expr, Grammar, Loop, Replacement, Rule, Term, TermKind, Value, Version};
 use crate::{ParseError, Span};
 
+mod path;
+pub use path::is_path_op;
+
 /// The argument list `(=)` stands for: the parent shape's parameters.
 pub const REUSE: &str = "(=)";
 
@@ -52,7 +55,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0 };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default() };
     p.grammar()
 }
 
@@ -63,6 +66,8 @@ struct Parser<'a> {
     depth: usize,
     load: Loader<'a>,
     imports: usize,
+    /// Whether a path body or a path command's adjustment is being read ([`path`]).
+    path: path::PathState,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -190,7 +195,10 @@ impl Parser<'_> {
                     let at = self.pos;
                     self.toks.splice(at..at, more);
                 }
-                Tok::Word(w) if w == "path" => return self.err("paths (`path`) are not supported yet"),
+                Tok::Word(w) if w == "path" && !matches!(self.peek_at(1), Tok::Punct("=")) => {
+                    g.rules.push(self.path_rule(span)?);
+                    current_shape = None;
+                }
                 Tok::Word(w) if w == "shape" => {
                     self.bump();
                     let (name, _) = self.name("a shape name after `shape`")?;
@@ -387,7 +395,7 @@ impl Parser<'_> {
                 Ok(Element::Transform { clone: word == "clone", adjusts, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
-            w if w.chars().all(|c| c.is_ascii_uppercase()) && is_path_op(w) => self.err("path operations are not supported yet"),
+            w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
             _ => {
                 let (shape, span) = self.name("a shape name")?;
@@ -430,7 +438,7 @@ impl Parser<'_> {
                 let body = if self.is_punct("{") { self.body_v2()? } else { vec![self.replacement_v2()?] };
                 Ok(Element::Loop(Loop { var: None, args: Expr::Num(value, n), adjust, body, finally: Vec::new(), v2: true, span }))
             }
-            Tok::Word(w) if is_path_op(&w) => self.err("path operations are not supported yet"),
+            Tok::Word(w) if is_path_op(&w) && (self.path.in_path || !matches!(w.as_str(), "FILL" | "STROKE")) => self.path_element(),
             Tok::Word(_) => {
                 let (shape, span) = self.name("a shape name")?;
                 let adjust = self.adjustment()?;
@@ -465,6 +473,9 @@ impl Parser<'_> {
         let mut terms: Vec<Term> = Vec::new();
         while !self.is_punct(close[0]) {
             let span = self.span();
+            if self.path.terms && self.path_term()? {
+                continue;
+            }
             let kind = match self.peek().clone() {
                 Tok::Word(w) => match term_kind(&w) {
                     Some(k) => k,
@@ -524,7 +535,7 @@ impl Parser<'_> {
     fn starts_exp(&self) -> bool {
         match self.peek() {
             Tok::Num(_) | Tok::Punct("(") | Tok::Punct("-") | Tok::Punct("+") => true,
-            Tok::Word(w) => term_kind(w).is_none(),
+            Tok::Word(w) => term_kind(w).is_none() && !(self.path.terms && path::is_path_term(w)),
             _ => false,
         }
     }
@@ -697,7 +708,7 @@ impl Parser<'_> {
                 Tok::Punct("^") => ('^', 10, true),
                 _ => break,
             };
-            if prec < min || (prec == min && !right_assoc) {
+            if prec < min {
                 break;
             }
             let span = self.span();
@@ -728,10 +739,6 @@ impl Parser<'_> {
         self.depth -= 1;
         Ok(left)
     }
-}
-
-fn is_path_op(w: &str) -> bool {
-    matches!(w, "MOVETO" | "LINETO" | "ARCTO" | "CURVETO" | "MOVEREL" | "LINEREL" | "ARCREL" | "CURVEREL" | "CLOSEPOLY" | "STROKE" | "FILL")
 }
 
 /// The value of a constant case expression: numbers, signs, arithmetic,
