@@ -96,6 +96,12 @@ fn walking_the_hierarchy_gives_the_flat_derivation_bit_for_bit() {
         let d = decode_scene_meshes(&bytes, 16, u64::MAX).expect("decodes");
         crate::scene::write_fixture(dir.path(), name, &bytes, &d);
     }
+    // And one with its checksum (the Node test reads every `.crc.rmscene`).
+    let mut checked = req(Format::Scene);
+    checked.export_options.checksum = true;
+    let bytes = ok(&bush(7), &checked).bytes;
+    let d = decode_scene_meshes(&bytes, 16, u64::MAX).expect("decodes");
+    crate::scene::write_fixture(dir.path(), "bush-7.crc", &bytes, &d);
     assert_eq!(decode_scene(&ok(TINTED, &req(Format::Scene)).bytes).expect("decodes").objects.len(), 28);
     let o = std::process::Command::new("node")
         .arg("--test")
