@@ -12,8 +12,15 @@
 //! `0.5 / scale` of the chord, `scale` being the approximation scale (the
 //! size of one unit in pixels for a drawing).
 
-/// Deepest subdivision (`curve_recursion_limit`).
-const RECURSION_LIMIT: u32 = 32;
+/// Deepest subdivision: 16, where AGG's `curve_recursion_limit` is 32.
+/// Each level can double a curve's points, so AGG's limit lets one curve
+/// drawn at an absurd scale (a path under `s 7.5` nine times over) become
+/// billions of points: the `render_cfdg` fuzz target ran out of memory on
+/// it (`fuzz/seeds/render_cfdg/oom-huge-scale-arcs`). 2^16 points bound a
+/// curve to 1 MiB, and a curve needs more only when its chord error must
+/// stay under half a pixel at a radius of about 2^31 pixels, far beyond
+/// any picture, so every drawing cfdg makes is flattened as AGG does.
+const RECURSION_LIMIT: u32 = 16;
 /// `curve_collinearity_epsilon`.
 const COLLINEARITY_EPSILON: f64 = 1e-30;
 
