@@ -159,7 +159,6 @@ pub fn render(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budge
     options.validate().map_err(PreviewError::BadOptions)?;
     let vertex_bytes: u64 = meshes.iter().map(|m| m.mesh.positions.len() as u64 * raster::VERTEX_BYTES).sum();
     budget.reserve_memory(vertex_bytes)?;
-    // Which meshes are closed solids, their back faces culled (one linear pass each).
     let image = draw(meshes, options, budget);
     budget.release_memory(vertex_bytes);
     image
