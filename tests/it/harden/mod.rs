@@ -13,6 +13,7 @@ mod fresh;
 mod input;
 mod memory;
 mod prints;
+mod quick;
 mod schema;
 mod seeds;
 

@@ -1,6 +1,7 @@
 //! The render engine shared by HTTP and gRPC: cache lookup with single-flight,
 //! then the pipeline on the blocking pool behind a concurrency limit with a
-//! bounded wait queue, prints behind a narrower limit of their own.
+//! bounded wait queue, prints behind a narrower limit of their own. Renders
+//! known to be quick run on the async worker instead (module `inline`).
 
 use super::timing::{RanRender, RequestTiming};
 use super::{Metrics, RenderPlan, ServeConfig, ServiceError};
@@ -39,6 +40,8 @@ pub struct Engine {
     allow_javascript: bool,
     metrics: Arc<Metrics>,
     memory: Arc<super::memory::MemoryGuard>,
+    /// Which renders run on the async worker instead of the blocking pool.
+    quick: super::inline::QuickRenders,
 }
 
 /// Decrements the waiting count even if the waiting future is dropped.
@@ -110,6 +113,7 @@ impl Engine {
             allow_javascript: config.allow_javascript,
             metrics,
             memory,
+            quick: super::inline::QuickRenders::default(),
         })
     }
 
@@ -182,15 +186,38 @@ impl Engine {
         metrics.queue_wait(queue);
         metrics.in_flight(1);
         let started = Instant::now();
-        let RenderPlan { source, request, .. } = plan;
+        let RenderPlan { source, mut request, .. } = plan;
         let timeout_ms = request.limits.timeout_ms;
         let format = request.format;
-        let task = tokio::task::spawn_blocking(move || {
-            let result = render_blocking(&source, &request);
-            drop(permit);
-            result
-        });
-        let watched = tokio::time::timeout(watchdog_after(timeout_ms), task).await;
+        let memo = super::inline::memo_key(&source, format);
+        let tried = match super::inline::may_try(timeout_ms, request.export_options.print.enabled) && self.quick.is_quick(memo) {
+            true => self.try_on_worker(&source, &mut request, memo),
+            false => None,
+        };
+        let watched = match tried {
+            Some(done) => {
+                drop(permit);
+                Ok(Ok(done))
+            }
+            None => {
+                let quick = &self.quick;
+                let task = tokio::task::spawn_blocking(move || {
+                    let started = Instant::now();
+                    let result = render_blocking(&source, &request);
+                    let took = started.elapsed();
+                    drop(permit);
+                    (result, took)
+                });
+                tokio::time::timeout(watchdog_after(timeout_ms), task).await.map(|joined| {
+                    joined.map(|(result, took)| {
+                        if result.is_ok() {
+                            quick.record(memo, took);
+                        }
+                        result
+                    })
+                })
+            }
+        };
         metrics.in_flight(-1);
         metrics.render_done(started.elapsed());
         let result = match watched {
@@ -223,6 +250,31 @@ impl Engine {
             Err(_) => {}
         }
         result
+    }
+}
+
+impl Engine {
+    /// Renders `request` on this async worker under a deadline of
+    /// [`super::inline::TRY_DEADLINE_MS`] (module `inline` says why). `None`
+    /// when the try ran into that deadline: the caller renders again on the
+    /// blocking pool, with `request`'s own deadline, restored here.
+    fn try_on_worker(&self, source: &[u8], request: &mut RenderRequest, memo: u64) -> Option<Result<(Rendered, PhaseTimes, SystemTime), ServiceError>> {
+        let own = request.limits.timeout_ms;
+        request.limits.timeout_ms = super::inline::TRY_DEADLINE_MS;
+        let result = render_blocking(source, request);
+        request.limits.timeout_ms = own;
+        let error = match &result {
+            Err(ServiceError::Limit(l)) => Some(l),
+            _ => None,
+        };
+        let truncated = result.as_ref().ok().and_then(|(r, _, _)| r.truncated.as_ref());
+        if super::inline::hit_try_deadline(error, truncated) {
+            self.quick.forget(memo);
+            self.metrics.quick_fell_back();
+            return None;
+        }
+        self.metrics.quick_rendered();
+        Some(result)
     }
 }
 

@@ -18,6 +18,7 @@ pub(crate) mod grpc_conn;
 pub mod http;
 pub(crate) mod http_batch;
 pub(crate) mod http_schema;
+pub(crate) mod inline;
 pub mod library;
 pub mod log_writer;
 pub mod memory;

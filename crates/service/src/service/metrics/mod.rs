@@ -70,6 +70,12 @@ struct BytesLabels {
     format: &'static str,
 }
 
+/// A quick render's outcome (`done` on the worker, `fell_back` to the pool).
+#[derive(Debug, Clone, Hash, PartialEq, Eq, EncodeLabelSet)]
+struct QuickLabels {
+    outcome: &'static str,
+}
+
 /// One cache tier lookup.
 #[derive(Debug, Clone, Hash, PartialEq, Eq, EncodeLabelSet)]
 struct LookupLabels {
@@ -122,6 +128,8 @@ pub struct Metrics {
     connections_closed: Family<ReasonLabel, Counter>,
     access_rejections: Family<ReasonLabel, Counter>,
     watchdog: Counter,
+    /// Renders run on the async worker (`service::inline`), and tries there sent back to the pool.
+    quick: Family<QuickLabels, Counter>,
     memory_refusals: Counter,
     memory_waits: Counter,
     cache: Arc<OnceLock<ModelCache>>,
@@ -167,6 +175,7 @@ impl Metrics {
             connections_closed: Family::default(),
             access_rejections: Family::default(),
             watchdog: Counter::default(),
+            quick: Family::default(),
             memory_refusals: Counter::default(),
             memory_waits: Counter::default(),
             cache: Arc::new(OnceLock::new()),
@@ -194,6 +203,7 @@ impl Metrics {
         r.register("http_connections_closed", "HTTP connections the server closed, by reason", m.connections_closed.clone());
         r.register("access_rejections", "Requests refused by access control, by reason", m.access_rejections.clone());
         r.register("deadline_watchdog", "Renders the service ended at their deadline because the pipeline ran past it", m.watchdog.clone());
+        r.register("quick_renders", "Renders known to be quick, run on the async worker (outcome done) or sent back to the blocking pool at the try's deadline (outcome fell_back)", m.quick.clone());
         r.register("memory_refusals", "Renders refused because resident memory plus their memory budget would pass the memory ceiling (HTTP 503 memory_pressure)", m.memory_refusals.clone());
         r.register("memory_waits", "Renders that waited for memory under the ceiling and then started", m.memory_waits.clone());
         r.register_collector(Box::new(figures::CacheFigures::new(m.cache.clone())));
@@ -314,6 +324,17 @@ impl Metrics {
     /// Counts a render the deadline watchdog ended (the pipeline ran past its deadline).
     pub(crate) fn watchdog_fired(&self) {
         self.watchdog.inc();
+    }
+
+    /// Counts a render run on the async worker (`service::inline`).
+    pub(crate) fn quick_rendered(&self) {
+        self.quick.get_or_create(&QuickLabels { outcome: "done" }).inc();
+    }
+
+    /// Counts a try on the async worker that ran into its deadline and was
+    /// rendered again on the blocking pool.
+    pub(crate) fn quick_fell_back(&self) {
+        self.quick.get_or_create(&QuickLabels { outcome: "fell_back" }).inc();
     }
 
     /// The exposition: OpenMetrics text when `openmetrics`, else the classic text format.
