@@ -602,3 +602,49 @@ fn a_hierarchy_prints_once_per_subtree_as_one_watertight_shell_byte_for_byte() {
     let sponge = 30.0f64.powi(3) * (20.0f64 / 27.0).powi(2);
     assert!((volume - sponge).abs() <= 1e-4 * sponge, "volume {volume} vs {sponge}");
 }
+
+/// Context Free designs print (issue 34): every CFDG grammar in `grammars/`,
+/// its shapes made thin tiles at their z order (`cfdg/tiles.rs`), is one
+/// shell that admesh finds closed and consistently wound and trimesh calls
+/// watertight, in STL and 3MF. Before, the print stage's parts left out
+/// affine instances (every CFDG tile is one), so a design printed nothing.
+/// The 3MF carries the design's colours: as many as its SVG has fills, each
+/// within one 8-bit step of one of them (3MF stores sRGB from the model's
+/// linear colours, the SVG cfdg's 8-bit ones).
+#[test]
+fn every_cfdg_grammar_prints_as_one_watertight_shell_with_its_colours() {
+    let grammars = grammar_files("cfdg");
+    assert!(!grammars.is_empty(), "no CFDG grammar in grammars/");
+    let printed = prints_as_one_watertight_solid_or_says_why_not(&grammars, Deadline::Default);
+    assert!(printed.refused.is_empty(), "refused: {:?}", printed.refused);
+    assert_eq!(printed.printed.len(), grammars.len());
+    let dir = tempdir();
+    for g in &grammars {
+        let stem = g.file_stem().and_then(|s| s.to_str()).expect("name");
+        let (mf, svg) = (dir.path().join(format!("{stem}.3mf")), dir.path().join(format!("{stem}.svg")));
+        for (out, extra) in [(&mf, &["--print"][..]), (&svg, &[][..])] {
+            let mut args = vec!["render", g.to_str().expect("utf-8"), "-o", out.to_str().expect("utf-8")];
+            args.extend_from_slice(extra);
+            let run = run(&args, None);
+            assert!(run.status.success(), "{stem}: {}", String::from_utf8_lossy(&run.stderr));
+        }
+        let text = std::fs::read_to_string(&svg).expect("svg");
+        let mut fills: Vec<[u8; 3]> = text
+            .split("fill=\"#")
+            .skip(1)
+            .filter_map(|rest| rest.get(..6))
+            .filter_map(|h| Some([u8::from_str_radix(h.get(0..2)?, 16).ok()?, u8::from_str_radix(h.get(2..4)?, 16).ok()?, u8::from_str_radix(h.get(4..6)?, 16).ok()?]))
+            .collect();
+        fills.sort();
+        fills.dedup();
+        let mut colours: Vec<[u8; 3]> = lib3mf_triangle_colours(&mf).into_iter().map(|(_, c)| [c[0], c[1], c[2]]).collect();
+        colours.sort();
+        colours.dedup();
+        assert!(fills.len() > 1, "{stem}: a design of one colour tests nothing");
+        assert_eq!(colours.len(), fills.len(), "{stem}: the 3MF's colours against the SVG's fills");
+        for c in &colours {
+            let near = fills.iter().any(|f| f.iter().zip(c).all(|(a, b)| a.abs_diff(*b) <= 1));
+            assert!(near, "{stem}: 3MF colour {c:?} is no fill of the design's SVG");
+        }
+    }
+}

@@ -162,8 +162,8 @@ pub(crate) fn build_with_graph(scene: &Scene, detail: u32, layout: MeshLayout, b
     Ok((meshes, graph))
 }
 
-/// One mesh per placed part — every primitive instance, shape placement and
-/// swept line on its own, then the free vertices — for printable output, which must unite closed parts and so
+/// One mesh per placed part — every primitive instance, shape placement,
+/// affine instance and swept line on its own, then the free vertices — for printable output, which must unite closed parts and so
 /// needs them apart: merged, touching parts weld into non-manifold clumps.
 pub(crate) fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Result<Vec<NamedMesh>, LimitExceeded> {
     let mut parts = Vec::new();
@@ -186,6 +186,16 @@ pub(crate) fn build_parts(scene: &Scene, detail: u32, budget: &mut Budget) -> Re
         budget.reserve_memory(mesh_bytes(v, t))?;
         let mut mesh = Mesh::default();
         append_instance(&mut mesh, proto, &inst);
+        parts.push(NamedMesh { name: "part".to_string(), mesh });
+    }
+    // Primitives placed by general affine maps (EisenScript's skews, Context
+    // Free's tiles), each on its own as well.
+    for inst in scene.affine.iter().filter(|a| a.is_drawable()) {
+        let proto = &*protos[inst.kind as usize].get_or_insert_with(|| primitives::tessellate(inst.kind, detail));
+        let (v, t) = (proto.positions.len() as u64, proto.indices.len() as u64 / 3);
+        budget.reserve_memory(mesh_bytes(v, t))?;
+        let mut mesh = Mesh::default();
+        append_affine(&mut mesh, proto, inst);
         parts.push(NamedMesh { name: "part".to_string(), mesh });
     }
     // Each swept line on its own too: branches of one plant share positions.
