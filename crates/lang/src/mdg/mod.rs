@@ -9,6 +9,9 @@ pub mod syntax;
 pub use syntax::parse;
 
 use crate::core::budget::Budget;
+use crate::ir::Program;
+use crate::parse_cache::ParseCache;
+use std::sync::{Arc, LazyLock};
 use crate::core::timing::StageClock;
 use crate::ir::ParamDecl;
 use crate::model::{BuildError, BuildRequest, Model};
@@ -16,6 +19,15 @@ use crate::{Diagnostic, FrontEnd, Language, ParseError};
 
 /// MDG's front end.
 pub struct Mdg;
+
+/// MDG programs parsed in this process, by source (`parse_cache`): a
+/// library grammar is parsed once, not once per render.
+static PARSED: LazyLock<ParseCache<Program>> = LazyLock::new(ParseCache::default);
+
+/// `source` parsed, from [`PARSED`] when it was parsed before.
+fn parsed(source: &[u8]) -> Result<Arc<Program>, ParseError> {
+    PARSED.get_or_parse(source, parse)
+}
 
 impl FrontEnd for Mdg {
     fn name(&self) -> &'static str {
@@ -25,12 +37,13 @@ impl FrontEnd for Mdg {
         &["mdg"]
     }
     fn check(&self, source: &[u8]) -> Result<Vec<Diagnostic>, ParseError> {
-        parse(source).map(|p| p.warnings)
+        parsed(source).map(|p| p.warnings.clone())
     }
     fn declared_params(&self, source: &[u8]) -> Result<Vec<ParamDecl>, ParseError> {
-        parse(source).map(|p| p.params)
+        parsed(source).map(|p| p.params.clone())
     }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
-        eval::build_model(Language::Mdg, parse(source)?, req, budget, clock)
+        let program = parsed(source)?;
+        eval::build_model(Language::Mdg, &program, req, budget, clock)
     }
 }

@@ -25,6 +25,6 @@ impl FrontEnd for Ug {
         syntax::parse(source).map(|p| p.params)
     }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
-        crate::mdg::eval::build_model(Language::Ug, syntax::parse(source)?, req, budget, clock)
+        crate::mdg::eval::build_model(Language::Ug, &syntax::parse(source)?, req, budget, clock)
     }
 }

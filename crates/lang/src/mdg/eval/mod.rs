@@ -36,16 +36,16 @@ use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, Model};
 /// memoised is built as an object [`Hierarchy`](crate::model::Hierarchy)
 /// ([`evaluate_hierarchy`], docs/mdg.md); every other output, and every other
 /// program, gets the flat derivation, exactly as before hierarchies existed.
-pub fn build_model(language: Language, program: Program, req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
-    let params = bind_params(&program, req.params)?;
+pub fn build_model(language: Language, program: &Program, req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    let params = bind_params(program, req.params)?;
     clock.lap(Phase::Parse);
     let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit, downstream: req.downstream };
     // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
     let seed = req.seed.or(program.directives.randseed).unwrap_or(0);
-    if let Some(h) = hierarchy(&program, &params, &options, req, budget)? {
-        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(&program), ..Scene::default() }, hierarchy: Some(h), drawing: None, warnings: program.warnings });
+    if let Some(h) = hierarchy(program, &params, &options, req, budget)? {
+        return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(program), ..Scene::default() }, hierarchy: Some(h), drawing: None, warnings: program.warnings.clone() });
     }
-    let scene = evaluate(&program, &params, &options, budget)?;
+    let scene = evaluate(program, &params, &options, budget)?;
     Ok(Model {
         language,
         seed,
@@ -54,7 +54,7 @@ pub fn build_model(language: Language, program: Program, req: &BuildRequest<'_>,
         scene,
         hierarchy: None,
         drawing: None,
-        warnings: program.warnings,
+        warnings: program.warnings.clone(),
     })
 }
 
