@@ -21,6 +21,7 @@
 use super::{MAX_DETAIL, MIN_DETAIL};
 use crate::core::PrimitiveKind;
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 /// A primitive's tessellated prototype in its unit local space.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -54,10 +55,31 @@ fn torus_tube(d: u64) -> u64 {
     (d / 2).max(3)
 }
 
+/// Details up to this are tessellated once per process and kept
+/// ([`tessellate`]): every icon render placed the same few unit primitives,
+/// and computing their rings (libm's sines and cosines) again each time was
+/// a visible share of a fresh render (issue 33). All kinds at every kept
+/// detail hold about 3 MB; finer details are made each time.
+pub const KEPT_DETAIL: u32 = 64;
+
+/// The kept prototypes, by kind and detail, made on first use.
+static KEPT: [[OnceLock<Prototype>; KEPT_DETAIL as usize + 1]; PrimitiveKind::ALL.len()] = [const { [const { OnceLock::new() }; KEPT_DETAIL as usize + 1] }; PrimitiveKind::ALL.len()];
+
 /// Tessellates `kind` at `detail` (already clamped to MIN_DETAIL..=MAX_DETAIL;
 /// out-of-range values are clamped again here). Polyhedra ignore `detail`.
+/// A copy of the kept prototype for details up to [`KEPT_DETAIL`]: the same
+/// arithmetic ran once, so the numbers are the same.
 pub fn tessellate(kind: PrimitiveKind, detail: u32) -> Prototype {
-    let d = clamp_detail(detail) as usize;
+    let d = clamp_detail(detail);
+    match KEPT.get(kind as usize).and_then(|by_detail| by_detail.get(d as usize)) {
+        Some(slot) => slot.get_or_init(|| make(kind, d)).clone(),
+        None => make(kind, d),
+    }
+}
+
+/// [`tessellate`]'s work, at a clamped detail.
+fn make(kind: PrimitiveKind, detail: u64) -> Prototype {
+    let d = detail as usize;
     let proto = match kind {
         PrimitiveKind::Box => box_proto(),
         PrimitiveKind::Sphere => sphere(d),
@@ -73,8 +95,8 @@ pub fn tessellate(kind: PrimitiveKind, detail: u32) -> Prototype {
             flat_polyhedron(&v, &faces)
         }
     };
-    debug_assert_eq!(proto.positions.len() as u64, vertex_count(kind, detail));
-    debug_assert_eq!(proto.indices.len() as u64, 3 * triangle_count(kind, detail));
+    debug_assert_eq!(proto.positions.len() as u64, vertex_count(kind, detail as u32));
+    debug_assert_eq!(proto.indices.len() as u64, 3 * triangle_count(kind, detail as u32));
     proto
 }
 
