@@ -10,7 +10,7 @@
 //! writes it ([`Route::charge_hierarchy`]).
 
 use super::RenderRequest;
-use crate::export::{EncodePicture, Instancing, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
+use crate::export::{EncodePicture, Instancing, MakeSink, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
 use crate::core::budget::{Budget, Limit, LimitExceeded};
 use crate::model::Hierarchy;
 
@@ -23,10 +23,11 @@ pub(crate) enum Route {
     /// The format writes the model's 2D drawing (`svg`), which only a
     /// language that draws makes (Context Free); others are refused.
     Drawing(WriteDrawing),
-    /// Strips written from the model a chunk at a time: no merged mesh,
-    /// a hierarchy walked, not expanded (docs/strips-format.md); `empty`
-    /// writes the empty model a late answer falls back to.
-    StreamedStrips { empty: WriteMeshes },
+    /// The model fed piece by piece into the format's streaming sink
+    /// (strips, a chunk at a time): no merged mesh, a hierarchy walked, not
+    /// expanded (docs/strips-format.md); `empty` writes the empty model a
+    /// late answer falls back to.
+    Streamed { sink: MakeSink, empty: WriteMeshes },
     /// One watertight solid from the print stage (docs/print.md), then
     /// its report as JSON when `report`, else the solid in `output`.
     Print { report: bool, output: Output },
@@ -62,22 +63,22 @@ impl Route {
         let print = opts.print.enabled;
         let fit = opts.fit_unit_box;
         let plain = opts.gltf.is_plain();
-        let (output, meshes) = match info.writer {
+        let (output, meshes, model) = match info.writer {
             Writer::Model(write) => return Route::Model(write),
             Writer::Drawing(write) => return Route::Drawing(write),
-            Writer::Meshes(write) => (Output::Meshes { write, fit }, Some(write)),
+            Writer::Sink { flat, model } => (Output::Meshes { write: flat, fit }, Some(flat), model),
             Writer::Instancing { meshes, hierarchy } => {
                 let output = Output::Meshes { write: meshes, fit };
                 if !print && !fit {
                     return Route::InstancedHierarchy { write: hierarchy, flat: output };
                 }
-                (output, Some(meshes))
+                (output, Some(meshes), None)
             }
-            Writer::Picture(encode) => (Output::Picture(encode), None),
+            Writer::Picture(encode) => (Output::Picture(encode), None, None),
         };
-        match meshes {
-            Some(empty) if info.caps.streamed && !print && !fit => return Route::StreamedStrips { empty },
-            Some(flat) if info.caps.instancing && opts.instancing == Instancing::Gpu && plain && !fit && !print => {
+        match (meshes, model) {
+            (Some(empty), Some(sink)) if info.caps.streamed && !print && !fit => return Route::Streamed { sink, empty },
+            (Some(flat), _) if info.caps.instancing && opts.instancing == Instancing::Gpu && plain && !fit && !print => {
                 return Route::InstancedGltf { binary: !info.caps.text, flat }
             }
             _ => {}
@@ -104,7 +105,7 @@ impl Route {
     pub(crate) fn wants_hierarchy(&self, own: bool) -> bool {
         match self {
             Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Print { .. } => true,
-            Route::StreamedStrips { .. } => !own,
+            Route::Streamed { .. } => !own,
             Route::Flat { hierarchy, .. } => *hierarchy && own,
             Route::Drawing(_) => false,
         }
@@ -155,7 +156,7 @@ impl Route {
 
     /// Whether no merged mesh is built (only the output is promised).
     pub(crate) fn streamed(&self) -> bool {
-        matches!(self, Route::StreamedStrips { .. })
+        matches!(self, Route::Streamed { .. })
     }
 
     /// Whether placements are written as instances, each charged at the

@@ -4,11 +4,12 @@
 //! before the front end ran; nothing here reads the request's flags to
 //! decide it again.
 
+use super::feed;
 use super::route::{Output, Route};
 use super::{RenderError, RenderOutput, RenderRequest};
 use crate::core::budget::{Budget, Limit, LimitExceeded, OnLimit};
 use crate::core::timing::{Phase, PhaseTimes, StageClock};
-use crate::export::{self, ExportError, ExportMeta, Provenance, WriteMeshes};
+use crate::export::{self, ExportError, ExportMeta, MakeSink, Provenance, WriteMeshes};
 use crate::geom::NamedMesh;
 use crate::mesh;
 use crate::model::{instancing, Model};
@@ -43,7 +44,7 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
             clock.lap(Phase::Export);
             Ok(summary(bytes, &model, 0, model.scene.truncated))
         }
-        Route::StreamedStrips { empty } => strips_from_model(model, provenance, empty, req, budget, clock),
+        Route::Streamed { sink, empty } => streamed(model, provenance, sink, empty, req, budget, clock),
         Route::Print { report, output } => print(model, provenance, report, output, req, budget, clock),
         Route::InstancedGltf { binary, flat: write } => instanced(model, provenance, binary, write, req, budget, clock),
         Route::InstancedHierarchy { write, flat: output } => match model.hierarchy.take() {
@@ -294,22 +295,23 @@ fn empty_if_late(
     }
 }
 
-/// Strips written from the model a chunk at a time (docs/strips-format.md):
-/// a first pass for the bounds and palette (timed as meshing, and cut at the
-/// meshing deadline under `truncate`), then the chunks, each tessellated,
-/// coded and appended in turn. No merged mesh is built and a hierarchy is
-/// walked, not expanded.
-fn strips_from_model(mut model: Model, provenance: Provenance, empty: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+/// The model streamed into the format's sink (strips, docs/strips-format.md):
+/// a first pass for what the sink codes against (strips' bounds and
+/// palette; timed as meshing, and cut at the meshing deadline under
+/// `truncate`), then the pieces, each tessellated and handed over in turn.
+/// No merged mesh is built and a hierarchy is walked, not expanded.
+fn streamed(mut model: Model, provenance: Provenance, make: MakeSink, empty: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     let h = model.hierarchy.take();
-    let src = export::strips::ModelSource { scene: &model.scene, hierarchy: h.as_ref(), detail: req.detail, layout: req.layout };
-    let survey = export::strips::survey_model(&src, req.on_limit, budget)?;
+    let src = feed::ModelPieces { scene: &model.scene, hierarchy: h.as_ref(), detail: req.detail, layout: req.layout };
+    let mut sink = make(&req.export_options);
+    let surveyed = feed::survey(&src, sink.as_mut(), req.on_limit, budget)?;
     clock.lap(Phase::Mesh);
     budget.set_stage_share(None);
-    let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(survey.cut);
+    let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(surveyed.cut);
     let meta = hierarchy_meta(&model, truncated.is_some(), provenance);
-    let written = export::strips::write_strips_model(&src, &survey, &req.export_options.strips, budget);
+    let written = feed::pieces(&src, sink, &surveyed, &meta, budget);
     let empty = |meta: &ExportMeta, budget: &mut Budget| empty(&[], meta, &req.export_options, budget);
-    let (bytes, triangles, truncated) = empty_if_late(written, survey.triangles(), truncated, meta, req.on_limit, budget, empty)?;
+    let (bytes, triangles, truncated) = empty_if_late(written, surveyed.triangles, truncated, meta, req.on_limit, budget, empty)?;
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
 }

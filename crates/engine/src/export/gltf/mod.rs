@@ -60,7 +60,7 @@ pub const GLB: FormatInfo = FormatInfo {
     caps: CAPS,
     options: OptionGroup::Gltf,
     size: SizeBound { fixed: 64 * 1024, per_vertex: 28, per_triangle: 12, per_instance: instanced::SCENE_INSTANCE_BYTES },
-    writer: Writer::Meshes(write_glb_with),
+    writer: Writer::Sink { flat: write_glb_with, model: None },
 };
 
 /// `gltf`: glTF 2.0 JSON with the buffer as a data URI. base64 inflates
@@ -73,7 +73,7 @@ pub(crate) const GLTF: FormatInfo = FormatInfo {
     caps: Capabilities { text: true, ..CAPS },
     options: OptionGroup::Gltf,
     size: SizeBound { fixed: 64 * 1024, per_vertex: 38, per_triangle: 16, per_instance: 3 * instanced::SCENE_INSTANCE_BYTES },
-    writer: Writer::Meshes(write_gltf_with),
+    writer: Writer::Sink { flat: write_gltf_with, model: None },
 };
 
 /// `glb` with the request's options: the plain writer when every compact
