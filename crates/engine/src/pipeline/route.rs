@@ -31,10 +31,11 @@ pub(crate) enum Route {
     /// One watertight solid from the print stage (docs/print.md), then
     /// its report as JSON when `report`, else the solid in `output`.
     Print { report: bool, output: Output },
-    /// glTF writing each repeated mesh once and drawing it per placement
-    /// (`EXT_mesh_gpu_instancing`), `.glb` when `binary`; `flat` writes
-    /// what is not instanced (a moving model, one without repeats).
-    InstancedGltf { binary: bool, flat: WriteMeshes },
+    /// Each repeated mesh (a flat scene's, or a hierarchy's leaf shapes)
+    /// fed once into the format's instancing sink and placed per placement
+    /// (glTF's `EXT_mesh_gpu_instancing`); `flat` writes what is not
+    /// instanced (a moving model, one without repeats).
+    Instanced { sink: MakeSink, flat: WriteMeshes },
     /// A hierarchy written by the format's own writer, each leaf shape once
     /// and placed per leaf (usdz's scene-graph instancing, docs/usdz.md);
     /// a model without one goes to `flat`.
@@ -78,8 +79,8 @@ impl Route {
         };
         match (meshes, model) {
             (Some(empty), Some(sink)) if info.caps.streamed && !print && !fit => return Route::Streamed { sink, empty },
-            (Some(flat), _) if info.caps.instancing && opts.instancing == Instancing::Gpu && plain && !fit && !print => {
-                return Route::InstancedGltf { binary: !info.caps.text, flat }
+            (Some(flat), Some(sink)) if info.caps.instancing && opts.instancing == Instancing::Gpu && plain && !fit && !print => {
+                return Route::Instanced { sink, flat }
             }
             _ => {}
         }
@@ -104,7 +105,7 @@ impl Route {
     /// formats, strips included.
     pub(crate) fn wants_hierarchy(&self, own: bool) -> bool {
         match self {
-            Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Print { .. } => true,
+            Route::Model(_) | Route::Instanced { .. } | Route::InstancedHierarchy { .. } | Route::Print { .. } => true,
             Route::Streamed { .. } => !own,
             Route::Flat { hierarchy, .. } => *hierarchy && own,
             Route::Drawing(_) => false,
@@ -121,7 +122,7 @@ impl Route {
     pub(crate) fn charge_hierarchy(&self, h: &Hierarchy, detail: u32, budget: &Budget) -> Result<(), LimitExceeded> {
         match self {
             Route::Model(_) => budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64)),
-            Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } => {
+            Route::Instanced { .. } | Route::InstancedHierarchy { .. } => {
                 budget.check_total(Limit::Primitives, h.leaves())?;
                 let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(detail))).fold(0u64, u64::saturating_add);
                 budget.check_total(Limit::Triangles, meshes)
@@ -145,7 +146,7 @@ impl Route {
     /// Whether the output plays the model's animation and camera path in a
     /// node graph (plain glTF, instanced or flat); everything else shows time 0.
     pub(crate) fn animated(&self) -> bool {
-        matches!(self, Route::InstancedGltf { .. } | Route::Flat { animated: true, .. })
+        matches!(self, Route::Instanced { .. } | Route::Flat { animated: true, .. })
     }
 
     /// The side in pixels of the picture the route makes (`png`'s `size`),
@@ -164,6 +165,6 @@ impl Route {
     /// repeats under GPU instancing, a hierarchy's leaves written by the
     /// format's own hierarchy writer.
     pub(crate) fn writes_instances(&self) -> bool {
-        matches!(self, Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. })
+        matches!(self, Route::Model(_) | Route::Instanced { .. } | Route::InstancedHierarchy { .. })
     }
 }

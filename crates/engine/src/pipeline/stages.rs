@@ -46,7 +46,7 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
         }
         Route::Streamed { sink, empty } => streamed(model, provenance, sink, empty, req, budget, clock),
         Route::Print { report, output } => print(model, provenance, report, output, req, budget, clock),
-        Route::InstancedGltf { binary, flat: write } => instanced(model, provenance, binary, write, req, budget, clock),
+        Route::Instanced { sink, flat: write } => instanced(model, provenance, sink, write, req, budget, clock),
         Route::InstancedHierarchy { write, flat: output } => match model.hierarchy.take() {
             Some(h) => {
                 let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
@@ -116,12 +116,12 @@ fn print(mut model: Model, provenance: Provenance, report: bool, output: Output,
 /// The GPU-instanced glTF route: a hierarchy written as instances; a flat
 /// scene with repeated meshes written once per mesh; a moving model (a node
 /// graph is written flat) or one with no repeats, flat.
-fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+fn instanced(mut model: Model, provenance: Provenance, make: MakeSink, write: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     if let Some(h) = model.hierarchy.take() {
         let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
         // MDG's instances carry their colours, as its flat scenes' do; L-systems' meshes do.
         let per_instance_colour = model.language.front_end().colours_per_instance();
-        let bytes = export::gltf::instanced::write_instanced(&h, req.detail, binary, &meta, per_instance_colour, budget)?;
+        let bytes = feed::hierarchy(&h, req.detail, per_instance_colour, make(&req.export_options), &meta, budget)?;
         clock.lap(Phase::Export);
         return Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated));
     }
@@ -136,7 +136,7 @@ fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: Writ
         // No mesh repeats: the plain writer makes the bytes a flat request would.
         return flat(model, provenance, output, None, req, budget, clock);
     }
-    let prototypes = export::gltf::instanced::prototypes(&plan, &model.scene, req.detail, budget)?;
+    let prototypes = feed::prototypes(&plan, &model.scene, req.detail, budget)?;
     let residual = plan.residual(&mut model.scene, budget)?;
     let (meshes, cut) = mesh::build_meshes_until(&residual, req.detail, req.layout, req.on_limit, budget)?;
     budget.release_memory(instancing::residual_bytes(instancing::residual_counts(&residual)));
@@ -149,7 +149,7 @@ fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: Writ
     let meta = flat_meta(&model, provenance, truncated, None);
     let scene = &model.scene;
     let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| {
-        export::gltf::instanced::write_scene(scene, &plan, prototypes, meshes, &meta, binary, budget)
+        feed::scene(scene, &plan, prototypes, meshes, make(&req.export_options), &meta, budget)
     });
     let empty = |meta: &ExportMeta, budget: &mut Budget| write(&[], meta, &req.export_options, budget);
     let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, empty)?;
