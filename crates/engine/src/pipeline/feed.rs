@@ -13,6 +13,9 @@
 //!   then placed, for the instanced route (glTF's `EXT_mesh_gpu_instancing`).
 //!   Where a mesh is laid out before its placements, as glTF's buffer needs,
 //!   the placements are streamed into the output as the model is walked.
+//! * [`meshes`]: meshes made by the mesher or the print stage, fed plain,
+//!   for the flat formats (every route that meshes, and the empty model of
+//!   a late answer).
 
 use crate::core::budget::{Budget, LimitExceeded, OnLimit};
 use crate::export::{Drawn, ExportError, ExportMeta, GeometrySink, InstanceData, InstanceLayout, MeshId};
@@ -231,5 +234,16 @@ pub(super) fn hierarchy(h: &Hierarchy, detail: u32, per_instance_colour: bool, m
         }
     });
     failed?;
+    sink.end(budget)
+}
+
+/// Feeds meshes made by the mesher or the print stage (merged, per kind,
+/// one printable solid) into `sink` as plain meshes, in order: the flat
+/// formats' route, through [`FlatSink`](crate::export::FlatSink).
+pub(super) fn meshes(meshes: Vec<NamedMesh>, mut sink: Box<dyn GeometrySink>, meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+    sink.begin(meta, budget)?;
+    for mesh in meshes {
+        sink.mesh(mesh, Drawn::Plain, budget)?;
+    }
     sink.end(budget)
 }

@@ -9,7 +9,7 @@ use super::route::{Output, Route};
 use super::{RenderError, RenderOutput, RenderRequest};
 use crate::core::budget::{Budget, Limit, LimitExceeded, OnLimit};
 use crate::core::timing::{Phase, PhaseTimes, StageClock};
-use crate::export::{self, ExportError, ExportMeta, MakeSink, Provenance, WriteMeshes};
+use crate::export::{self, ExportError, ExportMeta, FlatSink, GeometrySink, MakeSink, Provenance, WriteMeshes};
 use crate::geom::NamedMesh;
 use crate::mesh;
 use crate::model::{instancing, Model};
@@ -151,7 +151,7 @@ fn instanced(mut model: Model, provenance: Provenance, make: MakeSink, write: Wr
     let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| {
         feed::scene(scene, &plan, prototypes, meshes, make(&req.export_options), &meta, budget)
     });
-    let empty = |meta: &ExportMeta, budget: &mut Budget| write(&[], meta, &req.export_options, budget);
+    let empty = |meta: &ExportMeta, budget: &mut Budget| feed::meshes(Vec::new(), flat_sink(write, req), meta, budget);
     let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, empty)?;
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
@@ -252,14 +252,20 @@ fn write_meshes(mut meshes: Vec<NamedMesh>, meta: ExportMeta, truncated: Option<
         Output::Meshes { write, fit } => {
             // Writing a large model takes a share of the deadline; a model that arrives here late is not started.
             let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| match fit {
-                true => fit_unit_box(&meshes, &meta, budget).and_then(|(fitted, meta)| write(&fitted, &meta, &req.export_options, budget)),
-                false => write(&meshes, &meta, &req.export_options, budget),
+                true => fit_unit_box(&meshes, &meta, budget).and_then(|(fitted, meta)| feed::meshes(fitted, flat_sink(write, req), &meta, budget)),
+                false => feed::meshes(meshes, flat_sink(write, req), &meta, budget),
             });
-            empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, |meta, budget| write(&[], meta, &req.export_options, budget))?
+            let empty = |meta: &ExportMeta, budget: &mut Budget| feed::meshes(Vec::new(), flat_sink(write, req), meta, budget);
+            empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, empty)?
         }
     };
     clock.lap(Phase::Export);
     Ok(Written { bytes, triangles, truncated })
+}
+
+/// The format's flat sink: its merged-mesh writer with the request's options.
+fn flat_sink(write: WriteMeshes, req: &RenderRequest) -> Box<dyn GeometrySink> {
+    Box::new(FlatSink::new(req.format.name(), write, req.export_options))
 }
 
 /// The unit-box fit (icons, docs/icons.md): the meshes scaled and centred
@@ -310,7 +316,7 @@ fn streamed(mut model: Model, provenance: Provenance, make: MakeSink, empty: Wri
     let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(surveyed.cut);
     let meta = hierarchy_meta(&model, truncated.is_some(), provenance);
     let written = feed::pieces(&src, sink, &surveyed, &meta, budget);
-    let empty = |meta: &ExportMeta, budget: &mut Budget| empty(&[], meta, &req.export_options, budget);
+    let empty = |meta: &ExportMeta, budget: &mut Budget| feed::meshes(Vec::new(), flat_sink(empty, req), meta, budget);
     let (bytes, triangles, truncated) = empty_if_late(written, surveyed.triangles, truncated, meta, req.on_limit, budget, empty)?;
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
