@@ -1,8 +1,11 @@
 //! The one output shape of the mesh writers: a [`GeometrySink`] is given a
 //! model's geometry a piece, a mesh or a placement at a time, and may refuse
 //! each against the budget, after Nicolas Silva, lyon_tessellation
-//! `GeometryBuilder` (lyon 1.0, 2022: `begin_geometry`, `add_*`, which may
-//! fail, `end_geometry`). Streamed strips, instanced glTF and the flat
+//! `GeometryBuilder` (lyon_tessellation 1.0, `geometry_builder`:
+//! `begin_geometry`, `add_fill_vertex` returning a `VertexId` or a
+//! `GeometryBuilderError`, `add_triangle`, `end_geometry`; where lyon calls
+//! `abort_geometry` after an error, a sink is simply dropped, since its
+//! output is only returned by `end`). Streamed strips, instanced glTF and the flat
 //! formats are implementations; the pipeline's drivers
 //! (`pipeline::feed`) walk the model and feed whichever sink the route
 //! names, so the stage work (walking a hierarchy, tessellating a piece,
