@@ -466,6 +466,17 @@ impl Budget {
         }
     }
 
+    /// A stop test for the loops that ask a `stop: &dyn Fn() -> bool`
+    /// whether to give up (welding, the preview's closed-solid test and
+    /// projection): [`DeadlineStop::stop`] says true once the deadline has
+    /// passed and records the [`LimitExceeded`] it saw, and
+    /// [`DeadlineStop::error`] returns it, so that a caller returns the
+    /// deadline by name instead of building a fallback error of its own for
+    /// a stop it cannot tell apart.
+    pub fn deadline_stop(&self) -> DeadlineStop<'_> {
+        DeadlineStop { budget: self, seen: std::cell::Cell::new(None) }
+    }
+
     /// Time left before [`Budget::check_deadline`] fails (zero once it
     /// has), or `None` without a deadline: for work that cannot check the
     /// deadline itself and must be told when to stop (a Manifold union).
@@ -491,9 +502,50 @@ impl Budget {
     }
 }
 
+/// The deadline as a stop test that remembers why it said stop
+/// ([`Budget::deadline_stop`]).
+pub struct DeadlineStop<'a> {
+    budget: &'a Budget,
+    seen: std::cell::Cell<Option<LimitExceeded>>,
+}
+
+impl DeadlineStop<'_> {
+    /// True once the deadline has passed; the error is kept for [`DeadlineStop::error`].
+    pub fn stop(&self) -> bool {
+        match self.budget.check_deadline() {
+            Ok(()) => false,
+            Err(e) => {
+                self.seen.set(Some(e));
+                true
+            }
+        }
+    }
+
+    /// Why [`DeadlineStop::stop`] said stop. The loops it serves give up
+    /// only when told to, so this is the error `stop` saw; asked before any
+    /// stop, it is the deadline as configured, reached now.
+    pub fn error(&self) -> LimitExceeded {
+        self.seen.take().unwrap_or_else(|| {
+            let reached = self.budget.elapsed().as_millis().try_into().unwrap_or(u64::MAX);
+            Budget::exceeded(Limit::Deadline, self.budget.limits.timeout_ms, reached)
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_deadline_stop_returns_the_deadline_it_saw() {
+        let b = Budget::new(Limits { timeout_ms: 1, ..Limits::default() });
+        std::thread::sleep(Duration::from_millis(5));
+        let watch = b.deadline_stop();
+        assert!(watch.stop());
+        assert_eq!(watch.error().limit, Limit::Deadline);
+        let fresh = Budget::new(Limits::default());
+        assert!(!fresh.deadline_stop().stop());
+    }
 
     #[test]
     fn each_counter_names_its_limit() {

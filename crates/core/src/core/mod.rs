@@ -16,7 +16,7 @@ pub mod quantise;
 pub mod rng;
 pub mod timing;
 
-pub use budget::{Budget, Limit, LimitExceeded, Limits, OnLimit};
+pub use budget::{Budget, DeadlineStop, Limit, LimitExceeded, Limits, OnLimit};
 pub use choice::Choice;
 pub use diagnostic::{Diagnostic, ParseError, Severity, Span};
 pub use frame::Frame;

@@ -45,11 +45,9 @@ pub struct FormatInfo {
 
 /// What a format can carry beyond triangles. Each flag is read by one
 /// decision of the pipeline or the service, named in its comment; a format
-/// sets only those its writer implements. `instancing`, `node_graph` and
-/// `streamed` choose routes whose writers are glTF's (`gltf::instanced`)
-/// and strips' (`strips::write_strips_model`), which the pipeline calls by
-/// name: only those formats set them, until the routes take their writers
-/// from the descriptor too.
+/// sets only those its writer implements. `instancing` and `streamed`
+/// choose the routes that feed the sink of [`Writer::Sink`]'s `model`,
+/// which such a format must name.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Capabilities {
     /// The bytes are UTF-8 text (JSON, STL ASCII, UniGrafix), not binary:
@@ -141,16 +139,25 @@ pub(crate) type WriteDrawing = fn(&Drawing, Option<&Provenance>, &mut Budget) ->
 /// How a format is written: from what, by which function.
 #[derive(Debug, Clone, Copy)]
 pub enum Writer {
-    /// From meshes: the flat route (and, with [`Capabilities`], the
-    /// instanced or streamed one).
-    Meshes(WriteMeshes),
+    /// From geometry: merged meshes by `flat` (the flat and print routes,
+    /// and the empty model of a late answer), and, where the format has
+    /// one, the model fed into the [`GeometrySink`](super::GeometrySink)
+    /// `model` makes: piece by piece for a streamed format
+    /// ([`Capabilities::streamed`], strips), meshes and their placements for
+    /// an instancing one ([`Capabilities::instancing`], glTF).
+    Sink {
+        /// The writer of merged meshes.
+        flat: WriteMeshes,
+        /// The sink of the streamed or instanced route.
+        model: Option<super::MakeSink>,
+    },
     /// From a picture of the meshes: the preview stage runs first
     /// (`docs/preview.md`), then this encoder.
     Picture(EncodePicture),
     /// From the model itself, instances and hierarchy as made, with no
     /// meshing (`docs/scene-format.md`).
     Model(WriteModel),
-    /// From meshes as [`Writer::Meshes`] does, and from an object-instancing
+    /// From meshes as [`Writer::Sink`]'s `flat` does, and from an object-instancing
     /// hierarchy, when the model has one, by `hierarchy` (unfitted and
     /// unprinted requests; the front ends are asked for a hierarchy): each
     /// leaf shape written once and placed per leaf (USDZ's scene-graph

@@ -205,7 +205,7 @@ pub fn export_with(
     budget.check_deadline()?;
     let info = format.info();
     match info.writer {
-        Writer::Meshes(write) | Writer::Instancing { meshes: write, .. } => write(meshes, meta, options, budget),
+        Writer::Sink { flat: write, .. } | Writer::Instancing { meshes: write, .. } => write(meshes, meta, options, budget),
         // The pipeline runs the preview stage itself (to time it) and then
         // the encoder; this arm serves meshes from outside a render (a
         // decoded strips file) and library callers.

@@ -10,6 +10,7 @@
 
 mod descriptor;
 mod formats;
+pub mod sink;
 pub(crate) mod pace;
 pub mod gltf;
 pub mod png;
@@ -23,6 +24,7 @@ pub mod ug;
 pub mod usdz;
 
 pub use descriptor::{OptionGroup, Writer};
+pub use sink::{Drawn, FlatSink, GeometrySink, InstanceData, InstanceLayout, MakeSink, MeshId};
 pub(crate) use descriptor::{EncodePicture, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel};
 pub use formats::{estimated_size, export, export_with, Format, FORMATS};
 pub(crate) use formats::no_drawing;
@@ -228,7 +230,7 @@ mod tests {
         for (name, meshes, meta) in samples() {
             let (v, t) = counts(&meshes);
             // Every format written from meshes, as the registry lists them.
-            for &format in Format::ALL.iter().filter(|f| matches!(f.info().writer, Writer::Meshes(_) | Writer::Instancing { .. })) {
+            for &format in Format::ALL.iter().filter(|f| matches!(f.info().writer, Writer::Sink { .. } | Writer::Instancing { .. })) {
                 let ext = format!("{}.{}", format.name(), format.extension());
                 let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
                 assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());

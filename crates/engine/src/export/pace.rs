@@ -35,10 +35,8 @@ impl<'a> Pace<'a> {
 /// itself a second.
 pub(crate) fn welded(mesh: &crate::geom::Mesh, pace: &mut Pace<'_>) -> Result<super::Welded, ExportError> {
     use crate::geom::weld;
-    let budget = pace.budget;
-    let Some((points, remap)) = weld::weld_by_until(mesh.positions.iter().copied(), weld::f32_key, &|| budget.check_deadline().is_err()) else {
-        return Err(budget.check_deadline().err().map_or_else(|| ExportError::TooLarge { format: "weld", detail: "stopped".into() }, ExportError::from));
-    };
+    let watch = pace.budget.deadline_stop();
+    let (points, remap) = weld::weld_by_until(mesh.positions.iter().copied(), weld::f32_key, &|| watch.stop()).ok_or_else(|| watch.error())?;
     let tris = weld::welded_triangles(&mesh.indices, &remap).map(|t| pace.step().map(|()| t)).collect::<Result<Vec<_>, _>>()?;
     Ok((points, tris))
 }

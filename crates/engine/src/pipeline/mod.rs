@@ -27,6 +27,7 @@ use std::time::Duration;
 
 pub mod key;
 pub mod options;
+mod feed;
 mod route;
 mod stages;
 

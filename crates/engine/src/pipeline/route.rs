@@ -10,7 +10,7 @@
 //! writes it ([`Route::charge_hierarchy`]).
 
 use super::RenderRequest;
-use crate::export::{EncodePicture, Instancing, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
+use crate::export::{EncodePicture, Instancing, MakeSink, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
 use crate::core::budget::{Budget, Limit, LimitExceeded};
 use crate::model::Hierarchy;
 
@@ -23,17 +23,19 @@ pub(crate) enum Route {
     /// The format writes the model's 2D drawing (`svg`), which only a
     /// language that draws makes (Context Free); others are refused.
     Drawing(WriteDrawing),
-    /// Strips written from the model a chunk at a time: no merged mesh,
-    /// a hierarchy walked, not expanded (docs/strips-format.md); `empty`
-    /// writes the empty model a late answer falls back to.
-    StreamedStrips { empty: WriteMeshes },
+    /// The model fed piece by piece into the format's streaming sink
+    /// (strips, a chunk at a time): no merged mesh, a hierarchy walked, not
+    /// expanded (docs/strips-format.md); `empty` writes the empty model a
+    /// late answer falls back to.
+    Streamed { sink: MakeSink, empty: WriteMeshes },
     /// One watertight solid from the print stage (docs/print.md), then
     /// its report as JSON when `report`, else the solid in `output`.
     Print { report: bool, output: Output },
-    /// glTF writing each repeated mesh once and drawing it per placement
-    /// (`EXT_mesh_gpu_instancing`), `.glb` when `binary`; `flat` writes
-    /// what is not instanced (a moving model, one without repeats).
-    InstancedGltf { binary: bool, flat: WriteMeshes },
+    /// Each repeated mesh (a flat scene's, or a hierarchy's leaf shapes)
+    /// fed once into the format's instancing sink and placed per placement
+    /// (glTF's `EXT_mesh_gpu_instancing`); `flat` writes what is not
+    /// instanced (a moving model, one without repeats).
+    Instanced { sink: MakeSink, flat: WriteMeshes },
     /// A hierarchy written by the format's own writer, each leaf shape once
     /// and placed per leaf (usdz's scene-graph instancing, docs/usdz.md);
     /// a model without one goes to `flat`.
@@ -62,23 +64,23 @@ impl Route {
         let print = opts.print.enabled;
         let fit = opts.fit_unit_box;
         let plain = opts.gltf.is_plain();
-        let (output, meshes) = match info.writer {
+        let (output, meshes, model) = match info.writer {
             Writer::Model(write) => return Route::Model(write),
             Writer::Drawing(write) => return Route::Drawing(write),
-            Writer::Meshes(write) => (Output::Meshes { write, fit }, Some(write)),
+            Writer::Sink { flat, model } => (Output::Meshes { write: flat, fit }, Some(flat), model),
             Writer::Instancing { meshes, hierarchy } => {
                 let output = Output::Meshes { write: meshes, fit };
                 if !print && !fit {
                     return Route::InstancedHierarchy { write: hierarchy, flat: output };
                 }
-                (output, Some(meshes))
+                (output, Some(meshes), None)
             }
-            Writer::Picture(encode) => (Output::Picture(encode), None),
+            Writer::Picture(encode) => (Output::Picture(encode), None, None),
         };
-        match meshes {
-            Some(empty) if info.caps.streamed && !print && !fit => return Route::StreamedStrips { empty },
-            Some(flat) if info.caps.instancing && opts.instancing == Instancing::Gpu && plain && !fit && !print => {
-                return Route::InstancedGltf { binary: !info.caps.text, flat }
+        match (meshes, model) {
+            (Some(empty), Some(sink)) if info.caps.streamed && !print && !fit => return Route::Streamed { sink, empty },
+            (Some(flat), Some(sink)) if info.caps.instancing && opts.instancing == Instancing::Gpu && plain && !fit && !print => {
+                return Route::Instanced { sink, flat }
             }
             _ => {}
         }
@@ -103,8 +105,8 @@ impl Route {
     /// formats, strips included.
     pub(crate) fn wants_hierarchy(&self, own: bool) -> bool {
         match self {
-            Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } | Route::Print { .. } => true,
-            Route::StreamedStrips { .. } => !own,
+            Route::Model(_) | Route::Instanced { .. } | Route::InstancedHierarchy { .. } | Route::Print { .. } => true,
+            Route::Streamed { .. } => !own,
             Route::Flat { hierarchy, .. } => *hierarchy && own,
             Route::Drawing(_) => false,
         }
@@ -120,7 +122,7 @@ impl Route {
     pub(crate) fn charge_hierarchy(&self, h: &Hierarchy, detail: u32, budget: &Budget) -> Result<(), LimitExceeded> {
         match self {
             Route::Model(_) => budget.check_total(Limit::Primitives, h.entry_count().saturating_add(h.shapes.len() as u64)),
-            Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. } => {
+            Route::Instanced { .. } | Route::InstancedHierarchy { .. } => {
                 budget.check_total(Limit::Primitives, h.leaves())?;
                 let meshes = h.leaf_counts().keys().map(|&(s, _)| h.shapes.get(s as usize).map_or(0, |sh| sh.triangles(detail))).fold(0u64, u64::saturating_add);
                 budget.check_total(Limit::Triangles, meshes)
@@ -144,7 +146,7 @@ impl Route {
     /// Whether the output plays the model's animation and camera path in a
     /// node graph (plain glTF, instanced or flat); everything else shows time 0.
     pub(crate) fn animated(&self) -> bool {
-        matches!(self, Route::InstancedGltf { .. } | Route::Flat { animated: true, .. })
+        matches!(self, Route::Instanced { .. } | Route::Flat { animated: true, .. })
     }
 
     /// The side in pixels of the picture the route makes (`png`'s `size`),
@@ -155,7 +157,7 @@ impl Route {
 
     /// Whether no merged mesh is built (only the output is promised).
     pub(crate) fn streamed(&self) -> bool {
-        matches!(self, Route::StreamedStrips { .. })
+        matches!(self, Route::Streamed { .. })
     }
 
     /// Whether placements are written as instances, each charged at the
@@ -163,6 +165,6 @@ impl Route {
     /// repeats under GPU instancing, a hierarchy's leaves written by the
     /// format's own hierarchy writer.
     pub(crate) fn writes_instances(&self) -> bool {
-        matches!(self, Route::Model(_) | Route::InstancedGltf { .. } | Route::InstancedHierarchy { .. })
+        matches!(self, Route::Model(_) | Route::Instanced { .. } | Route::InstancedHierarchy { .. })
     }
 }

@@ -4,11 +4,12 @@
 //! before the front end ran; nothing here reads the request's flags to
 //! decide it again.
 
+use super::feed;
 use super::route::{Output, Route};
 use super::{RenderError, RenderOutput, RenderRequest};
 use crate::core::budget::{Budget, Limit, LimitExceeded, OnLimit};
 use crate::core::timing::{Phase, PhaseTimes, StageClock};
-use crate::export::{self, ExportError, ExportMeta, Provenance, WriteMeshes};
+use crate::export::{self, ExportError, ExportMeta, FlatSink, GeometrySink, MakeSink, Provenance, WriteMeshes};
 use crate::geom::NamedMesh;
 use crate::mesh;
 use crate::model::{instancing, Model};
@@ -43,9 +44,9 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
             clock.lap(Phase::Export);
             Ok(summary(bytes, &model, 0, model.scene.truncated))
         }
-        Route::StreamedStrips { empty } => strips_from_model(model, provenance, empty, req, budget, clock),
+        Route::Streamed { sink, empty } => streamed(model, provenance, sink, empty, req, budget, clock),
         Route::Print { report, output } => print(model, provenance, report, output, req, budget, clock),
-        Route::InstancedGltf { binary, flat: write } => instanced(model, provenance, binary, write, req, budget, clock),
+        Route::Instanced { sink, flat: write } => instanced(model, provenance, sink, write, req, budget, clock),
         Route::InstancedHierarchy { write, flat: output } => match model.hierarchy.take() {
             Some(h) => {
                 let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
@@ -115,12 +116,12 @@ fn print(mut model: Model, provenance: Provenance, report: bool, output: Output,
 /// The GPU-instanced glTF route: a hierarchy written as instances; a flat
 /// scene with repeated meshes written once per mesh; a moving model (a node
 /// graph is written flat) or one with no repeats, flat.
-fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+fn instanced(mut model: Model, provenance: Provenance, make: MakeSink, write: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     if let Some(h) = model.hierarchy.take() {
         let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
         // MDG's instances carry their colours, as its flat scenes' do; L-systems' meshes do.
         let per_instance_colour = model.language.front_end().colours_per_instance();
-        let bytes = export::gltf::instanced::write_instanced(&h, req.detail, binary, &meta, per_instance_colour, budget)?;
+        let bytes = feed::hierarchy(&h, req.detail, per_instance_colour, make(&req.export_options), &meta, budget)?;
         clock.lap(Phase::Export);
         return Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated));
     }
@@ -135,7 +136,7 @@ fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: Writ
         // No mesh repeats: the plain writer makes the bytes a flat request would.
         return flat(model, provenance, output, None, req, budget, clock);
     }
-    let prototypes = export::gltf::instanced::prototypes(&plan, &model.scene, req.detail, budget)?;
+    let prototypes = feed::prototypes(&plan, &model.scene, req.detail, budget)?;
     let residual = plan.residual(&mut model.scene, budget)?;
     let (meshes, cut) = mesh::build_meshes_until(&residual, req.detail, req.layout, req.on_limit, budget)?;
     budget.release_memory(instancing::residual_bytes(instancing::residual_counts(&residual)));
@@ -148,9 +149,9 @@ fn instanced(mut model: Model, provenance: Provenance, binary: bool, write: Writ
     let meta = flat_meta(&model, provenance, truncated, None);
     let scene = &model.scene;
     let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| {
-        export::gltf::instanced::write_scene(scene, &plan, prototypes, meshes, &meta, binary, budget)
+        feed::scene(scene, &plan, prototypes, meshes, make(&req.export_options), &meta, budget)
     });
-    let empty = |meta: &ExportMeta, budget: &mut Budget| write(&[], meta, &req.export_options, budget);
+    let empty = |meta: &ExportMeta, budget: &mut Budget| feed::meshes(Vec::new(), flat_sink(write, req), meta, budget);
     let (bytes, triangles, truncated) = empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, empty)?;
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
@@ -251,14 +252,20 @@ fn write_meshes(mut meshes: Vec<NamedMesh>, meta: ExportMeta, truncated: Option<
         Output::Meshes { write, fit } => {
             // Writing a large model takes a share of the deadline; a model that arrives here late is not started.
             let written = budget.check_deadline().map_err(ExportError::from).and_then(|()| match fit {
-                true => fit_unit_box(&meshes, &meta, budget).and_then(|(fitted, meta)| write(&fitted, &meta, &req.export_options, budget)),
-                false => write(&meshes, &meta, &req.export_options, budget),
+                true => fit_unit_box(&meshes, &meta, budget).and_then(|(fitted, meta)| feed::meshes(fitted, flat_sink(write, req), &meta, budget)),
+                false => feed::meshes(meshes, flat_sink(write, req), &meta, budget),
             });
-            empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, |meta, budget| write(&[], meta, &req.export_options, budget))?
+            let empty = |meta: &ExportMeta, budget: &mut Budget| feed::meshes(Vec::new(), flat_sink(write, req), meta, budget);
+            empty_if_late(written, drawn, truncated, meta, req.on_limit, budget, empty)?
         }
     };
     clock.lap(Phase::Export);
     Ok(Written { bytes, triangles, truncated })
+}
+
+/// The format's flat sink: its merged-mesh writer with the request's options.
+fn flat_sink(write: WriteMeshes, req: &RenderRequest) -> Box<dyn GeometrySink> {
+    Box::new(FlatSink::new(req.format.name(), write, req.export_options))
 }
 
 /// The unit-box fit (icons, docs/icons.md): the meshes scaled and centred
@@ -294,22 +301,23 @@ fn empty_if_late(
     }
 }
 
-/// Strips written from the model a chunk at a time (docs/strips-format.md):
-/// a first pass for the bounds and palette (timed as meshing, and cut at the
-/// meshing deadline under `truncate`), then the chunks, each tessellated,
-/// coded and appended in turn. No merged mesh is built and a hierarchy is
-/// walked, not expanded.
-fn strips_from_model(mut model: Model, provenance: Provenance, empty: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
+/// The model streamed into the format's sink (strips, docs/strips-format.md):
+/// a first pass for what the sink codes against (strips' bounds and
+/// palette; timed as meshing, and cut at the meshing deadline under
+/// `truncate`), then the pieces, each tessellated and handed over in turn.
+/// No merged mesh is built and a hierarchy is walked, not expanded.
+fn streamed(mut model: Model, provenance: Provenance, make: MakeSink, empty: WriteMeshes, req: &RenderRequest, budget: &mut Budget, clock: &mut StageClock) -> Result<RenderOutput, RenderError> {
     let h = model.hierarchy.take();
-    let src = export::strips::ModelSource { scene: &model.scene, hierarchy: h.as_ref(), detail: req.detail, layout: req.layout };
-    let survey = export::strips::survey_model(&src, req.on_limit, budget)?;
+    let src = feed::ModelPieces { scene: &model.scene, hierarchy: h.as_ref(), detail: req.detail, layout: req.layout };
+    let mut sink = make(&req.export_options);
+    let surveyed = feed::survey(&src, sink.as_mut(), req.on_limit, budget)?;
     clock.lap(Phase::Mesh);
     budget.set_stage_share(None);
-    let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(survey.cut);
+    let truncated = h.as_ref().and_then(|h| h.truncated).or(model.scene.truncated).or(surveyed.cut);
     let meta = hierarchy_meta(&model, truncated.is_some(), provenance);
-    let written = export::strips::write_strips_model(&src, &survey, &req.export_options.strips, budget);
-    let empty = |meta: &ExportMeta, budget: &mut Budget| empty(&[], meta, &req.export_options, budget);
-    let (bytes, triangles, truncated) = empty_if_late(written, survey.triangles(), truncated, meta, req.on_limit, budget, empty)?;
+    let written = feed::pieces(&src, sink, &surveyed, &meta, budget);
+    let empty = |meta: &ExportMeta, budget: &mut Budget| feed::meshes(Vec::new(), flat_sink(empty, req), meta, budget);
+    let (bytes, triangles, truncated) = empty_if_late(written, surveyed.triangles, truncated, meta, req.on_limit, budget, empty)?;
     clock.lap(Phase::Export);
     Ok(summary(bytes, &model, triangles, truncated))
 }

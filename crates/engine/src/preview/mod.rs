@@ -169,19 +169,12 @@ pub fn render(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budge
 /// deadline (the first three are one pass over every triangle or vertex,
 /// a quarter of a second each for millions).
 fn draw(meshes: &[NamedMesh], options: &PreviewOptions, budget: &mut Budget) -> Result<Image, PreviewError> {
-    let late = std::cell::Cell::new(None);
-    let stop = || match budget.check_deadline() {
-        Ok(()) => false,
-        Err(e) => {
-            late.set(Some(e));
-            true
-        }
-    };
-    let stopped = |late: &std::cell::Cell<Option<LimitExceeded>>| late.take().map_or(PreviewError::BadOptions("stopped before its deadline".into()), PreviewError::Limit);
+    let watch = budget.deadline_stop();
+    let stop = || watch.stop();
     // Which meshes are closed solids, their back faces culled (one linear pass each).
-    let cull = meshes.iter().map(|m| closed::closed_outward_until(&m.mesh, &stop)).collect::<Option<Vec<bool>>>().ok_or_else(|| stopped(&late))?;
+    let cull = meshes.iter().map(|m| closed::closed_outward_until(&m.mesh, &stop)).collect::<Option<Vec<bool>>>().ok_or_else(|| watch.error())?;
     let frame = camera::Framing::of(meshes, options.view, options.size, raster::samples_per_axis(options.size));
     let lights = shade::Lights::default();
-    let vertices = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights, &stop)).collect::<Option<Vec<_>>>().ok_or_else(|| stopped(&late))?;
+    let vertices = meshes.iter().map(|m| raster::project(&m.mesh, &frame, &lights, &stop)).collect::<Option<Vec<_>>>().ok_or_else(|| watch.error())?;
     Ok(raster::draw(meshes, &vertices, &cull, options, budget)?)
 }

@@ -28,16 +28,17 @@
 //! `document` (the one document builder: meshes, materials, cameras,
 //! scene, extensions; also behind `compact` and instancing), `graph`
 //! (bones, camera node, animation), `gpu_instancing` (the
-//! `EXT_mesh_gpu_instancing` writer, [`write_instanced`]), `instanced`
-//! (a flat scene's repeated meshes or a hierarchy as instanced glTF) and
-//! `compact` (welded, quantised and meshopt output).
+//! `EXT_mesh_gpu_instancing` writer, [`InstancedSink`], a
+//! [`GeometrySink`](crate::export::GeometrySink) the pipeline feeds a flat
+//! scene's repeated meshes or a hierarchy), `instanced` (what an instance
+//! costs) and `compact` (welded, quantised and meshopt output).
 
 mod buffer;
 pub mod compact;
 mod document;
 mod gpu_instancing;
 mod graph;
-pub mod instanced;
+mod instanced;
 
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
 use super::{ExportError, ExportMeta, ExportOptions};
@@ -46,7 +47,7 @@ use crate::geom::NamedMesh;
 use buffer::{align4, animation_tracks, base64_len, find, invalid, place, write_buffer_until, Base64, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES};
 use document::document;
 
-pub(crate) use gpu_instancing::{write_instanced, InstanceData, InstanceLayout};
+pub(crate) use gpu_instancing::InstanceLayout;
 
 /// What both glTF containers carry: GPU instancing of repeated meshes and
 /// hierarchies, and a node graph (bones, animation, a camera path).
@@ -60,7 +61,7 @@ pub const GLB: FormatInfo = FormatInfo {
     caps: CAPS,
     options: OptionGroup::Gltf,
     size: SizeBound { fixed: 64 * 1024, per_vertex: 28, per_triangle: 12, per_instance: instanced::SCENE_INSTANCE_BYTES },
-    writer: Writer::Meshes(write_glb_with),
+    writer: Writer::Sink { flat: write_glb_with, model: Some(gpu_instancing::glb_sink) },
 };
 
 /// `gltf`: glTF 2.0 JSON with the buffer as a data URI. base64 inflates
@@ -73,7 +74,7 @@ pub(crate) const GLTF: FormatInfo = FormatInfo {
     caps: Capabilities { text: true, ..CAPS },
     options: OptionGroup::Gltf,
     size: SizeBound { fixed: 64 * 1024, per_vertex: 38, per_triangle: 16, per_instance: 3 * instanced::SCENE_INSTANCE_BYTES },
-    writer: Writer::Meshes(write_gltf_with),
+    writer: Writer::Sink { flat: write_gltf_with, model: Some(gpu_instancing::gltf_sink) },
 };
 
 /// `glb` with the request's options: the plain writer when every compact

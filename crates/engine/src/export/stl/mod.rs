@@ -28,7 +28,7 @@ pub const STL: FormatInfo = FormatInfo {
     caps: Capabilities { positions_only: true, ..Capabilities::NONE },
     options: OptionGroup::None,
     size: SizeBound { fixed: 84, per_vertex: 0, per_triangle: TRIANGLE_BYTES, per_instance: 0 },
-    writer: Writer::Meshes(write_binary_with),
+    writer: Writer::Sink { flat: write_binary_with, model: None },
 };
 
 /// `stl-ascii`: ASCII STL, at most [`ASCII_FACET_MAX`] bytes a facet. It
@@ -41,7 +41,7 @@ pub(crate) const STL_ASCII: FormatInfo = FormatInfo {
     caps: Capabilities { text: true, positions_only: true, ..Capabilities::NONE },
     options: OptionGroup::None,
     size: SizeBound { fixed: 1024, per_vertex: 0, per_triangle: ASCII_FACET_MAX, per_instance: 0 },
-    writer: Writer::Meshes(write_ascii_with),
+    writer: Writer::Sink { flat: write_ascii_with, model: None },
 };
 
 /// Binary STL titled with the model's provenance.

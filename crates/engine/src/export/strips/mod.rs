@@ -3,7 +3,8 @@
 //! links and decode them on small CPUs. `docs/strips-format.md` specifies it
 //! byte by byte; this module is the reference encoder's container (header,
 //! body, CRC) and its two ways in: meshes ([`write_strips`]) and the model
-//! itself, streamed ([`survey_model`], [`write_strips_model`]).
+//! itself, streamed piece by piece into a [`StreamSink`] (a
+//! [`GeometrySink`] the pipeline feeds).
 //! `chunk` codes the chunks, `format` holds what the encoder and the
 //! decoder share, and `crate::decode::strips` is the reference decoder
 //! (`clients/js/strips.mjs` and `clients/c/` its twins).
@@ -24,13 +25,12 @@ pub(crate) use chunk::CHUNK_TRIANGLES;
 use chunk::{encode_chunk, weld_chunk, Chunker, EncodedChunk, Part, Quantiser, Survey};
 pub use format::*;
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
+use super::sink::GeometrySink;
 use super::{ExportError, ExportMeta, ExportOptions};
-use crate::core::budget::{Budget, LimitExceeded, OnLimit};
+use crate::core::budget::Budget;
 use crate::geom::strip::RESTART;
 use crate::geom::NamedMesh;
-use crate::mesh::pieces::{for_each_piece, Piece};
-use crate::mesh::MeshLayout;
-use crate::model::{Hierarchy, Scene};
+use crate::mesh::pieces::Piece;
 
 /// `strips`: the header, CRC and palette, plus meshoptimizer's worst
 /// cases: a vertex block costs at most 4164 bytes per 256 16-byte vertices
@@ -43,7 +43,7 @@ pub(crate) const STRIPS: FormatInfo = FormatInfo {
     caps: Capabilities { streamed: true, ..Capabilities::NONE },
     options: OptionGroup::Strips,
     size: SizeBound { fixed: 16 * 1024, per_vertex: 20, per_triangle: 25, per_instance: 0 },
-    writer: Writer::Meshes(write_strips_with),
+    writer: Writer::Sink { flat: write_strips_with, model: Some(stream_sink) },
 };
 
 /// [`write_strips`] with the request's strips options.
@@ -197,7 +197,7 @@ fn mesh_chunks(meshes: &[NamedMesh], chunk: &mut dyn FnMut(&[Part<'_>]) -> Resul
 
 /// Encodes `meshes` (merged into one) as a strips file. Deterministic: the
 /// same meshes and options give the same bytes, and the same bytes as
-/// [`write_strips_model`] of the model they were meshed from.
+/// a [`StreamSink`] fed the model they were meshed from.
 pub(crate) fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
     let (v, t) = meshes.iter().fold((0u64, 0u64), |(v, t), m| (v + m.mesh.positions.len() as u64, t + m.mesh.triangle_count() as u64));
@@ -216,150 +216,161 @@ pub(crate) fn write_strips(meshes: &[NamedMesh], opts: &StripsOptions, budget: &
     body.finish(survey.bounds(), palette.as_deref(), opts, budget)
 }
 
-/// The flat model a streamed strips file is written from: a scene (and the
-/// hierarchy whose leaves it stands for, not expanded), at a detail, its
-/// pieces in the order of the merged meshes of `layout`.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct ModelSource<'a> {
-    /// The flat part of the model.
-    pub scene: &'a Scene,
-    /// An instancing hierarchy, walked leaf by leaf after the scene.
-    pub hierarchy: Option<&'a Hierarchy>,
-    /// Tessellation detail.
-    pub detail: u32,
-    /// The mesh layout (it orders the pieces).
-    pub layout: MeshLayout,
-}
-
-/// What the first pass over a model found: bounds, palette, chunk and
-/// triangle counts, and where it stopped.
-#[derive(Debug, Clone)]
-pub(crate) struct ModelSurvey {
-    survey: Survey,
-    pieces: u64,
-    /// The limit that cut the model short under `truncate` (the pass stops there, and so will the writer).
-    pub cut: Option<LimitExceeded>,
-}
-
-impl ModelSurvey {
-    /// Triangles of the flat model (what the flat mesh would hold).
-    pub fn triangles(&self) -> u64 {
-        self.survey.triangles
-    }
-}
-
 /// Bytes one chunk's coding needs at most besides its output: quantised
 /// vertices, weld tables, the strip and meshoptimizer's own arrays for up to
 /// three vertices per triangle.
 pub(crate) const CHUNK_WORKING_SET: u64 = 3 * CHUNK_TRIANGLES as u64 * 128;
 
-/// Feeds the model's pieces to `chunker` (the first `limit` of them, or all),
-/// reserving the chunker's buffer in `budget` as it grows.
-fn feed(
-    src: &ModelSource<'_>,
-    on_limit: OnLimit,
-    limit: Option<u64>,
-    budget: &mut Budget,
-    chunk: &mut dyn FnMut(&[Part<'_>], &mut Budget) -> Result<(), ExportError>,
-) -> Result<(u64, Option<LimitExceeded>), ExportError> {
-    let mut chunker = Chunker::default();
-    let mut reserved = 0u64;
-    let cut = {
-        let mut sink = |piece: Piece<'_>, budget: &mut Budget| -> Result<bool, ExportError> {
-            if limit.is_some_and(|n| chunker.pieces >= n) {
-                return Ok(false);
-            }
-            let (v, t) = piece.counts();
-            let need = chunker.buffer_bytes().max(crate::geom::mesh::mesh_bytes((v + 3 * CHUNK_TRIANGLES) as u64, (t + CHUNK_TRIANGLES) as u64));
-            if need > reserved {
-                budget.reserve_memory(need - reserved)?;
-                reserved = need;
-            }
-            chunker.push(&piece, &mut |parts| chunk(parts, budget))?;
-            Ok(true)
-        };
-        for_each_piece(src.scene, src.hierarchy, src.detail, src.layout, on_limit, budget, &mut sink)?
-    };
-    let pieces = chunker.pieces;
-    chunker.finish(&mut |parts| chunk(parts, budget))?;
-    budget.release_memory(reserved);
-    Ok((pieces, cut))
+/// A chunk's codecs, running on a second thread.
+type Coding = std::thread::JoinHandle<Result<EncodedChunk, ExportError>>;
+
+/// The streamed strips writer as a [`GeometrySink`]: the model's pieces,
+/// surveyed once for the bounding box, palette and chunk count, then fed
+/// again and written a chunk at a time, never holding a model-sized mesh:
+/// the same bytes as [`write_strips`] of the merged meshes of the same
+/// model (docs/strips-format.md).
+pub(crate) struct StreamSink {
+    opts: StripsOptions,
+    survey: Survey,
+    writing: Option<Streaming>,
 }
 
-/// The first pass of a streamed strips file: walks the model (mapping each
-/// placed piece's corners, positions only) for the bounding box, the
-/// palette and the chunk count. Under `truncate`, the deadline
-/// stops it (as it stops meshing), and the writer then stops at the same piece.
-pub(crate) fn survey_model(src: &ModelSource<'_>, on_limit: OnLimit, budget: &mut Budget) -> Result<ModelSurvey, ExportError> {
-    let mut survey = Survey::default();
-    let mut pieces = 0u64;
-    let cut = for_each_piece::<ExportError>(src.scene, src.hierarchy, src.detail, src.layout, on_limit, budget, &mut |piece, _| {
-        pieces += 1;
-        survey.add_piece(&piece)?;
-        Ok(true)
-    })?;
-    Ok(ModelSurvey { survey, pieces, cut })
+/// What a [`StreamSink`] holds while writing.
+struct Streaming {
+    q: Quantiser,
+    body: Body,
+    chunker: Chunker,
+    /// Bytes reserved for the chunker's buffer.
+    reserved: u64,
+    /// Bytes reserved for the chunks being coded.
+    working_set: u64,
+    /// The previous chunk's codecs, while this thread welds the next.
+    coding: Option<Coding>,
+    /// One chunk in all: its codecs run on this thread.
+    single: bool,
 }
 
-/// Writes the model as a strips file, a chunk at a time, never holding a
-/// model-sized mesh: the same bytes as [`write_strips`] of the merged
-/// meshes of the same model. `survey` is [`survey_model`]'s answer for the
-/// same source; the deadline fails the call.
-pub(crate) fn write_strips_model(src: &ModelSource<'_>, survey: &ModelSurvey, opts: &StripsOptions, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
-    budget.check_deadline()?;
-    let palette = survey.survey.palette();
-    let bounds = survey.survey.bounds();
-    let q = Quantiser::new(bounds, opts.position_bits, opts.normal_bits, palette.as_deref());
-    // A second chunk is in flight while its codecs run (below): its welded
-    // vertices and triangles, at most half a working set.
-    let working_set = CHUNK_WORKING_SET + CHUNK_WORKING_SET / 2;
-    budget.reserve_memory(working_set + STRIPS.size.fixed)?;
-    let mut body = Body::new(survey.survey.chunks(), palette.as_deref());
-    let append = |body: &mut Body, c: EncodedChunk, budget: &mut Budget| -> Result<(), ExportError> {
-        // The output grows by what the chunk adds (its capacity may double: reserve that too).
-        let grown = Body::growth(&c);
-        if body.out.len() as u64 + grown > body.out.capacity() as u64 {
-            budget.reserve_memory((body.out.capacity() as u64).max(grown))?;
+impl StreamSink {
+    /// A sink writing strips with the request's strips options.
+    pub(crate) fn new(opts: StripsOptions) -> StreamSink {
+        StreamSink { opts, survey: Survey::default(), writing: None }
+    }
+}
+
+/// The streamed sink of the strips descriptor, with the request's options.
+fn stream_sink(options: &ExportOptions) -> Box<dyn GeometrySink> {
+    Box::new(StreamSink::new(options.strips))
+}
+
+/// Appends a coded chunk to `body`; the output grows by what the chunk
+/// adds (its capacity may double: that is reserved too).
+fn append(body: &mut Body, c: EncodedChunk, budget: &mut Budget) -> Result<(), ExportError> {
+    let grown = Body::growth(&c);
+    if body.out.len() as u64 + grown > body.out.capacity() as u64 {
+        budget.reserve_memory((body.out.capacity() as u64).max(grown))?;
+    }
+    body.push(&c)
+}
+
+/// The coded chunk of a codec thread.
+fn joined(h: Coding) -> Result<EncodedChunk, ExportError> {
+    h.join().unwrap_or_else(|_| Err(ExportError::TooLarge { format: STRIPS.name, detail: "a chunk's codec thread panicked".into() }))
+}
+
+/// Feeds every chunk the chunker completes while taking `piece` (or, with
+/// no piece, its last partial chunk) to the codecs and the body. Each
+/// chunk is welded here; its codecs (meshoptimizer's vertex and index
+/// codecs, about a third of the encoder's time) run on a second thread
+/// while this one tessellates, quantises and welds the next chunk, and
+/// chunks are appended in order, so the bytes are those of one thread. A
+/// model of one chunk (every icon) has nothing to overlap its codecs with:
+/// they run here, since starting a thread cost a tenth of a fresh gem's
+/// strips (issue 33).
+fn chunks(w: &mut Streaming, piece: Option<&Piece<'_>>, budget: &mut Budget) -> Result<(), ExportError> {
+    let Streaming { q, body, chunker, coding, single, .. } = w;
+    let mut take = |parts: &[Part<'_>]| -> Result<(), ExportError> {
+        let welded = weld_chunk(parts, q);
+        if let Some(h) = coding.take() {
+            append(body, joined(h)?, budget)?;
         }
-        body.push(&c)
+        if *single {
+            return append(body, welded.code()?, budget);
+        }
+        *coding = Some(std::thread::spawn(move || welded.code()));
+        Ok(())
     };
-    // Each chunk's codecs (meshoptimizer's vertex and index codecs, about a
-    // third of the encoder's time) run on a second thread while this one
-    // tessellates, quantises and welds the next chunk; chunks are appended
-    // in order, so the bytes are those of one thread. A model of one chunk
-    // (every icon) has nothing to overlap its codecs with: they run here,
-    // since starting a thread cost a tenth of a fresh gem's strips (issue 33).
-    let single = survey.survey.chunks() <= 1;
-    std::thread::scope(|s| -> Result<(), ExportError> {
-        let mut coding: Option<std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>> = None;
-        let join = |h: std::thread::ScopedJoinHandle<'_, Result<EncodedChunk, ExportError>>| {
-            h.join().unwrap_or_else(|_| Err(ExportError::TooLarge { format: STRIPS.name, detail: "a chunk's codec thread panicked".into() }))
-        };
-        feed(src, OnLimit::Error, Some(survey.pieces), budget, &mut |parts, budget| {
-            let welded = weld_chunk(parts, &q);
-            if let Some(h) = coding.take() {
-                append(&mut body, join(h)?, budget)?;
-            }
-            if single {
-                return append(&mut body, welded.code()?, budget);
-            }
-            coding = Some(s.spawn(move || welded.code()));
-            Ok(())
-        })?;
-        match coding.take() {
-            Some(h) => append(&mut body, join(h)?, budget),
-            None => Ok(()),
+    match piece {
+        Some(piece) => chunker.push(piece, &mut take),
+        None => std::mem::take(chunker).finish(&mut take),
+    }
+}
+
+impl GeometrySink for StreamSink {
+    fn format(&self) -> &'static str {
+        STRIPS.name
+    }
+
+    fn surveys(&self) -> bool {
+        true
+    }
+
+    /// A placed piece's corners are mapped as the mesher maps them
+    /// (positions only); nothing is tessellated.
+    fn survey(&mut self, piece: &Piece<'_>) -> Result<(), ExportError> {
+        self.survey.add_piece(piece)
+    }
+
+    /// Strips carry no metadata: only the geometry is written.
+    fn begin(&mut self, _meta: &ExportMeta, budget: &mut Budget) -> Result<(), ExportError> {
+        let opts = &self.opts;
+        opts.validate().map_err(|detail| ExportError::InvalidOptions { format: STRIPS.name, detail })?;
+        budget.check_deadline()?;
+        let palette = self.survey.palette();
+        let q = Quantiser::new(self.survey.bounds(), opts.position_bits, opts.normal_bits, palette.as_deref());
+        // A second chunk is in flight while its codecs run: its welded
+        // vertices and triangles, at most half a working set.
+        let working_set = CHUNK_WORKING_SET + CHUNK_WORKING_SET / 2;
+        budget.reserve_memory(working_set + STRIPS.size.fixed)?;
+        let body = Body::new(self.survey.chunks(), palette.as_deref());
+        let single = self.survey.chunks() <= 1;
+        self.writing = Some(Streaming { q, body, chunker: Chunker::default(), reserved: 0, working_set, coding: None, single });
+        Ok(())
+    }
+
+    /// Tessellates the piece into the chunk buffer (reserving the buffer as
+    /// it grows) and codes every chunk it completes.
+    fn piece(&mut self, piece: &Piece<'_>, budget: &mut Budget) -> Result<(), ExportError> {
+        let Some(w) = self.writing.as_mut() else { return Err(super::sink::not_begun(STRIPS.name)) };
+        let (v, t) = piece.counts();
+        let need = w.chunker.buffer_bytes().max(crate::geom::mesh::mesh_bytes((v + 3 * CHUNK_TRIANGLES) as u64, (t + CHUNK_TRIANGLES) as u64));
+        if need > w.reserved {
+            budget.reserve_memory(need - w.reserved)?;
+            w.reserved = need;
         }
-    })?;
-    budget.release_memory(working_set);
-    body.finish(bounds, palette.as_deref(), opts, budget)
+        chunks(w, Some(piece), budget)
+    }
+
+    fn end(self: Box<Self>, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
+        let StreamSink { opts, survey, writing } = *self;
+        let Some(mut w) = writing else { return Err(super::sink::not_begun(STRIPS.name)) };
+        chunks(&mut w, None, budget)?;
+        budget.release_memory(w.reserved);
+        if let Some(h) = w.coding.take() {
+            append(&mut w.body, joined(h)?, budget)?;
+        }
+        budget.release_memory(w.working_set);
+        let palette = survey.palette();
+        w.body.finish(survey.bounds(), palette.as_deref(), &opts, budget)
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::core::budget::Limits;
+    use crate::core::budget::{Limits, OnLimit};
+    use crate::mesh::pieces::for_each_piece;
+    use crate::mesh::MeshLayout;
+    use crate::model::Scene;
     use crate::geom::strip::RESTART;
     use crate::decode::strips::{decode_strips, decode_strips_full, oct_decode, StripsError};
 
@@ -445,10 +456,16 @@ mod tests {
     fn grid(n: u32) -> (Scene, Vec<u8>) {
         use crate::mesh::tests::{inst, scene};
         let s = scene((0..n * n).map(|k| inst(crate::core::PrimitiveKind::Box, [(k / n) as f32, (k % n) as f32, 0.0], 0.5, k % 7 == 0)).collect());
-        let src = ModelSource { scene: &s, hierarchy: None, detail: 8, layout: MeshLayout::Merged };
+        // As the pipeline's streamed route feeds the sink: a survey, then the pieces.
         let mut b = Budget::new(Limits::default());
-        let survey = survey_model(&src, OnLimit::Error, &mut b).unwrap();
-        let bytes = write_strips_model(&src, &survey, &StripsOptions::default(), &mut b).unwrap();
+        let mut sink = StreamSink::new(StripsOptions::default());
+        let walk = |b: &mut Budget, f: &mut dyn FnMut(Piece<'_>, &mut Budget) -> Result<bool, ExportError>| {
+            for_each_piece::<ExportError>(&s, None, 8, MeshLayout::Merged, OnLimit::Error, b, f).unwrap();
+        };
+        walk(&mut b, &mut |p, _| sink.survey(&p).map(|()| true));
+        sink.begin(&ExportMeta::default(), &mut b).unwrap();
+        walk(&mut b, &mut |p, b| sink.piece(&p, b).map(|()| true));
+        let bytes = Box::new(sink).end(&mut b).unwrap();
         (s, bytes)
     }
 

@@ -30,7 +30,7 @@ pub(crate) const THREEMF: FormatInfo = FormatInfo {
     caps: Capabilities::NONE,
     options: OptionGroup::None,
     size: SizeBound { fixed: 4 * 1024, per_vertex: 64, per_triangle: 48, per_instance: 0 },
-    writer: Writer::Meshes(write_3mf_with),
+    writer: Writer::Sink { flat: write_3mf_with, model: None },
 };
 
 /// [`write_3mf`] with the model's provenance as metadata.

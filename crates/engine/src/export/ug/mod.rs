@@ -22,7 +22,7 @@ pub const UG: FormatInfo = FormatInfo {
     caps: Capabilities { text: true, ..Capabilities::NONE },
     options: OptionGroup::None,
     size: SizeBound { fixed: 4 * 1024, per_vertex: 64, per_triangle: 48, per_instance: 0 },
-    writer: Writer::Meshes(write_ug_with),
+    writer: Writer::Sink { flat: write_ug_with, model: None },
 };
 
 /// [`write_ug`] (UniGrafix has no metadata).
