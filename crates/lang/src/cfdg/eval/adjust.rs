@@ -58,15 +58,7 @@ pub struct Prepared {
 }
 
 pub(crate) fn is_constant(e: &crate::cfdg::syntax::Expr) -> bool {
-    use crate::cfdg::syntax::Expr;
-    match e {
-        Expr::Num(..) => true,
-        Expr::Var(..) => false,
-        Expr::Unary(_, a) | Expr::Paren(a) => is_constant(a),
-        Expr::Binary(_, a, b) => is_constant(a) && is_constant(b),
-        Expr::Cons(v) => v.iter().all(is_constant),
-        Expr::Call(name, args, _) => !name.starts_with("rand") && args.as_ref().as_ref().map_or(true, is_constant),
-    }
+    crate::cfdg::syntax::is_constant(e)
 }
 
 fn geometric(k: TermKind) -> bool {

@@ -13,6 +13,7 @@ use crate::core::budget::Budget;
 use crate::model::EvalError;
 use std::collections::HashMap;
 
+mod bind;
 mod path;
 pub use path::PathDraw;
 
@@ -25,7 +26,7 @@ struct Renderer<'g> {
     rules: Rules<'g>,
     opts: Options,
     cache: HashMap<usize, (Prepared, Rand64)>,
-    scope: Scope,
+    scope: Scope<'static>,
     current: Rand64,
     unfinished: Vec<Unfinished>,
     finished: Vec<Finished>,
@@ -56,12 +57,22 @@ fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, mak
 pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
     let rules = compile(g).map_err(|e| EvalError::BadParam { name: "grammar".into(), message: e.to_string() })?;
     // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
-    let mut scope = Scope::default();
+    let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), ..Scope::default() };
+    scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
     let mut global_rand = current;
     for d in &g.defines {
         if let (false, Value::Expr(e)) = (d.name.starts_with("CF::"), &d.value) {
+            if bind::names_rule(e, &rules, &scope) {
+                if !bind::shape_is_constant(e) {
+                    global_rand.xor(define_seed(&d.name));
+                }
+                if let Some(v) = bind::shape_value(e, &rules, &scope, &mut global_rand, &[])? {
+                    bind::push_shape_var(&mut scope, &d.name, v);
+                }
+                continue;
+            }
             if !super::adjust::is_constant(e) {
                 global_rand.xor(define_seed(&d.name));
             }
@@ -70,6 +81,8 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
             scope.vars.push((d.name.clone(), v));
         }
     }
+    scope.globals = Some(scope.vars.len());
+    budget.charge_steps(scope.funcs.take_calls())?;
     // Settings that change the picture's framing or copy its shapes are not
     // rendered yet; refusing them beats drawing something cfdg does not.
     for d in &g.defines {
@@ -135,12 +148,11 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         offset = (x, y);
     }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
-    let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
-        return Err(EvalError::BadParam { name: "startshape".into(), message: format!("shape `{}` has no rules", start.shape) });
-    };
+    // The start shape may be a global shape variable (stackargtest).
+    let (start_shape, bound) = r.target(start)?;
     let mut init = State::initial();
     // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
-    let mut start_params = Vec::new();
+    let mut start_params = bound.unwrap_or_default();
     if let Some(a) = &start.args {
         super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
     }
@@ -182,15 +194,14 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         let rules = &r.rules.by_shape[s.shape];
         let Some(&(_, body)) = rules.iter().find(|(w, _)| *w >= choice).or(rules.last()) else { continue };
         r.current = s.state.seed;
-        let names = r.rules.params[s.shape];
         let depth = r.scope.vars.len();
-        for (n, v) in names.iter().zip(&s.params) {
-            r.scope.vars.push((n.clone(), vec![*v]));
-        }
+        r.bind_params(s.shape, &s.params);
         r.params = std::mem::take(&mut s.params);
         r.body(body, &s.state)?;
         r.scope.vars.truncate(depth);
+        r.charge_calls()?;
     }
+    r.charge_calls()?;
     Ok(r.finish(background))
 }
 
@@ -291,18 +302,23 @@ impl Renderer<'_> {
     fn element(&mut self, e: &Element, parent: &State) -> Result<(), EvalError> {
         match e {
             Element::Replace(rep) => {
-                let shape = *self.rules.index.get(rep.shape.as_str()).ok_or_else(|| EvalError::BadParam { name: rep.shape.clone(), message: "shape has no rules".into() })?;
+                let (shape, bound) = self.target(rep)?;
                 let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
                 let mut params = Vec::new();
-                match &rep.args {
-                    Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE => {
+                let wanted: usize = self.rules.sizes[shape].iter().sum();
+                match (&rep.args, bound) {
+                    (_, Some(b)) => params = b,
+                    (Some(syntax::Expr::Var(v, _)), None) if v == syntax::REUSE => {
                         params = self.params.clone();
-                        if params.len() != self.rules.params[shape].len() {
+                        if params.len() != wanted {
                             return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: `(=)` needs a parent with the same parameters", rep.span.line, rep.span.column) });
                         }
                     }
-                    Some(a) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
-                    None => {}
+                    (Some(a), None) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
+                    (None, None) => {}
+                }
+                if params.len() != wanted {
+                    return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape `{}` takes {wanted} numbers, given {}", rep.span.line, rep.span.column, rep.shape, params.len()) });
                 }
                 let mut child = *parent;
                 self.current.xor(seed);
@@ -361,6 +377,16 @@ impl Renderer<'_> {
             }
             // The parser allows these only in a path, which `path_shape` walks.
             Element::PathOp(_) | Element::PathCommand(_) => Ok(()),
+            Element::Define(d) if matches!(&d.value, Value::Expr(e) if bind::names_rule(e, &self.rules, &self.scope)) => {
+                let Value::Expr(e) = &d.value else { return Ok(()) };
+                if !bind::shape_is_constant(e) {
+                    self.current.xor(define_seed(&d.name));
+                }
+                if let Some(v) = bind::shape_value(e, &self.rules, &self.scope, &mut self.current, &self.params)? {
+                    bind::push_shape_var(&mut self.scope, &d.name, v);
+                }
+                Ok(())
+            }
             Element::Define(d) => {
                 // A constant definition is folded at compile time and never
                 // traversed (ASTdefine::traverse returns for non-stack defines).
