@@ -100,6 +100,13 @@ pub fn apply_prepared(p: &Prepared, s: &mut State, scope: &Scope, rand: &mut Ran
 pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
     let mut a = Vec::with_capacity(6);
     for t in terms {
+        // `trans NAME` with an adjustment value (eval/modval.rs).
+        if t.kind == TermKind::Transform {
+            if let Some(v) = super::modval::lookup(&t.args, scope) {
+                super::modval::apply(v, s);
+                continue;
+            }
+        }
         a.clear();
         eval(&t.args, scope, rand, &mut a)?;
         term(t, &a, s)?;
@@ -107,7 +114,7 @@ pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) ->
     Ok(())
 }
 
-fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> {
+pub(crate) fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> {
     let n = a.len();
     let arity = |ok: &[usize]| -> Result<(), EvalError> {
         if ok.contains(&n) {

@@ -11,6 +11,7 @@ pub mod agg;
 pub mod expr;
 pub mod frame;
 pub mod func;
+pub mod modval;
 pub mod state;
 
 use crate::cfdg::rand64::Rand64;

@@ -79,6 +79,13 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
             let mut v = Vec::new();
             super::expr::eval(e, &scope, &mut global_rand, &mut v)?;
             scope.vars.push((d.name.clone(), v));
+        } else if let (false, Value::Adjust(a)) = (d.name.starts_with("CF::"), &d.value) {
+            let constant = a.terms.iter().all(|t| super::adjust::is_constant(&t.args));
+            if !constant {
+                global_rand.xor(define_seed(&d.name));
+            }
+            let v = super::modval::value_of(a, &scope, &mut global_rand, constant)?;
+            scope.vars.push((super::modval::key(&d.name), v));
         }
     }
     scope.globals = Some(scope.vars.len());
@@ -287,7 +294,13 @@ impl Renderer<'_> {
 
     fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> (Prepared, Rand64) {
         let key = adj as *const Adjustment as usize;
-        cached(&mut self.cache, key, || (prepare(adj), term_seed(adj, shape, args))).clone()
+        let scope = &self.scope;
+        cached(&mut self.cache, key, || {
+            let mut seed = term_seed(adj, shape, args);
+            super::modval::fold_seeds(adj, scope, &mut seed);
+            (prepare(adj), seed)
+        })
+        .clone()
     }
 
     fn body(&mut self, body: &[Element], parent: &State) -> Result<(), EvalError> {
@@ -390,13 +403,27 @@ impl Renderer<'_> {
             Element::Define(d) => {
                 // A constant definition is folded at compile time and never
                 // traversed (ASTdefine::traverse returns for non-stack defines).
-                if !matches!(&d.value, Value::Expr(e) if super::adjust::is_constant(e)) {
+                // An adjustment definition is constant when all its terms are
+                // (`ASTdefine::compile`: `mChildChange.isConstant`).
+                let constant = match &d.value {
+                    Value::Expr(e) => super::adjust::is_constant(e),
+                    Value::Adjust(a) => a.terms.iter().all(|t| super::adjust::is_constant(&t.args)),
+                    Value::Shape(_) => true,
+                };
+                if !constant {
                     self.current.xor(define_seed(&d.name));
                 }
-                if let Value::Expr(e) = &d.value {
-                    let mut v = Vec::new();
-                    super::expr::eval(e, &self.scope, &mut self.current, &mut v)?;
-                    self.scope.vars.push((d.name.clone(), v));
+                match &d.value {
+                    Value::Expr(e) => {
+                        let mut v = Vec::new();
+                        super::expr::eval(e, &self.scope, &mut self.current, &mut v)?;
+                        self.scope.vars.push((d.name.clone(), v));
+                    }
+                    Value::Adjust(a) => {
+                        let v = super::modval::value_of(a, &self.scope, &mut self.current, constant)?;
+                        self.scope.vars.push((super::modval::key(&d.name), v));
+                    }
+                    Value::Shape(_) => {}
                 }
                 Ok(())
             }

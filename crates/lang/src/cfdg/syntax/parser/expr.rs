@@ -112,7 +112,10 @@ impl Parser<'_> {
         let zero = || Expr::Num(0.0, String::new());
         Ok(match (name, items.len()) {
             ("rand" | "rand_static" | "randint", 0) => Some(Expr::Cons(vec![zero(), Expr::Num(if name == "randint" { 2.0 } else { 1.0 }, String::new())])),
-            ("rand" | "rand_static" | "randint", 1) => Some(Expr::Cons(vec![zero(), items.remove(0)])),
+            // One argument may be a pair (`rand(range)` with `range = -60, 60`):
+            // the evaluator supplies the lower bound 0 only to a single number.
+            // The text hashed is the same either way (cfdg's wrapping list
+            // is flattened: a textless 0, the argument, the list's bytes).
             (_, 0) => None,
             _ => Some(Expr::Cons(items)),
         })
