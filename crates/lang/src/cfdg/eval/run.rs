@@ -61,14 +61,18 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
-    let mut global_rand = current;
+    // The globals are traversed with the renderer's own stream, which the
+    // start shape then goes on with (RendererImpl::init, then run's
+    // getInitialShape): a random global changes every draw after it
+    // (arraytest1).
+    let global_rand = &mut current;
     for d in &g.defines {
         if let (false, Value::Expr(e)) = (d.name.starts_with("CF::"), &d.value) {
             if bind::names_rule(e, &rules, &scope) {
                 if !bind::shape_is_constant(e) {
                     global_rand.xor(define_seed(&d.name));
                 }
-                if let Some(v) = bind::shape_value(e, &rules, &scope, &mut global_rand, &[])? {
+                if let Some(v) = bind::shape_value(e, &rules, &scope, global_rand, &[])? {
                     bind::push_shape_var(&mut scope, &d.name, v);
                 }
                 continue;
@@ -77,14 +81,14 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
                 global_rand.xor(define_seed(&d.name));
             }
             let mut v = Vec::new();
-            super::expr::eval(e, &scope, &mut global_rand, &mut v)?;
+            super::expr::eval(e, &scope, global_rand, &mut v)?;
             scope.vars.push((d.name.clone(), v));
         } else if let (false, Value::Adjust(a)) = (d.name.starts_with("CF::"), &d.value) {
             let constant = a.terms.iter().all(|t| super::adjust::is_constant(&t.args));
             if !constant {
                 global_rand.xor(define_seed(&d.name));
             }
-            let v = super::modval::value_of(a, &scope, &mut global_rand, constant)?;
+            let v = super::modval::value_of(a, &scope, global_rand, constant)?;
             scope.vars.push((super::modval::key(&d.name), v));
         }
     }
