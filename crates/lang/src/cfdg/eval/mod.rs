@@ -244,7 +244,27 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
 }
 
 mod run;
-pub use run::{render, PathDraw};
+pub use run::PathDraw;
+
+/// The stack the render runs on: user functions recurse through the
+/// evaluator (a few Rust frames per call, about 9 KiB in a debug build), so
+/// [`func::MAX_CALL_DEPTH`] calls need more than the 2 MiB a server or test
+/// thread has. Reserved address space; only the pages used are touched.
+pub const RENDER_STACK: usize = 64 << 20;
+
+/// Renders `g` as cfdg renders it with `opts`, charging `budget` (a step
+/// per rule expanded, per loop iteration and per user function call,
+/// memory per shape kept, a primitive per shape finished), on a thread of
+/// its own with a [`RENDER_STACK`]-byte stack.
+pub fn render(g: &Grammar, opts: &Options, budget: &mut crate::core::budget::Budget) -> Result<Picture, EvalError> {
+    std::thread::scope(|s| {
+        let spawned = std::thread::Builder::new().name("cfdg-render".into()).stack_size(RENDER_STACK).spawn_scoped(s, || run::render(g, opts, budget));
+        match spawned {
+            Ok(h) => h.join().unwrap_or_else(|_| Err(EvalError::BadParam { name: "cfdg".into(), message: "the renderer failed (a bug: please report the design)".into() })),
+            Err(e) => Err(EvalError::BadParam { name: "cfdg".into(), message: format!("cannot start the renderer's thread: {e}") }),
+        }
+    })
+}
 
 /// The terms of an adjustment in evaluation order, cached per adjustment.
 pub(crate) fn terms_of(adj: &syntax::Adjustment) -> Vec<Term> {

@@ -53,8 +53,9 @@ fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, mak
 
 /// Renders `g` as cfdg renders it with `opts`, charging `budget`: a step
 /// per rule expanded and per loop iteration, memory per shape kept, a
-/// primitive per shape finished.
-pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
+/// primitive per shape finished (on the caller's thread: [`super::render`]
+/// gives it a stack).
+pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
     let rules = compile(g).map_err(|e| EvalError::BadParam { name: "grammar".into(), message: e.to_string() })?;
     // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
     let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), ..Scope::default() };
@@ -69,7 +70,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     for d in &g.defines {
         if let (false, Value::Expr(e)) = (d.name.starts_with("CF::"), &d.value) {
             if bind::names_rule(e, &rules, &scope) {
-                if !bind::shape_is_constant(e) {
+                if !bind::shape_is_constant(e, &scope) {
                     global_rand.xor(define_seed(&d.name));
                 }
                 if let Some(v) = bind::shape_value(e, &rules, &scope, global_rand, &[])? {
@@ -396,7 +397,7 @@ impl Renderer<'_> {
             Element::PathOp(_) | Element::PathCommand(_) => Ok(()),
             Element::Define(d) if matches!(&d.value, Value::Expr(e) if bind::names_rule(e, &self.rules, &self.scope)) => {
                 let Value::Expr(e) = &d.value else { return Ok(()) };
-                if !bind::shape_is_constant(e) {
+                if !bind::shape_is_constant(e, &self.scope) {
                     self.current.xor(define_seed(&d.name));
                 }
                 if let Some(v) = bind::shape_value(e, &self.rules, &self.scope, &mut self.current, &self.params)? {

@@ -10,8 +10,8 @@
 //! is reached ("Shape with no rules encountered", `renderimpl.cpp`).
 //!
 //! A shape variable is kept among the numeric variables under its name
-//! prefixed by [`SHAPE_VAR`], its value the shape's number followed by its
-//! arguments, so it is scoped and dropped exactly as the other locals are.
+//! prefixed by [`SHAPE_VAR`], its value whether it is constant (1 or 0),
+//! the shape's number and its arguments, so it is scoped and dropped exactly as the other locals are.
 
 use super::super::expr::{eval, Scope};
 use super::super::Rules;
@@ -28,9 +28,11 @@ fn key(name: &str) -> String {
     format!("{SHAPE_VAR}{name}")
 }
 
-/// If `e` names a shape, its value: the shape's number, then its arguments.
-/// `parent` holds the enclosing shape's arguments (for `NAME(=)`).
+/// If `e` names a shape, its value: whether it is constant (1 or 0), the
+/// shape's number, then its arguments. `parent` holds the enclosing
+/// shape's arguments (for `NAME(=)`).
 pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: &mut Rand64, parent: &[f64]) -> Result<Option<Vec<f64>>, EvalError> {
+    let constant = f64::from(u8::from(shape_is_constant(e, scope)));
     match e {
         Expr::Paren(a) => shape_value(a, rules, scope, rand, parent),
         Expr::Var(name, _) => {
@@ -40,19 +42,19 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
             if scope.get(name).is_some() {
                 return Ok(None);
             }
-            Ok(rules.index.get(name.as_str()).map(|&i| vec![i as f64]))
+            Ok(rules.index.get(name.as_str()).map(|&i| vec![constant, i as f64]))
         }
         Expr::Call(name, args, span) if !syntax::is_builtin(name) && !scope.funcs.defs.contains_key(name) => {
             let Some(&i) = rules.index.get(name.as_str()) else { return Ok(None) };
-            let mut v = vec![i as f64];
+            let mut v = vec![constant, i as f64];
             match args.as_ref() {
                 Some(Expr::Var(r, _)) if r == syntax::REUSE => v.extend_from_slice(parent),
                 Some(a) => eval(a, scope, rand, &mut v)?,
                 None => {}
             }
             let wanted = rules.sizes[i].iter().sum::<usize>();
-            if v.len() - 1 != wanted {
-                return Err(EvalError::BadParam { name: name.clone(), message: format!("{}:{}: shape `{name}` takes {wanted} numbers, given {}", span.line, span.column, v.len() - 1) });
+            if v.len() - 2 != wanted {
+                return Err(EvalError::BadParam { name: name.clone(), message: format!("{}:{}: shape `{name}` takes {wanted} numbers, given {}", span.line, span.column, v.len() - 2) });
             }
             Ok(Some(v))
         }
@@ -62,11 +64,11 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
 
 /// Whether a shape definition is constant, so cfdg folds it at compile time
 /// and never traverses it (no seed mixed in): a shape named alone or with
-/// constant arguments.
-pub(super) fn shape_is_constant(e: &Expr) -> bool {
+/// constant arguments, or a constant shape variable (`ASTparameter::constCopy`).
+pub(super) fn shape_is_constant(e: &Expr, scope: &Scope<'_>) -> bool {
     match e {
-        Expr::Paren(a) => shape_is_constant(a),
-        Expr::Var(..) => false,
+        Expr::Paren(a) => shape_is_constant(a, scope),
+        Expr::Var(name, _) => scope.get(&key(name)).map_or(true, |v| v.first() == Some(&1.0)),
         Expr::Call(_, args, _) => match args.as_ref() {
             Some(Expr::Var(r, _)) if r == syntax::REUSE => false,
             Some(a) => syntax::is_constant(a),
@@ -113,8 +115,8 @@ impl Renderer<'_> {
             if rep.args.is_some() {
                 return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: cannot bind parameters twice (`{}` is a shape variable)", rep.span.line, rep.span.column, rep.shape) });
             }
-            let shape = v.first().map_or(0, |&s| s as usize);
-            return Ok((shape, Some(v.get(1..).map(<[f64]>::to_vec).unwrap_or_default())));
+            let shape = v.get(1).map_or(0, |&s| s as usize);
+            return Ok((shape, Some(v.get(2..).map(<[f64]>::to_vec).unwrap_or_default())));
         }
         match self.rules.index.get(rep.shape.as_str()) {
             Some(&i) => Ok((i, None)),
