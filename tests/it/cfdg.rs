@@ -326,21 +326,21 @@ fn language_constructs_match_cfdg() {
 fn hostile_functions_end_in_typed_errors() {
     use rulemesh::core::Limit;
     use rulemesh::model::EvalError;
-    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() };
-    let limit = |want: Limit| move |e: &RenderError| matches!(e, RenderError::Limit(l) if l.limit == want) || matches!(e, RenderError::Eval(EvalError::Limit(l)) if l.limit == want);
-    let depth = limit(Limit::Depth);
-    let steps = limit(Limit::Steps);
-    let at = |pos: &'static str| move |e: &RenderError| matches!(e, RenderError::Eval(EvalError::BadParam { message, .. }) if message.starts_with(pos));
-    let cases: [(&str, &dyn Fn(&RenderError) -> bool); 7] = [
-        ("up(n) = up(n + 1)\nstartshape A\nshape A {\n SQUARE [x up(1)]\n}\n", &depth),
-        ("ping(n) = pong(n) + 1\npong(n) = ping(n) * 2\nstartshape A\nshape A {\n SQUARE [x ping(1)]\n}\n", &depth),
-        ("fib(n) = if(n < 2, n, fib(n - 1) + fib(n - 2))\nstartshape A\nshape A {\n SQUARE [x fib(60)]\n}\n", &steps),
-        ("startshape A\nshape A {\n loop 1e9 [] SQUARE [x let(n = 1; n)]\n}\n", &steps),
-        ("v = 1, 2, 3\nstartshape A\nshape A {\n SQUARE [x v[5]]\n}\n", &at("4:12:")),
-        ("natural nat(natural n) = n\nstartshape A\nshape A {\n SQUARE [x nat(0.5)]\n}\n", &at("4:12:")),
-        ("sum(p, q) = p + q\nstartshape A\nshape A {\n SQUARE [x sum(1)]\n}\n", &at("4:12:")),
-    ];
     let run = move || {
+        let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() };
+        let limit = |want: Limit| move |e: &RenderError| matches!(e, RenderError::Limit(l) if l.limit == want) || matches!(e, RenderError::Eval(EvalError::Limit(l)) if l.limit == want);
+        let depth = limit(Limit::Depth);
+        let steps = limit(Limit::Steps);
+        let at = |pos: &'static str| move |e: &RenderError| matches!(e, RenderError::Eval(EvalError::BadParam { message, .. }) if message.starts_with(pos));
+        let cases: [(&str, &dyn Fn(&RenderError) -> bool); 7] = [
+            ("up(n) = up(n + 1)\nstartshape A\nshape A {\n SQUARE [x up(1)]\n}\n", &depth),
+            ("ping(n) = pong(n) + 1\npong(n) = ping(n) * 2\nstartshape A\nshape A {\n SQUARE [x ping(1)]\n}\n", &depth),
+            ("fib(n) = if(n < 2, n, fib(n - 1) + fib(n - 2))\nstartshape A\nshape A {\n SQUARE [x fib(60)]\n}\n", &steps),
+            ("startshape A\nshape A {\n loop 1e9 [] SQUARE [x let(n = 1; n)]\n}\n", &steps),
+            ("v = 1, 2, 3\nstartshape A\nshape A {\n SQUARE [x v[5]]\n}\n", &at("4:12:")),
+            ("natural nat(natural n) = n\nstartshape A\nshape A {\n SQUARE [x nat(0.5)]\n}\n", &at("4:12:")),
+            ("sum(p, q) = p + q\nstartshape A\nshape A {\n SQUARE [x sum(1)]\n}\n", &at("4:12:")),
+        ];
         for (src, ok) in cases {
             let mut r = req.clone();
             r.limits.max_steps = 200_000;
@@ -350,7 +350,7 @@ fn hostile_functions_end_in_typed_errors() {
             }
         }
     };
-    // The call depth is bounded for a 2 MiB stack, whatever the budget's depth.
+    // A caller on a 2 MiB thread (as a server worker) is safe: the render runs on its own stack.
     std::thread::Builder::new().stack_size(2 << 20).spawn(run).expect("thread").join().expect("no stack overflow, no panic");
     // Function definitions: parse errors with positions.
     for (src, pos) in [("vector1 one(n) = n\nstartshape A\nshape A { SQUARE [] }\n", (1, 1)), ("one(n) = )\nstartshape A\nshape A { SQUARE [] }\n", (1, 10)), ("one(number p, number p) = p\nstartshape A\nshape A { SQUARE [] }\n", (1, 15))] {
