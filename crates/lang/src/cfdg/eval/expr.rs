@@ -162,6 +162,9 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             };
             eval(items[1 + i], scope, rand, out)?;
         }
+        Expr::Call(name, args, span) if matches!(name.as_str(), "dot" | "cross" | "hsb2rgb" | "rgb2hsb") => {
+            super::func::vector_builtin(name, args.as_ref().as_ref(), *span, scope, rand, out)?;
+        }
         Expr::Call(name, args, span) if !crate::cfdg::syntax::is_builtin(name) => {
             super::func::call(name, args.as_ref().as_ref(), *span, scope, rand, out)?;
         }

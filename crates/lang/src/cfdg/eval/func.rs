@@ -205,3 +205,61 @@ pub fn index(name: &str, args: &Expr, span: Span, scope: &Scope<'_>, rand: &mut 
     }
     Ok(())
 }
+
+/// The built-ins on vectors (`ASTfunction::evaluate`): `dot(u, v)`,
+/// `cross(u, v)` of two vector3s, and `hsb2rgb(h, s, b)` / `rgb2hsb(r, g, b)`
+/// through `HSBColor` (its hextant formula and its inverse, `HSBColor.cpp`).
+pub fn vector_builtin(name: &str, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
+    let items = args.map(|a| a.items()).unwrap_or_default();
+    let mut vals = Vec::with_capacity(items.len());
+    for a in &items {
+        let mut v = Vec::new();
+        eval(a, scope, rand, &mut v)?;
+        vals.push(v);
+    }
+    match name {
+        "dot" | "cross" => {
+            let [l, r] = vals.as_slice() else { return Err(bad_call(span, name, "takes two vectors")) };
+            if name == "dot" {
+                if l.len() != r.len() || l.len() < 2 {
+                    return Err(bad_call(span, name, "takes two vectors of the same length"));
+                }
+                out.push(l.iter().zip(r).map(|(a, b)| a * b).sum());
+            } else {
+                let ([l0, l1, l2], [r0, r1, r2]) = (l.as_slice(), r.as_slice()) else { return Err(bad_call(span, name, "takes two vector3s")) };
+                out.extend_from_slice(&[l1 * r2 - l2 * r1, l2 * r0 - l0 * r2, l0 * r1 - l1 * r0]);
+            }
+        }
+        _ => {
+            let flat: Vec<f64> = vals.into_iter().flatten().collect();
+            let [x, y, z] = flat.as_slice() else { return Err(bad_call(span, name, "takes 3 numbers")) };
+            if name == "hsb2rgb" {
+                let rgb = super::state::Hsba { h: *x, s: *y, b: *z, a: 1.0 }.rgba();
+                out.extend_from_slice(&rgb[..3]);
+            } else {
+                out.extend_from_slice(&rgb_to_hsb(*x, *y, *z));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `HSBColor::HSBColor(const agg::rgba&)`.
+fn rgb_to_hsb(r: f64, g: f64, b: f64) -> [f64; 3] {
+    let min = r.min(g.min(b));
+    let max = r.max(g.max(b));
+    let delta = max - min;
+    if delta < 0.00001 {
+        return [0.0, 0.0, max];
+    }
+    let s = delta / max;
+    let t = if r == max {
+        (g - b) / delta
+    } else if g == max {
+        2.0 + (b - r) / delta
+    } else {
+        4.0 + (r - g) / delta
+    } * 60.0;
+    let h = if t < 0.0 { (t + 360.0) % 360.0 } else { t % 360.0 };
+    [h, s, max]
+}

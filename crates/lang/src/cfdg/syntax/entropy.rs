@@ -80,6 +80,10 @@ fn func_bytes(name: &str) -> &'static [u8] {
         "bitleft" => b"\x91\x47\xE5\xE5\x0D\xAA",
         // cfdg appends these as C strings, so this one stops at its zero byte.
         "bitright" => b"\xF1\xAB\x17",
+        "dot" => b"\x60\xAA\xB7\xE1\xB9\x06",
+        "cross" => b"\x39\x38\x40\xE5\x93\xF8",
+        "hsb2rgb" => b"\xC3\xD4\x57\x04\xAF\x9F",
+        "rgb2hsb" => b"\xD0\x2A\x55\x7A\x53\x97",
         // if() and select() (ASTselect): the selector's list, then these bytes.
         "if" | "select" => b"\xB5\xA2\x4A\x74\xA9\xDF",
         _ => b"",

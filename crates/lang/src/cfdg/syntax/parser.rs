@@ -58,7 +58,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new() };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None };
     p.grammar()
 }
 
@@ -73,6 +73,8 @@ struct Parser<'a> {
     path: path::PathState,
     /// The typed parameters the last parameter list declared ([`func`]).
     last_params: Vec<Param>,
+    /// The start shape a `CF::StartShape` setting just gave ([`func`]).
+    start_setting: Option<Replacement>,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -270,8 +272,8 @@ impl Parser<'_> {
                 Tok::Word(_) if matches!(self.peek_at(1), Tok::Punct("=")) => {
                     let d = self.define()?;
                     if d.name == "CF::StartShape" {
-                        if let Value::Shape(s) = &d.value {
-                            g.start = Some(Replacement { shape: s.clone(), adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span: d.span });
+                        if let Some(start) = self.start_setting.take() {
+                            g.start = Some(start);
                         }
                     }
                     current_shape = None;
@@ -292,7 +294,10 @@ impl Parser<'_> {
         let value = if self.is_punct("[") {
             Value::Adjust(self.adjustment()?)
         } else if name == "CF::StartShape" {
-            Value::Shape(self.name("a shape name")?.0)
+            let start = self.start_setting()?;
+            let shape = start.shape.clone();
+            self.start_setting = Some(start);
+            Value::Shape(shape)
         } else {
             Value::Expr(self.expr(0)?)
         };
@@ -398,7 +403,8 @@ impl Parser<'_> {
                 self.bump();
                 Ok(Element::Switch { selector, cases, otherwise, span })
             }
-            "transform" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
+            // `trans` is `transform`'s short form here too (cfdg.l: both are MODTYPE transform).
+            "transform" | "trans" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
                 self.bump();
                 let mut adjusts = Vec::new();
                 while self.is_punct("[") {

@@ -6,7 +6,7 @@
 //! `decodeType` reads them; a name is an array name only when `[` follows
 //! it at once (`cfdg.l`'s `{STRING}` rule peeks at the next character).
 
-use super::super::{Expr, Function, Param, ParamType};
+use super::super::{Adjustment, Expr, Function, Param, ParamType, Replacement};
 use super::{Parser, Tok};
 use crate::{ParseError, Span};
 
@@ -85,6 +85,20 @@ impl Parser<'_> {
         self.expect("=")?;
         let body = self.expr(0)?;
         Ok(Function { name, params, ret, body, span })
+    }
+
+    /// The value of `CF::StartShape =`: a shape name (cfdg also takes its
+    /// arguments, then `, [adjustment]`: `Builder::CheckConfig`, `builder.cpp`).
+    pub(super) fn start_setting(&mut self) -> Result<Replacement, ParseError> {
+        let (shape, span) = self.name("a shape name")?;
+        // The seed cfdg gives the start shape in this form is not the one
+        // `startshape NAME(args) [adjustment]` gets (cfstartshapetest draws
+        // other colours with every seed construction tried), so the form is
+        // refused rather than drawn differently.
+        if self.is_punct("(") || self.is_punct(",") {
+            return self.err("`CF::StartShape` with arguments or an adjustment is not supported yet (write `startshape NAME(args) [adjustment]`)");
+        }
+        Ok(Replacement { shape, adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span })
     }
 
     /// `( [TYPE] name, … )`: typed or untyped (number) parameters.
