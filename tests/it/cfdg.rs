@@ -310,6 +310,11 @@ fn language_constructs_match_cfdg() {
         "tests/namedlooptest1.cfdg",
         "tests/mtree mod def test.cfdg",
         "tests/predefine.cfdg",
+        "tests/mod exp test.cfdg",
+        "tests/switchtest2.cfdg",
+        "tests/diamondtile.cfdg",
+        "tests/rgbhsbtest1.cfdg",
+        "tests/randtest2.cfdg",
     ] {
         let file = example(name);
         assert_same(name, &cfdg_svg(&file, "ABC"), &rulemesh_svg(&file, "ABC"));

@@ -47,8 +47,8 @@ fn refuse(t: &crate::cfdg::syntax::Term, what: &str) -> EvalError {
 }
 
 /// Evaluates `adj` into an adjustment value (`ASTmodification::setVal`);
-/// `constant` when every term is (the definition is then folded where it
-/// is used, see [`fold_seeds`]).
+/// `constant` as [`is_constant`] says (the definition is then folded where
+/// it is used, see [`fold_seeds`]).
 pub fn value_of(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, constant: bool) -> Result<Vec<f64>, EvalError> {
     let p = prepare(adj);
     let mut geo = State::initial();
@@ -103,11 +103,23 @@ pub fn value_of(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, constant
     v.extend_from_slice(&color);
     v.extend_from_slice(&target);
     v.push(f64::from(assign));
-    // Folded at compile time where it is used when constant and free of
-    // colour terms (`ASTmodTerm::evaluate` defers colours to run time).
-    let colourless = !adj.terms.iter().any(|t| matches!(t.kind, TermKind::Hue | TermKind::Sat | TermKind::Bright | TermKind::Alpha | TermKind::HueTarg | TermKind::SatTarg | TermKind::BrightTarg | TermKind::AlphaTarg | TermKind::TargHue | TermKind::TargSat | TermKind::TargBright | TermKind::TargAlpha));
-    v.push(f64::from(u8::from(constant && colourless)));
+    v.push(f64::from(u8::from(constant)));
     Ok(v)
+}
+
+/// Whether an adjustment definition is constant, so cfdg folds it at
+/// compile time and never traverses it (no seed mixed in): every term
+/// constant and none a colour term, since `ASTmodTerm::evaluate` defers
+/// colours to run time and the definition keeps them as run-time terms.
+/// Found against cfdg's output: a constant `b9 = [s 10]` mixes nothing in
+/// (arraytest1), a constant `x5 = [alpha -.5 sat .5]` its seed (`mod exp
+/// test`, where it changes the rules chosen after it).
+pub fn is_constant(adj: &Adjustment) -> bool {
+    adj.terms.iter().all(|t| crate::cfdg::syntax::is_constant(&t.args) && !is_colour(t.kind))
+}
+
+fn is_colour(k: TermKind) -> bool {
+    matches!(k, TermKind::Hue | TermKind::Sat | TermKind::Bright | TermKind::Alpha | TermKind::HueTarg | TermKind::SatTarg | TermKind::BrightTarg | TermKind::AlphaTarg | TermKind::TargHue | TermKind::TargSat | TermKind::TargBright | TermKind::TargAlpha)
 }
 
 /// Mixes into a replacement's seed what cfdg's compile-time folding of its

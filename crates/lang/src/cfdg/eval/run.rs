@@ -85,7 +85,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
             super::expr::eval(e, &scope, global_rand, &mut v)?;
             scope.vars.push((d.name.clone(), v));
         } else if let (false, Value::Adjust(a)) = (d.name.starts_with("CF::"), &d.value) {
-            let constant = a.terms.iter().all(|t| super::adjust::is_constant(&t.args));
+            let constant = super::modval::is_constant(a);
             if !constant {
                 global_rand.xor(define_seed(&d.name));
             }
@@ -408,11 +408,9 @@ impl Renderer<'_> {
             Element::Define(d) => {
                 // A constant definition is folded at compile time and never
                 // traversed (ASTdefine::traverse returns for non-stack defines).
-                // An adjustment definition is constant when all its terms are
-                // (`ASTdefine::compile`: `mChildChange.isConstant`).
                 let constant = match &d.value {
                     Value::Expr(e) => super::adjust::is_constant(e),
-                    Value::Adjust(a) => a.terms.iter().all(|t| super::adjust::is_constant(&t.args)),
+                    Value::Adjust(a) => super::modval::is_constant(a),
                     Value::Shape(_) => true,
                 };
                 if !constant {
