@@ -315,6 +315,8 @@ fn language_constructs_match_cfdg() {
         "tests/diamondtile.cfdg",
         "tests/rgbhsbtest1.cfdg",
         "tests/randtest2.cfdg",
+        // cfdg's predefined Unicode names of the primitives.
+        "tests/unicodetest.cfdg",
     ] {
         let file = example(name);
         assert_same(name, &cfdg_svg(&file, "ABC"), &rulemesh_svg(&file, "ABC"));

@@ -60,6 +60,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
     let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), ..Scope::default() };
     scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
+    bind::push_predefined(&mut scope);
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
     // The globals are traversed with the renderer's own stream, which the

@@ -68,7 +68,7 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
 pub(super) fn shape_is_constant(e: &Expr, scope: &Scope<'_>) -> bool {
     match e {
         Expr::Paren(a) => shape_is_constant(a, scope),
-        Expr::Var(name, _) => scope.get(&key(name)).map_or(true, |v| v.first() == Some(&1.0)),
+        Expr::Var(name, _) => scope.get(&key(name)).is_none_or(|v| v.first() == Some(&1.0)),
         Expr::Call(_, args, _) => match args.as_ref() {
             Some(Expr::Var(r, _)) if r == syntax::REUSE => false,
             Some(a) => syntax::is_constant(a),
@@ -81,6 +81,19 @@ pub(super) fn shape_is_constant(e: &Expr, scope: &Scope<'_>) -> bool {
 /// Pushes a shape variable `name` with value `v` ([`shape_value`]).
 pub(super) fn push_shape_var(scope: &mut Scope<'_>, name: &str, v: Vec<f64>) {
     scope.vars.push((key(name), v));
+}
+
+/// Pushes cfdg's predefined globals (`CFDGImpl::initVariables`,
+/// `cfdgimpl.cpp`): `π`, and Unicode names for the primitives as constant
+/// shape variables (⚫ ● ⬤ a CIRCLE; ⬛ ◼ ◾ ￭ ■ a SQUARE; ▲ ▴ a TRIANGLE).
+pub(super) fn push_predefined(scope: &mut Scope<'_>) {
+    scope.vars.push(("\u{3c0}".to_string(), vec![std::f64::consts::PI]));
+    let prims: [(&[&str], usize); 3] = [(&["\u{26ab}", "\u{25cf}", "\u{2b24}"], 0), (&["\u{2b1b}", "\u{25fc}", "\u{25fe}", "\u{ffed}", "\u{25a0}"], 1), (&["\u{25b2}", "\u{25b4}"], 2)];
+    for (names, shape) in prims {
+        for name in names {
+            push_shape_var(scope, name, vec![1.0, shape as f64]);
+        }
+    }
 }
 
 /// Whether `name` is a rule's shape name rather than a variable in scope.
