@@ -253,7 +253,6 @@ fn parse_errors_have_positions() {
     let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Stl, ..RenderRequest::default() };
     for (src, at) in [
         ("startshape A\nshape A {\n  SQUARE [x 1 ]]\n}\n", (3, 16)),
-        ("startshape A\nshape A {\n  B []\n}\n", (3, 3)),
         ("startshape A\nshape A {\n  SQUARE [x 1 @]\n}\n", (3, 15)),
         ("startshape A\nrule A {\n  SQUARE { x (1 }\n}\n", (3, 17)),
     ] {
@@ -264,6 +263,107 @@ fn parse_errors_have_positions() {
                 assert!(!d.message.is_empty());
             }
             other => panic!("{src}: {other:?}"),
+        }
+    }
+}
+
+/// A shape with no rules is an error only where it is reached, as in cfdg
+/// ("Shape with no rules encountered"), with its line and column; one
+/// never reached is no error (switchtest2).
+#[test]
+fn shapes_without_rules_stop_where_reached() {
+    use rulemesh::model::EvalError;
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() };
+    match render(b"startshape A\nshape A {\n  B []\n}\n", &req) {
+        Err(RenderError::Eval(EvalError::BadParam { message, .. })) => assert!(message.starts_with("3:3:") && message.contains("`B`"), "{message}"),
+        other => panic!("{:?}", other.map(|o| o.bytes.len())),
+    }
+    let out = render(b"startshape A\nshape A {\n  if (0) { B [] }\n  SQUARE []\n}\n", &req).expect("B is never reached");
+    assert_eq!(out.primitives, 1);
+}
+
+/// The language constructs of issue 34's second part give cfdg's own SVG:
+/// user functions (typed, vector-valued, recursive, mutually recursive,
+/// natural), `let`, vectors and their indexing (`v[i, length, stride]`),
+/// vectorN shape parameters, shape variables (global, local, reused with
+/// `(=)`, as the start shape, from an imported file), adjustment values
+/// (`trans NAME`, folded ones included), shapes with no rules never
+/// reached, and random globals (arraytest1).
+#[test]
+fn language_constructs_match_cfdg() {
+    for name in [
+        "tests/functest1.cfdg",
+        "tests/recursiontest.cfdg",
+        "tests/nattest1.cfdg",
+        "tests/lettest2.cfdg",
+        "tests/lettest3.cfdg",
+        "tests/arraytest1.cfdg",
+        "tests/arraytest2.cfdg",
+        "tests/vectortest1.cfdg",
+        "tests/userfunctupletest1.cfdg",
+        "tests/vectorfunctiontest.cfdg",
+        "tests/paramtest1.cfdg",
+        "tests/paramtest7.cfdg",
+        "tests/paramtest11.cfdg",
+        "tests/includetest.cfdg",
+        "tests/stackargtest.cfdg",
+        "tests/namedlooptest1.cfdg",
+        "tests/mtree mod def test.cfdg",
+        "tests/predefine.cfdg",
+        "tests/mod exp test.cfdg",
+        "tests/switchtest2.cfdg",
+        "tests/diamondtile.cfdg",
+        "tests/rgbhsbtest1.cfdg",
+        "tests/randtest2.cfdg",
+        // cfdg's predefined Unicode names of the primitives.
+        "tests/unicodetest.cfdg",
+    ] {
+        let file = example(name);
+        assert_same(name, &cfdg_svg(&file, "ABC"), &rulemesh_svg(&file, "ABC"));
+    }
+}
+
+/// Hostile user functions end in typed errors naming the limit: endless
+/// recursion stops at the call depth (never a stack overflow, on a 2 MiB
+/// thread), wide recursion at the step limit (each call is a step), a
+/// `let` in a huge loop at the step limit; a vector index out of bounds, a
+/// non-natural argument for a `natural` parameter and a wrong argument
+/// count are errors with line and column.
+#[test]
+fn hostile_functions_end_in_typed_errors() {
+    use rulemesh::core::Limit;
+    use rulemesh::model::EvalError;
+    let run = move || {
+        let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() };
+        let limit = |want: Limit| move |e: &RenderError| matches!(e, RenderError::Limit(l) if l.limit == want) || matches!(e, RenderError::Eval(EvalError::Limit(l)) if l.limit == want);
+        let depth = limit(Limit::Depth);
+        let steps = limit(Limit::Steps);
+        let at = |pos: &'static str| move |e: &RenderError| matches!(e, RenderError::Eval(EvalError::BadParam { message, .. }) if message.starts_with(pos));
+        let cases: [(&str, &dyn Fn(&RenderError) -> bool); 7] = [
+            ("up(n) = up(n + 1)\nstartshape A\nshape A {\n SQUARE [x up(1)]\n}\n", &depth),
+            ("ping(n) = pong(n) + 1\npong(n) = ping(n) * 2\nstartshape A\nshape A {\n SQUARE [x ping(1)]\n}\n", &depth),
+            ("fib(n) = if(n < 2, n, fib(n - 1) + fib(n - 2))\nstartshape A\nshape A {\n SQUARE [x fib(60)]\n}\n", &steps),
+            ("startshape A\nshape A {\n loop 1e9 [] SQUARE [x let(n = 1; n)]\n}\n", &steps),
+            ("v = 1, 2, 3\nstartshape A\nshape A {\n SQUARE [x v[5]]\n}\n", &at("4:12:")),
+            ("natural nat(natural n) = n\nstartshape A\nshape A {\n SQUARE [x nat(0.5)]\n}\n", &at("4:12:")),
+            ("sum(p, q) = p + q\nstartshape A\nshape A {\n SQUARE [x sum(1)]\n}\n", &at("4:12:")),
+        ];
+        for (src, ok) in cases {
+            let mut r = req.clone();
+            r.limits.max_steps = 200_000;
+            match render(src.as_bytes(), &r) {
+                Err(e) => assert!(ok(&e), "{src}: {e:?}"),
+                Ok(_) => panic!("{src}: rendered"),
+            }
+        }
+    };
+    // A caller on a 2 MiB thread (as a server worker) is safe: the render runs on its own stack.
+    std::thread::Builder::new().stack_size(2 << 20).spawn(run).expect("thread").join().expect("no stack overflow, no panic");
+    // Function definitions: parse errors with positions.
+    for (src, pos) in [("vector1 one(n) = n\nstartshape A\nshape A { SQUARE [] }\n", (1, 1)), ("one(n) = )\nstartshape A\nshape A { SQUARE [] }\n", (1, 10)), ("one(number p, number p) = p\nstartshape A\nshape A { SQUARE [] }\n", (1, 15))] {
+        match render(src.as_bytes(), &RenderRequest { language: Some(Language::Cfdg), format: Format::Svg, ..RenderRequest::default() }) {
+            Err(RenderError::Parse(e)) => assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), pos, "{src}: {e}"),
+            other => panic!("{src}: {:?}", other.map(|o| o.bytes.len())),
         }
     }
 }

@@ -17,9 +17,10 @@ fn parse_error_has_position() {
     assert_eq!((d.span.line, d.span.column), (3, 16), "{d}");
     let e = syntax::parse(b"startshape A\nshape A {\n  SQUARE [x 1 @]\n}\n").unwrap_err();
     assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (3, 15));
-    let e = parse_checked(b"startshape A\nshape A {\n  B []\n}\n").unwrap_err();
-    assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (3, 3));
-    assert!(e.to_string().contains("`B` has no rules"), "{e}");
+    // A shape with no rules stops the render where it is reached (cfdg's
+    // "Shape with no rules encountered"), with its position.
+    let e = render("startshape A\nshape A {\n  B []\n}\n", "A").unwrap_err();
+    assert!(matches!(&e, EvalError::BadParam { message, .. } if message.starts_with("3:3:") && message.contains("no rules")), "{e:?}");
     let e = syntax::parse(b"startshape A\nrule A {\n  SQUARE {\n").unwrap_err();
     assert_eq!(e.diagnostics[0].span.line, 4);
     assert!(syntax::parse(&[b's', 0xff, b'\n']).is_err());
@@ -65,4 +66,37 @@ fn unicode_names_do_not_panic() {
     for src in ["é…", "…é", "x±é", "⬛∞", "a\u{2026}\u{2026}b"] {
         let _ = syntax::parse(src.as_bytes());
     }
+}
+
+/// User functions, `let`, vectors and indexing compute what cfdg computes
+/// (the values read back from the shape's transform).
+#[test]
+fn functions_let_and_vectors_evaluate() {
+    let x = |src: &str| render(src, "A").unwrap().shapes[0].transform.tx;
+    let y = |src: &str| render(src, "A").unwrap().shapes[0].transform.ty;
+    assert_eq!(x("double(v) = v * 2\nstartshape A\nshape A { SQUARE [x double(3)] }\n"), 6.0);
+    assert_eq!(x("natural fib(natural n) = if(n <= 1, n, fib(n -- 1) + fib(n -- 2))\nstartshape A\nshape A { SQUARE [x fib(10)] }\n"), 55.0);
+    assert_eq!(x("startshape A\nshape A { SQUARE [x let(p = 2; q = p * 3; p + q)] }\n"), 8.0);
+    // A vector function, element-wise sums, a scalar product and indexing with length and stride.
+    let src = "vector2 add(vector2 u, vector2 w) = u + w\nv = 1, 2, 3, 4, 5, 6\nstartshape A\nshape A { SQUARE [x (add((1, 2), v[2, 2, 2]) * 2)] }\n";
+    assert_eq!((x(src), y(src)), (8.0, 14.0));
+    // A vector2 shape parameter.
+    let src = "startshape A\nshape A { B((3, 4)) [] }\nshape B(vector2 p) { SQUARE [x p] }\n";
+    assert_eq!((x(src), y(src)), (3.0, 4.0));
+    // A shape variable with arguments, drawn by its name.
+    let src = "startshape A\nshape A { bv = B(5) \n bv [] }\nshape B(number n) { SQUARE [x n] }\n";
+    assert_eq!(x(src), 5.0);
+    // An adjustment value applied with trans.
+    let src = "m = [x 2 y 3]\nstartshape A\nshape A { SQUARE [trans m] }\n";
+    assert_eq!((x(src), y(src)), (2.0, 3.0));
+}
+
+/// Endless recursion in a user function is a depth limit; a wide one the
+/// step limit (each call is a step).
+#[test]
+fn recursive_functions_end_at_limits() {
+    let e = render("up(n) = up(n + 1)\nstartshape A\nshape A { SQUARE [x up(1)] }\n", "A").unwrap_err();
+    assert!(matches!(&e, EvalError::Limit(l) if l.limit == crate::core::budget::Limit::Depth), "{e:?}");
+    let e = render("fib(n) = if(n < 2, n, fib(n - 1) + fib(n - 2))\nstartshape A\nshape A { SQUARE [x fib(90)] }\n", "A").unwrap_err();
+    assert!(matches!(&e, EvalError::Limit(l) if l.limit == crate::core::budget::Limit::Steps), "{e:?}");
 }

@@ -58,15 +58,7 @@ pub struct Prepared {
 }
 
 pub(crate) fn is_constant(e: &crate::cfdg::syntax::Expr) -> bool {
-    use crate::cfdg::syntax::Expr;
-    match e {
-        Expr::Num(..) => true,
-        Expr::Var(..) => false,
-        Expr::Unary(_, a) | Expr::Paren(a) => is_constant(a),
-        Expr::Binary(_, a, b) => is_constant(a) && is_constant(b),
-        Expr::Cons(v) => v.iter().all(is_constant),
-        Expr::Call(name, args, _) => !name.starts_with("rand") && args.as_ref().as_ref().map_or(true, is_constant),
-    }
+    crate::cfdg::syntax::is_constant(e)
 }
 
 fn geometric(k: TermKind) -> bool {
@@ -108,6 +100,13 @@ pub fn apply_prepared(p: &Prepared, s: &mut State, scope: &Scope, rand: &mut Ran
 pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
     let mut a = Vec::with_capacity(6);
     for t in terms {
+        // `trans NAME` with an adjustment value (eval/modval.rs).
+        if t.kind == TermKind::Transform {
+            if let Some(v) = super::modval::lookup(&t.args, scope) {
+                super::modval::apply(v, s);
+                continue;
+            }
+        }
         a.clear();
         eval(&t.args, scope, rand, &mut a)?;
         term(t, &a, s)?;
@@ -115,7 +114,7 @@ pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) ->
     Ok(())
 }
 
-fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> {
+pub(crate) fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> {
     let n = a.len();
     let arity = |ok: &[usize]| -> Result<(), EvalError> {
         if ok.contains(&n) {

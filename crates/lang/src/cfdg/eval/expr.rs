@@ -9,30 +9,45 @@ use crate::model::EvalError;
 use crate::Span;
 
 /// Variables in scope: globals first, then the locals pushed by loops and
-/// definitions (searched from the top).
+/// definitions (searched from the top), then those of the enclosing scope
+/// (a `let` sees its caller's variables; a user function only the globals).
 #[derive(Debug, Clone)]
-pub struct Scope {
+pub struct Scope<'a> {
     /// Name and value (a tuple) of each variable.
     pub vars: Vec<(String, Vec<f64>)>,
+    /// The enclosing scope and how many of its variables are visible.
+    pub(crate) up: Option<(&'a Scope<'a>, usize)>,
+    /// How many of `vars` are globals (all of them while the globals are
+    /// being evaluated); what a user function sees of this scope.
+    pub globals: Option<usize>,
     /// The largest natural number `isNatural` accepts (`CF::MaxNatural`,
     /// cfdg's default 1000); infinite under `CF::Impure`.
     pub max_natural: f64,
+    /// The user functions and the count of calls made ([`super::func`]).
+    pub funcs: std::sync::Arc<super::func::Functions>,
 }
 
-impl Default for Scope {
+impl Default for Scope<'_> {
     fn default() -> Self {
-        Scope { vars: Vec::new(), max_natural: 1000.0 }
+        Scope { vars: Vec::new(), up: None, globals: None, max_natural: 1000.0, funcs: Default::default() }
     }
 }
 
-impl Scope {
-    fn get(&self, name: &str) -> Option<&[f64]> {
-        self.vars.iter().rev().find(|(n, _)| n == name).map(|(_, v)| v.as_slice())
+impl Scope<'_> {
+    pub(crate) fn get(&self, name: &str) -> Option<&[f64]> {
+        self.get_in(name, self.vars.len())
+    }
+
+    fn get_in(&self, name: &str, visible: usize) -> Option<&[f64]> {
+        match self.vars[..visible.min(self.vars.len())].iter().rev().find(|(n, _)| n == name) {
+            Some((_, v)) => Some(v.as_slice()),
+            None => self.up.and_then(|(s, n)| s.get_in(name, n)),
+        }
     }
 }
 
 /// Largest tuple an expression may build (cfdg's adjustments take at most 6).
-const MAX_TUPLE: usize = 64;
+const MAX_TUPLE: usize = 100;
 
 fn bad(span: Span, what: &str, value: impl std::fmt::Display) -> EvalError {
     EvalError::NonFinite { span, what: what.to_string(), value: value.to_string() }
@@ -57,39 +72,75 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             }
         }
         Expr::Unary(op, a) => {
-            let x = scalar(a, scope, rand)?;
-            out.push(match op {
-                'N' => -x,
-                '!' => f64::from(x == 0.0),
-                _ => x,
-            });
+            if *op == '!' {
+                let x = scalar(a, scope, rand)?;
+                out.push(f64::from(x == 0.0));
+            } else {
+                // `-` and `+` apply to every element of a tuple (ASToperator::evaluate).
+                let from = out.len();
+                eval(a, scope, rand, out)?;
+                if *op == 'N' {
+                    out[from..].iter_mut().for_each(|v| *v = -*v);
+                }
+            }
+        }
+        Expr::Binary(op, a, b) if matches!(op, '+' | '-' | '_' | '*' | '/' | '=' | 'n') => {
+            // Tuples: element-wise, or a scalar against each element for
+            // `*` and `/` (ASToperator::compile's size rules and evaluate).
+            let (mut l, mut r) = (Vec::new(), Vec::new());
+            eval(a, scope, rand, &mut l)?;
+            eval(b, scope, rand, &mut r)?;
+            let (ln, rn) = (l.len(), r.len());
+            let same = ln == rn && ln >= 1;
+            let scaled = matches!(op, '*' | '/') && (ln == 1 || rn == 1) && ln >= 1 && rn >= 1;
+            if !same && !scaled {
+                return Err(EvalError::BadParam { name: "expression".into(), message: format!("operands of `{}` have {ln} and {rn} numbers", op_text(*op)) });
+            }
+            let n = ln.max(rn);
+            let at = |v: &[f64], i: usize| if v.len() == 1 { v[0] } else { v[i] };
+            match op {
+                '=' => out.push(f64::from(l == r)),
+                'n' => out.push(f64::from(l != r)),
+                _ => {
+                    for i in 0..n {
+                        let (x, y) = (at(&l, i), at(&r, i));
+                        out.push(match op {
+                            '+' => x + y,
+                            '-' => x - y,
+                            '*' => x * y,
+                            '/' => x / y,
+                            _ => {
+                                if x - y > 0.0 {
+                                    x - y
+                                } else {
+                                    0.0
+                                }
+                            }
+                        });
+                    }
+                }
+            }
         }
         Expr::Binary(op, a, b) => {
             let x = scalar(a, scope, rand)?;
-            // && and || short-circuit as cfdg's do.
+            // && and || short-circuit as cfdg's do, giving the deciding
+            // operand's value (ASToperator::evaluate).
             if *op == '&' && x == 0.0 {
                 out.push(0.0);
                 return Ok(());
             }
             if *op == '|' && x != 0.0 {
-                out.push(1.0);
+                out.push(x);
                 return Ok(());
             }
             let y = scalar(b, scope, rand)?;
             out.push(match op {
-                '+' => x + y,
-                '-' => x - y,
-                '*' => x * y,
-                '/' => x / y,
                 '^' => x.powf(y),
-                '_' => (x - y).max(0.0),
                 '<' => f64::from(x < y),
                 '>' => f64::from(x > y),
                 'L' => f64::from(x <= y),
                 'G' => f64::from(x >= y),
-                '=' => f64::from(x == y),
-                'n' => f64::from(x != y),
-                '&' | '|' => f64::from(y != 0.0),
+                '&' | '|' => y,
                 'X' => f64::from((x != 0.0) != (y != 0.0)),
                 _ => f64::NAN,
             });
@@ -111,6 +162,14 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             };
             eval(items[1 + i], scope, rand, out)?;
         }
+        Expr::Call(name, args, span) if matches!(name.as_str(), "dot" | "cross" | "hsb2rgb" | "rgb2hsb") => {
+            super::func::vector_builtin(name, args.as_ref().as_ref(), *span, scope, rand, out)?;
+        }
+        Expr::Call(name, args, span) if !crate::cfdg::syntax::is_builtin(name) => {
+            super::func::call(name, args.as_ref().as_ref(), *span, scope, rand, out)?;
+        }
+        Expr::Let(defs, body, span) => super::func::let_in(defs, body, *span, scope, rand, out)?,
+        Expr::Index(name, args, span) => super::func::index(name, args, *span, scope, rand, out)?,
         Expr::Call(name, args, span) => {
             let mut a = Vec::new();
             if let Some(x) = args.as_ref() {
@@ -120,6 +179,18 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
         }
     }
     Ok(())
+}
+
+fn op_text(op: char) -> &'static str {
+    match op {
+        '+' => "+",
+        '-' => "-",
+        '_' => "--",
+        '*' => "*",
+        '/' => "/",
+        '=' => "==",
+        _ => "!=",
+    }
 }
 
 /// Evaluates `e` to one number.

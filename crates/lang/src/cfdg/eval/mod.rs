@@ -10,6 +10,8 @@ pub mod adjust;
 pub mod agg;
 pub mod expr;
 pub mod frame;
+pub mod func;
+pub mod modval;
 pub mod state;
 
 use crate::cfdg::rand64::Rand64;
@@ -106,6 +108,8 @@ struct Rules<'g> {
     by_shape: Vec<Vec<(f64, &'g [Element])>>,
     /// Per shape number: its parameters' names.
     params: Vec<&'g [String]>,
+    /// Per shape number: how many numbers each parameter takes.
+    sizes: Vec<Vec<usize>>,
     /// Per shape number: whether it is a `path`.
     is_path: Vec<bool>,
 }
@@ -117,7 +121,14 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
     }
     let mut by_shape: Vec<Vec<(f64, f64, bool, &[Element])>> = vec![Vec::new(); 3];
     let mut params: Vec<&[String]> = vec![&[]; 3];
+    let mut sizes: Vec<Vec<usize>> = vec![Vec::new(); 3];
     let mut is_path = vec![false; 3];
+    let sizes_of = |r: &syntax::Rule| -> Vec<usize> {
+        match g.param_types.get(&r.name) {
+            Some(ps) if ps.len() == r.params.len() => ps.iter().map(|p| p.ty.size().unwrap_or(1)).collect(),
+            _ => vec![1; r.params.len()],
+        }
+    };
     for r in &g.rules {
         // A rule for a primitive's name replaces the primitive (cfdg's shape
         // type becomes a rule type, `CFDGImpl::addRule`); so does a 2.x
@@ -127,12 +138,14 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
         if i == by_shape.len() {
             by_shape.push(Vec::new());
             params.push(&r.params);
+            sizes.push(sizes_of(r));
             is_path.push(r.is_path);
         }
         // A path named as a primitive replaces the primitive (trisvgtest).
         if r.is_path {
             is_path[i] = true;
             params[i] = &r.params;
+            sizes[i] = sizes_of(r);
         }
         by_shape[i].push((r.weight, 0.0, r.percent, &r.body));
     }
@@ -162,7 +175,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
                 .collect()
         })
         .collect();
-    Ok(Rules { index, by_shape, params, is_path })
+    Ok(Rules { index, by_shape, params, sizes, is_path })
 }
 
 /// Checks that every shape a design names exists, so a missing rule is a
@@ -194,9 +207,16 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
         Ok(())
     }
     fn arity(r: &syntax::Replacement, rules: &Rules<'_>) -> Result<(), ParseError> {
+        // A name with no rules may be a shape variable, or never reached:
+        // cfdg stops only when it meets it (run/bind.rs).
         let Some(&i) = rules.index.get(r.shape.as_str()) else {
-            return Err(ParseError::single(r.span, format!("shape `{}` has no rules", r.shape)));
+            return Ok(());
         };
+        // Vector parameters take lists that may come from one variable:
+        // their counts are checked when the arguments are evaluated.
+        if rules.sizes[i].iter().any(|&k| k != 1) {
+            return Ok(());
+        }
         let wanted = rules.params[i].len();
         if matches!(&r.args, Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE) {
             return Ok(());
@@ -217,13 +237,34 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
     }
     match &g.start {
         None => Err(ParseError::single(Span::new(1, 1), "no `startshape`")),
-        Some(s) if !rules.index.contains_key(s.shape.as_str()) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
+        // The start shape may be a global shape variable (stackargtest).
+        Some(s) if !rules.index.contains_key(s.shape.as_str()) && !g.defines.iter().any(|d| d.name == s.shape) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
         Some(_) => Ok(()),
     }
 }
 
 mod run;
-pub use run::{render, PathDraw};
+pub use run::PathDraw;
+
+/// The stack the render runs on: user functions recurse through the
+/// evaluator (a few Rust frames per call, about 9 KiB in a debug build), so
+/// [`func::MAX_CALL_DEPTH`] calls need more than the 2 MiB a server or test
+/// thread has. Reserved address space; only the pages used are touched.
+pub const RENDER_STACK: usize = 64 << 20;
+
+/// Renders `g` as cfdg renders it with `opts`, charging `budget` (a step
+/// per rule expanded, per loop iteration and per user function call,
+/// memory per shape kept, a primitive per shape finished), on a thread of
+/// its own with a [`RENDER_STACK`]-byte stack.
+pub fn render(g: &Grammar, opts: &Options, budget: &mut crate::core::budget::Budget) -> Result<Picture, EvalError> {
+    std::thread::scope(|s| {
+        let spawned = std::thread::Builder::new().name("cfdg-render".into()).stack_size(RENDER_STACK).spawn_scoped(s, || run::render(g, opts, budget));
+        match spawned {
+            Ok(h) => h.join().unwrap_or_else(|_| Err(EvalError::BadParam { name: "cfdg".into(), message: "the renderer failed (a bug: please report the design)".into() })),
+            Err(e) => Err(EvalError::BadParam { name: "cfdg".into(), message: format!("cannot start the renderer's thread: {e}") }),
+        }
+    })
+}
 
 /// The terms of an adjustment in evaluation order, cached per adjustment.
 pub(crate) fn terms_of(adj: &syntax::Adjustment) -> Vec<Term> {

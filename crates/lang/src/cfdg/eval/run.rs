@@ -13,6 +13,7 @@ use crate::core::budget::Budget;
 use crate::model::EvalError;
 use std::collections::HashMap;
 
+mod bind;
 mod path;
 pub use path::PathDraw;
 
@@ -25,7 +26,7 @@ struct Renderer<'g> {
     rules: Rules<'g>,
     opts: Options,
     cache: HashMap<usize, (Prepared, Rand64)>,
-    scope: Scope,
+    scope: Scope<'static>,
     current: Rand64,
     unfinished: Vec<Unfinished>,
     finished: Vec<Finished>,
@@ -52,24 +53,49 @@ fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, mak
 
 /// Renders `g` as cfdg renders it with `opts`, charging `budget`: a step
 /// per rule expanded and per loop iteration, memory per shape kept, a
-/// primitive per shape finished.
-pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
+/// primitive per shape finished (on the caller's thread: [`super::render`]
+/// gives it a stack).
+pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
     let rules = compile(g).map_err(|e| EvalError::BadParam { name: "grammar".into(), message: e.to_string() })?;
     // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
-    let mut scope = Scope::default();
+    let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), ..Scope::default() };
+    scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
+    bind::push_predefined(&mut scope);
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
-    let mut global_rand = current;
+    // The globals are traversed with the renderer's own stream, which the
+    // start shape then goes on with (RendererImpl::init, then run's
+    // getInitialShape): a random global changes every draw after it
+    // (arraytest1).
+    let global_rand = &mut current;
     for d in &g.defines {
         if let (false, Value::Expr(e)) = (d.name.starts_with("CF::"), &d.value) {
+            if bind::names_rule(e, &rules, &scope) {
+                if !bind::shape_is_constant(e, &scope) {
+                    global_rand.xor(define_seed(&d.name));
+                }
+                if let Some(v) = bind::shape_value(e, &rules, &scope, global_rand, &[])? {
+                    bind::push_shape_var(&mut scope, &d.name, v);
+                }
+                continue;
+            }
             if !super::adjust::is_constant(e) {
                 global_rand.xor(define_seed(&d.name));
             }
             let mut v = Vec::new();
-            super::expr::eval(e, &scope, &mut global_rand, &mut v)?;
+            super::expr::eval(e, &scope, global_rand, &mut v)?;
             scope.vars.push((d.name.clone(), v));
+        } else if let (false, Value::Adjust(a)) = (d.name.starts_with("CF::"), &d.value) {
+            let constant = super::modval::is_constant(a);
+            if !constant {
+                global_rand.xor(define_seed(&d.name));
+            }
+            let v = super::modval::value_of(a, &scope, global_rand, constant)?;
+            scope.vars.push((super::modval::key(&d.name), v));
         }
     }
+    scope.globals = Some(scope.vars.len());
+    budget.charge_steps(scope.funcs.take_calls())?;
     // Settings that change the picture's framing or copy its shapes are not
     // rendered yet; refusing them beats drawing something cfdg does not.
     for d in &g.defines {
@@ -135,12 +161,11 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         offset = (x, y);
     }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
-    let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
-        return Err(EvalError::BadParam { name: "startshape".into(), message: format!("shape `{}` has no rules", start.shape) });
-    };
+    // The start shape may be a global shape variable (stackargtest).
+    let (start_shape, bound) = r.target(start)?;
     let mut init = State::initial();
     // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
-    let mut start_params = Vec::new();
+    let mut start_params = bound.unwrap_or_default();
     if let Some(a) = &start.args {
         super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
     }
@@ -182,15 +207,14 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         let rules = &r.rules.by_shape[s.shape];
         let Some(&(_, body)) = rules.iter().find(|(w, _)| *w >= choice).or(rules.last()) else { continue };
         r.current = s.state.seed;
-        let names = r.rules.params[s.shape];
         let depth = r.scope.vars.len();
-        for (n, v) in names.iter().zip(&s.params) {
-            r.scope.vars.push((n.clone(), vec![*v]));
-        }
+        r.bind_params(s.shape, &s.params);
         r.params = std::mem::take(&mut s.params);
         r.body(body, &s.state)?;
         r.scope.vars.truncate(depth);
+        r.charge_calls()?;
     }
+    r.charge_calls()?;
     Ok(r.finish(background))
 }
 
@@ -276,7 +300,13 @@ impl Renderer<'_> {
 
     fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> (Prepared, Rand64) {
         let key = adj as *const Adjustment as usize;
-        cached(&mut self.cache, key, || (prepare(adj), term_seed(adj, shape, args))).clone()
+        let scope = &self.scope;
+        cached(&mut self.cache, key, || {
+            let mut seed = term_seed(adj, shape, args);
+            super::modval::fold_seeds(adj, scope, &mut seed);
+            (prepare(adj), seed)
+        })
+        .clone()
     }
 
     fn body(&mut self, body: &[Element], parent: &State) -> Result<(), EvalError> {
@@ -291,18 +321,23 @@ impl Renderer<'_> {
     fn element(&mut self, e: &Element, parent: &State) -> Result<(), EvalError> {
         match e {
             Element::Replace(rep) => {
-                let shape = *self.rules.index.get(rep.shape.as_str()).ok_or_else(|| EvalError::BadParam { name: rep.shape.clone(), message: "shape has no rules".into() })?;
+                let (shape, bound) = self.target(rep)?;
                 let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
                 let mut params = Vec::new();
-                match &rep.args {
-                    Some(syntax::Expr::Var(v, _)) if v == syntax::REUSE => {
+                let wanted: usize = self.rules.sizes[shape].iter().sum();
+                match (&rep.args, bound) {
+                    (_, Some(b)) => params = b,
+                    (Some(syntax::Expr::Var(v, _)), None) if v == syntax::REUSE => {
                         params = self.params.clone();
-                        if params.len() != self.rules.params[shape].len() {
+                        if params.len() != wanted {
                             return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: `(=)` needs a parent with the same parameters", rep.span.line, rep.span.column) });
                         }
                     }
-                    Some(a) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
-                    None => {}
+                    (Some(a), None) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
+                    (None, None) => {}
+                }
+                if params.len() != wanted {
+                    return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape `{}` takes {wanted} numbers, given {}", rep.span.line, rep.span.column, rep.shape, params.len()) });
                 }
                 let mut child = *parent;
                 self.current.xor(seed);
@@ -361,16 +396,38 @@ impl Renderer<'_> {
             }
             // The parser allows these only in a path, which `path_shape` walks.
             Element::PathOp(_) | Element::PathCommand(_) => Ok(()),
+            Element::Define(d) if matches!(&d.value, Value::Expr(e) if bind::names_rule(e, &self.rules, &self.scope)) => {
+                let Value::Expr(e) = &d.value else { return Ok(()) };
+                if !bind::shape_is_constant(e, &self.scope) {
+                    self.current.xor(define_seed(&d.name));
+                }
+                if let Some(v) = bind::shape_value(e, &self.rules, &self.scope, &mut self.current, &self.params)? {
+                    bind::push_shape_var(&mut self.scope, &d.name, v);
+                }
+                Ok(())
+            }
             Element::Define(d) => {
                 // A constant definition is folded at compile time and never
                 // traversed (ASTdefine::traverse returns for non-stack defines).
-                if !matches!(&d.value, Value::Expr(e) if super::adjust::is_constant(e)) {
+                let constant = match &d.value {
+                    Value::Expr(e) => super::adjust::is_constant(e),
+                    Value::Adjust(a) => super::modval::is_constant(a),
+                    Value::Shape(_) => true,
+                };
+                if !constant {
                     self.current.xor(define_seed(&d.name));
                 }
-                if let Value::Expr(e) = &d.value {
-                    let mut v = Vec::new();
-                    super::expr::eval(e, &self.scope, &mut self.current, &mut v)?;
-                    self.scope.vars.push((d.name.clone(), v));
+                match &d.value {
+                    Value::Expr(e) => {
+                        let mut v = Vec::new();
+                        super::expr::eval(e, &self.scope, &mut self.current, &mut v)?;
+                        self.scope.vars.push((d.name.clone(), v));
+                    }
+                    Value::Adjust(a) => {
+                        let v = super::modval::value_of(a, &self.scope, &mut self.current, constant)?;
+                        self.scope.vars.push((super::modval::key(&d.name), v));
+                    }
+                    Value::Shape(_) => {}
                 }
                 Ok(())
             }

@@ -80,6 +80,10 @@ fn func_bytes(name: &str) -> &'static [u8] {
         "bitleft" => b"\x91\x47\xE5\xE5\x0D\xAA",
         // cfdg appends these as C strings, so this one stops at its zero byte.
         "bitright" => b"\xF1\xAB\x17",
+        "dot" => b"\x60\xAA\xB7\xE1\xB9\x06",
+        "cross" => b"\x39\x38\x40\xE5\x93\xF8",
+        "hsb2rgb" => b"\xC3\xD4\x57\x04\xAF\x9F",
+        "rgb2hsb" => b"\xD0\x2A\x55\x7A\x53\x97",
         // if() and select() (ASTselect): the selector's list, then these bytes.
         "if" | "select" => b"\xB5\xA2\x4A\x74\xA9\xDF",
         _ => b"",
@@ -144,6 +148,78 @@ pub fn expr_entropy(e: &Expr, out: &mut Vec<u8>) {
             let f = func_bytes(name);
             // A user function hashes its definition's name instead.
             out.extend_from_slice(if f.is_empty() { name.as_bytes() } else { f });
+        }
+        // ASTarray: the name, then the index list (`ASTarray::compile`).
+        Expr::Index(name, args, _) => {
+            out.extend_from_slice(name.as_bytes());
+            expr_entropy(args, out);
+        }
+        // ASTlet is a user function named `let` whose arguments are its
+        // non-constant definitions, appended into one list (`ASTlet::compile`,
+        // `ASTexpression::Append`, which flattens lists); a constant let is
+        // folded into a number whose text is that same entropy.
+        Expr::Let(defs, _, _) => {
+            let mut consts: Vec<&str> = Vec::new();
+            let mut args: Vec<&Expr> = Vec::new();
+            for (name, e) in defs {
+                if constant_with(e, &consts) {
+                    consts.push(name);
+                } else {
+                    args.push(e);
+                }
+            }
+            match args.as_slice() {
+                [] => {}
+                [one] => expr_entropy(one, out),
+                many => {
+                    for e in many {
+                        match e {
+                            Expr::Cons(v) => v.iter().for_each(|c| expr_entropy(c, out)),
+                            e => expr_entropy(e, out),
+                        }
+                    }
+                    out.extend_from_slice(CONS);
+                }
+            }
+            out.extend_from_slice(b"let");
+        }
+    }
+}
+
+/// Whether `name` is one of cfdg's built-in functions (`ASTfunction::GetFuncType`),
+/// not a user function.
+pub fn is_builtin(name: &str) -> bool {
+    !func_bytes(name).is_empty()
+}
+
+/// Whether cfdg folds `e` at compile time (`isConstant`): numbers and pure
+/// built-ins of them; never a variable, a random draw or a user function
+/// (`ASTuserFunction::compile` sets `isConstant = false`).
+pub fn is_constant(e: &Expr) -> bool {
+    constant_with(e, &[])
+}
+
+/// [`is_constant`] where the names in `consts` (a `let`'s constant
+/// definitions) are constant too.
+fn constant_with(e: &Expr, consts: &[&str]) -> bool {
+    let c = |e: &Expr| constant_with(e, consts);
+    match e {
+        Expr::Num(..) => true,
+        Expr::Var(name, _) => consts.contains(&name.as_str()),
+        Expr::Index(..) => false,
+        Expr::Unary(_, a) | Expr::Paren(a) => c(a),
+        Expr::Binary(_, a, b) => c(a) && c(b),
+        Expr::Cons(v) => v.iter().all(c),
+        Expr::Call(name, args, _) => is_builtin(name) && !name.starts_with("rand") && args.as_ref().as_ref().is_none_or(c),
+        Expr::Let(defs, body, _) => {
+            let mut inner = consts.to_vec();
+            for (name, e) in defs {
+                if !constant_with(e, &inner) {
+                    return false;
+                }
+                inner.push(name);
+            }
+            constant_with(body, &inner)
         }
     }
 }

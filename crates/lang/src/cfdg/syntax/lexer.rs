@@ -148,6 +148,10 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             continue;
         }
         let ch = src[i..].chars().next().unwrap_or('?');
+        if ch == '@' {
+            // `import @ns file` and `@ns` names (cfdg.l's namespace forms).
+            return Err(ParseError::single(span, "namespaces (`@`) are not supported yet (docs/cfdg.md)"));
+        }
         return Err(ParseError::single(span, format!("unexpected character `{ch}`")));
     }
     out.push(Token { v3: false, included: false, tok: Tok::Eof, span: Span::new(line, col) });

@@ -14,7 +14,7 @@ mod entropy;
 pub mod lexer;
 mod parser;
 
-pub use entropy::{adjust_entropy, define_seed, loop_seed, term_seed};
+pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
 pub use parser::{is_path_op, parse, parse_with, Loader, REUSE};
 
 use crate::Span;
@@ -43,6 +43,68 @@ pub struct Grammar {
     pub background: Option<Adjustment>,
     /// Warnings found while parsing.
     pub warnings: Vec<crate::Diagnostic>,
+    /// User functions (`number f(number x) = expr`), by name; a later
+    /// definition of the same name replaces an earlier one.
+    pub functions: std::collections::BTreeMap<String, Function>,
+    /// The typed parameters of each shape or path that declares them (the
+    /// names are also in [`Rule::params`]; a shape missing here takes
+    /// one number per name).
+    pub param_types: std::collections::BTreeMap<String, Vec<Param>>,
+}
+
+/// A parameter's or a function's type, as cfdg's `AST::decodeType`
+/// (`ast.cpp`) reads it: `number`, `natural`, `vectorN` (N numbers, 2–99),
+/// `shape` or `adjustment`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ParamType {
+    /// One number.
+    Number,
+    /// One natural number (checked against `CF::MaxNatural` when bound).
+    Natural,
+    /// A tuple of this many numbers.
+    Vector(usize),
+    /// A shape with its arguments bound.
+    Shape,
+    /// An adjustment.
+    Adjustment,
+}
+
+impl ParamType {
+    /// How many numbers a value of this type holds (shapes and adjustments: none).
+    pub fn size(self) -> Option<usize> {
+        match self {
+            ParamType::Number | ParamType::Natural => Some(1),
+            ParamType::Vector(n) => Some(n),
+            ParamType::Shape | ParamType::Adjustment => None,
+        }
+    }
+}
+
+/// A typed parameter of a shape, a path or a user function.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Param {
+    /// Its name.
+    pub name: String,
+    /// Its type.
+    pub ty: ParamType,
+}
+
+/// A user function `TYPE NAME(params) = expression` (`function_definition`
+/// in `cfdg.ypp`, `ASTdefine` of kind `FunctionDefine`, `builder.cpp`
+/// `MakeDefinition`): evaluated on each call with its parameters bound and
+/// only the globals visible (`ASTuserFunction::evaluate`, `astexpression.cpp`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Function {
+    /// Its name.
+    pub name: String,
+    /// Its parameters, in order.
+    pub params: Vec<Param>,
+    /// What it returns.
+    pub ret: ParamType,
+    /// Its body.
+    pub body: Expr,
+    /// Where it is defined.
+    pub span: Span,
 }
 
 /// One rule of a shape.
@@ -335,8 +397,13 @@ pub enum Expr {
     Paren(Box<Expr>),
     /// A list `a, b` or the several arguments of a term.
     Cons(Vec<Expr>),
-    /// A function call by its name (`rand`, `sin`, …; `rand.` for `a..b`, `rand+/-` for `a ± b`).
+    /// A function call by its name (`rand`, `sin`, …; `rand.` for `a..b`,
+    /// `rand+/-` for `a ± b`; a user function's name).
     Call(String, Box<Option<Expr>>, Span),
+    /// `let(a = e; b = e; body)` (`ASTlet`): the definitions in order, then the body.
+    Let(Vec<(String, Expr)>, Box<Expr>, Span),
+    /// `name[index]` or `name[index, length, stride]` (`ASTarray`): elements of a vector.
+    Index(String, Box<Expr>, Span),
 }
 
 impl Expr {

@@ -4,10 +4,13 @@
 //! `shape` keyword, a `loop` or a `CF::` setting is 3.x, otherwise 2.x.
 
 use super::lexer::{lex, Tok, Token};
-use super::{Adjustment, Define, Element, Expr, Grammar, Loop, Replacement, Rule, Term, TermKind, Value, Version};
+use super::{Adjustment, Define, Element, Expr, Grammar, Loop, Param, Replacement, Rule, Term, TermKind, Value, Version};
 use crate::{ParseError, Span};
 
+mod expr;
+mod func;
 mod path;
+use expr::const_value;
 pub use path::is_path_op;
 
 /// The argument list `(=)` stands for: the parent shape's parameters.
@@ -55,7 +58,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default() };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None };
     p.grammar()
 }
 
@@ -68,6 +71,10 @@ struct Parser<'a> {
     imports: usize,
     /// Whether a path body or a path command's adjustment is being read ([`path`]).
     path: path::PathState,
+    /// The typed parameters the last parameter list declared ([`func`]).
+    last_params: Vec<Param>,
+    /// The start shape a `CF::StartShape` setting just gave ([`func`]).
+    start_setting: Option<Replacement>,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -156,7 +163,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default() };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -196,7 +203,17 @@ impl Parser<'_> {
                     self.toks.splice(at..at, more);
                 }
                 Tok::Word(w) if w == "path" && !matches!(self.peek_at(1), Tok::Punct("=")) => {
-                    g.rules.push(self.path_rule(span)?);
+                    self.last_params.clear();
+                    let rule = self.path_rule(span)?;
+                    if !self.last_params.is_empty() {
+                        g.param_types.insert(rule.name.clone(), std::mem::take(&mut self.last_params));
+                    }
+                    g.rules.push(rule);
+                    current_shape = None;
+                }
+                Tok::Word(_) if self.function_header().is_some() => {
+                    let f = self.function()?;
+                    g.functions.insert(f.name.clone(), f);
                     current_shape = None;
                 }
                 Tok::Word(w) if w == "shape" => {
@@ -207,6 +224,7 @@ impl Parser<'_> {
                     current_params = if self.is_punct("(") {
                         let p = self.param_list()?;
                         declared.insert(name.clone(), p.clone());
+                        g.param_types.insert(name.clone(), std::mem::take(&mut self.last_params));
                         p
                     } else {
                         declared.get(&name).cloned().unwrap_or_default()
@@ -254,8 +272,8 @@ impl Parser<'_> {
                 Tok::Word(_) if matches!(self.peek_at(1), Tok::Punct("=")) => {
                     let d = self.define()?;
                     if d.name == "CF::StartShape" {
-                        if let Value::Shape(s) = &d.value {
-                            g.start = Some(Replacement { shape: s.clone(), adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span: d.span });
+                        if let Some(start) = self.start_setting.take() {
+                            g.start = Some(start);
                         }
                     }
                     current_shape = None;
@@ -276,7 +294,10 @@ impl Parser<'_> {
         let value = if self.is_punct("[") {
             Value::Adjust(self.adjustment()?)
         } else if name == "CF::StartShape" {
-            Value::Shape(self.name("a shape name")?.0)
+            let start = self.start_setting()?;
+            let shape = start.shape.clone();
+            self.start_setting = Some(start);
+            Value::Shape(shape)
         } else {
             Value::Expr(self.expr(0)?)
         };
@@ -382,7 +403,8 @@ impl Parser<'_> {
                 self.bump();
                 Ok(Element::Switch { selector, cases, otherwise, span })
             }
-            "transform" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
+            // `trans` is `transform`'s short form here too (cfdg.l: both are MODTYPE transform).
+            "transform" | "trans" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
                 self.bump();
                 let mut adjusts = Vec::new();
                 while self.is_punct("[") {
@@ -531,250 +553,4 @@ impl Parser<'_> {
         }
         Ok(Adjustment { canonical, terms })
     }
-
-    fn starts_exp(&self) -> bool {
-        match self.peek() {
-            Tok::Num(_) | Tok::Punct("(") | Tok::Punct("-") | Tok::Punct("+") => true,
-            Tok::Word(w) => term_kind(w).is_none() && !(self.path.terms && path::is_path_term(w)),
-            _ => false,
-        }
-    }
-
-    /// An adjustment argument (`exp` in cfdg.ypp): numbers, parenthesised
-    /// expressions, calls, variables, unary signs, `..` and `+/-`.
-    fn exp(&mut self) -> Result<Expr, ParseError> {
-        self.enter()?;
-        let mut left = self.exp_atom()?;
-        while self.is_punct("..") || self.is_punct("+/-") {
-            let op = if self.is_punct("..") { "rand." } else { "rand+/-" };
-            let span = self.span();
-            self.bump();
-            let right = self.exp_atom()?;
-            left = Expr::Call(op.into(), Box::new(Some(Expr::Cons(vec![left, right]))), span);
-        }
-        self.depth -= 1;
-        Ok(left)
-    }
-
-    fn exp_atom(&mut self) -> Result<Expr, ParseError> {
-        self.enter()?;
-        let e = match self.peek().clone() {
-            Tok::Punct("-") => {
-                self.bump();
-                Expr::Unary('N', Box::new(self.exp_atom()?))
-            }
-            Tok::Punct("+") => {
-                self.bump();
-                Expr::Unary('P', Box::new(self.exp_atom()?))
-            }
-            _ => self.primary()?,
-        };
-        self.depth -= 1;
-        Ok(e)
-    }
-
-    fn primary(&mut self) -> Result<Expr, ParseError> {
-        let span = self.span();
-        match self.peek().clone() {
-            Tok::Num(n) => {
-                self.bump();
-                let pct = n.ends_with('%');
-                let v: f64 = n.trim_end_matches('%').parse().unwrap_or(0.0);
-                Ok(Expr::Num(if pct { v / 100.0 } else { v }, n))
-            }
-            Tok::Punct("(") => {
-                self.bump();
-                let e = self.expr(0)?;
-                self.expect(")")?;
-                Ok(Expr::Paren(Box::new(e)))
-            }
-            Tok::Word(w) if term_kind(&w).is_none() => {
-                self.bump();
-                if self.is_punct("(") {
-                    let args = self.call_args(&w)?;
-                    Ok(Expr::Call(w, Box::new(args), span))
-                } else {
-                    Ok(Expr::Var(w, span))
-                }
-            }
-            _ => self.err("expected a number, a name or `(`"),
-        }
-    }
-
-    /// `( a, b, … )` after a function or shape name: each argument held in
-    /// parentheses and the list always a list, as cfdg's arglist builds it
-    /// (its entropy shows it); `rand()` and `rand(x)` get cfdg's textless bounds.
-    fn call_args(&mut self, name: &str) -> Result<Option<Expr>, ParseError> {
-        self.expect("(")?;
-        // `NAME(=)`: the parent's parameters, reused (cfdg's SimpleParentArgs).
-        if self.is_punct("=") && matches!(self.peek_at(1), Tok::Punct(")")) {
-            self.bump();
-            self.bump();
-            return Ok(Some(Expr::Var(REUSE.into(), self.span())));
-        }
-        // `if` is a keyword whose parentheses hold a bare list (`IF '(' exp2 ')'`).
-        if name == "if" {
-            let e = if self.is_punct(")") { None } else { Some(self.expr(0)?) };
-            self.expect(")")?;
-            return Ok(e);
-        }
-        let mut items = Vec::new();
-        while !self.is_punct(")") {
-            items.push(Expr::Paren(Box::new(self.expr(1)?)));
-            if !self.is_punct(",") {
-                break;
-            }
-            self.bump();
-        }
-        self.expect(")")?;
-        let zero = || Expr::Num(0.0, String::new());
-        Ok(match (name, items.len()) {
-            ("rand" | "rand_static" | "randint", 0) => Some(Expr::Cons(vec![zero(), Expr::Num(if name == "randint" { 2.0 } else { 1.0 }, String::new())])),
-            ("rand" | "rand_static" | "randint", 1) => Some(Expr::Cons(vec![zero(), items.remove(0)])),
-            (_, 0) => None,
-            _ => Some(Expr::Cons(items)),
-        })
-    }
-
-    /// `(number a, natural b, …)` after `shape NAME`: numeric parameters only.
-    fn param_list(&mut self) -> Result<Vec<String>, ParseError> {
-        self.expect("(")?;
-        let mut names = Vec::new();
-        while !self.is_punct(")") {
-            let ty = match self.peek().clone() {
-                Tok::Word(w) => w,
-                _ => return self.err("expected a parameter type"),
-            };
-            // An untyped parameter is a number.
-            let n = if matches!(self.peek_at(1), Tok::Punct(",") | Tok::Punct(")")) {
-                self.name("a parameter name")?.0
-            } else {
-                if !matches!(ty.as_str(), "number" | "natural") {
-                    return self.err("only `number` and `natural` parameters are supported yet");
-                }
-                self.bump();
-                self.name("a parameter name")?.0
-            };
-            if self.is_punct("=") {
-                return self.err("parameter defaults are not supported yet");
-            }
-            names.push(n);
-            if !self.is_punct(",") {
-                break;
-            }
-            self.bump();
-        }
-        self.expect(")")?;
-        Ok(names)
-    }
-
-    /// A full expression (`exp2`/`exp3`) by precedence climbing; `,` makes a list.
-    fn expr(&mut self, min: u8) -> Result<Expr, ParseError> {
-        self.enter()?;
-        let mut left = match self.peek().clone() {
-            Tok::Punct("-") => {
-                self.bump();
-                Expr::Unary('N', Box::new(self.expr(8)?))
-            }
-            Tok::Punct("+") => {
-                self.bump();
-                Expr::Unary('P', Box::new(self.expr(8)?))
-            }
-            Tok::Punct("!") => {
-                self.bump();
-                Expr::Unary('!', Box::new(self.expr(8)?))
-            }
-            _ => self.primary()?,
-        };
-        loop {
-            let (op, prec, right_assoc): (char, u8, bool) = match self.peek() {
-                Tok::Punct(",") => (',', 0, true),
-                Tok::Punct("^^") => ('X', 1, false),
-                Tok::Punct("||") => ('|', 2, false),
-                Tok::Punct("&&") => ('&', 3, false),
-                Tok::Punct("==") => ('=', 4, false),
-                Tok::Punct("<>") | Tok::Punct("!=") => ('n', 4, false),
-                Tok::Punct("<") => ('<', 5, false),
-                Tok::Punct("<=") => ('L', 5, false),
-                Tok::Punct(">") => ('>', 5, false),
-                Tok::Punct(">=") => ('G', 5, false),
-                Tok::Punct("..") => ('.', 6, false),
-                Tok::Punct("+/-") => ('~', 6, false),
-                Tok::Punct("+") => ('+', 7, false),
-                Tok::Punct("-") => ('-', 7, false),
-                Tok::Punct("--") => ('_', 7, false),
-                Tok::Punct("*") => ('*', 8, false),
-                Tok::Punct("/") => ('/', 8, false),
-                Tok::Punct("^") => ('^', 10, true),
-                _ => break,
-            };
-            if prec < min {
-                break;
-            }
-            let span = self.span();
-            self.bump();
-            let right = self.expr(if right_assoc { prec } else { prec + 1 })?;
-            left = match op {
-                ',' => match left {
-                    Expr::Cons(mut v) => {
-                        match right {
-                            Expr::Cons(w) => v.extend(w),
-                            r => v.push(r),
-                        }
-                        Expr::Cons(v)
-                    }
-                    l => match right {
-                        Expr::Cons(mut w) => {
-                            w.insert(0, l);
-                            Expr::Cons(w)
-                        }
-                        r => Expr::Cons(vec![l, r]),
-                    },
-                },
-                '.' => Expr::Call("rand.".into(), Box::new(Some(Expr::Cons(vec![left, right]))), span),
-                '~' => Expr::Call("rand+/-".into(), Box::new(Some(Expr::Cons(vec![left, right]))), span),
-                op => Expr::Binary(op, Box::new(left), Box::new(right)),
-            };
-        }
-        self.depth -= 1;
-        Ok(left)
-    }
-}
-
-/// The value of a constant case expression: numbers, signs, arithmetic,
-/// parentheses and a few pure functions (kept here, below the evaluator).
-fn const_value(e: &Expr) -> Option<f64> {
-    let v = match e {
-        Expr::Num(v, _) => *v,
-        Expr::Paren(a) => const_value(a)?,
-        Expr::Unary('N', a) => -const_value(a)?,
-        Expr::Unary('P', a) => const_value(a)?,
-        Expr::Binary(op, a, b) => {
-            let (x, y) = (const_value(a)?, const_value(b)?);
-            match op {
-                '+' => x + y,
-                '-' => x - y,
-                '*' => x * y,
-                '/' => x / y,
-                '^' => x.powf(y),
-                _ => return None,
-            }
-        }
-        Expr::Call(name, args, _) => {
-            let items = args.as_ref().as_ref()?.items();
-            let x = match items.as_slice() {
-                [a] => const_value(a)?,
-                _ => return None,
-            };
-            match name.as_str() {
-                "abs" => x.abs(),
-                "floor" => x.floor(),
-                "ceiling" => x.ceil(),
-                "sqrt" => x.sqrt(),
-                _ => return None,
-            }
-        }
-        _ => return None,
-    };
-    v.is_finite().then_some(v)
 }

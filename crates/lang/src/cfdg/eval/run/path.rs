@@ -219,11 +219,9 @@ impl Renderer<'_> {
         // traversePath takes the shape's stream and leaves it as the
         // renderer's current one: the rule that made the path goes on with it.
         self.current = state.seed;
-        let saved_params = std::mem::replace(&mut self.params, params);
         let depth = self.scope.vars.len();
-        for (n, v) in self.rules.params[shape].iter().zip(&self.params) {
-            self.scope.vars.push((n.clone(), vec![*v]));
-        }
+        self.bind_params(shape, &params);
+        let saved_params = std::mem::replace(&mut self.params, params);
         let mut ctx = Ctx::new();
         let walked = self.path_body(body, &state, false, &mut ctx);
         self.scope.vars.truncate(depth);
