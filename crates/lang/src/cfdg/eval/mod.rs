@@ -11,6 +11,7 @@ pub mod agg;
 pub mod expr;
 pub mod frame;
 pub mod state;
+pub mod tile;
 
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, Element, Grammar, Term, Value};
@@ -64,6 +65,9 @@ pub struct Finished {
     pub box_area: f64,
     /// A path's index in [`Picture::paths`] (0 for a primitive).
     pub path: usize,
+    /// Its bounds in design space (cfdg's `FinishedShape::mBounds`): where
+    /// a tiled design places its copies.
+    pub bounds: frame::Bounds,
 }
 
 /// A rendered picture: the shapes cfdg would draw, in drawing order, and the framing.
@@ -89,6 +93,9 @@ pub struct Picture {
     pub finished: u64,
     /// What each path shape draws: one entry per command, in order.
     pub paths: Vec<Vec<PathDraw>>,
+    /// The tiling and the final scale (design units to pixels) when the
+    /// design is tiled or a frieze: the drawing repeats each shape.
+    pub tiling: Option<(tile::Tiling, f64)>,
 }
 
 #[derive(Debug, Clone)]

@@ -4,6 +4,7 @@
 
 use super::expr::{scalar, Scope};
 use super::frame::{bounds_polygon, pop_heap, push_heap, Bounds};
+use super::tile::{Frieze, Tiling};
 use super::adjust::{apply_prepared, prepare, Prepared};
 use super::state::{Hsba, State};
 use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
@@ -33,6 +34,8 @@ struct Renderer<'g> {
     scale_area: f64,
     min_area: f64,
     fixed_border: f64,
+    /// cfdg's `mFixedBorderY` (differs from x only for a frieze).
+    fixed_border_y: f64,
     shape_border: f64,
     shape_count: u64,
     max_shapes: u64,
@@ -44,6 +47,11 @@ struct Renderer<'g> {
     sized: Option<Bounds>,
     /// What each finished path shape draws, by [`Finished::path`].
     paths: Vec<Vec<PathDraw>>,
+    /// The design's tiling or frieze (`CF::Tile`).
+    tiling: Option<Tiling>,
+    /// The canvas a tiled design is drawn on (cfdg's `m_width`, `m_height`
+    /// after `initBounds`).
+    tile_canvas: Option<(i64, i64)>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -73,7 +81,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     // Settings that change the picture's framing or copy its shapes are not
     // rendered yet; refusing them beats drawing something cfdg does not.
     for d in &g.defines {
-        if matches!(d.name.as_str(), "CF::Tile" | "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
+        if matches!(d.name.as_str(), "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
             return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
         }
     }
@@ -101,6 +109,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     let shape_border = if shape_border <= 0.0 { 1.0 } else { shape_border };
     let background = background(g, &scope)?;
     let sized = sized(g, &scope)?;
+    let tiling = super::tile::tiling(g, &scope)?;
     let mut r = Renderer {
         rules,
         opts: *opts,
@@ -113,6 +122,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         scale_area: 0.0,
         min_area: min_size * min_size,
         fixed_border,
+        fixed_border_y: fixed_border,
         shape_border,
         shape_count: 0,
         max_shapes,
@@ -121,6 +131,8 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         params: Vec::new(),
         sized: None,
         paths: Vec::new(),
+        tiling,
+        tile_canvas: None,
     };
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
     // offsets the start shape (RendererImpl::initBounds, getInitialShape).
@@ -133,6 +145,25 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         r.scale_area = scale * scale;
         r.sized = Some(r.bounds);
         offset = (x, y);
+    }
+    // A tiled design's bounds are its tile, without borders; a frieze's
+    // repeating axis is the tile's and has no fixed border (initBounds).
+    if let Some(t) = &tiling {
+        let (tx, ty) = t.size;
+        match t.frieze {
+            Frieze::None => {
+                r.fixed_border = 0.0;
+                r.fixed_border_y = 0.0;
+                r.shape_border = 0.0;
+                r.bounds = Bounds { min_x: -tx / 2.0, max_x: tx / 2.0, min_y: -ty / 2.0, max_y: ty / 2.0 };
+                let (scale, w, h, _) = r.bounds.compute_scale_exact(i64::from(opts.width), i64::from(opts.height), 0.0, 0.0, true);
+                r.scale_area = scale * scale;
+                r.tile_canvas = Some((w, h));
+            }
+            Frieze::X => r.fixed_border = 0.0,
+            Frieze::Y => r.fixed_border_y = 0.0,
+        }
+        offset = (offset.0 + t.offset.0, offset.1 + t.offset.1);
     }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     let Some(&start_shape) = r.rules.index.get(start.shape.as_str()) else {
@@ -261,16 +292,25 @@ impl Renderer<'_> {
                     return Ok(());
                 }
             }
+            None if self.tile_canvas.is_some() => {}
             None => {
                 self.bounds.merge(&b.dilate(self.shape_border));
-                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border);
+                if let Some(t) = &self.tiling {
+                    // A frieze's repeating axis keeps the tile's extent.
+                    match t.frieze {
+                        Frieze::X => (self.bounds.min_x, self.bounds.max_x) = (-t.size.0 / 2.0, t.size.0 / 2.0),
+                        Frieze::Y => (self.bounds.min_y, self.bounds.max_y) = (-t.size.1 / 2.0, t.size.1 / 2.0),
+                        Frieze::None => {}
+                    }
+                }
+                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border_y);
                 self.scale_area = scale * scale;
             }
         }
         self.shape_count += 1;
         self.budget.charge_primitive(2)?;
         self.budget.reserve_memory(SHAPE_BYTES)?;
-        self.finished.push(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path });
+        self.finished.push(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path, bounds: b });
         Ok(())
     }
 
@@ -399,7 +439,18 @@ impl Renderer<'_> {
 
     /// Sorts, frames and drops what cfdg would not draw (`outputFinal`, `drawShape`).
     fn finish(mut self, background: [f64; 4]) -> Picture {
-        let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border, self.sized.is_some());
+        // A tiled design's canvas was fixed by its tile; a frieze's is the
+        // final bounds fitted exactly (the end of RendererImpl::run), and
+        // the output is framed again on that canvas (outputFinal).
+        let (mut cw, mut ch) = (i64::from(self.opts.width), i64::from(self.opts.height));
+        let exact = self.sized.is_some() || self.tiling.is_some();
+        if let Some(c) = self.tile_canvas {
+            (cw, ch) = c;
+        } else if self.tiling.is_some() {
+            let (_, w, h, _) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, true);
+            (cw, ch) = (w, h);
+        }
+        let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, exact);
         let area = scale * scale;
         let finished = self.finished.len() as u64;
         self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
@@ -413,13 +464,14 @@ impl Renderer<'_> {
             shapes: self.finished,
             width: w.clamp(0, u32::MAX as i64) as u32,
             height: h.clamp(0, u32::MAX as i64) as u32,
-            canvas_width: self.opts.width,
-            canvas_height: self.opts.height,
+            canvas_width: if self.tiling.is_some() { cw.clamp(0, u32::MAX as i64) as u32 } else { self.opts.width },
+            canvas_height: if self.tiling.is_some() { ch.clamp(0, u32::MAX as i64) as u32 } else { self.opts.height },
             to_pixels,
             background,
             variation: self.opts.variation,
             finished,
             paths: self.paths,
+            tiling: self.tiling.map(|t| (t, scale)),
         }
     }
 }
