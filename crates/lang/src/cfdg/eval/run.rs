@@ -52,6 +52,9 @@ struct Renderer<'g> {
     /// The canvas a tiled design is drawn on (cfdg's `m_width`, `m_height`
     /// after `initBounds`).
     tile_canvas: Option<(i64, i64)>,
+    /// cfdg's `mScale` as a tiled design keeps it: guessed at the first
+    /// finished shape, 0 before.
+    first_scale: f64,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -133,6 +136,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         paths: Vec::new(),
         tiling,
         tile_canvas: None,
+        first_scale: 0.0,
     };
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
     // offsets the start shape (RendererImpl::initBounds, getInitialShape).
@@ -273,12 +277,26 @@ impl Renderer<'_> {
             }
             return Ok(());
         }
+        if self.tile_canvas.is_some() {
+            self.guess_scale(&state);
+        }
         let b = Bounds::of_polygon(&state.transform, &self.polygons[shape]);
         if !b.valid() {
             return Ok(());
         }
         let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
         self.finish_shape(shape, state, b, box_area, 0)
+    }
+
+    /// cfdg's `mScale` of a tiled design: guessed from the first finished
+    /// shape, `(m_width + m_height) / sqrt|det|` on the tile's canvas
+    /// (`processPrimShapeSiblings`), then kept.
+    fn guess_scale(&mut self, state: &State) -> f64 {
+        if self.first_scale == 0.0 {
+            let (w, h) = self.tile_canvas.unwrap_or((i64::from(self.opts.width), i64::from(self.opts.height)));
+            self.first_scale = (w + h) as f64 / state.transform.determinant().abs().sqrt();
+        }
+        self.first_scale
     }
 
     /// Keeps a finished shape of bounds `b` (unless a sized design drops it

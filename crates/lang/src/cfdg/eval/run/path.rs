@@ -236,7 +236,13 @@ impl Renderer<'_> {
             ctx.cmds.push(PathDraw { vertices, flags: pf::FILL, width: DEFAULT_WIDTH, miter: MITER_LIMIT, transform: state.transform, rgba: state.color.rgba() });
         }
         // processPrimShapeSiblings: the scale guessed before any bounds.
-        let scale = if self.scale_area > 0.0 { self.scale_area.sqrt() } else { f64::from(self.opts.width + self.opts.height) / state.area().sqrt() };
+        // A tiled design's scale never follows its bounds, so cfdg keeps the
+        // guess made at its first finished shape (`mScale`).
+        let scale = match self.tile_canvas {
+            Some(_) => self.guess_scale(&state),
+            None if self.scale_area > 0.0 => self.scale_area.sqrt(),
+            None => f64::from(self.opts.width + self.opts.height) / state.area().sqrt(),
+        };
         let mut b = Bounds::default();
         for c in &ctx.cmds {
             if let Some([x0, y0, x1, y1]) = super::super::agg::bounds(&c.vertices, &c.transform, c.flags, c.width, c.miter, scale * 0.1) {
