@@ -11,6 +11,7 @@ pub mod agg;
 pub mod expr;
 pub mod frame;
 pub mod state;
+pub mod symmetry;
 pub mod tile;
 
 use crate::cfdg::rand64::Rand64;

@@ -55,6 +55,9 @@ struct Renderer<'g> {
     /// cfdg's `mScale` as a tiled design keeps it: guessed at the first
     /// finished shape, 0 before.
     first_scale: f64,
+    /// The transforms of `CF::Symmetry`: every primitive and path is
+    /// finished once under each (`processPrimShape`).
+    symmetry: Vec<super::state::Affine>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -84,7 +87,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     // Settings that change the picture's framing or copy its shapes are not
     // rendered yet; refusing them beats drawing something cfdg does not.
     for d in &g.defines {
-        if matches!(d.name.as_str(), "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
+        if matches!(d.name.as_str(), "CF::Time" | "CF::Frame" | "CF::FrameTime") {
             return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
         }
     }
@@ -137,7 +140,9 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
         tiling,
         tile_canvas: None,
         first_scale: 0.0,
+        symmetry: Vec::new(),
     };
+    r.symmetry = super::symmetry::symmetry(g, &r.scope, r.tiling.as_ref(), r.budget)?;
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
     // offsets the start shape (RendererImpl::initBounds, getInitialShape).
     let mut offset = (0.0, 0.0);
@@ -264,8 +269,19 @@ impl Renderer<'_> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
-        if self.rules.is_path[shape] {
-            return self.path_shape(shape, state, params);
+        let drawn = self.rules.is_path[shape] || (shape < 3 && self.rules.by_shape[shape].is_empty());
+        if drawn && !self.symmetry.is_empty() {
+            // One copy per symmetry transform, each finished in turn (processPrimShape).
+            for k in 0..self.symmetry.len() {
+                self.budget.charge_step()?;
+                let mut copy = state;
+                copy.transform.multiply(&self.symmetry[k]);
+                self.drawn(shape, copy, params.clone())?;
+            }
+            return Ok(());
+        }
+        if drawn {
+            return self.drawn(shape, state, params);
         }
         if shape >= 3 || !self.rules.by_shape[shape].is_empty() {
             let area = state.area();
@@ -276,6 +292,14 @@ impl Renderer<'_> {
                 push_heap(&mut self.unfinished, &|a: &Unfinished, b: &Unfinished| a.area < b.area);
             }
             return Ok(());
+        }
+        Ok(())
+    }
+
+    /// Finishes a primitive or path shape.
+    fn drawn(&mut self, shape: usize, state: State, params: Vec<f64>) -> Result<(), EvalError> {
+        if self.rules.is_path[shape] {
+            return self.path_shape(shape, state, params);
         }
         if self.tile_canvas.is_some() {
             self.guess_scale(&state);

@@ -84,6 +84,19 @@ pub enum Value {
     Adjust(Adjustment),
     /// A shape name (`CF::StartShape = X`).
     Shape(String),
+    /// A list of transforms and symmetry groups (`CF::Symmetry =
+    /// CF::Dihedral, 6` or `[r 90], [[s 2 r 45]]`), read by `eval::symmetry`.
+    Symmetry(Vec<SymmetryItem>),
+}
+
+/// One item of a symmetry list (`getTransforms`, `ast.cpp`, Context Free 3.4):
+/// an adjustment, or a flag or number of a symmetry group's specification.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SymmetryItem {
+    /// A geometric adjustment: one transform of the list.
+    Adjust(Adjustment),
+    /// A `CF::` group flag or one of its numeric arguments.
+    Expr(Expr, Span),
 }
 
 /// A replacement: a shape and the adjustment placing it.

@@ -8,6 +8,7 @@ use super::{Adjustment, Define, Element, Expr, Grammar, Loop, Replacement, Rule,
 use crate::{ParseError, Span};
 
 mod path;
+mod symmetry;
 pub use path::is_path_op;
 
 /// The argument list `(=)` stands for: the parent shape's parameters.
@@ -273,7 +274,9 @@ impl Parser<'_> {
             _ => return self.err("expected a name"),
         };
         self.expect("=")?;
-        let value = if self.is_punct("[") {
+        let value = if name == "CF::Symmetry" {
+            Value::Symmetry(self.symmetry_list()?)
+        } else if self.is_punct("[") {
             Value::Adjust(self.adjustment()?)
         } else if name == "CF::StartShape" {
             Value::Shape(self.name("a shape name")?.0)
