@@ -424,6 +424,31 @@ impl Renderer<'_> {
                 let body = cases.iter().find(|(ranges, _)| ranges.iter().any(|&(lo, hi)| v >= lo as f64 && v <= hi as f64)).map(|(_, b)| b).unwrap_or(otherwise);
                 self.body(body, parent)
             }
+            Element::Transform { clone, symmetry, body, .. } if !symmetry.is_empty() => {
+                // ASTtransform::traverse: the list is built first (drawing
+                // on the stream), then one copy per non-geometric adjustment
+                // and one per transform, premultiplied.
+                let (mods, syms) = super::symmetry::list(symmetry, &self.scope, &super::state::Affine::default(), false, &mut self.current, self.budget)?;
+                let clone_seed = self.current;
+                for k in 0..mods.len() + syms.len() {
+                    self.budget.charge_step()?;
+                    let mut child = *parent;
+                    match mods.get(k) {
+                        Some(adj) => apply_prepared(&prepare(adj), &mut child, &self.scope, &mut self.current)?,
+                        None => child.transform.premultiply(&syms[k - mods.len()]),
+                    }
+                    self.current.next_u64();
+                    let depth = self.scope.vars.len();
+                    for e in body {
+                        if *clone {
+                            self.current = clone_seed;
+                        }
+                        self.element(e, &child)?;
+                    }
+                    self.scope.vars.truncate(depth);
+                }
+                Ok(())
+            }
             Element::Transform { clone, adjusts, body, .. } => {
                 let clone_seed = self.current;
                 for adj in adjusts {

@@ -15,7 +15,7 @@ use super::expr::Scope;
 use super::state::{Affine, State};
 use super::tile::{Frieze, Tiling};
 use crate::cfdg::rand64::Rand64;
-use crate::cfdg::syntax::{Expr, Grammar, SymmetryItem, TermKind, Value};
+use crate::cfdg::syntax::{Adjustment, Expr, Grammar, SymmetryItem, TermKind, Value};
 use crate::core::budget::Budget;
 use crate::model::EvalError;
 use crate::Span;
@@ -76,10 +76,25 @@ pub fn symmetry(g: &Grammar, scope: &Scope, tiling: Option<&Tiling>, budget: &mu
     // cfdg passes the tile map, identity when the design is not tiled.
     let tile = tiling.map_or(Affine::default(), |t| t.transform);
     let tiled = tiling.is_some_and(|t| t.frieze == Frieze::None);
+    let mut rand = Rand64::default();
+    let (mods, syms) = list(&items, scope, &tile, tiled, &mut rand, budget)?;
+    if let Some(t) = mods.first().and_then(|a| a.terms.iter().find(|t| !is_geometric(t.kind))) {
+        return Err(bad(t.span, "At least one term was invalid"));
+    }
+    Ok(syms)
+}
+
+/// `getTransforms`: the adjustments of `items` that are not purely
+/// geometric, kept to be applied one by one, and the transforms of the
+/// geometric ones and of the groups, de-duplicated, in order. Random terms
+/// of the geometric adjustments draw from `rand` now, as cfdg evaluates
+/// them while building the list.
+pub fn list<'i>(items: &'i [SymmetryItem], scope: &Scope, tile: &Affine, tiled: bool, rand: &mut Rand64, budget: &mut Budget) -> Result<(Vec<&'i Adjustment>, Vec<Affine>), EvalError> {
+    let mut mods = Vec::new();
+    let tile = *tile;
     let mut b = Builder { syms: Vec::new(), budget };
     let mut spec: Option<(Group, Span, Vec<f64>)> = None;
-    let mut rand = Rand64::default();
-    for item in &items {
+    for item in items {
         match item {
             SymmetryItem::Expr(e, span) => {
                 if let Some((grp, name)) = flag(e) {
@@ -92,7 +107,7 @@ pub fn symmetry(g: &Grammar, scope: &Scope, tiling: Option<&Tiling>, budget: &mu
                     spec = Some((grp, *span, Vec::new()));
                 } else if let Some((_, _, data)) = spec.as_mut() {
                     let mut v = Vec::new();
-                    super::expr::eval(e, scope, &mut rand, &mut v)?;
+                    super::expr::eval(e, scope, rand, &mut v)?;
                     if v.is_empty() {
                         return Err(bad(*span, "Could not evaluate this"));
                     }
@@ -106,11 +121,12 @@ pub fn symmetry(g: &Grammar, scope: &Scope, tiling: Option<&Tiling>, budget: &mu
                     b.group(grp, at, &data, &tile, tiled)?;
                 }
                 // Only geometric terms make a transform (`getTransforms`: GeomClass).
-                if let Some(t) = a.terms.iter().find(|t| !is_geometric(t.kind)) {
-                    return Err(bad(t.span, "At least one term was invalid"));
+                if a.terms.iter().any(|t| !is_geometric(t.kind)) {
+                    mods.push(a);
+                    continue;
                 }
                 let mut s = State::initial();
-                super::adjust::apply(&super::terms_of(a), &mut s, scope, &mut rand)?;
+                super::adjust::apply(&super::terms_of(a), &mut s, scope, rand)?;
                 b.add(s.transform)?;
             }
         }
@@ -118,7 +134,7 @@ pub fn symmetry(g: &Grammar, scope: &Scope, tiling: Option<&Tiling>, budget: &mu
     if let Some((grp, at, data)) = spec.take() {
         b.group(grp, at, &data, &tile, tiled)?;
     }
-    Ok(b.syms)
+    Ok((mods, b.syms))
 }
 
 fn is_geometric(k: TermKind) -> bool {

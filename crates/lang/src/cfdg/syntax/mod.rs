@@ -148,6 +148,10 @@ pub enum Element {
         clone: bool,
         /// The adjustments, one copy of the body each.
         adjusts: Vec<Adjustment>,
+        /// Instead, a comma list of adjustments and symmetry groups
+        /// (`clone [], [x 4]`, `clone CF::Dihedral, 6`), read as cfdg reads
+        /// it (`getTransforms`); empty for the plain form.
+        symmetry: Vec<SymmetryItem>,
         /// The body.
         body: Vec<Element>,
         /// Where it is written.

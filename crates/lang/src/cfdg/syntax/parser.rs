@@ -387,15 +387,9 @@ impl Parser<'_> {
             }
             "transform" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
                 self.bump();
-                let mut adjusts = Vec::new();
-                while self.is_punct("[") {
-                    adjusts.push(self.adjustment()?);
-                }
-                if adjusts.is_empty() {
-                    return self.err("expected an adjustment `[ ]`");
-                }
+                let (adjusts, symmetry) = self.transform_list()?;
                 let body = self.body()?;
-                Ok(Element::Transform { clone: word == "clone", adjusts, body, span })
+                Ok(Element::Transform { clone: word == "clone", adjusts, symmetry, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
             w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),

@@ -313,6 +313,9 @@ impl Renderer<'_> {
                 self.scope.vars.truncate(slot);
                 Ok(())
             }
+            Element::Transform { symmetry, span, .. } if !symmetry.is_empty() => {
+                Err(EvalError::BadParam { name: "transform".into(), message: format!("{}:{}: a list of transforms or a symmetry group in a path is not supported yet (docs/cfdg.md)", span.line, span.column) })
+            }
             Element::Transform { clone, adjusts, body, .. } => {
                 let ops_only = rep_type(body) == REP_OP;
                 let mut base = *parent;

@@ -3,7 +3,8 @@
 //! `CFDGdefinition` whose expression is a comma list of modifications,
 //! flags and numbers; `ast.cpp` `getTransforms` reads the list in order).
 
-use super::super::SymmetryItem;
+use super::super::{Adjustment, SymmetryItem};
+use super::Tok;
 use super::Parser;
 use crate::ParseError;
 
@@ -24,5 +25,28 @@ impl Parser<'_> {
             }
             self.bump();
         }
+    }
+
+    /// What follows `transform` or `clone`: adjustments side by side (the
+    /// plain form, kept as adjustments), or a comma list that may name
+    /// symmetry groups (`clone [], [x 4]`, `clone CF::Dihedral, 6`).
+    pub(super) fn transform_list(&mut self) -> Result<(Vec<Adjustment>, Vec<SymmetryItem>), ParseError> {
+        if matches!(self.peek(), Tok::Word(w) if w.starts_with("CF::")) {
+            return Ok((Vec::new(), self.symmetry_list()?));
+        }
+        let mut adjusts = Vec::new();
+        while self.is_punct("[") {
+            adjusts.push(self.adjustment()?);
+        }
+        if adjusts.is_empty() {
+            return self.err("expected an adjustment `[ ]`");
+        }
+        if !self.is_punct(",") {
+            return Ok((adjusts, Vec::new()));
+        }
+        self.bump();
+        let mut items: Vec<SymmetryItem> = adjusts.into_iter().map(SymmetryItem::Adjust).collect();
+        items.extend(self.symmetry_list()?);
+        Ok((Vec::new(), items))
     }
 }
