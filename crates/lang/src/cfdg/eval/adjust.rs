@@ -65,7 +65,8 @@ pub(crate) fn is_constant(e: &crate::cfdg::syntax::Expr) -> bool {
         Expr::Unary(_, a) | Expr::Paren(a) => is_constant(a),
         Expr::Binary(_, a, b) => is_constant(a) && is_constant(b),
         Expr::Cons(v) => v.iter().all(is_constant),
-        Expr::Call(name, args, _) => !name.starts_with("rand") && args.as_ref().as_ref().map_or(true, is_constant),
+        // rand_static() is a constant drawn at parse time (cfdg's RandStaticIsConst).
+        Expr::Call(name, args, _) => (name == "rand_static" || !name.starts_with("rand")) && args.as_ref().as_ref().map_or(true, is_constant),
     }
 }
 

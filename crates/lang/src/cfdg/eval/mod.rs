@@ -238,6 +238,17 @@ pub(crate) fn terms_of(adj: &syntax::Adjustment) -> Vec<Term> {
     adjust::ordered(adj)
 }
 
+/// The number each `rand_static()` of `g` draws: cfdg's builder seeds a
+/// stream with the variation (not stepped, unlike the renderer's) and every
+/// `rand_static` it makes takes the next double (`builder.cpp`
+/// `Builder::Builder`, `MakeFunction`; `astexpression.cpp`
+/// `ASTfunction::ASTfunction`), so they differ from call to call and from
+/// variation to variation but not from run to run.
+pub(crate) fn rand_static(g: &Grammar, variation: i32) -> Vec<(Span, f64)> {
+    let mut r = Rand64::seeded(variation.max(1) as u64);
+    g.rand_static.iter().map(|&at| (at, r.next_double())).collect()
+}
+
 /// Evaluates the numeric `CF::` setting `name`, if set.
 pub(crate) fn setting(g: &Grammar, name: &str, scope: &Scope) -> Result<Option<f64>, EvalError> {
     let mut r = Rand64::default();

@@ -70,7 +70,7 @@ fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, mak
 pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
     let rules = compile(g).map_err(|e| EvalError::BadParam { name: "grammar".into(), message: e.to_string() })?;
     // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
-    let mut scope = Scope::default();
+    let mut scope = Scope { rand_static: super::rand_static(g, opts.variation), ..Scope::default() };
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
     let mut global_rand = current;
@@ -148,6 +148,7 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Pictur
     let mut offset = (0.0, 0.0);
     if let Some((w, h, x, y)) = sized {
         r.fixed_border = 0.0;
+        r.fixed_border_y = 0.0;
         r.shape_border = 0.0;
         r.bounds = Bounds { min_x: -w / 2.0, max_x: w / 2.0, min_y: -h / 2.0, max_y: h / 2.0 };
         let (scale, ..) = r.bounds.compute_scale_exact(i64::from(opts.width), i64::from(opts.height), 0.0, 0.0, true);

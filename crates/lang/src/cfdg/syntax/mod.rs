@@ -43,6 +43,10 @@ pub struct Grammar {
     pub background: Option<Adjustment>,
     /// Warnings found while parsing.
     pub warnings: Vec<crate::Diagnostic>,
+    /// Where each `rand_static()` is written, in the order cfdg's builder
+    /// makes them: each takes the next number of the parse-time stream
+    /// (`eval::rand_static`).
+    pub rand_static: Vec<Span>,
 }
 
 /// One rule of a shape.

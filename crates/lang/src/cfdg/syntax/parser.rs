@@ -56,7 +56,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default() };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), rand_static: Vec::new() };
     p.grammar()
 }
 
@@ -69,6 +69,8 @@ struct Parser<'a> {
     imports: usize,
     /// Whether a path body or a path command's adjustment is being read ([`path`]).
     path: path::PathState,
+    /// `rand_static()` calls in the order they were made.
+    rand_static: Vec<Span>,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -157,7 +159,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), rand_static: Vec::new() };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -265,6 +267,7 @@ impl Parser<'_> {
                 _ => return self.err("expected `startshape`, `shape`, `rule`, a definition or a setting"),
             }
         }
+        g.rand_static = std::mem::take(&mut self.rand_static);
         Ok(g)
     }
 
@@ -589,6 +592,9 @@ impl Parser<'_> {
                 self.bump();
                 if self.is_punct("(") {
                     let args = self.call_args(&w)?;
+                    if w == "rand_static" {
+                        self.rand_static.push(span);
+                    }
                     Ok(Expr::Call(w, Box::new(args), span))
                 } else {
                     Ok(Expr::Var(w, span))
