@@ -297,3 +297,35 @@ impl Builder<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::cfdg::eval::expr::Scope;
+    use crate::cfdg::syntax::parse;
+    use crate::core::budget::{Budget, Limits};
+
+    fn count(src: &str) -> usize {
+        let g = parse(src.as_bytes()).expect("parses");
+        let tiling = super::super::tile::tiling(&g, &Scope::default()).expect("tiling");
+        super::symmetry(&g, &Scope::default(), tiling.as_ref(), &mut Budget::new(Limits::default())).expect("symmetry").len()
+    }
+
+    #[test]
+    fn cfdg_symmetry_groups_have_their_orders() {
+        assert_eq!(count("startshape A\nCF::Symmetry = CF::Dihedral, 6\nshape A { SQUARE [] }\n"), 12);
+        assert_eq!(count("startshape A\nCF::Symmetry = CF::Cyclic, 5, 1, 1\nshape A { SQUARE [] }\n"), 5);
+        // addUnique: the identity given twice is kept once.
+        assert_eq!(count("startshape A\nCF::Symmetry = [], [r 90], [], [[s 1]]\nshape A { SQUARE [] }\n"), 2);
+        assert_eq!(count("startshape A\nCF::Tile = [s 2 0]\nCF::Symmetry = CF::p2mg\nshape A { SQUARE [] }\n"), 4);
+        assert_eq!(count("startshape A\nCF::Tile = [s 2 0]\nCF::Symmetry = CF::p11g, 0.5\nshape A { SQUARE [] }\n"), 2);
+    }
+
+    #[test]
+    fn cfdg_symmetry_errors_name_the_setting() {
+        for src in ["startshape A\nCF::Symmetry = CF::p2mg\nshape A { SQUARE [] }\n", "startshape A\nCF::Symmetry = 3\nshape A { SQUARE [] }\n", "startshape A\nCF::Symmetry = [b 1]\nshape A { SQUARE [] }\n"] {
+            let g = parse(src.as_bytes()).expect("parses");
+            let e = super::symmetry(&g, &Scope::default(), None, &mut Budget::new(Limits::default())).expect_err(src);
+            assert!(e.to_string().contains("CF::Symmetry"), "{e}");
+        }
+    }
+}

@@ -161,3 +161,42 @@ impl PixelTiling {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cfdg::eval::expr::Scope;
+    use crate::cfdg::syntax::parse;
+    use crate::core::budget::Limits;
+
+    fn tiling_of(src: &str) -> Result<Option<Tiling>, EvalError> {
+        tiling(&parse(src.as_bytes()).expect("parses"), &Scope::default())
+    }
+
+    #[test]
+    fn cfdg_tiles_and_friezes_are_read_as_cfdg_reads_them() {
+        let t = tiling_of("startshape A\nCF::Tile = [s 3 4 x 1]\nshape A { SQUARE [] }\n").expect("ok").expect("tiled");
+        assert_eq!((t.frieze, t.size, t.offset), (Frieze::None, (3.0, 4.0), (1.0, 0.0)));
+        let f = tiling_of("startshape A\ntile {s 2 0}\nrule A { SQUARE {} }\n").expect("ok").expect("frieze");
+        assert_eq!(f.frieze, Frieze::X);
+        assert!(tiling_of("startshape A\nCF::Tile = [s 0]\nshape A { SQUARE [] }\n").expect("ok").is_none());
+        assert!(tiling_of("startshape A\nCF::Tile = [r 30]\nshape A { SQUARE [] }\n").is_err());
+        assert!(tiling_of("startshape A\nCF::Tile = [s -2 2]\nshape A { SQUARE [] }\n").is_err());
+    }
+
+    #[test]
+    fn cfdg_tile_copies_ring_out_from_the_centre() {
+        // A 2×2 tile on a 500 px canvas: 250 px to the unit; a unit square
+        // at the centre and one at a corner.
+        let t = tiling_of("startshape A\nCF::Tile = [s 2]\nshape A { SQUARE [] }\n").expect("ok").expect("tiled");
+        let p = PixelTiling::new(&t, 250.0);
+        let mut budget = Budget::new(Limits::default());
+        let centre = Bounds { min_x: 112.5, min_y: 112.5, max_x: 387.5, max_y: 387.5 };
+        let offsets = p.offsets(&centre, 500, 500, &mut budget).expect("offsets");
+        assert_eq!(offsets[0], (-500.0, -500.0));
+        assert!(offsets.contains(&(0.0, 0.0)));
+        let huge = Bounds { min_x: -1e9, min_y: -1e9, max_x: 1e9, max_y: 1e9 };
+        let mut small = Budget::new(Limits { max_steps: 10_000, ..Limits::default() });
+        assert!(p.offsets(&huge, 500, 500, &mut small).is_err());
+    }
+}
