@@ -340,6 +340,9 @@ fn canvas_constructs_match_cfdg() {
         "tests/clonepathtest.cfdg",
         "tests/randtest.cfdg",
         "tests/rings.cfdg",
+        // FILL as a shape: cfdg's whole-canvas fill, no SVG element.
+        "tests/filltest.cfdg",
+        "tests/polytest3.cfdg",
     ] {
         let file = example(name);
         assert_same(name, &cfdg_svg(&file, "ABC"), &rulemesh_svg(&file, "ABC"));

@@ -201,7 +201,7 @@ fn pictures_are_charged() {
 fn canvas_construct_pngs_cover_cfdgs_pixels() {
     const SIZE: u32 = 300;
     let mut failures = Vec::new();
-    for name in ["tests/tiletest2.cfdg", "tests/tiletest3.cfdg", "tests/skewtiletest.cfdg", "tests/basic.cfdg", "tests/pass2test1.cfdg", "tests/friezetest1.cfdg", "snowflake.cfdg", "tests/symmtest4.cfdg", "tests/friezesymmtest1.cfdg", "tests/clonepathtest.cfdg", "tests/rings.cfdg"] {
+    for name in ["tests/tiletest2.cfdg", "tests/tiletest3.cfdg", "tests/skewtiletest.cfdg", "tests/basic.cfdg", "tests/pass2test1.cfdg", "tests/friezetest1.cfdg", "snowflake.cfdg", "tests/symmtest4.cfdg", "tests/friezesymmtest1.cfdg", "tests/clonepathtest.cfdg", "tests/rings.cfdg", "tests/filltest.cfdg", "tests/polytest3.cfdg"] {
         let file = example(name);
         let src = std::fs::read(&file).expect("read");
         let mut req = request(&file, "ABC", Format::Png);

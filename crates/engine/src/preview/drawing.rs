@@ -72,6 +72,15 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
     let mut path: Vec<Command> = Vec::with_capacity(16);
     let mut mask: Vec<u8> = Vec::new();
     for mark in &drawing.marks {
+        if mark.kind == MarkKind::Fill {
+            // AGG's `renderer_base::fill`: the colour blended over every pixel.
+            budget.charge_steps(1 + pixels / PIXELS_PER_STEP)?;
+            let [r, g, b, a] = mark.rgba;
+            for px in canvas.iter_mut() {
+                blend(px, [r, g, b], mul(255, a));
+            }
+            continue;
+        }
         let m = mark.raster.map(|v| v * fit);
         let (corners, style, transform) = match (mark.kind, drawing.paths.get(mark.path as usize)) {
             (MarkKind::Path, Some(p)) => path_outline(p, &m, &mut path),
@@ -237,8 +246,8 @@ fn outline(kind: MarkKind, m: &[f64; 6], path: &mut Vec<Command>) -> Option<(f64
             path.push(Command::MoveTo(pt(points[0])));
             path.extend(points[1..].iter().map(|&p| Command::LineTo(pt(p))));
         }
-        // Drawn by `path_outline`.
-        MarkKind::Path => return None,
+        // Drawn by `path_outline`, and over the whole canvas.
+        MarkKind::Path | MarkKind::Fill => return None,
         MarkKind::Triangle => {
             points.extend(MarkKind::TRIANGLE.iter().map(|&(x, y)| at(x, y)));
             path.push(Command::MoveTo(pt(points[0])));

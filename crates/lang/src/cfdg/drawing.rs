@@ -135,6 +135,8 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
     for s in &p.shapes {
         let shifts: Vec<Option<(f64, f64)>> = match &tiles {
             None => vec![None],
+            // A fill covers the canvas once (`tiledCanvas::primitive`).
+            Some(_) if s.kind == 4 => vec![None],
             Some(t) => {
                 let (x0, y0) = p.to_pixels.apply(s.bounds.min_x, s.bounds.min_y);
                 let (x1, y1) = p.to_pixels.apply(s.bounds.max_x, s.bounds.max_y);
@@ -149,6 +151,7 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
             0 => MarkKind::Circle,
             1 => MarkKind::Square,
             2 => MarkKind::Triangle,
+            4 => MarkKind::Fill,
             _ => {
                 for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
                     // Identical outlines are kept once (cfdg writes a `<use>` of a cached path).

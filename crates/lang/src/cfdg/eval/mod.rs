@@ -25,6 +25,10 @@ use std::collections::HashMap;
 /// The primitives' shape numbers (`primShape`): CIRCLE, SQUARE, TRIANGLE.
 pub const PRIMITIVES: [&str; 3] = ["CIRCLE", "SQUARE", "TRIANGLE"];
 
+/// `FILL` as a shape outside a path: the whole canvas blended with the
+/// shape's colour (`primShape::fillType`); finished as [`Finished::kind`] 4.
+pub const FILL: &str = "FILL";
+
 /// What a render is asked: canvas, minimum size, border and variation
 /// (cfdg's command line: `-s`, `-x`, `-b`, `-v`, `-m`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +56,7 @@ impl Default for Options {
 /// One finished primitive.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Finished {
-    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE, 3 a path.
+    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE, 3 a path, 4 a whole-canvas `FILL`.
     pub kind: usize,
     /// Its map from the unit primitive to design space.
     pub transform: Affine,
@@ -202,6 +206,10 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
         Ok(())
     }
     fn arity(r: &syntax::Replacement, rules: &Rules<'_>) -> Result<(), ParseError> {
+        // FILL without rules of its own is cfdg's whole-canvas fill (primShape::fillType).
+        if r.shape == FILL && !rules.index.contains_key(FILL) && r.args.is_none() {
+            return Ok(());
+        }
         let Some(&i) = rules.index.get(r.shape.as_str()) else {
             return Err(ParseError::single(r.span, format!("shape `{}` has no rules", r.shape)));
         };

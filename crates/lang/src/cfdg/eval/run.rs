@@ -373,6 +373,23 @@ impl Renderer<'_> {
 
     fn element(&mut self, e: &Element, parent: &State) -> Result<(), EvalError> {
         match e {
+            Element::Replace(rep) if rep.shape == super::FILL && !self.rules.index.contains_key(super::FILL) => {
+                // processPrimShapeSiblings for fillType: no bounds, never
+                // copied by symmetry or tiles, always drawn; a shape all the same.
+                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let mut child = *parent;
+                self.current.xor(seed);
+                self.current.next_u64();
+                apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
+                if !child.is_finite() {
+                    return Err(EvalError::NonFinite { span: rep.span, what: "a shape's state".into(), value: "undefined or infinite".into() });
+                }
+                self.shape_count += 1;
+                self.budget.charge_primitive(2)?;
+                self.budget.reserve_memory(SHAPE_BYTES)?;
+                self.finished.push(Finished { kind: 4, transform: child.transform, z: child.tz, rgba: child.color.rgba(), order: self.shape_count, box_area: 1.0, path: 0, bounds: Bounds::default() });
+                Ok(())
+            }
             Element::Replace(rep) => {
                 let shape = *self.rules.index.get(rep.shape.as_str()).ok_or_else(|| EvalError::BadParam { name: rep.shape.clone(), message: "shape has no rules".into() })?;
                 let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
@@ -524,6 +541,9 @@ impl Renderer<'_> {
         self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
         let min_area = self.min_area;
         self.finished.retain(|s| {
+            if s.kind == 4 {
+                return true;
+            }
             let a = s.box_area * area;
             a.is_finite() && a >= min_area
         });
