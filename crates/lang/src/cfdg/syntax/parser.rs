@@ -395,6 +395,7 @@ impl Parser<'_> {
                 Ok(Element::Transform { clone: word == "clone", adjusts, symmetry, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
+            "path" if self.path.in_path && matches!(self.peek_at(1), Tok::Word(_)) => Err(ParseError::single(span, "subpaths (`path NAME [ ]` inside a path) are not supported yet (docs/cfdg.md)")),
             w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
             _ => {
