@@ -7,7 +7,7 @@ import re, sys
 
 # A shape: a primitive element, or a path's <g> (its paint and transform;
 # an iso stroke has no transform: its stroke width stands in for it).
-TAG = re.compile(r'<(circle|rect|use xlink:href="#TRIANGLE"|g)\b([^>]*)>', re.S)
+TAG = re.compile(r'<(circle|rect|use xlink:href="#TRIANGLE"|g)(?=[\s>/])([^>]*)>', re.S)
 COLOUR = re.compile(r'(?:fill|stroke)="#([0-9a-f]{6})"')
 OPACITY = re.compile(r'(?:fill|stroke)-opacity="([\d.e+-]+)"')
 MATRIX = re.compile(r'transform="matrix\(([^)]*)\)"')
