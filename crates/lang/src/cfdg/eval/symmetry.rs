@@ -180,7 +180,7 @@ impl Builder<'_> {
 
     /// `processDihedral`.
     fn dihedral(&mut self, order: f64, x: f64, y: f64, mirrored: bool, angle: f64, at: Span) -> Result<(), EvalError> {
-        if !(order >= 1.0) || !order.is_finite() || !x.is_finite() || !y.is_finite() || !angle.is_finite() {
+        if order.is_nan() || order < 1.0 || !order.is_finite() || !x.is_finite() || !y.is_finite() || !angle.is_finite() {
             return Err(bad(at, "Rotational symmetry order must be one or larger"));
         }
         let mirror = Affine::reflection(angle);
