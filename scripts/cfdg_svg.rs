@@ -62,7 +62,7 @@ fn png_line(p: &eval::Picture, size: u32, cf: &str, budget: &mut Budget) -> Stri
         Ok(o) => o,
         Err(e) => return format!("PNG-ERROR rulemesh: {e}"),
     };
-    let ours = png_compare::Rgba { width: image.size, height: image.size, pixels: image.rgba };
+    let ours = png_compare::Rgba { width: image.size, height: image.height, pixels: image.rgba };
     match png_compare::compare(&theirs, &ours, bg) {
         Some(s) => format!(
             "{} iou={:.3} diff={:.1}/{:.1}/{:.1}/{:.1}%",

@@ -569,7 +569,7 @@ fn render_tile(path: &Path, size: u32, view: rulemesh::preview::View, background
     let mut buf = vec![0; reader.output_buffer_size().ok_or_else(|| bad("too large".into()))?];
     let frame = reader.next_frame(&mut buf).map_err(|e| bad(e.to_string()))?;
     buf.truncate(frame.buffer_size());
-    Ok(rulemesh::preview::Image { size: frame.width, rgba: buf })
+    Ok(rulemesh::preview::Image { size: frame.width, height: frame.height, rgba: buf })
 }
 
 /// Largest `.strips` file `decode` reads (a phone icon is a few kilobytes).

@@ -413,3 +413,88 @@ fn ten_megabyte_sources_end_in_typed_outcomes() {
     assert_eq!(out.primitives, 1);
     assert!(matches!(render(parens.as_bytes(), &big), Err(RenderError::Parse(_))));
 }
+
+/// The canvas constructs (issue 34): tiled designs and friezes
+/// (`CF::Tile`, 2.x `tile`), `CF::Symmetry` (adjustments, `CF::Dihedral`,
+/// `CF::Cyclic`, the frieze groups), `clone` over a comma list or a group,
+/// and `rand_static()`'s parse-time stream give cfdg -V's elements.
+#[test]
+fn canvas_constructs_match_cfdg() {
+    for name in [
+        "tests/tiletest2.cfdg",
+        "tests/tiletest3.cfdg",
+        "tests/tiletest4.cfdg",
+        "tests/skewtiletest.cfdg",
+        "tests/tess skew test.cfdg",
+        "tests/basic.cfdg",
+        "tests/demo1.cfdg",
+        "tests/pass2test1.cfdg",
+        "tests/pathparamtest1.cfdg",
+        "tests/friezetest1.cfdg",
+        "tests/friezesymmtest1.cfdg",
+        "snowflake.cfdg",
+        "tests/symmtest2.cfdg",
+        "tests/symmtest3.cfdg",
+        "tests/symmtest4.cfdg",
+        "tests/snowflakes.cfdg",
+        "tests/clonepathtest.cfdg",
+        "tests/randtest.cfdg",
+        "tests/rings.cfdg",
+        // FILL as a shape: cfdg's whole-canvas fill, no SVG element.
+        "tests/filltest.cfdg",
+        "tests/polytest3.cfdg",
+    ] {
+        let file = example(name);
+        assert_same(name, &cfdg_svg(&file, "ABC"), &rulemesh_svg(&file, "ABC"));
+    }
+    // rand_static() follows the variation as cfdg's builder stream does.
+    let file = example("tests/randtest.cfdg");
+    assert_same("tests/randtest.cfdg", &cfdg_svg(&file, "XYZ"), &rulemesh_svg(&file, "XYZ"));
+}
+
+/// Hostile tiling and symmetry end in typed errors: a shape a million
+/// tiles wide and a symmetry of order 10⁹ stop at the step limit; a zero
+/// order, a rotated tile and a wallpaper group are refused by name.
+#[test]
+fn hostile_tiles_and_symmetries_end_in_typed_errors() {
+    use rulemesh::model::EvalError;
+    let limit = |e: &RenderError| matches!(e, RenderError::Limit(_) | RenderError::Eval(EvalError::Limit(_)));
+    let named = |what: &'static str| move |e: &RenderError| matches!(e, RenderError::Eval(EvalError::BadParam { name, message }) if name.contains(what) || message.contains(what));
+    let cases: [(&str, Box<dyn Fn(&RenderError) -> bool>); 6] = [
+        ("startshape A\nCF::Tile = [s 1]\nshape A { SQUARE [s 1e6] }\n", Box::new(limit)),
+        ("startshape A\nCF::Symmetry = CF::Dihedral, 1e9\nshape A { SQUARE [] }\n", Box::new(limit)),
+        ("startshape A\nCF::Symmetry = CF::Cyclic, 0\nshape A { SQUARE [] }\n", Box::new(named("CF::Symmetry"))),
+        ("startshape A\nCF::Tile = [r 30]\nshape A { SQUARE [] }\n", Box::new(named("Tile must be aligned"))),
+        ("startshape A\nCF::Tile = [s 2]\nCF::Symmetry = CF::p4m\nshape A { SQUARE [] }\n", Box::new(named("p4m"))),
+        ("startshape A\nshape A { clone CF::Cyclic, 1e9 SQUARE [] }\n", Box::new(limit)),
+    ];
+    for format in [Format::Svg, Format::Png] {
+        for (src, ok) in &cases {
+            let mut req = RenderRequest { language: Some(Language::Cfdg), format, ..RenderRequest::default() };
+            req.limits.max_steps = 1_000_000;
+            match render(src.as_bytes(), &req) {
+                Err(e) => assert!(ok(&e), "{src}: {e:?}"),
+                Ok(_) => panic!("{src}: rendered"),
+            }
+        }
+    }
+}
+
+/// A tiled or symmetric design's 3D model is its finished shapes once
+/// (the tile, not its repeats, which only the pictures draw); every
+/// symmetric copy is a shape of its own.
+#[test]
+fn tiled_designs_make_one_tile_in_3d() {
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Stl, ..RenderRequest::default() };
+    let tiled = render(b"startshape A\nCF::Tile = [s 2]\nshape A { SQUARE [] }\n", &req).expect("tiled renders");
+    assert_eq!(tiled.primitives, 1);
+    let symmetric = render(b"startshape A\nCF::Symmetry = CF::Dihedral, 3\nshape A { SQUARE [x 1] }\n", &req).expect("symmetric renders");
+    assert_eq!(symmetric.primitives, 6);
+    let svg = RenderRequest { format: Format::Svg, ..req.clone() };
+    let out = render(b"startshape A\nCF::Tile = [s 2]\nshape A { SQUARE [] }\n", &svg).expect("tiled svg");
+    let text = String::from_utf8(out.bytes).expect("utf-8");
+    assert!(text.contains("<svg width=\"500px\" height=\"500px\""), "{text}");
+    // cfdg -V of the same design: the copy nearest the centre (off the
+    // canvas, as cfdg keeps it) and the one on it.
+    assert_eq!(text.matches("<rect").count(), 2, "{text}");
+}

@@ -193,3 +193,27 @@ fn pictures_are_charged() {
         other => panic!("expected the memory limit, got {:?}", other.map(|o| o.bytes.len())),
     }
 }
+
+/// Tiled designs and friezes (their PNG has the tile's canvas, as cfdg's),
+/// symmetric designs, a `clone` list and `rand_static()` cover cfdg's
+/// pixels at the same size and variation.
+#[test]
+fn canvas_construct_pngs_cover_cfdgs_pixels() {
+    const SIZE: u32 = 300;
+    let mut failures = Vec::new();
+    for name in ["tests/tiletest2.cfdg", "tests/tiletest3.cfdg", "tests/skewtiletest.cfdg", "tests/basic.cfdg", "tests/pass2test1.cfdg", "tests/friezetest1.cfdg", "snowflake.cfdg", "tests/symmtest4.cfdg", "tests/friezesymmtest1.cfdg", "tests/clonepathtest.cfdg", "tests/rings.cfdg", "tests/filltest.cfdg", "tests/polytest3.cfdg"] {
+        let file = example(name);
+        let src = std::fs::read(&file).expect("read");
+        let mut req = request(&file, "ABC", Format::Png);
+        req.export_options.preview.size = SIZE;
+        let out = render(&src, &req).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let ours = png_compare::decode(&out.bytes).expect("our PNG decodes");
+        let theirs = png_compare::decode(&cfdg(&file, "ABC", &["-s", &SIZE.to_string()], "png")).expect("cfdg's PNG decodes");
+        match png_compare::compare(&theirs, &ours, background(&file, "ABC", SIZE)) {
+            Some(score) if score.passes() => {}
+            Some(score) => failures.push(format!("{name}: {score:?}")),
+            None => failures.push(format!("{name}: ours {}x{}, cfdg's {}x{}", ours.width, ours.height, theirs.width, theirs.height)),
+        }
+    }
+    assert!(failures.is_empty(), "PNGs not covering cfdg's pixels:\n{}", failures.join("\n"));
+}

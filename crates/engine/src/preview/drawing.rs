@@ -48,7 +48,20 @@ const FAR: f64 = 4_000_000.0;
 pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) -> Result<Image, PreviewError> {
     options.validate().map_err(PreviewError::BadOptions)?;
     let size = options.size;
-    let pixels = u64::from(size) * u64::from(size);
+    // A square drawing fills the square picture; another (a tiled design's
+    // canvas, the shape of its tile) keeps its shape, its longer side `size`.
+    let fit = if drawing.width == size && drawing.height == size {
+        1.0
+    } else {
+        f64::from(size) / f64::from(drawing.width.max(drawing.height).max(1))
+    };
+    let (width, height) = if drawing.width == drawing.height {
+        (size, size)
+    } else {
+        let side = |v: u32| ((f64::from(v) * fit).round() as u32).clamp(1, size);
+        (side(drawing.width), side(drawing.height))
+    };
+    let pixels = u64::from(width) * u64::from(height);
     let bytes = pixels.saturating_mul(BYTES_PER_PIXEL);
     budget.reserve_memory(bytes)?;
     let bg = match options.background {
@@ -56,15 +69,18 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         None => drawing.background,
     };
     let mut canvas: Vec<[u8; 4]> = vec![premultiply(bg); pixels as usize];
-    let fit = if drawing.width == size && drawing.height == size {
-        1.0
-    } else {
-        f64::from(size) / f64::from(drawing.width.max(drawing.height).max(1))
-    };
-    let side = f64::from(size);
     let mut path: Vec<Command> = Vec::with_capacity(16);
     let mut mask: Vec<u8> = Vec::new();
     for mark in &drawing.marks {
+        if mark.kind == MarkKind::Fill {
+            // AGG's `renderer_base::fill`: the colour blended over every pixel.
+            budget.charge_steps(1 + pixels / PIXELS_PER_STEP)?;
+            let [r, g, b, a] = mark.rgba;
+            for px in canvas.iter_mut() {
+                blend(px, [r, g, b], mul(255, a));
+            }
+            continue;
+        }
         let m = mark.raster.map(|v| v * fit);
         let (corners, style, transform) = match (mark.kind, drawing.paths.get(mark.path as usize)) {
             (MarkKind::Path, Some(p)) => path_outline(p, &m, &mut path),
@@ -74,7 +90,7 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         let Some((x0, y0, x1, y1)) = corners else { continue };
         // The box on the canvas, in whole pixels.
         let (bx0, by0) = (x0.floor().max(0.0), y0.floor().max(0.0));
-        let (bx1, by1) = (x1.ceil().min(side), y1.ceil().min(side));
+        let (bx1, by1) = (x1.ceil().min(f64::from(width)), y1.ceil().min(f64::from(height)));
         let (w, h) = (bx1 - bx0, by1 - by0);
         budget.charge_steps(1 + (w.max(0.0) * h.max(0.0)) as u64 / PIXELS_PER_STEP)?;
         if w <= 0.0 || h <= 0.0 || [x0, y0, x1, y1].iter().any(|v| v.abs() > FAR) {
@@ -94,7 +110,7 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         let [r, g, b, a] = mark.rgba;
         let (left, top) = (bx0 as usize, by0 as usize);
         for (row, covers) in mask.chunks_exact(w as usize).enumerate() {
-            let start = (top + row) * size as usize + left;
+            let start = (top + row) * width as usize + left;
             for (px, &cover) in canvas[start..start + w as usize].iter_mut().zip(covers) {
                 if cover != 0 {
                     blend(px, [r, g, b], mul(cover, a));
@@ -106,7 +122,7 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
     let rgba: Vec<u8> = canvas.iter().flat_map(|&p| demultiply(p)).collect();
     drop(canvas);
     budget.release_memory(bytes);
-    Ok(Image { size, rgba })
+    Ok(Image { size: width, height, rgba })
 }
 
 /// `a·b/255`, rounded as AGG's `int8u` multiply (`agg::rgba8::multiply`).
@@ -230,8 +246,8 @@ fn outline(kind: MarkKind, m: &[f64; 6], path: &mut Vec<Command>) -> Option<(f64
             path.push(Command::MoveTo(pt(points[0])));
             path.extend(points[1..].iter().map(|&p| Command::LineTo(pt(p))));
         }
-        // Drawn by `path_outline`.
-        MarkKind::Path => return None,
+        // Drawn by `path_outline`, and over the whole canvas.
+        MarkKind::Path | MarkKind::Fill => return None,
         MarkKind::Triangle => {
             points.extend(MarkKind::TRIANGLE.iter().map(|&(x, y)| at(x, y)));
             path.push(Command::MoveTo(pt(points[0])));

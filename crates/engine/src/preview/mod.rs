@@ -130,13 +130,18 @@ pub(crate) fn background_name(bg: Option<[u8; 3]>) -> String {
     }
 }
 
-/// A drawn picture: `size`×`size` pixels, RGBA8 in sRGB with straight
+/// A drawn picture: `size`×`height` pixels, RGBA8 in sRGB with straight
 /// (not premultiplied) alpha, rows top to bottom, as PNG stores them.
+/// Square (`height == size`) except for a 2D drawing whose canvas is not:
+/// a tiled or frieze CFDG design is framed to its tile, as cfdg frames it
+/// (`renderimpl.cpp` `initBounds`), so its picture is the tile's shape.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Image {
-    /// Width and height in pixels.
+    /// Width in pixels.
     pub size: u32,
-    /// `size * size * 4` bytes.
+    /// Height in pixels.
+    pub height: u32,
+    /// `size * height * 4` bytes.
     pub rgba: Vec<u8>,
 }
 

@@ -229,7 +229,7 @@ pub fn draw(meshes: &[NamedMesh], vertices: &[Vec<ScreenVertex>], cull: &[bool],
     }
     meter.budget.release_memory(band_bytes);
     BandBuffers::keep(band.depth, band.colour);
-    Ok(Image { size: options.size, rgba })
+    Ok(Image { size: options.size, height: options.size, rgba })
 }
 
 /// The largest band, in samples, whose buffers a thread keeps for its next

@@ -72,7 +72,7 @@ pub fn compose(tiles: &[Tile], columns: u32, tile: u32, background: [u8; 3]) -> 
         match &t.content {
             TileContent::Picture(img) => {
                 let off = (pic.saturating_sub(img.size)) / 2;
-                for y in 0..img.size.min(pic) {
+                for y in 0..img.height.min(pic) {
                     for x in 0..img.size.min(pic) {
                         let at = ((y * img.size + x) * 4) as usize;
                         if let Some(p) = img.rgba.get(at..at + 4) {
@@ -154,7 +154,7 @@ mod tests {
 
     #[test]
     fn lays_out_columns_by_rows_with_labels_and_failures() {
-        let img = Image { size: 20, rgba: [255, 0, 0, 255].repeat(400) };
+        let img = Image { size: 20, height: 20, rgba: [255, 0, 0, 255].repeat(400) };
         let tiles = vec![
             Tile { label: "a.mdg".into(), content: TileContent::Picture(img.clone()) },
             Tile { label: "b.mdg".into(), content: TileContent::Failed("boom".into()) },

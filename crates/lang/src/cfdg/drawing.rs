@@ -7,6 +7,8 @@
 //! engine's `svg` writer prints it and its preview stage fills it.
 
 use super::eval::agg::{CLOSE, CURVE3, CURVE4, END_POLY, LINE_TO, MOVE_TO, STOP};
+use super::eval::frame::Bounds;
+use super::eval::tile::PixelTiling;
 use super::eval::{state::Affine, PathDraw, Picture};
 use crate::cfdg::syntax::path_flags as pf;
 use crate::core::budget::Budget;
@@ -101,21 +103,55 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
     let commands: usize = p.shapes.iter().filter(|s| s.kind == 3).map(|s| p.paths.get(s.path).map_or(0, Vec::len)).sum();
     budget.reserve_memory(MARK_BYTES.saturating_mul((p.shapes.len() + commands) as u64))?;
     let base = canvas_transform(p);
-    let mark = |kind: MarkKind, k: usize, transform: &Affine, rgba: [f64; 4], path: u32| {
+    // The canvas's own part of `base`: its centring and y flip (SVGCanvas's `mOffset`).
+    let mut flip = Affine::translation((f64::from(p.canvas_width) - f64::from(p.width)) / 2.0, (f64::from(p.canvas_height) - f64::from(p.height)) / 2.0);
+    flip.premultiply(&Affine { sx: 1.0, shy: 0.0, shx: 0.0, sy: -1.0, tx: 0.0, ty: f64::from(p.canvas_height) });
+    // A tiled design's shapes are drawn once per copy touching the canvas,
+    // each copy's pixel map moved by its lattice offset before the canvas
+    // flips it (`tiledCanvas::primitive`, `tiledCanvas::path`).
+    let tiles = p.tiling.as_ref().map(|(t, scale)| PixelTiling::new(t, *scale));
+    let mark = |kind: MarkKind, k: usize, transform: &Affine, rgba: [f64; 4], path: u32, shift: Option<(f64, f64)>| {
         let mut up = *transform;
         up.multiply(&p.to_pixels);
-        let mut t = *transform;
-        t.multiply(&base);
+        let t = match shift {
+            None => {
+                let mut t = *transform;
+                t.multiply(&base);
+                t
+            }
+            Some((dx, dy)) => {
+                up.tx += dx;
+                up.ty += dy;
+                let mut t = up;
+                t.multiply(&flip);
+                t
+            }
+        };
         Mark { kind, matrix: [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty], raster: raster(k, &up, p), rgba: rgba.map(to_u8), path }
     };
     let mut marks = Vec::with_capacity(p.shapes.len() + commands);
     let mut paths = Vec::new();
     let mut seen: std::collections::HashMap<String, u32> = std::collections::HashMap::new();
     for s in &p.shapes {
+        let shifts: Vec<Option<(f64, f64)>> = match &tiles {
+            None => vec![None],
+            // A fill covers the canvas once (`tiledCanvas::primitive`).
+            Some(_) if s.kind == 4 => vec![None],
+            Some(t) => {
+                let (x0, y0) = p.to_pixels.apply(s.bounds.min_x, s.bounds.min_y);
+                let (x1, y1) = p.to_pixels.apply(s.bounds.max_x, s.bounds.max_y);
+                let b = Bounds { min_x: x0, min_y: y0, max_x: x1, max_y: y1 };
+                let offsets = t.offsets(&b, p.canvas_width, p.canvas_height, budget)?;
+                let per_shape = if s.kind == 3 { p.paths.get(s.path).map_or(0, Vec::len) } else { 1 };
+                budget.reserve_memory(MARK_BYTES.saturating_mul((offsets.len().saturating_sub(1) * per_shape) as u64))?;
+                offsets.into_iter().map(Some).collect()
+            }
+        };
         let kind = match s.kind {
             0 => MarkKind::Circle,
             1 => MarkKind::Square,
             2 => MarkKind::Triangle,
+            4 => MarkKind::Fill,
             _ => {
                 for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
                     // Identical outlines are kept once (cfdg writes a `<use>` of a cached path).
@@ -130,12 +166,16 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
                             paths.len() as u32 - 1
                         }
                     };
-                    marks.push(mark(MarkKind::Path, 3, &d.transform, d.rgba, index));
+                    for &shift in &shifts {
+                        marks.push(mark(MarkKind::Path, 3, &d.transform, d.rgba, index, shift));
+                    }
                 }
                 continue;
             }
         };
-        marks.push(mark(kind, s.kind, &s.transform, s.rgba, 0));
+        for &shift in &shifts {
+            marks.push(mark(kind, s.kind, &s.transform, s.rgba, 0, shift));
+        }
     }
     Ok(Drawing { width: p.canvas_width, height: p.canvas_height, background: p.background.map(to_u8), marks, paths })
 }

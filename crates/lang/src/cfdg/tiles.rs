@@ -49,7 +49,9 @@ pub fn scene(p: &Picture, _req: &BuildRequest<'_>, budget: &mut Budget) -> Resul
                 scene.affine.push(AffineInstance { kind: PrimitiveKind::Cylinder, linear: Mat3::from_cols(u, w, v), translation: centre, colour, class: 0 });
             }
             // A path: each command's fill or stroke a slab of the same thickness (solid.rs).
-            3.. => {
+            // A whole-canvas fill has no solid form.
+            4.. => {}
+            3 => {
                 for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
                     let c = [linear(d.rgba[0]), linear(d.rgba[1]), linear(d.rgba[2]), d.rgba[3].clamp(0.0, 1.0) as f32];
                     super::solid::slab(d, z, h, scale, c, &mut scene, budget)?;

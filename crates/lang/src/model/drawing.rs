@@ -24,6 +24,10 @@ pub enum MarkKind {
     /// A path (Context Free's `path`): the drawing's [`Drawing::paths`]
     /// entry [`Mark::path`] names, in the mark's own units.
     Path,
+    /// The whole canvas blended with the mark's colour (Context Free's
+    /// `FILL` as a shape, `aggCanvas::primitive`'s `fillType`); an SVG has
+    /// no element for it (`SVGCanvas::primitive` writes none).
+    Fill,
 }
 
 impl MarkKind {

@@ -54,7 +54,7 @@ pub(crate) fn max_png_bytes(width: u32, height: u32, text: &TextChunks) -> u64 {
 /// Encodes `image` as an RGBA PNG with `text`, reserving the output's
 /// worst-case size in `budget` first.
 pub(crate) fn write_png(image: &Image, text: &TextChunks, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    write_rgba(image.size, image.size, &image.rgba, text, budget)
+    write_rgba(image.size, image.height, &image.rgba, text, budget)
 }
 
 /// Encodes `width`×`height` RGBA8 pixels (a preview, or a contact sheet,
@@ -92,7 +92,7 @@ mod tests {
     #[test]
     fn decodes_to_the_same_pixels_and_text() {
         let rgba: Vec<u8> = (0..16 * 16 * 4).map(|i| (i * 7 % 251) as u8).collect();
-        let image = Image { size: 16, rgba: rgba.clone() };
+        let image = Image { size: 16, height: 16, rgba: rgba.clone() };
         let text: TextChunks = vec![("Software", "rulemesh test".into()), ("rulemesh-seed", "7".into())];
         let bytes = write_png(&image, &text, &mut Budget::new(Limits::default())).expect("encodes");
         assert!(bytes.len() as u64 <= max_png_bytes(16, 16, &text));

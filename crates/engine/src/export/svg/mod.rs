@@ -112,6 +112,8 @@ pub fn write_svg(drawing: &Drawing, budget: &mut Budget) -> Result<Vec<u8>, Expo
             MarkKind::Circle => ("<circle r=\"0.5\"", 8),
             MarkKind::Square => ("<rect x=\"-0.5\" y=\"-0.5\" width=\"1\" height=\"1\" ", 6),
             MarkKind::Triangle => ("<use xlink:href=\"#TRIANGLE\"", 5),
+            // cfdg's SVG canvas writes nothing for a whole-canvas fill.
+            MarkKind::Fill => continue,
             MarkKind::Path => {
                 let Some(path) = drawing.paths.get(mark.path as usize) else { continue };
                 let first = !std::mem::replace(&mut written[mark.path as usize], true);

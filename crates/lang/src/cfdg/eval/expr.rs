@@ -25,11 +25,14 @@ pub struct Scope<'a> {
     pub max_natural: f64,
     /// The user functions and the count of calls made ([`super::func`]).
     pub funcs: std::sync::Arc<super::func::Functions>,
+    /// The number each `rand_static()` drew at parse time, by where it is
+    /// written ([`crate::cfdg::eval::rand_static`]).
+    pub rand_static: std::sync::Arc<Vec<(crate::Span, f64)>>,
 }
 
 impl Default for Scope<'_> {
     fn default() -> Self {
-        Scope { vars: Vec::new(), up: None, globals: None, max_natural: 1000.0, funcs: Default::default() }
+        Scope { vars: Vec::new(), up: None, globals: None, max_natural: 1000.0, funcs: Default::default(), rand_static: Default::default() }
     }
 }
 
@@ -175,7 +178,7 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             if let Some(x) = args.as_ref() {
                 eval(x, scope, rand, &mut a)?;
             }
-            out.push(call(name, &a, rand, *span, scope.max_natural)?);
+            out.push(call(name, &a, rand, *span, scope)?);
         }
     }
     Ok(())
@@ -206,7 +209,8 @@ pub fn scalar(e: &Expr, scope: &Scope, rand: &mut Rand64) -> Result<f64, EvalErr
 const DEG: f64 = 0.0174532925199;
 const RAD: f64 = 57.29577951308;
 
-fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, max_natural: f64) -> Result<f64, EvalError> {
+fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, scope: &Scope) -> Result<f64, EvalError> {
+    let max_natural = scope.max_natural;
     let arg = |i: usize| a.get(i).copied().unwrap_or(0.0);
     let want = |n: usize| -> Result<(), EvalError> {
         if a.len() == n {
@@ -222,7 +226,16 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, max_natural: f64) 
         _ => (a[0], a[1]),
     };
     Ok(match name {
-        "rand" | "rand." | "rand_static" => {
+        "rand_static" => {
+            // Drawn at parse time (ASTfunction's constructor): without its
+            // number (a fold with no design scope) it is not constant here.
+            let Some(&(_, r)) = scope.rand_static.iter().find(|(at, _)| *at == span) else {
+                return Err(EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: not drawn yet", span.line, span.column) });
+            };
+            let (lo, hi) = pair(a);
+            r * (hi - lo).abs() + lo.min(hi)
+        }
+        "rand" | "rand." => {
             let (lo, hi) = pair(a);
             rand.next_double() * (hi - lo).abs() + lo.min(hi)
         }

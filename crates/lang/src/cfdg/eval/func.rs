@@ -133,7 +133,7 @@ pub fn call(name: &str, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand
         vars.push((p.name.clone(), v));
     }
     scope.funcs.enter()?;
-    let inner = Scope { vars, up: Some(globals_of(scope)), globals: Some(0), max_natural: scope.max_natural, funcs: scope.funcs.clone() };
+    let inner = Scope { vars, up: Some(globals_of(scope)), globals: Some(0), max_natural: scope.max_natural, funcs: scope.funcs.clone(), rand_static: scope.rand_static.clone() };
     let from = out.len();
     let r = eval(&f.body, &inner, rand, out);
     scope.funcs.leave();
@@ -153,7 +153,7 @@ fn is_natural(v: f64, max: f64) -> bool {
 /// caller's variables and those before it, then the body (`ASTlet`).
 pub fn let_in(defs: &[(String, Expr)], body: &Expr, _span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
     scope.funcs.enter()?;
-    let mut inner = Scope { vars: Vec::with_capacity(defs.len()), up: Some((scope, scope.vars.len())), globals: Some(0), max_natural: scope.max_natural, funcs: scope.funcs.clone() };
+    let mut inner = Scope { vars: Vec::with_capacity(defs.len()), up: Some((scope, scope.vars.len())), globals: Some(0), max_natural: scope.max_natural, funcs: scope.funcs.clone(), rand_static: scope.rand_static.clone() };
     let mut r = Ok(());
     for (name, e) in defs {
         let mut v = Vec::new();

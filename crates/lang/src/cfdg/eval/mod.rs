@@ -13,6 +13,8 @@ pub mod frame;
 pub mod func;
 pub mod modval;
 pub mod state;
+pub mod symmetry;
+pub mod tile;
 
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, Element, Grammar, Term, Value};
@@ -24,6 +26,10 @@ use std::collections::HashMap;
 
 /// The primitives' shape numbers (`primShape`): CIRCLE, SQUARE, TRIANGLE.
 pub const PRIMITIVES: [&str; 3] = ["CIRCLE", "SQUARE", "TRIANGLE"];
+
+/// `FILL` as a shape outside a path: the whole canvas blended with the
+/// shape's colour (`primShape::fillType`); finished as [`Finished::kind`] 4.
+pub const FILL: &str = "FILL";
 
 /// What a render is asked: canvas, minimum size, border and variation
 /// (cfdg's command line: `-s`, `-x`, `-b`, `-v`, `-m`).
@@ -52,7 +58,7 @@ impl Default for Options {
 /// One finished primitive.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Finished {
-    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE, 3 a path.
+    /// 0 CIRCLE, 1 SQUARE, 2 TRIANGLE, 3 a path, 4 a whole-canvas `FILL`.
     pub kind: usize,
     /// Its map from the unit primitive to design space.
     pub transform: Affine,
@@ -66,6 +72,9 @@ pub struct Finished {
     pub box_area: f64,
     /// A path's index in [`Picture::paths`] (0 for a primitive).
     pub path: usize,
+    /// Its bounds in design space (cfdg's `FinishedShape::mBounds`): where
+    /// a tiled design places its copies.
+    pub bounds: frame::Bounds,
 }
 
 /// A rendered picture: the shapes cfdg would draw, in drawing order, and the framing.
@@ -91,6 +100,9 @@ pub struct Picture {
     pub finished: u64,
     /// What each path shape draws: one entry per command, in order.
     pub paths: Vec<Vec<PathDraw>>,
+    /// The tiling and the final scale (design units to pixels) when the
+    /// design is tiled or a frieze: the drawing repeats each shape.
+    pub tiling: Option<(tile::Tiling, f64)>,
 }
 
 #[derive(Debug, Clone)]
@@ -208,7 +220,8 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
     }
     fn arity(r: &syntax::Replacement, rules: &Rules<'_>) -> Result<(), ParseError> {
         // A name with no rules may be a shape variable, or never reached:
-        // cfdg stops only when it meets it (run/bind.rs).
+        // cfdg stops only when it meets it (run/bind.rs); FILL without rules
+        // of its own is cfdg's whole-canvas fill (primShape::fillType).
         let Some(&i) = rules.index.get(r.shape.as_str()) else {
             return Ok(());
         };
@@ -269,6 +282,17 @@ pub fn render(g: &Grammar, opts: &Options, budget: &mut crate::core::budget::Bud
 /// The terms of an adjustment in evaluation order, cached per adjustment.
 pub(crate) fn terms_of(adj: &syntax::Adjustment) -> Vec<Term> {
     adjust::ordered(adj)
+}
+
+/// The number each `rand_static()` of `g` draws: cfdg's builder seeds a
+/// stream with the variation (not stepped, unlike the renderer's) and every
+/// `rand_static` it makes takes the next double (`builder.cpp`
+/// `Builder::Builder`, `MakeFunction`; `astexpression.cpp`
+/// `ASTfunction::ASTfunction`), so they differ from call to call and from
+/// variation to variation but not from run to run.
+pub(crate) fn rand_static(g: &Grammar, variation: i32) -> Vec<(Span, f64)> {
+    let mut r = Rand64::seeded(variation.max(1) as u64);
+    g.rand_static.iter().map(|&at| (at, r.next_double())).collect()
 }
 
 /// Evaluates the numeric `CF::` setting `name`, if set.

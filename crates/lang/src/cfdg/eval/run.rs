@@ -4,6 +4,7 @@
 
 use super::expr::{scalar, Scope};
 use super::frame::{bounds_polygon, pop_heap, push_heap, Bounds};
+use super::tile::{Frieze, Tiling};
 use super::adjust::{apply_prepared, prepare, Prepared};
 use super::state::{Hsba, State};
 use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
@@ -34,6 +35,8 @@ struct Renderer<'g> {
     scale_area: f64,
     min_area: f64,
     fixed_border: f64,
+    /// cfdg's `mFixedBorderY` (differs from x only for a frieze).
+    fixed_border_y: f64,
     shape_border: f64,
     shape_count: u64,
     max_shapes: u64,
@@ -45,6 +48,17 @@ struct Renderer<'g> {
     sized: Option<Bounds>,
     /// What each finished path shape draws, by [`Finished::path`].
     paths: Vec<Vec<PathDraw>>,
+    /// The design's tiling or frieze (`CF::Tile`).
+    tiling: Option<Tiling>,
+    /// The canvas a tiled design is drawn on (cfdg's `m_width`, `m_height`
+    /// after `initBounds`).
+    tile_canvas: Option<(i64, i64)>,
+    /// cfdg's `mScale` as a tiled design keeps it: guessed at the first
+    /// finished shape, 0 before.
+    first_scale: f64,
+    /// The transforms of `CF::Symmetry`: every primitive and path is
+    /// finished once under each (`processPrimShape`).
+    symmetry: Vec<super::state::Affine>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -58,7 +72,7 @@ fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, mak
 pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result<Picture, EvalError> {
     let rules = compile(g).map_err(|e| EvalError::BadParam { name: "grammar".into(), message: e.to_string() })?;
     // Globals, in order, each xoring its name's seed in (ASTdefine::traverse at init).
-    let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), ..Scope::default() };
+    let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), rand_static: std::sync::Arc::new(super::rand_static(g, opts.variation)), ..Scope::default() };
     scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
     bind::push_predefined(&mut scope);
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
@@ -99,7 +113,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     // Settings that change the picture's framing or copy its shapes are not
     // rendered yet; refusing them beats drawing something cfdg does not.
     for d in &g.defines {
-        if matches!(d.name.as_str(), "CF::Tile" | "CF::Symmetry" | "CF::Time" | "CF::Frame" | "CF::FrameTime") {
+        if matches!(d.name.as_str(), "CF::Time" | "CF::Frame" | "CF::FrameTime") {
             return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
         }
     }
@@ -127,6 +141,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     let shape_border = if shape_border <= 0.0 { 1.0 } else { shape_border };
     let background = background(g, &scope)?;
     let sized = sized(g, &scope)?;
+    let tiling = super::tile::tiling(g, &scope)?;
     let mut r = Renderer {
         rules,
         opts: *opts,
@@ -139,6 +154,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         scale_area: 0.0,
         min_area: min_size * min_size,
         fixed_border,
+        fixed_border_y: fixed_border,
         shape_border,
         shape_count: 0,
         max_shapes,
@@ -147,18 +163,43 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         params: Vec::new(),
         sized: None,
         paths: Vec::new(),
+        tiling,
+        tile_canvas: None,
+        first_scale: 0.0,
+        symmetry: Vec::new(),
     };
+    r.symmetry = super::symmetry::symmetry(g, &r.scope, r.tiling.as_ref(), r.budget)?;
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
     // offsets the start shape (RendererImpl::initBounds, getInitialShape).
     let mut offset = (0.0, 0.0);
     if let Some((w, h, x, y)) = sized {
         r.fixed_border = 0.0;
+        r.fixed_border_y = 0.0;
         r.shape_border = 0.0;
         r.bounds = Bounds { min_x: -w / 2.0, max_x: w / 2.0, min_y: -h / 2.0, max_y: h / 2.0 };
         let (scale, ..) = r.bounds.compute_scale_exact(i64::from(opts.width), i64::from(opts.height), 0.0, 0.0, true);
         r.scale_area = scale * scale;
         r.sized = Some(r.bounds);
         offset = (x, y);
+    }
+    // A tiled design's bounds are its tile, without borders; a frieze's
+    // repeating axis is the tile's and has no fixed border (initBounds).
+    if let Some(t) = &tiling {
+        let (tx, ty) = t.size;
+        match t.frieze {
+            Frieze::None => {
+                r.fixed_border = 0.0;
+                r.fixed_border_y = 0.0;
+                r.shape_border = 0.0;
+                r.bounds = Bounds { min_x: -tx / 2.0, max_x: tx / 2.0, min_y: -ty / 2.0, max_y: ty / 2.0 };
+                let (scale, w, h, _) = r.bounds.compute_scale_exact(i64::from(opts.width), i64::from(opts.height), 0.0, 0.0, true);
+                r.scale_area = scale * scale;
+                r.tile_canvas = Some((w, h));
+            }
+            Frieze::X => r.fixed_border = 0.0,
+            Frieze::Y => r.fixed_border_y = 0.0,
+        }
+        offset = (offset.0 + t.offset.0, offset.1 + t.offset.1);
     }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     // The start shape may be a global shape variable (stackargtest).
@@ -253,8 +294,19 @@ impl Renderer<'_> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
-        if self.rules.is_path[shape] {
-            return self.path_shape(shape, state, params);
+        let drawn = self.rules.is_path[shape] || (shape < 3 && self.rules.by_shape[shape].is_empty());
+        if drawn && !self.symmetry.is_empty() {
+            // One copy per symmetry transform, each finished in turn (processPrimShape).
+            for k in 0..self.symmetry.len() {
+                self.budget.charge_step()?;
+                let mut copy = state;
+                copy.transform.multiply(&self.symmetry[k]);
+                self.drawn(shape, copy, params.clone())?;
+            }
+            return Ok(());
+        }
+        if drawn {
+            return self.drawn(shape, state, params);
         }
         if shape >= 3 || !self.rules.by_shape[shape].is_empty() {
             let area = state.area();
@@ -266,12 +318,34 @@ impl Renderer<'_> {
             }
             return Ok(());
         }
+        Ok(())
+    }
+
+    /// Finishes a primitive or path shape.
+    fn drawn(&mut self, shape: usize, state: State, params: Vec<f64>) -> Result<(), EvalError> {
+        if self.rules.is_path[shape] {
+            return self.path_shape(shape, state, params);
+        }
+        if self.tile_canvas.is_some() {
+            self.guess_scale(&state);
+        }
         let b = Bounds::of_polygon(&state.transform, &self.polygons[shape]);
         if !b.valid() {
             return Ok(());
         }
         let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
         self.finish_shape(shape, state, b, box_area, 0)
+    }
+
+    /// cfdg's `mScale` of a tiled design: guessed from the first finished
+    /// shape, `(m_width + m_height) / sqrt|det|` on the tile's canvas
+    /// (`processPrimShapeSiblings`), then kept.
+    fn guess_scale(&mut self, state: &State) -> f64 {
+        if self.first_scale == 0.0 {
+            let (w, h) = self.tile_canvas.unwrap_or((i64::from(self.opts.width), i64::from(self.opts.height)));
+            self.first_scale = (w + h) as f64 / state.transform.determinant().abs().sqrt();
+        }
+        self.first_scale
     }
 
     /// Keeps a finished shape of bounds `b` (unless a sized design drops it
@@ -285,16 +359,25 @@ impl Renderer<'_> {
                     return Ok(());
                 }
             }
+            None if self.tile_canvas.is_some() => {}
             None => {
                 self.bounds.merge(&b.dilate(self.shape_border));
-                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border);
+                if let Some(t) = &self.tiling {
+                    // A frieze's repeating axis keeps the tile's extent.
+                    match t.frieze {
+                        Frieze::X => (self.bounds.min_x, self.bounds.max_x) = (-t.size.0 / 2.0, t.size.0 / 2.0),
+                        Frieze::Y => (self.bounds.min_y, self.bounds.max_y) = (-t.size.1 / 2.0, t.size.1 / 2.0),
+                        Frieze::None => {}
+                    }
+                }
+                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border_y);
                 self.scale_area = scale * scale;
             }
         }
         self.shape_count += 1;
         self.budget.charge_primitive(2)?;
         self.budget.reserve_memory(SHAPE_BYTES)?;
-        self.finished.push(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path });
+        self.finished.push(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path, bounds: b });
         Ok(())
     }
 
@@ -320,6 +403,23 @@ impl Renderer<'_> {
 
     fn element(&mut self, e: &Element, parent: &State) -> Result<(), EvalError> {
         match e {
+            Element::Replace(rep) if rep.shape == super::FILL && !self.rules.index.contains_key(super::FILL) => {
+                // processPrimShapeSiblings for fillType: no bounds, never
+                // copied by symmetry or tiles, always drawn; a shape all the same.
+                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let mut child = *parent;
+                self.current.xor(seed);
+                self.current.next_u64();
+                apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
+                if !child.is_finite() {
+                    return Err(EvalError::NonFinite { span: rep.span, what: "a shape's state".into(), value: "undefined or infinite".into() });
+                }
+                self.shape_count += 1;
+                self.budget.charge_primitive(2)?;
+                self.budget.reserve_memory(SHAPE_BYTES)?;
+                self.finished.push(Finished { kind: 4, transform: child.transform, z: child.tz, rgba: child.color.rgba(), order: self.shape_count, box_area: 1.0, path: 0, bounds: Bounds::default() });
+                Ok(())
+            }
             Element::Replace(rep) => {
                 let (shape, bound) = self.target(rep)?;
                 let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
@@ -377,6 +477,31 @@ impl Renderer<'_> {
                 let body = cases.iter().find(|(ranges, _)| ranges.iter().any(|&(lo, hi)| v >= lo as f64 && v <= hi as f64)).map(|(_, b)| b).unwrap_or(otherwise);
                 self.body(body, parent)
             }
+            Element::Transform { clone, symmetry, body, .. } if !symmetry.is_empty() => {
+                // ASTtransform::traverse: the list is built first (drawing
+                // on the stream), then one copy per non-geometric adjustment
+                // and one per transform, premultiplied.
+                let (mods, syms) = super::symmetry::list(symmetry, &self.scope, &super::state::Affine::default(), false, &mut self.current, self.budget)?;
+                let clone_seed = self.current;
+                for k in 0..mods.len() + syms.len() {
+                    self.budget.charge_step()?;
+                    let mut child = *parent;
+                    match mods.get(k) {
+                        Some(adj) => apply_prepared(&prepare(adj), &mut child, &self.scope, &mut self.current)?,
+                        None => child.transform.premultiply(&syms[k - mods.len()]),
+                    }
+                    self.current.next_u64();
+                    let depth = self.scope.vars.len();
+                    for e in body {
+                        if *clone {
+                            self.current = clone_seed;
+                        }
+                        self.element(e, &child)?;
+                    }
+                    self.scope.vars.truncate(depth);
+                }
+                Ok(())
+            }
             Element::Transform { clone, adjusts, body, .. } => {
                 let clone_seed = self.current;
                 for adj in adjusts {
@@ -413,6 +538,8 @@ impl Renderer<'_> {
                     Value::Expr(e) => super::adjust::is_constant(e),
                     Value::Adjust(a) => super::modval::is_constant(a),
                     Value::Shape(_) => true,
+                    // Symmetry lists are settings (`CF::Symmetry`), read before the run.
+                    Value::Symmetry(_) => false,
                 };
                 if !constant {
                     self.current.xor(define_seed(&d.name));
@@ -427,7 +554,7 @@ impl Renderer<'_> {
                         let v = super::modval::value_of(a, &self.scope, &mut self.current, constant)?;
                         self.scope.vars.push((super::modval::key(&d.name), v));
                     }
-                    Value::Shape(_) => {}
+                    Value::Shape(_) | Value::Symmetry(_) => {}
                 }
                 Ok(())
             }
@@ -456,12 +583,26 @@ impl Renderer<'_> {
 
     /// Sorts, frames and drops what cfdg would not draw (`outputFinal`, `drawShape`).
     fn finish(mut self, background: [f64; 4]) -> Picture {
-        let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border, self.sized.is_some());
+        // A tiled design's canvas was fixed by its tile; a frieze's is the
+        // final bounds fitted exactly (the end of RendererImpl::run), and
+        // the output is framed again on that canvas (outputFinal).
+        let (mut cw, mut ch) = (i64::from(self.opts.width), i64::from(self.opts.height));
+        let exact = self.sized.is_some() || self.tiling.is_some();
+        if let Some(c) = self.tile_canvas {
+            (cw, ch) = c;
+        } else if self.tiling.is_some() {
+            let (_, w, h, _) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, true);
+            (cw, ch) = (w, h);
+        }
+        let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, exact);
         let area = scale * scale;
         let finished = self.finished.len() as u64;
         self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
         let min_area = self.min_area;
         self.finished.retain(|s| {
+            if s.kind == 4 {
+                return true;
+            }
             let a = s.box_area * area;
             a.is_finite() && a >= min_area
         });
@@ -470,13 +611,14 @@ impl Renderer<'_> {
             shapes: self.finished,
             width: w.clamp(0, u32::MAX as i64) as u32,
             height: h.clamp(0, u32::MAX as i64) as u32,
-            canvas_width: self.opts.width,
-            canvas_height: self.opts.height,
+            canvas_width: if self.tiling.is_some() { cw.clamp(0, u32::MAX as i64) as u32 } else { self.opts.width },
+            canvas_height: if self.tiling.is_some() { ch.clamp(0, u32::MAX as i64) as u32 } else { self.opts.height },
             to_pixels,
             background,
             variation: self.opts.variation,
             finished,
             paths: self.paths,
+            tiling: self.tiling.map(|t| (t, scale)),
         }
     }
 }

@@ -210,7 +210,8 @@ fn constant_with(e: &Expr, consts: &[&str]) -> bool {
         Expr::Unary(_, a) | Expr::Paren(a) => c(a),
         Expr::Binary(_, a, b) => c(a) && c(b),
         Expr::Cons(v) => v.iter().all(c),
-        Expr::Call(name, args, _) => is_builtin(name) && !name.starts_with("rand") && args.as_ref().as_ref().is_none_or(c),
+        // rand_static() is a constant drawn at parse time (cfdg's RandStaticIsConst).
+        Expr::Call(name, args, _) => is_builtin(name) && (name == "rand_static" || !name.starts_with("rand")) && args.as_ref().as_ref().is_none_or(c),
         Expr::Let(defs, body, _) => {
             let mut inner = consts.to_vec();
             for (name, e) in defs {

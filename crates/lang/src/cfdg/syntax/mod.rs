@@ -50,6 +50,10 @@ pub struct Grammar {
     /// names are also in [`Rule::params`]; a shape missing here takes
     /// one number per name).
     pub param_types: std::collections::BTreeMap<String, Vec<Param>>,
+    /// Where each `rand_static()` is written, in the order cfdg's builder
+    /// makes them: each takes the next number of the parse-time stream
+    /// (`eval::rand_static`).
+    pub rand_static: Vec<Span>,
 }
 
 /// A parameter's or a function's type, as cfdg's `AST::decodeType`
@@ -146,6 +150,19 @@ pub enum Value {
     Adjust(Adjustment),
     /// A shape name (`CF::StartShape = X`).
     Shape(String),
+    /// A list of transforms and symmetry groups (`CF::Symmetry =
+    /// CF::Dihedral, 6` or `[r 90], [[s 2 r 45]]`), read by `eval::symmetry`.
+    Symmetry(Vec<SymmetryItem>),
+}
+
+/// One item of a symmetry list (`getTransforms`, `ast.cpp`, Context Free 3.4):
+/// an adjustment, or a flag or number of a symmetry group's specification.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SymmetryItem {
+    /// A geometric adjustment: one transform of the list.
+    Adjust(Adjustment),
+    /// A `CF::` group flag or one of its numeric arguments.
+    Expr(Expr, Span),
 }
 
 /// A replacement: a shape and the adjustment placing it.
@@ -197,6 +214,10 @@ pub enum Element {
         clone: bool,
         /// The adjustments, one copy of the body each.
         adjusts: Vec<Adjustment>,
+        /// Instead, a comma list of adjustments and symmetry groups
+        /// (`clone [], [x 4]`, `clone CF::Dihedral, 6`), read as cfdg reads
+        /// it (`getTransforms`); empty for the plain form.
+        symmetry: Vec<SymmetryItem>,
         /// The body.
         body: Vec<Element>,
         /// Where it is written.

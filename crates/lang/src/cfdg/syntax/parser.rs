@@ -11,6 +11,7 @@ mod expr;
 mod func;
 mod path;
 use expr::const_value;
+mod symmetry;
 pub use path::is_path_op;
 
 /// The argument list `(=)` stands for: the parent shape's parameters.
@@ -58,7 +59,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None, rand_static: Vec::new() };
     p.grammar()
 }
 
@@ -75,6 +76,8 @@ struct Parser<'a> {
     last_params: Vec<Param>,
     /// The start shape a `CF::StartShape` setting just gave ([`func`]).
     start_setting: Option<Replacement>,
+    /// `rand_static()` calls in the order they were made.
+    rand_static: Vec<Span>,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -163,7 +166,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new() };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -282,6 +285,7 @@ impl Parser<'_> {
                 _ => return self.err("expected `startshape`, `shape`, `rule`, a definition or a setting"),
             }
         }
+        g.rand_static = std::mem::take(&mut self.rand_static);
         Ok(g)
     }
 
@@ -291,7 +295,9 @@ impl Parser<'_> {
             _ => return self.err("expected a name"),
         };
         self.expect("=")?;
-        let value = if self.is_punct("[") {
+        let value = if name == "CF::Symmetry" {
+            Value::Symmetry(self.symmetry_list()?)
+        } else if self.is_punct("[") {
             Value::Adjust(self.adjustment()?)
         } else if name == "CF::StartShape" {
             let start = self.start_setting()?;
@@ -406,17 +412,12 @@ impl Parser<'_> {
             // `trans` is `transform`'s short form here too (cfdg.l: both are MODTYPE transform).
             "transform" | "trans" | "clone" if !matches!(self.peek_at(1), Tok::Punct("=")) => {
                 self.bump();
-                let mut adjusts = Vec::new();
-                while self.is_punct("[") {
-                    adjusts.push(self.adjustment()?);
-                }
-                if adjusts.is_empty() {
-                    return self.err("expected an adjustment `[ ]`");
-                }
+                let (adjusts, symmetry) = self.transform_list()?;
                 let body = self.body()?;
-                Ok(Element::Transform { clone: word == "clone", adjusts, body, span })
+                Ok(Element::Transform { clone: word == "clone", adjusts, symmetry, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
+            "path" if self.path.in_path && matches!(self.peek_at(1), Tok::Word(_)) => Err(ParseError::single(span, "subpaths (`path NAME [ ]` inside a path) are not supported yet (docs/cfdg.md)")),
             w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
             _ => {

@@ -234,7 +234,13 @@ impl Renderer<'_> {
             ctx.cmds.push(PathDraw { vertices, flags: pf::FILL, width: DEFAULT_WIDTH, miter: MITER_LIMIT, transform: state.transform, rgba: state.color.rgba() });
         }
         // processPrimShapeSiblings: the scale guessed before any bounds.
-        let scale = if self.scale_area > 0.0 { self.scale_area.sqrt() } else { f64::from(self.opts.width + self.opts.height) / state.area().sqrt() };
+        // A tiled design's scale never follows its bounds, so cfdg keeps the
+        // guess made at its first finished shape (`mScale`).
+        let scale = match self.tile_canvas {
+            Some(_) => self.guess_scale(&state),
+            None if self.scale_area > 0.0 => self.scale_area.sqrt(),
+            None => f64::from(self.opts.width + self.opts.height) / state.area().sqrt(),
+        };
         let mut b = Bounds::default();
         for c in &ctx.cmds {
             if let Some([x0, y0, x1, y1]) = super::super::agg::bounds(&c.vertices, &c.transform, c.flags, c.width, c.miter, scale * 0.1) {
@@ -304,6 +310,9 @@ impl Renderer<'_> {
                 self.path_body(&l.finally, &child, tr || ops_only, ctx)?;
                 self.scope.vars.truncate(slot);
                 Ok(())
+            }
+            Element::Transform { symmetry, span, .. } if !symmetry.is_empty() => {
+                Err(EvalError::BadParam { name: "transform".into(), message: format!("{}:{}: a list of transforms or a symmetry group in a path is not supported yet (docs/cfdg.md)", span.line, span.column) })
             }
             Element::Transform { clone, adjusts, body, .. } => {
                 let ops_only = rep_type(body) == REP_OP;

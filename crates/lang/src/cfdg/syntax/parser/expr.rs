@@ -74,6 +74,9 @@ impl Parser<'_> {
                     self.index_expr(w, span)
                 } else if self.is_punct("(") {
                     let args = self.call_args(&w)?;
+                    if w == "rand_static" {
+                        self.rand_static.push(span);
+                    }
                     Ok(Expr::Call(w, Box::new(args), span))
                 } else {
                     Ok(Expr::Var(w, span))
