@@ -220,6 +220,14 @@ pub struct BudgetMark {
 
 
 impl LimitExceeded {
+    /// A limit crossed by a count kept outside a [`Budget`] (Context Free's
+    /// user-function calls, counted on a shared scope while the budget is
+    /// borrowed elsewhere): `reached` is never reported below one past
+    /// `configured`, as the budget's own errors never are.
+    pub fn crossed(limit: Limit, configured: u64, reached: u64) -> LimitExceeded {
+        LimitExceeded { limit, configured, reached: reached.max(configured.saturating_add(1)) }
+    }
+
     /// A limit read back from a file that records only that a limit cut the
     /// model short (the `scene` format's truncated flag), not the values.
     pub fn recorded(limit: Limit) -> LimitExceeded {

@@ -132,7 +132,7 @@ mod tests {
     #[test]
     fn only_the_deadline_sends_a_try_back_to_the_pool() {
         let deadline = LimitExceeded::deadline_passed(1, 2);
-        let depth = LimitExceeded { limit: Limit::Depth, configured: 1, reached: 2 };
+        let depth = LimitExceeded::recorded(Limit::Depth);
         assert!(hit_try_deadline(Some(&deadline), None));
         assert!(hit_try_deadline(None, Some(&deadline)));
         assert!(!hit_try_deadline(Some(&depth), None));

@@ -138,7 +138,7 @@ pub(crate) fn write_usdz_hierarchy(h: &Hierarchy, detail: u32, meta: &ExportMeta
     layer::footer(&mut text);
     drop(prototypes);
     budget.check_deadline()?;
-    let out = package::package(text.as_bytes(), &layers);
+    let out = package::package(text.as_bytes(), &layers, budget);
     budget.release_memory(reserved.saturating_add(bytes));
     out
 }

@@ -121,7 +121,7 @@ pub(crate) fn write_usdz(meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut B
     let out = write_text(meshes, meta, &split, &colours, text_bytes, budget).and_then(|text| {
         drop(split);
         budget.check_deadline()?;
-        package::package(text.as_bytes(), &[])
+        package::package(text.as_bytes(), &[], budget)
     });
     budget.release_memory(bytes.saturating_add(group_bytes));
     out

@@ -71,13 +71,13 @@ impl Functions {
         let calls = self.calls.fetch_add(1, Ordering::Relaxed) + 1;
         if calls > self.allowance.load(Ordering::Relaxed) {
             let max = self.max_steps.load(Ordering::Relaxed);
-            return Err(LimitExceeded { limit: Limit::Steps, configured: max, reached: self.base.load(Ordering::Relaxed).saturating_add(calls).max(max + 1) }.into());
+            return Err(LimitExceeded::crossed(Limit::Steps, max, self.base.load(Ordering::Relaxed).saturating_add(calls)).into());
         }
         let depth = self.depth.fetch_add(1, Ordering::Relaxed) + 1;
         let max = self.max_depth.load(Ordering::Relaxed);
         if depth > max {
             self.depth.fetch_sub(1, Ordering::Relaxed);
-            return Err(LimitExceeded { limit: Limit::Depth, configured: max.into(), reached: depth.into() }.into());
+            return Err(LimitExceeded::crossed(Limit::Depth, max.into(), depth.into()).into());
         }
         Ok(())
     }
