@@ -66,14 +66,16 @@ impl<T> ParseCache<T> {
     /// The value parsed from `source`: kept from an earlier call, or made by
     /// `parse` now (and kept when it succeeds and the source is small enough).
     pub fn get_or_parse<E>(&self, source: &[u8], parse: impl FnOnce(&[u8]) -> Result<T, E>) -> Result<Arc<T>, E> {
+        // A source too big to keep is never found either: no hash, no lock.
+        if source.len() > MAX_SOURCE {
+            return parse(source).map(Arc::new);
+        }
         let key = hash_of(source);
         if let Some(v) = self.lookup(key, source) {
             return Ok(v);
         }
         let value = Arc::new(parse(source)?);
-        if source.len() <= MAX_SOURCE {
-            self.keep(key, source, value.clone());
-        }
+        self.keep(key, source, value.clone());
         Ok(value)
     }
 

@@ -189,10 +189,11 @@ impl Engine {
         let RenderPlan { source, mut request, .. } = plan;
         let timeout_ms = request.limits.timeout_ms;
         let format = request.format;
-        let memo = super::inline::memo_key(&source, format);
-        let tried = match super::inline::may_try(timeout_ms, request.export_options.print.enabled) && self.quick.is_quick(memo) {
-            true => self.try_on_worker(&source, &mut request, memo),
-            false => None,
+        // Only a request that may be tried on the worker has its source hashed for the memo.
+        let memo = super::inline::may_try(timeout_ms, request.export_options.print.enabled, source.len()).then(|| super::inline::memo_key(&source, format));
+        let tried = match memo {
+            Some(memo) if self.quick.is_quick(memo) => self.try_on_worker(&source, &mut request, memo),
+            _ => None,
         };
         let watched = match tried {
             Some(done) => {
@@ -210,7 +211,7 @@ impl Engine {
                 });
                 tokio::time::timeout(watchdog_after(timeout_ms), task).await.map(|joined| {
                     joined.map(|(result, took)| {
-                        if result.is_ok() {
+                        if let (true, Some(memo)) = (result.is_ok(), memo) {
                             quick.record(memo, took);
                         }
                         result

@@ -21,8 +21,9 @@
 //!
 //! Only requests whose own deadline is at least [`MIN_REQUEST_DEADLINE_MS`]
 //! are tried, so that a thrown-away try (at most [`TRY_DEADLINE_MS`]) moves
-//! the request's end by at most 1 % of its deadline. Prints never are: they
-//! wait for a print slot and run for seconds.
+//! the request's end by at most 1 % of its deadline; only sources of at
+//! most [`MAX_SOURCE`] bytes, so that the memo's hash stays small beside a
+//! render. Prints never are: they wait for a print slot and run for seconds.
 
 use crate::core::{Limit, LimitExceeded};
 use crate::export::Format;
@@ -43,6 +44,11 @@ pub(crate) const TRY_DEADLINE_MS: u64 = 1;
 
 /// The shortest request deadline for which a try is made.
 pub(crate) const MIN_REQUEST_DEADLINE_MS: u64 = 100;
+
+/// The largest source for which a try is made (and whose render time is
+/// remembered): the memo hashes the source on the async worker, and an
+/// icon's grammar is a few kilobytes.
+pub(crate) const MAX_SOURCE: usize = 64 << 10;
 
 /// How many (source, format) pairs are remembered; the memo is emptied when
 /// it is full (a sweep of distinct sources costs one pool render each).
@@ -87,10 +93,11 @@ impl QuickRenders {
     }
 }
 
-/// Whether a request with deadline `timeout_ms` (0: none) and print flag
-/// may be tried on the worker at all.
-pub(crate) fn may_try(timeout_ms: u64, print: bool) -> bool {
-    !print && timeout_ms >= MIN_REQUEST_DEADLINE_MS
+/// Whether a request with deadline `timeout_ms` (0: none), print flag and
+/// source of `source_len` bytes may be tried on the worker at all. Only
+/// such requests are looked up in, or recorded into, the memo.
+pub(crate) fn may_try(timeout_ms: u64, print: bool, source_len: usize) -> bool {
+    !print && timeout_ms >= MIN_REQUEST_DEADLINE_MS && source_len <= MAX_SOURCE
 }
 
 /// Whether a try's outcome ended at the try's deadline (and must be run
@@ -138,9 +145,11 @@ mod tests {
         assert!(!hit_try_deadline(Some(&depth), None));
         assert!(!hit_try_deadline(None, Some(&depth)));
         assert!(!hit_try_deadline(None, None));
-        assert!(may_try(10_000, false));
-        assert!(!may_try(10_000, true), "prints never");
-        assert!(!may_try(50, false), "a short deadline is not shortened further");
-        assert!(!may_try(0, false), "no deadline: nothing to cut a try short with");
+        assert!(may_try(10_000, false, 1000));
+        assert!(!may_try(10_000, true, 1000), "prints never");
+        assert!(!may_try(50, false, 1000), "a short deadline is not shortened further");
+        assert!(!may_try(0, false, 1000), "no deadline: nothing to cut a try short with");
+        assert!(may_try(10_000, false, MAX_SOURCE));
+        assert!(!may_try(10_000, false, MAX_SOURCE + 1), "a big source is not hashed on the worker");
     }
 }
