@@ -7,6 +7,7 @@ mod serve_child;
 mod picture;
 
 mod cfdg;
+mod cfdg_limits;
 mod cfdg_pictures;
 mod cli;
 mod c_decoder;

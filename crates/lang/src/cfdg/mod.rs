@@ -117,13 +117,14 @@ impl FrontEnd for Cfdg {
         let g = parse_checked_in(source, req.script_dir)?;
         clock.lap(Phase::Parse);
         let var = variation_of(req)?;
-        let mut opts = eval::Options { variation: var, ..eval::Options::default() };
+        let mut opts = eval::Options { variation: var, on_limit: req.on_limit, ..eval::Options::default() };
         if let Some(side) = req.canvas {
             // A picture is drawn for its size, as `cfdg -s` draws it.
             (opts.width, opts.height) = (side, side);
         }
         let picture = eval::render(&g, &opts, budget)?;
-        let scene = tiles::scene(&picture, req, budget)?;
+        let mut scene = tiles::scene(&picture, req, budget)?;
+        scene.truncated = picture.truncated;
         let drawing = drawing::of(&picture, budget)?;
         Ok(Model {
             language: Language::Cfdg,

@@ -18,6 +18,7 @@ pub mod tile;
 
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, Element, Grammar, Term, Value};
+use crate::core::budget::{LimitExceeded, OnLimit};
 use crate::model::EvalError;
 use crate::{ParseError, Span};
 use expr::{scalar, Scope};
@@ -47,11 +48,14 @@ pub struct Options {
     pub variation: i32,
     /// Most shapes (cfdg `-m`); 0 for none.
     pub max_shapes: u64,
+    /// At a budget limit, stop expanding and keep the shapes finished so
+    /// far ([`OnLimit::Truncate`]), as cfdg's `-m` stops, or fail.
+    pub on_limit: OnLimit,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { width: 500, height: 500, min_size: 0.3, border: 2.0, variation: 1, max_shapes: 0 }
+        Options { width: 500, height: 500, min_size: 0.3, border: 2.0, variation: 1, max_shapes: 0, on_limit: OnLimit::Error }
     }
 }
 
@@ -103,6 +107,10 @@ pub struct Picture {
     /// The tiling and the final scale (design units to pixels) when the
     /// design is tiled or a frieze: the drawing repeats each shape.
     pub tiling: Option<(tile::Tiling, f64)>,
+    /// The limit that ended expansion early under [`OnLimit::Truncate`]:
+    /// the picture then holds the shapes finished before it, largest first
+    /// as cfdg expands them (what `cfdg -m` draws).
+    pub truncated: Option<LimitExceeded>,
 }
 
 #[derive(Debug, Clone)]

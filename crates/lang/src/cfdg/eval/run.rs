@@ -10,7 +10,7 @@ use super::state::{Hsba, State};
 use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, define_seed, loop_seed, term_seed, Adjustment, Element, Grammar, Value};
-use crate::core::budget::Budget;
+use crate::core::budget::{Budget, OnLimit};
 use crate::model::EvalError;
 use std::collections::HashMap;
 
@@ -234,29 +234,42 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     init.transform.tx += offset.0;
     init.transform.ty += offset.1;
     init.seed = r.current;
-    r.process(start_shape, init, start_params)?;
-    let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
-    while !r.unfinished.is_empty() {
-        if r.shape_count.max(r.unfinished.len() as u64) >= r.max_shapes {
-            break;
+    let truncated = match r.expand(start_shape, init, start_params) {
+        Ok(()) => None,
+        Err(EvalError::Limit(e)) if opts.on_limit == OnLimit::Truncate => Some(e),
+        Err(e) => return Err(e),
+    };
+    Ok(Picture { truncated, ..r.finish(background) })
+}
+
+impl Renderer<'_> {
+    /// Expands the start shape, then the largest unfinished shape first,
+    /// until none is left or cfdg's maximum shapes is reached.
+    fn expand(&mut self, start_shape: usize, init: State, start_params: Vec<f64>) -> Result<(), EvalError> {
+        let r = self;
+        r.process(start_shape, init, start_params)?;
+        let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
+        while !r.unfinished.is_empty() {
+            if r.shape_count.max(r.unfinished.len() as u64) >= r.max_shapes {
+                break;
+            }
+            pop_heap(&mut r.unfinished, &less);
+            let Some(mut s) = r.unfinished.pop() else { break };
+            r.budget.release_memory(SHAPE_BYTES + 8 * s.params.len() as u64);
+            r.budget.charge_step()?;
+            let choice = s.state.seed.next_double();
+            let rules = &r.rules.by_shape[s.shape];
+            let Some(&(_, body)) = rules.iter().find(|(w, _)| *w >= choice).or(rules.last()) else { continue };
+            r.current = s.state.seed;
+            let depth = r.scope.vars.len();
+            r.bind_params(s.shape, &s.params);
+            r.params = std::mem::take(&mut s.params);
+            r.body(body, &s.state)?;
+            r.scope.vars.truncate(depth);
+            r.charge_calls()?;
         }
-        pop_heap(&mut r.unfinished, &less);
-        let Some(mut s) = r.unfinished.pop() else { break };
-        r.budget.release_memory(SHAPE_BYTES + 8 * s.params.len() as u64);
-        r.budget.charge_step()?;
-        let choice = s.state.seed.next_double();
-        let rules = &r.rules.by_shape[s.shape];
-        let Some(&(_, body)) = rules.iter().find(|(w, _)| *w >= choice).or(rules.last()) else { continue };
-        r.current = s.state.seed;
-        let depth = r.scope.vars.len();
-        r.bind_params(s.shape, &s.params);
-        r.params = std::mem::take(&mut s.params);
-        r.body(body, &s.state)?;
-        r.scope.vars.truncate(depth);
-        r.charge_calls()?;
+        r.charge_calls()
     }
-    r.charge_calls()?;
-    Ok(r.finish(background))
 }
 
 /// The `CF::Size` (or 2.x `size { }`) adjustment's size and offset.
@@ -619,6 +632,7 @@ impl Renderer<'_> {
             finished,
             paths: self.paths,
             tiling: self.tiling.map(|t| (t, scale)),
+            truncated: None,
         }
     }
 }
