@@ -375,6 +375,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         files: &req.files,
         // A picture's side, for languages that evaluate in pixels (Context Free).
         canvas: route.canvas(req),
+        picture_only: route.picture_only(),
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     crate::core::memprobe::mark("start", &budget);

@@ -155,6 +155,12 @@ impl Route {
         matches!(self, Route::Flat { output: Output::Picture(_), .. }).then_some(req.export_options.preview.size)
     }
 
+    /// Whether the output is a picture (a drawing written as SVG, or the
+    /// preview), so a model's 2D drawing, when it has one, is all a stage reads.
+    pub(crate) fn picture_only(&self) -> bool {
+        matches!(self, Route::Drawing(_) | Route::Flat { output: Output::Picture(_), .. })
+    }
+
     /// Whether no merged mesh is built (only the output is promised).
     pub(crate) fn streamed(&self) -> bool {
         matches!(self, Route::Streamed { .. })

@@ -71,6 +71,11 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
     let mut canvas: Vec<[u8; 4]> = vec![premultiply(bg); pixels as usize];
     let mut path: Vec<Command> = Vec::with_capacity(16);
     let mut mask: Vec<u8> = Vec::new();
+    // zeno's rasteriser without scratch memory builds (and zeroes) a
+    // 16 KiB cell array on the stack for every mark; kept scratch memory
+    // gives the same coverage without it, which halved the preview of
+    // the 262,143-square bush (docs/benchmarks.md).
+    let mut scratch = zeno::Scratch::new();
     for mark in &drawing.marks {
         if mark.kind == MarkKind::Fill {
             // AGG's `renderer_base::fill`: the colour blended over every pixel.
@@ -99,7 +104,7 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         let (w, h) = (w as u32, h as u32);
         mask.clear();
         mask.resize(w as usize * h as usize, 0);
-        let mut job = Mask::new(&path);
+        let mut job = Mask::with_scratch(&path, &mut scratch);
         job.size(w, h).style(style);
         match transform {
             // The box offset goes into the map, applied after the pen.

@@ -123,7 +123,8 @@ impl FrontEnd for Cfdg {
             (opts.width, opts.height) = (side, side);
         }
         let picture = eval::render(&g, &opts, budget)?;
-        let mut scene = tiles::scene(&picture, req, budget)?;
+        // A picture of the design is drawn from its drawing alone.
+        let mut scene = if req.picture_only { crate::model::Scene::default() } else { tiles::scene(&picture, req, budget)? };
         scene.truncated = picture.truncated;
         let drawing = drawing::of(&picture, budget)?;
         Ok(Model {

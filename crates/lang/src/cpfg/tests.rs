@@ -34,6 +34,7 @@ fn build(front: &dyn crate::FrontEnd, src: &str, files: &BTreeMap<String, Vec<u8
         frame: None,
         files,
         canvas: None,
+        picture_only: false,
     };
     front.build_model(src.as_bytes(), &req, &mut Budget::new(limits), &mut StageClock::start())
 }

@@ -72,4 +72,10 @@ pub struct BuildRequest<'a> {
     /// its picture at 300 px is not its picture at 500 px scaled), as
     /// `detail` is read by those that tessellate; it names no format.
     pub canvas: Option<u32>,
+    /// Whether the output is a picture of the model (`png`, `svg`): a
+    /// language that makes a 2D [`Drawing`](crate::model::drawing::Drawing)
+    /// then need not build its 3D geometry, which no stage reads (Context
+    /// Free's tiles would cost a tenth of its picture's time). Like
+    /// `canvas`, it names no format.
+    pub picture_only: bool,
 }

@@ -12,6 +12,7 @@ pub mod expr;
 pub mod frame;
 pub mod func;
 pub mod modval;
+mod pending;
 pub mod state;
 pub mod symmetry;
 pub mod tile;
@@ -23,7 +24,10 @@ use crate::model::EvalError;
 use crate::{ParseError, Span};
 use expr::{scalar, Scope};
 use state::{Affine, State};
-use std::collections::HashMap;
+/// Lookups the renderer makes per shape, hashed by foldhash (Orson Peters,
+/// 2024) with a fixed seed: nothing iterates these maps, so the seed
+/// cannot change output, and SipHash cost a twentieth of a large render.
+pub(crate) type FastMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
 
 /// The primitives' shape numbers (`primShape`): CIRCLE, SQUARE, TRIANGLE.
 pub const PRIMITIVES: [&str; 3] = ["CIRCLE", "SQUARE", "TRIANGLE"];
@@ -123,7 +127,7 @@ struct Unfinished {
 
 /// A compiled rule set: rules of each shape with cumulative weights.
 struct Rules<'g> {
-    index: HashMap<&'g str, usize>,
+    index: FastMap<&'g str, usize>,
     /// Per shape number (primitives first): (cumulative weight, body).
     by_shape: Vec<Vec<(f64, &'g [Element])>>,
     /// Per shape number: its parameters' names.
@@ -135,7 +139,7 @@ struct Rules<'g> {
 }
 
 fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
-    let mut index: HashMap<&str, usize> = HashMap::new();
+    let mut index: FastMap<&str, usize> = FastMap::default();
     for (i, p) in PRIMITIVES.iter().enumerate() {
         index.insert(p, i);
     }

@@ -3,7 +3,7 @@
 //! and its loop, transform, if and switch forms), charging the [`Budget`].
 
 use super::expr::{scalar, Scope};
-use super::frame::{bounds_polygon, pop_heap, push_heap, Bounds};
+use super::frame::{bounds_polygon, Bounds};
 use super::tile::{Frieze, Tiling};
 use super::adjust::{apply_prepared, prepare, Prepared};
 use super::state::{Hsba, State};
@@ -12,7 +12,7 @@ use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, define_seed, loop_seed, term_seed, Adjustment, Element, Grammar, Value};
 use crate::core::budget::{Budget, OnLimit};
 use crate::model::EvalError;
-use std::collections::HashMap;
+use super::FastMap as HashMap;
 
 mod bind;
 mod path;
@@ -29,7 +29,7 @@ struct Renderer<'g> {
     cache: HashMap<usize, (Prepared, Rand64)>,
     scope: Scope<'static>,
     current: Rand64,
-    unfinished: Vec<Unfinished>,
+    unfinished: super::pending::Pending,
     finished: Vec<Finished>,
     bounds: Bounds,
     scale_area: f64,
@@ -145,10 +145,10 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     let mut r = Renderer {
         rules,
         opts: *opts,
-        cache: HashMap::new(),
+        cache: HashMap::default(),
         scope,
         current,
-        unfinished: Vec::new(),
+        unfinished: Default::default(),
         finished: Vec::new(),
         bounds: Bounds::default(),
         scale_area: 0.0,
@@ -248,12 +248,10 @@ impl Renderer<'_> {
     fn expand(&mut self, start_shape: usize, init: State, start_params: Vec<f64>) -> Result<(), EvalError> {
         let r = self;
         r.process(start_shape, init, start_params)?;
-        let less = |a: &Unfinished, b: &Unfinished| a.area < b.area;
         while !r.unfinished.is_empty() {
             if r.shape_count.max(r.unfinished.len() as u64) >= r.max_shapes {
                 break;
             }
-            pop_heap(&mut r.unfinished, &less);
             let Some(mut s) = r.unfinished.pop() else { break };
             r.budget.release_memory(SHAPE_BYTES + 8 * s.params.len() as u64);
             r.budget.charge_step()?;
@@ -327,7 +325,6 @@ impl Renderer<'_> {
                 self.budget.reserve_memory(SHAPE_BYTES)?;
                 self.budget.reserve_memory(8 * params.len() as u64)?;
                 self.unfinished.push(Unfinished { shape, state, area, params });
-                push_heap(&mut self.unfinished, &|a: &Unfinished, b: &Unfinished| a.area < b.area);
             }
             return Ok(());
         }

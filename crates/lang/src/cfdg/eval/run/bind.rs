@@ -124,7 +124,7 @@ impl Renderer<'_> {
     /// arguments; a name with no rules and no variable is an error here,
     /// where cfdg meets it.
     pub(super) fn target(&self, rep: &Replacement) -> Result<(usize, Option<Vec<f64>>), EvalError> {
-        if let Some(v) = self.scope.get(&key(&rep.shape)) {
+        if let Some(v) = self.scope.get_marked(SHAPE_VAR, &rep.shape) {
             if rep.args.is_some() {
                 return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: cannot bind parameters twice (`{}` is a shape variable)", rep.span.line, rep.span.column, rep.shape) });
             }
