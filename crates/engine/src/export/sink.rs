@@ -159,7 +159,7 @@ fn refused(format: &'static str, what: &str) -> ExportError {
 /// Those formats write whole-file structures (a vertex table, a zip
 /// directory) from every mesh at once, so this sink holds the meshes; the
 /// streaming formats implement the trait themselves.
-pub struct FlatSink {
+pub(crate) struct FlatSink {
     format: &'static str,
     write: WriteMeshes,
     meta: ExportMeta,
