@@ -24,9 +24,9 @@ pub mod ug;
 pub mod usdz;
 
 pub use descriptor::{OptionGroup, Writer};
-pub use sink::{Drawn, GeometrySink, InstanceData, InstanceLayout, MakeSink, MeshId};
+pub use sink::{Drawn, ExactPlacement, GeometrySink, InstanceData, InstanceLayout, MakeSink, MeshId};
 pub(crate) use sink::FlatSink;
-pub(crate) use descriptor::{EncodePicture, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel};
+pub(crate) use descriptor::{EncodePicture, WriteDrawing, WriteMeshes, WriteModel};
 pub use formats::{estimated_size, Format, FORMATS};
 pub(crate) use formats::{flat_sink, no_drawing};
 pub use gltf::compact::Compression;
