@@ -583,8 +583,8 @@ fn run_decode(args: DecodeArgs) -> Result<(), Failure> {
     }
     let mesh = rulemesh::decode::decode_strips(&bytes).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
     let triangles = mesh.triangle_count();
-    let meshes = [rulemesh::geom::NamedMesh { name: "model".into(), mesh }];
-    let out = rulemesh::pipeline::write_meshes(format, &meshes, &Limits::ceiling()).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
+    let meshes = vec![rulemesh::geom::NamedMesh { name: "model".into(), mesh }];
+    let out = rulemesh::pipeline::write_meshes(format, meshes, &Limits::ceiling()).map_err(|e| Failure::new(EXIT_FAILURE, format!("{}: {e}", args.file)))?;
     write_output(&args.output, &out)?;
     eprintln!("{}: {} triangles, {} bytes ({:?})", args.file, triangles, out.len(), format);
     Ok(())

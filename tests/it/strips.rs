@@ -125,13 +125,16 @@ fn decode_command_writes_glb_and_stl_and_rejects_damage() {
     let bytes = std::fs::read(&strips).expect("written");
     assert_eq!(&bytes[..4], b"RMST");
     let flat = decode_stl(&render(&g, &["--format", "stl"]));
-    for ext in ["stl", "glb"] {
+    // Every format written from meshes, and png through the preview stage.
+    for ext in ["stl", "glb", "png"] {
         let o = dir.path().join(format!("back.{ext}"));
         let out = run(&["decode", strips.to_str().expect("utf-8"), "-o", o.to_str().expect("utf-8")], None);
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
         let written = std::fs::read(&o).expect("written");
         if ext == "stl" {
             assert_eq!(decode_stl(&written).len(), flat.len());
+        } else if ext == "png" {
+            assert_eq!(&written[..8], b"\x89PNG\r\n\x1a\n");
         } else {
             assert_eq!(&written[..4], b"glTF");
         }

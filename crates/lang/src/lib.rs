@@ -24,7 +24,7 @@ pub mod expr;
 pub(crate) mod frontend;
 pub mod ir;
 pub mod model;
-pub mod parse_cache;
+pub(crate) mod parse_cache;
 
 pub mod cfdg;
 pub mod cpfg;

@@ -22,7 +22,7 @@ use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex};
 
 /// The most programs kept.
-pub const MAX_ENTRIES: usize = 512;
+pub(crate) const MAX_ENTRIES: usize = 512;
 
 /// The most source bytes kept, over all entries.
 pub const MAX_BYTES: usize = 16 << 20;
@@ -32,7 +32,7 @@ pub const MAX_SOURCE: usize = 1 << 20;
 
 /// A bounded cache of values parsed from source bytes.
 #[derive(Debug)]
-pub struct ParseCache<T> {
+pub(crate) struct ParseCache<T> {
     inner: Mutex<Inner<T>>,
 }
 
@@ -65,7 +65,7 @@ fn hash_of(source: &[u8]) -> u64 {
 impl<T> ParseCache<T> {
     /// The value parsed from `source`: kept from an earlier call, or made by
     /// `parse` now (and kept when it succeeds and the source is small enough).
-    pub fn get_or_parse<E>(&self, source: &[u8], parse: impl FnOnce(&[u8]) -> Result<T, E>) -> Result<Arc<T>, E> {
+    pub(crate) fn get_or_parse<E>(&self, source: &[u8], parse: impl FnOnce(&[u8]) -> Result<T, E>) -> Result<Arc<T>, E> {
         // A source too big to keep is never found either: no hash, no lock.
         if source.len() > MAX_SOURCE {
             return parse(source).map(Arc::new);
@@ -108,13 +108,15 @@ impl<T> ParseCache<T> {
         inner.entries.insert(key, Entry { source: Arc::from(source), value, used });
     }
 
-    /// How many programs are kept (for tests and metrics).
-    pub fn len(&self) -> usize {
+    /// How many programs are kept (for tests).
+    #[cfg(test)]
+    pub(crate) fn len(&self) -> usize {
         self.inner.lock().map_or(0, |i| i.entries.len())
     }
 
     /// Whether nothing is kept.
-    pub fn is_empty(&self) -> bool {
+    #[cfg(test)]
+    pub(crate) fn is_empty(&self) -> bool {
         self.len() == 0
     }
 }

@@ -60,7 +60,7 @@ fn torus_tube(d: u64) -> u64 {
 /// and computing their rings (libm's sines and cosines) again each time was
 /// a visible share of a fresh render (issue 33). All kinds at every kept
 /// detail hold about 3 MB; finer details are made each time.
-pub const KEPT_DETAIL: u32 = 64;
+pub(crate) const KEPT_DETAIL: u32 = 64;
 
 /// The kept prototypes, by kind and detail, made on first use.
 static KEPT: [[OnceLock<Prototype>; KEPT_DETAIL as usize + 1]; PrimitiveKind::ALL.len()] = [const { [const { OnceLock::new() }; KEPT_DETAIL as usize + 1] }; PrimitiveKind::ALL.len()];

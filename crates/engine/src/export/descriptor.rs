@@ -128,10 +128,6 @@ pub(crate) type EncodePicture = fn(&Image, Option<&Provenance>, &mut Budget) -> 
 /// returns the bytes and the triangles a reader tessellates.
 pub(crate) type WriteModel = fn(&Scene, Option<&Hierarchy>, u32, MeshLayout, &ExportOptions, Option<&Provenance>, &mut Budget) -> Result<(Vec<u8>, u64), ExportError>;
 
-/// Writes an object-instancing hierarchy as it was made (each leaf shape
-/// once, placed per leaf) at a tessellation detail, with the model's
-/// metadata.
-pub(crate) type WriteHierarchy = fn(&Hierarchy, u32, &ExportMeta, &mut Budget) -> Result<Vec<u8>, ExportError>;
 /// Writes the model's 2D drawing (a Context Free design's marks), with the
 /// model's provenance where the format has metadata.
 pub(crate) type WriteDrawing = fn(&Drawing, Option<&Provenance>, &mut Budget) -> Result<Vec<u8>, ExportError>;
@@ -158,15 +154,16 @@ pub enum Writer {
     /// meshing (`docs/scene-format.md`).
     Model(WriteModel),
     /// From meshes as [`Writer::Sink`]'s `flat` does, and from an object-instancing
-    /// hierarchy, when the model has one, by `hierarchy` (unfitted and
-    /// unprinted requests; the front ends are asked for a hierarchy): each
-    /// leaf shape written once and placed per leaf (USDZ's scene-graph
-    /// instancing, `docs/usdz.md`).
+    /// hierarchy, when the model has one, into the sink `hierarchy` makes
+    /// (unfitted and unprinted requests; the front ends are asked for a
+    /// hierarchy): each (leaf shape, colour) given once as a mesh and placed
+    /// per leaf by the pipeline's driver (USDZ's scene-graph instancing,
+    /// `docs/usdz.md`). A flat scene's repeats are written flat.
     Instancing {
         /// The flat route's writer.
         meshes: WriteMeshes,
-        /// The hierarchy's writer.
-        hierarchy: WriteHierarchy,
+        /// The hierarchy's sink.
+        hierarchy: super::MakeSink,
     },
     /// From the model's 2D [`Drawing`], for a model that carries one (a
     /// Context Free design); the pipeline refuses the format for a model

@@ -13,9 +13,7 @@
 //! formats exist.
 
 use super::descriptor::{FormatInfo, OptionGroup, Writer};
-use super::{gltf, png, scene, stl, strips, svg, threemf, ug, usdz, ExportError, ExportMeta, ExportOptions};
-use crate::core::budget::Budget;
-use crate::geom::NamedMesh;
+use super::{gltf, png, scene, stl, strips, svg, threemf, ug, usdz, ExportError, ExportOptions, FlatSink, GeometrySink};
 
 /// Declares [`Format`] and the registry from one table: each variant and
 /// the descriptor of the format it stands for. Names, extensions, MIME
@@ -184,32 +182,21 @@ impl Format {
     }
 }
 
-/// Writes `meshes` in `format` with default options, reserving the output size in `budget` first.
-pub fn export(format: Format, meshes: &[NamedMesh], meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
-    export_with(format, meshes, meta, &ExportOptions::default(), budget)
-}
-
-/// Writes `meshes` in `format` with the request's format options, reserving
-/// the output size in `budget` first: the writer the registry names for it.
-/// It writes the meshes as they are: fitting them into the unit box is the
-/// pipeline's stage (`fit_unit_box` is read there, not here).
-pub fn export_with(
-    format: Format,
-    meshes: &[NamedMesh],
-    meta: &ExportMeta,
-    options: &ExportOptions,
-    budget: &mut Budget,
-) -> Result<Vec<u8>, ExportError> {
-    // Writing a large model takes a share of the deadline; a model that
-    // arrives here late is not started.
-    budget.check_deadline()?;
+/// The sink that writes meshes in `format` (its merged-mesh writer behind
+/// a [`FlatSink`], as every flat render writes them), with the request's
+/// format options; or the typed refusal of a format that is not written
+/// from meshes: a picture (the pipeline draws the preview stage's picture
+/// first and encodes it; export does no stage work), a model, a drawing.
+/// For meshes from outside a render (the CLI's `decode` of a strips file,
+/// `pipeline::write_meshes`).
+pub(crate) fn flat_sink(format: Format, options: &ExportOptions) -> Result<Box<dyn GeometrySink>, ExportError> {
     let info = format.info();
     match info.writer {
-        Writer::Sink { flat: write, .. } | Writer::Instancing { meshes: write, .. } => write(meshes, meta, options, budget),
-        // The pipeline runs the preview stage itself (to time it) and then
-        // the encoder; this arm serves meshes from outside a render (a
-        // decoded strips file) and library callers.
-        Writer::Picture(encode) => encode(&crate::preview::render(meshes, &options.preview, budget)?, meta.provenance.as_ref(), budget),
+        Writer::Sink { flat: write, .. } | Writer::Instancing { meshes: write, .. } => Ok(Box::new(FlatSink::new(info.name, write, *options))),
+        Writer::Picture(_) => Err(ExportError::InvalidOptions {
+            format: info.name,
+            detail: format!("the {} format is written from a picture, which the preview stage draws from meshes first", info.name),
+        }),
         Writer::Model(_) => Err(ExportError::InvalidOptions {
             format: info.name,
             detail: format!("the {} format is written from the model (instances, hierarchy), not from meshes", info.name),

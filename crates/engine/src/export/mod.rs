@@ -24,10 +24,11 @@ pub mod ug;
 pub mod usdz;
 
 pub use descriptor::{OptionGroup, Writer};
-pub use sink::{Drawn, FlatSink, GeometrySink, InstanceData, InstanceLayout, MakeSink, MeshId};
-pub(crate) use descriptor::{EncodePicture, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel};
-pub use formats::{estimated_size, export, export_with, Format, FORMATS};
-pub(crate) use formats::no_drawing;
+pub use sink::{Drawn, ExactPlacement, GeometrySink, InstanceData, InstanceLayout, MakeSink, MeshId};
+pub(crate) use sink::FlatSink;
+pub(crate) use descriptor::{EncodePicture, WriteDrawing, WriteMeshes, WriteModel};
+pub use formats::{estimated_size, Format, FORMATS};
+pub(crate) use formats::{flat_sink, no_drawing};
 pub use gltf::compact::Compression;
 pub(crate) use gltf::compact::{parse_compression, GltfOptions};
 pub(crate) use provenance::Provenance;
@@ -232,7 +233,13 @@ mod tests {
             // Every format written from meshes, as the registry lists them.
             for &format in Format::ALL.iter().filter(|f| matches!(f.info().writer, Writer::Sink { .. } | Writer::Instancing { .. })) {
                 let ext = format!("{}.{}", format.name(), format.extension());
-                let bytes = export(format, &meshes, &meta, &mut Budget::new(Limits::default())).unwrap();
+                let mut budget = Budget::new(Limits::default());
+                let mut sink = flat_sink(format, &ExportOptions::default()).unwrap();
+                sink.begin(&meta, &mut budget).unwrap();
+                for mesh in meshes.iter().cloned() {
+                    sink.mesh(mesh, Drawn::Plain, &mut budget).unwrap();
+                }
+                let bytes = sink.end(&mut budget).unwrap();
                 assert!(bytes.len() as u64 <= estimated_size(format, v, t), "{name}.{ext}: {} > estimate", bytes.len());
                 let path = dir.join(format!("{name}.{ext}"));
                 std::fs::write(&path, &bytes).unwrap();

@@ -52,7 +52,9 @@ impl InstanceLayout {
 
 /// One placement of a mesh given earlier ([`GeometrySink::place`]), in the
 /// f32 values the mesher uses; rotation, scale and colour are written only
-/// where the mesh's [`InstanceLayout`] has them.
+/// where the mesh's [`InstanceLayout`] has them. [`exact`](InstanceData::exact)
+/// is the same placement as the model holds it, for a format that makes a
+/// matrix of it in f64 before rounding (usdz).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InstanceData {
     /// Translation.
@@ -63,6 +65,21 @@ pub struct InstanceData {
     pub scale: [f32; 3],
     /// Linear RGB.
     pub colour: [f32; 3],
+    /// The placement before rounding to f32: a hierarchy leaf's f64 world
+    /// frame, or a flat scene's f32 placement widened.
+    pub exact: ExactPlacement,
+}
+
+/// A placement in f64, as an object-instancing hierarchy computes its
+/// leaves' world frames (`model::hierarchy::PlacedLeaf`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ExactPlacement {
+    /// Translation.
+    pub translation: glam::DVec3,
+    /// Unit rotation.
+    pub rotation: glam::DQuat,
+    /// Per-axis scale.
+    pub scale: glam::DVec3,
 }
 
 /// How a mesh given to [`GeometrySink::mesh`] is drawn.
@@ -159,7 +176,7 @@ fn refused(format: &'static str, what: &str) -> ExportError {
 /// Those formats write whole-file structures (a vertex table, a zip
 /// directory) from every mesh at once, so this sink holds the meshes; the
 /// streaming formats implement the trait themselves.
-pub struct FlatSink {
+pub(crate) struct FlatSink {
     format: &'static str,
     write: WriteMeshes,
     meta: ExportMeta,

@@ -10,7 +10,8 @@
 //!   route.
 //! * [`scene`] (with [`prototypes`]) and [`hierarchy`]: a flat scene's
 //!   repeated meshes, or a hierarchy's leaf shapes, given once as meshes and
-//!   then placed, for the instanced route (glTF's `EXT_mesh_gpu_instancing`).
+//!   then placed, for the instanced route (glTF's `EXT_mesh_gpu_instancing`)
+//!   and, a hierarchy only, usdz's scene-graph instancing.
 //!   Where a mesh is laid out before its placements, as glTF's buffer needs,
 //!   the placements are streamed into the output as the model is walked.
 //! * [`meshes`]: meshes made by the mesher or the print stage, fed plain,
@@ -18,7 +19,7 @@
 //!   a late answer).
 
 use crate::core::budget::{Budget, LimitExceeded, OnLimit};
-use crate::export::{Drawn, ExportError, ExportMeta, GeometrySink, InstanceData, InstanceLayout, MeshId};
+use crate::export::{Drawn, ExactPlacement, ExportError, ExportMeta, GeometrySink, InstanceData, InstanceLayout, MeshId};
 use crate::geom::mesh::mesh_bytes;
 use crate::geom::{Mesh, NamedMesh};
 use crate::mesh::pieces::for_each_piece;
@@ -26,7 +27,7 @@ use crate::mesh::MeshLayout;
 use crate::model::hierarchy::PlacedLeaf;
 use crate::model::instancing::{self, MeshKey, Plan, Source, Varying};
 use crate::model::{Hierarchy, Scene};
-use glam::{Quat, Vec3};
+use glam::{DVec3, Quat, Vec3};
 
 /// The flat model a streaming sink is fed from: a scene (and the hierarchy
 /// whose leaves it stands for, not expanded), at a detail, its pieces in the
@@ -142,7 +143,8 @@ pub(super) fn scene(scene: &Scene, plan: &Plan, prototypes: Vec<NamedMesh>, plai
     plan.walk(scene, &mut |slot, p| {
         if failed.is_ok() {
             let [r, g, b, _] = p.colour.map(|c| f32::from(c) / 255.0);
-            let at = InstanceData { translation: p.translation.to_array(), rotation: p.rotation.to_array(), scale: p.scale.to_array(), colour: [r, g, b] };
+            let exact = ExactPlacement { translation: p.translation.as_dvec3(), rotation: p.rotation.as_dquat(), scale: p.scale.as_dvec3() };
+            let at = InstanceData { translation: p.translation.to_array(), rotation: p.rotation.to_array(), scale: p.scale.to_array(), colour: [r, g, b], exact };
             failed = sink.place(MeshId(slot), &at, budget);
         }
     });
@@ -157,8 +159,11 @@ pub(super) fn scene(scene: &Scene, plan: &Plan, prototypes: Vec<NamedMesh>, plai
 /// rotation, scale and colour where they vary (a first walk finds out), so
 /// the file is the one [`scene`] makes of the expanded scene; without it
 /// (L-systems) one mesh per (leaf shape, colour) with translation and
-/// rotation, and scale only when some entry scales. The leaf shapes are
-/// tessellated here, at `detail`, and charged to `budget`.
+/// rotation, and scale only when some entry scales (usdz too, whatever the
+/// language: it binds one material per prototype). Each placement carries
+/// the leaf's f64 frame as well ([`InstanceData::exact`]). The leaf shapes
+/// are tessellated here, at `detail`, and charged to `budget`; the walk
+/// stops at the sink's first refusal.
 pub(super) fn hierarchy(h: &Hierarchy, detail: u32, per_instance_colour: bool, mut sink: Box<dyn GeometrySink>, meta: &ExportMeta, budget: &mut Budget) -> Result<Vec<u8>, ExportError> {
     sink.begin(meta, budget)?;
     let counts = h.leaf_counts();
@@ -190,6 +195,7 @@ pub(super) fn hierarchy(h: &Hierarchy, detail: u32, per_instance_colour: bool, m
             rotation: leaf.rotation.as_quat().normalize().to_array(),
             scale: [leaf.scale as f32; 3],
             colour: [r, g, b],
+            exact: ExactPlacement { translation: leaf.translation, rotation: leaf.rotation, scale: DVec3::splat(leaf.scale) },
         }
     };
     // What varies per mesh, as `Plan` records it of the flat scene (MDG
@@ -227,11 +233,13 @@ pub(super) fn hierarchy(h: &Hierarchy, detail: u32, per_instance_colour: bool, m
         let mesh = Mesh { colours: vec![colour; p.positions.len()], positions: p.positions, normals: p.normals, indices: p.indices };
         sink.mesh(NamedMesh { name, mesh }, Drawn::Instanced { count: mesh_counts[m], layout: carried }, budget)?;
     }
+    // The walk stops at the first refusal (the deadline, a limit).
     let mut failed = Ok(());
-    h.walk(&mut |leaf| {
-        if let (Ok(()), Some(mesh)) = (&failed, mesh_of(leaf)) {
+    h.walk_while(&mut |leaf| {
+        if let Some(mesh) = mesh_of(leaf) {
             failed = sink.place(MeshId(mesh), &placement(leaf), budget);
         }
+        failed.is_ok()
     });
     failed?;
     sink.end(budget)

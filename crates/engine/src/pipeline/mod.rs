@@ -330,9 +330,20 @@ fn budget_for(limits: Limits) -> Budget {
 }
 
 /// Writes meshes that come from outside a render (the CLI's `decode` of a
-/// strips file) in `format`, under a budget of `limits`.
-pub fn write_meshes(format: Format, meshes: &[geom::NamedMesh], limits: &Limits) -> Result<Vec<u8>, RenderError> {
-    Ok(export::export(format, meshes, &ExportMeta::default(), &mut budget_for(*limits))?)
+/// strips file) in `format`, under a budget of `limits`, with default
+/// format options and no metadata: through the format's flat sink, as a
+/// render's meshes are written, or for a picture format (`png`) through
+/// the preview stage, run here, then the format's encoder.
+pub fn write_meshes(format: Format, meshes: Vec<geom::NamedMesh>, limits: &Limits) -> Result<Vec<u8>, RenderError> {
+    let mut budget = budget_for(*limits);
+    // Writing a large model takes a share of the deadline; a late one is not started.
+    budget.check_deadline()?;
+    let (meta, options) = (ExportMeta::default(), ExportOptions::default());
+    if let export::Writer::Picture(encode) = format.info().writer {
+        let image = crate::preview::render(&meshes, &options.preview, &mut budget).map_err(ExportError::from)?;
+        return Ok(encode(&image, None, &mut budget)?);
+    }
+    Ok(feed::meshes(meshes, export::flat_sink(format, &options)?, &meta, &mut budget)?)
 }
 
 /// Encodes an RGBA picture made outside a render (the CLI's `gallery`

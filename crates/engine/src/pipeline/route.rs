@@ -10,7 +10,7 @@
 //! writes it ([`Route::charge_hierarchy`]).
 
 use super::RenderRequest;
-use crate::export::{EncodePicture, Instancing, MakeSink, WriteDrawing, WriteHierarchy, WriteMeshes, WriteModel, Writer};
+use crate::export::{EncodePicture, Instancing, MakeSink, WriteDrawing, WriteMeshes, WriteModel, Writer};
 use crate::core::budget::{Budget, Limit, LimitExceeded};
 use crate::model::Hierarchy;
 
@@ -36,10 +36,10 @@ pub(crate) enum Route {
     /// (glTF's `EXT_mesh_gpu_instancing`); `flat` writes what is not
     /// instanced (a moving model, one without repeats).
     Instanced { sink: MakeSink, flat: WriteMeshes },
-    /// A hierarchy written by the format's own writer, each leaf shape once
-    /// and placed per leaf (usdz's scene-graph instancing, docs/usdz.md);
-    /// a model without one goes to `flat`.
-    InstancedHierarchy { write: WriteHierarchy, flat: Output },
+    /// A hierarchy fed into the format's hierarchy sink, each (leaf shape,
+    /// colour) once and placed per leaf (usdz's scene-graph instancing,
+    /// docs/usdz.md); a model without one goes to `flat`.
+    InstancedHierarchy { sink: MakeSink, flat: Output },
     /// Meshes in `output`; a node graph with the model's animation and
     /// camera path when `animated`; a hierarchy the front end builds is
     /// expanded first when `hierarchy` (glTF asked for flat instancing).
@@ -71,7 +71,7 @@ impl Route {
             Writer::Instancing { meshes, hierarchy } => {
                 let output = Output::Meshes { write: meshes, fit };
                 if !print && !fit {
-                    return Route::InstancedHierarchy { write: hierarchy, flat: output };
+                    return Route::InstancedHierarchy { sink: hierarchy, flat: output };
                 }
                 (output, Some(meshes), None)
             }

@@ -47,10 +47,11 @@ pub(super) fn run(route: Route, mut model: Model, provenance: Provenance, req: &
         Route::Streamed { sink, empty } => streamed(model, provenance, sink, empty, req, budget, clock),
         Route::Print { report, output } => print(model, provenance, report, output, req, budget, clock),
         Route::Instanced { sink, flat: write } => instanced(model, provenance, sink, write, req, budget, clock),
-        Route::InstancedHierarchy { write, flat: output } => match model.hierarchy.take() {
+        Route::InstancedHierarchy { sink, flat: output } => match model.hierarchy.take() {
             Some(h) => {
                 let meta = hierarchy_meta(&model, h.truncated.is_some(), provenance);
-                let bytes = write(&h, req.detail, &meta, budget)?;
+                // One prototype per (leaf shape, colour): usdz binds a material per prototype.
+                let bytes = feed::hierarchy(&h, req.detail, false, sink(&req.export_options), &meta, budget)?;
                 clock.lap(Phase::Export);
                 Ok(summary(bytes, &model, h.triangles(req.detail), h.truncated))
             }

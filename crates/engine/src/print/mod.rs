@@ -230,7 +230,7 @@ fn exact_union(pieces: &[union::Piece<'_>], size_um: u32, budget: &mut Budget) -
 /// a leaf shape is not one closed solid, or the union has edges not shared
 /// by exactly two faces or is several pieces (the flat route then tries the
 /// parts snapped to the model's grid and unsnapped, then fusing).
-pub fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptions, budget: &mut Budget) -> Result<Option<(Vec<NamedMesh>, PrintReport)>, PrintError> {
+pub(crate) fn make_printable_hierarchy(h: &Hierarchy, detail: u32, options: &PrintOptions, budget: &mut Budget) -> Result<Option<(Vec<NamedMesh>, PrintReport)>, PrintError> {
     options.profile.validate()?;
     // The flat route charges its own work: what this one did is refunded if it gives up.
     let mark = budget.mark();

@@ -25,11 +25,11 @@ use std::thread::JoinHandle;
 use std::time::Duration;
 
 /// How long a line may wait for its batch: short enough to read a log live.
-pub const FLUSH_EVERY: Duration = Duration::from_millis(20);
+pub(crate) const FLUSH_EVERY: Duration = Duration::from_millis(20);
 
 /// Queued bytes that wake the writer before [`FLUSH_EVERY`] has passed, so
 /// a burst is written in pieces of about this size.
-pub const WAKE_BYTES: usize = 64 * 1024;
+pub(crate) const WAKE_BYTES: usize = 64 * 1024;
 
 /// The queue and its bookkeeping, behind one lock.
 #[derive(Debug, Default)]
@@ -58,13 +58,13 @@ impl Shared {
 /// A `MakeWriter` for `tracing-subscriber` whose lines are written by a
 /// thread of its own (module docs). Cheap to clone.
 #[derive(Debug, Clone)]
-pub struct BatchWriter {
+pub(crate) struct BatchWriter {
     shared: Arc<Shared>,
 }
 
 /// Writes the queue out and stops the writer thread when dropped.
 #[derive(Debug)]
-pub struct FlushGuard {
+pub(crate) struct FlushGuard {
     shared: Arc<Shared>,
     thread: Option<JoinHandle<()>>,
 }
@@ -148,7 +148,7 @@ impl Drop for FlushGuard {
 /// of its own and writes it with one `write_all`, which becomes one line of
 /// the queue.
 #[derive(Debug)]
-pub struct LineWriter<'a> {
+pub(crate) struct LineWriter<'a> {
     writer: &'a BatchWriter,
 }
 

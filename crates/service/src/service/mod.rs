@@ -20,7 +20,7 @@ pub(crate) mod http_batch;
 pub(crate) mod http_schema;
 pub(crate) mod inline;
 pub mod library;
-pub mod log_writer;
+pub(crate) mod log_writer;
 pub mod memory;
 pub mod metrics;
 pub mod phone;

@@ -8,9 +8,9 @@ use crate::model::hierarchy::{Hierarchy, Target};
 /// The first four bytes of every scene file.
 pub const MAGIC: &[u8; 4] = b"RMSC";
 /// The format version this module writes.
-pub const VERSION: u16 = 2;
+pub(crate) const VERSION: u16 = 2;
 /// The first version (an L-system hierarchy alone), still read.
-pub const VERSION_1: u16 = 1;
+pub(crate) const VERSION_1: u16 = 1;
 /// Header flag: the model was cut short by a limit.
 pub const FLAG_TRUNCATED: u16 = 1;
 /// Header flag: a provenance block follows the header (a `u32` byte length,
@@ -32,19 +32,17 @@ pub const FLAG_SCALED: u16 = 4;
 pub const FLAG_CHECKSUM: u16 = 8;
 /// Bytes of the CRC-32 after the last mesh under [`FLAG_CHECKSUM`].
 pub const CHECKSUM_BYTES: usize = 4;
-/// Bytes of the version 1 header.
-pub const HEADER_BYTES_V1: usize = 24;
-/// Bytes of the version 2 header.
-pub const HEADER_BYTES: usize = 20;
+/// Bytes of the version 2 header (version 1's was 24: docs/scene-format.md).
+pub(crate) const HEADER_BYTES: usize = 20;
 /// Bytes per leaf shape record (both versions).
 pub const SHAPE_BYTES: u64 = 28;
 /// Bytes per hierarchy entry in version 1 (f32 transform).
-pub const ENTRY_BYTES_V1: u64 = 36;
+pub(crate) const ENTRY_BYTES_V1: u64 = 36;
 /// Bytes per hierarchy entry in version 2 (f64 transform, so a reader walks
 /// the very numbers the server walked).
 pub const ENTRY_BYTES: u64 = 64;
 /// Bytes per hierarchy entry in version 2 under [`FLAG_SCALED`].
-pub const ENTRY_BYTES_SCALED: u64 = 72;
+pub(crate) const ENTRY_BYTES_SCALED: u64 = 72;
 /// Bit of an entry's reference that marks a leaf shape (else an object).
 pub const SHAPE_BIT: u32 = 1 << 31;
 
@@ -61,7 +59,7 @@ pub const RUN_HIERARCHY: u8 = 5;
 /// Bit of a primitive record's kind byte that marks a mirrored placement.
 pub const PARITY_BIT: u8 = 0x80;
 /// Bytes of a colour index for a palette of `n` colours.
-pub fn index_width(n: usize) -> usize {
+pub(crate) fn index_width(n: usize) -> usize {
     match n {
         0..=256 => 1,
         257..=65_536 => 2,

@@ -18,15 +18,15 @@
 pub mod format;
 mod write;
 
-pub use format::{CHECKSUM_BYTES, ENTRY_BYTES, ENTRY_BYTES_V1, FLAG_CHECKSUM, FLAG_PROVENANCE, FLAG_TRUNCATED, HEADER_BYTES, HEADER_BYTES_V1, MAGIC, SHAPE_BIT, SHAPE_BYTES, VERSION, VERSION_1};
-pub use write::{write_scene, MAX_RECORD_BYTES};
+pub use format::{CHECKSUM_BYTES, ENTRY_BYTES, FLAG_CHECKSUM, FLAG_PROVENANCE, FLAG_TRUNCATED, MAGIC, SHAPE_BIT, SHAPE_BYTES};
+pub(crate) use write::{write_scene, MAX_RECORD_BYTES};
 
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
 
 /// `scene`: written from the model (no meshes are made), its hierarchy
 /// sized exactly when written; every placement is charged as an instance
 /// record of at most [`MAX_RECORD_BYTES`].
-pub const SCENE: FormatInfo = FormatInfo {
+pub(crate) const SCENE: FormatInfo = FormatInfo {
     name: "scene",
     extensions: &["rmscene"],
     mime: "application/vnd.rulemesh.scene",

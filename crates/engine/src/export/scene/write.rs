@@ -28,7 +28,7 @@ use std::collections::BTreeMap;
 /// Bytes of the largest instance record (an affine one with a 4-byte colour
 /// index, see `run_bytes`): what a front end promises per placement of a
 /// scene after a mesh's first, before it knows which runs it lands in.
-pub const MAX_RECORD_BYTES: u64 = 1 + 4 + 48;
+pub(crate) const MAX_RECORD_BYTES: u64 = 1 + 4 + 48;
 
 /// One run of records in a planned mesh; instance runs name the filter that
 /// picks their records from the scene, so the plan holds no copies.
@@ -183,7 +183,7 @@ fn put_similarity(out: &mut Vec<u8>, i: &Instance) {
 /// files written before the option existed). Reserves the exact size in
 /// `budget` before allocating it. Returns the bytes and the triangles a
 /// reader tessellates (what the flat formats would write).
-pub fn write_scene(
+pub(crate) fn write_scene(
     scene: &Scene,
     hierarchy: Option<&Hierarchy>,
     detail: u32,

@@ -46,7 +46,7 @@ pub const USDZ: FormatInfo = FormatInfo {
     caps: Capabilities::NONE,
     options: OptionGroup::None,
     size: SizeBound { fixed: 4 * 1024, per_vertex: 0, per_triangle: TRIANGLE_BYTES, per_instance: instanced::INSTANCE_BYTES },
-    writer: Writer::Instancing { meshes: write_usdz_with, hierarchy: instanced::write_usdz_hierarchy },
+    writer: Writer::Instancing { meshes: write_usdz_with, hierarchy: instanced::hierarchy_sink },
 };
 
 /// Bytes a mesh prim's own text (its name, extent, binding, colour and

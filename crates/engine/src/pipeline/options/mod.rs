@@ -35,7 +35,7 @@ mod tests;
 pub(crate) use field::declare_options;
 pub use field::{Doors, Key, Kind, OptionField};
 pub use read::SeedValue;
-pub use validate::{checksum_option, parse_format, parse_language, preview_options, InvalidOptions};
+pub use validate::{parse_format, parse_language, preview_options, InvalidOptions};
 
 
 /// A whole-number schema from `min` to `max`.

@@ -177,7 +177,7 @@ pub fn preview_options(format: Format, size: Option<u32>, view: Option<&str>, ba
 /// is refused by name, as the schema's `dependentSchemas` refuses it: a
 /// client that asks for an integrity check must not get a file without
 /// one, and `false` with a format that has no such option is a mistake too.
-pub fn checksum_option(format: Format, checksum: Option<bool>) -> Result<bool, InvalidOptions> {
+pub(crate) fn checksum_option(format: Format, checksum: Option<bool>) -> Result<bool, InvalidOptions> {
     if format.info().options != OptionGroup::Scene && checksum.is_some() {
         let scenes: Vec<String> = Format::reading(OptionGroup::Scene).iter().map(|f| format!("format={}", f.name())).collect();
         let why = match format.info().options {
