@@ -224,6 +224,14 @@ pub(crate) fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> 
             let c = s.target.get_mut(k);
             *c = adjust(*c, clamp(a[0]), false, 0.0);
         }
+        TermKind::Time => {
+            arity(&[2])?;
+            super::anim::shift(&mut s.time, a[0], a[1]);
+        }
+        TermKind::TimeScale => {
+            arity(&[1])?;
+            s.time[0] *= a[0];
+        }
         TermKind::Ignored => {}
     }
     Ok(())

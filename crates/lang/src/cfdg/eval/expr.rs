@@ -180,7 +180,7 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             };
             eval(items[1 + i], scope, rand, out)?;
         }
-        Expr::Call(name, args, span) if matches!(name.as_str(), "dot" | "cross" | "hsb2rgb" | "rgb2hsb") => {
+        Expr::Call(name, args, span) if matches!(name.as_str(), "dot" | "cross" | "hsb2rgb" | "rgb2hsb" | "vec") => {
             super::func::vector_builtin(name, args.as_ref().as_ref(), *span, scope, rand, out)?;
         }
         Expr::Call(name, args, span) if !crate::cfdg::syntax::is_builtin(name) => {
@@ -261,6 +261,10 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, scope: &Scope) -> 
         "randint" => {
             let (lo, hi) = pair(a);
             (rand.next_double() * (hi - lo).abs() + lo.min(hi)).floor()
+        }
+        "ftime" | "frame" => {
+            want(0)?;
+            super::anim::value(name, scope)
         }
         "cos" => (arg(0) * DEG).cos(),
         "sin" => (arg(0) * DEG).sin(),

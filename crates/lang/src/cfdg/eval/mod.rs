@@ -7,6 +7,8 @@
 //! shapes sorted by z, then by the order they were finished.
 
 pub mod adjust;
+pub mod anim;
+pub mod builtins;
 pub mod agg;
 pub mod expr;
 pub mod frame;

@@ -75,6 +75,8 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), rand_static: std::sync::Arc::new(super::rand_static(g, opts.variation)), ..Scope::default() };
     scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
     bind::push_predefined(&mut scope);
+    // A still's ftime() and frame() (eval/anim.rs), before the globals use them.
+    super::anim::setup(g, &mut scope)?;
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
     // The globals are traversed with the renderer's own stream, which the
@@ -110,13 +112,6 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     }
     scope.globals = Some(scope.vars.len());
     budget.charge_steps(scope.funcs.take_calls())?;
-    // Settings that change the picture's framing or copy its shapes are not
-    // rendered yet; refusing them beats drawing something cfdg does not.
-    for d in &g.defines {
-        if matches!(d.name.as_str(), "CF::Time" | "CF::Frame" | "CF::FrameTime") {
-            return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
-        }
-    }
     // RendererImpl::init: CF::MaxNatural must be ≥ 1 and < 2⁵³; CF::Impure lifts it.
     if let Some(m) = setting(g, "CF::MaxNatural", &scope)? {
         if !(1.0..9_007_199_254_740_992.0).contains(&m) {
@@ -304,6 +299,9 @@ impl Renderer<'_> {
     fn process(&mut self, shape: usize, state: State, params: Vec<f64>) -> Result<(), EvalError> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
+        }
+        if super::anim::dropped(&state) {
+            return Ok(());
         }
         let drawn = self.rules.is_path[shape] || (shape < 3 && self.rules.by_shape[shape].is_empty());
         if drawn && !self.symmetry.is_empty() {

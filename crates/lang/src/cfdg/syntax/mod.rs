@@ -388,7 +388,13 @@ pub enum TermKind {
     TargBright,
     /// `|a v`.
     TargAlpha,
-    /// `time`, `timescale`, `blend`: read and ignored (no animation).
+    /// `time begin end`: moves the shape's time span (`ASTmodTerm::time`,
+    /// `agg::trans_affine_time_translation`); a still draws every shape
+    /// but drops one whose span runs backwards (eval/time.rs).
+    Time,
+    /// `timescale s`: scales later time moves (`ASTmodTerm::timescale`).
+    TimeScale,
+    /// `blend`: read and ignored (no blend modes).
     Ignored,
 }
 

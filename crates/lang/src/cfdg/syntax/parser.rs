@@ -98,7 +98,9 @@ fn term_kind(word: &str) -> Option<TermKind> {
         "|saturation" | "|sat" => TermKind::TargSat,
         "|brightness" | "|b" => TermKind::TargBright,
         "|alpha" | "|a" => TermKind::TargAlpha,
-        "time" | "timescale" | "blend" => TermKind::Ignored,
+        "time" => TermKind::Time,
+        "timescale" => TermKind::TimeScale,
+        "blend" => TermKind::Ignored,
         _ => return None,
     })
 }
