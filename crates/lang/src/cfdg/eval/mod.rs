@@ -18,6 +18,7 @@ mod pending;
 pub mod state;
 pub mod symmetry;
 pub mod tile;
+pub mod wallpaper;
 
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, Element, Grammar, Term, Value};
