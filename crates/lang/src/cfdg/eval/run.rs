@@ -59,6 +59,8 @@ struct Renderer<'g> {
     /// The transforms of `CF::Symmetry`: every primitive and path is
     /// finished once under each (`processPrimShape`).
     symmetry: Vec<super::state::Affine>,
+    /// What each subpath draws, worked out at the first one (`path/subpath.rs`).
+    subpaths: Option<std::sync::Arc<path::SubpathTypes>>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -162,6 +164,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         tile_canvas: None,
         first_scale: 0.0,
         symmetry: Vec::new(),
+        subpaths: None,
     };
     r.symmetry = super::symmetry::symmetry(g, &r.scope, r.tiling.as_ref(), r.budget)?;
     // CF::Size fixes the bounds (centred on the origin) and the scale, and

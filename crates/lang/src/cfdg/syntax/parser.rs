@@ -11,6 +11,7 @@ mod expr;
 mod func;
 mod path;
 use expr::const_value;
+mod subpath;
 mod symmetry;
 pub use path::is_path_op;
 
@@ -419,9 +420,10 @@ impl Parser<'_> {
                 Ok(Element::Transform { clone: word == "clone", adjusts, symmetry, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
-            "path" if self.path.in_path && matches!(self.peek_at(1), Tok::Word(_)) => Err(ParseError::single(span, "subpaths (`path NAME [ ]` inside a path) are not supported yet (docs/cfdg.md)")),
+            "path" if self.path.in_path && matches!(self.peek_at(1), Tok::Word(_)) => self.subpath(),
             w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
+            _ if self.path.in_path => self.err("Replacements are not allowed in paths (a subpath is `path NAME [ ]`)"),
             _ => {
                 let (shape, span) = self.name("a shape name")?;
                 let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
@@ -464,6 +466,7 @@ impl Parser<'_> {
                 Ok(Element::Loop(Loop { var: None, args: Expr::Num(value, n), adjust, body, finally: Vec::new(), v2: true, span }))
             }
             Tok::Word(w) if is_path_op(&w) && (self.path.in_path || !matches!(w.as_str(), "FILL" | "STROKE")) => self.path_element(),
+            Tok::Word(_) if self.path.in_path => self.err("Replacements are not allowed in paths"),
             Tok::Word(_) => {
                 let (shape, span) = self.name("a shape name")?;
                 let adjust = self.adjustment()?;
