@@ -15,7 +15,7 @@ pub mod lexer;
 mod parser;
 
 pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
-pub use parser::{is_path_op, parse, parse_with, Loader, REUSE};
+pub use parser::{is_path_op, parse, parse_with, path_op_arity, Loader, REUSE};
 
 use crate::Span;
 

@@ -13,7 +13,7 @@ mod path;
 use expr::const_value;
 mod subpath;
 mod symmetry;
-pub use path::is_path_op;
+pub use path::{is_path_op, path_op_arity};
 
 /// The argument list `(=)` stands for: the parent shape's parameters.
 pub const REUSE: &str = "(=)";

@@ -105,13 +105,13 @@ impl Ctx {
     }
 
     /// `ASTcompiledPath::addPathOp`.
-    fn add_op(&mut self, op: &PathOp, mut d: [f64; 6], t: &Affine, tr: bool) -> Result<(), EvalError> {
+    fn add_op(&mut self, op: &PathOp, n: usize, mut d: [f64; 6], t: &Affine, tr: bool) -> Result<(), EvalError> {
         let arc = matches!(op.kind, PathOpKind::ArcTo | PathOpKind::ArcRel);
         let (mut rx, mut ry, mut angle) = (0.0, 0.0, 0.0);
         let mut sweep = op.flags & pf::ARC_CW == 0;
         let large = op.flags & pf::ARC_LARGE != 0;
         if arc {
-            if op.args.len() == 5 {
+            if n == 5 {
                 (rx, ry, angle) = (d[2], d[3], d[4] * 0.017_453_292_519_9);
             } else {
                 (rx, ry) = (d[2], d[2]);
@@ -187,7 +187,7 @@ impl Ctx {
                 if continuous && !matches!(s.last_command(), CURVE3 | CURVE4) {
                     return Err(error(op.span, "smooth curve operations must be preceded by another curve operation"));
                 }
-                match op.args.len() {
+                match n {
                     2 => s.curve3_smooth(d[0], d[1]),
                     4 if continuous => s.curve4_smooth((d[2], d[3]), d[0], d[1]),
                     4 => s.curve3(d[2], d[3], d[0], d[1]),
@@ -265,6 +265,10 @@ impl Renderer<'_> {
                 for a in &op.args {
                     super::super::expr::eval(a, &self.scope, &mut self.current, &mut v)?;
                 }
+                // Vector arguments count as their numbers (checkArguments).
+                if v.len() != op.args.len() {
+                    crate::cfdg::syntax::path_op_arity(op.kind, op.flags, v.len()).map_err(|m| error(op.span, &m))?;
+                }
                 let before = ctx.store.v.len();
                 let mut d = [0.0; 6];
                 for (slot, x) in d.iter_mut().zip(&v) {
@@ -273,7 +277,7 @@ impl Renderer<'_> {
                     }
                     *slot = *x;
                 }
-                ctx.add_op(op, d, &parent.transform, tr)?;
+                ctx.add_op(op, v.len(), d, &parent.transform, tr)?;
                 self.budget.reserve_memory(VERTEX_BYTES.saturating_mul(ctx.store.v.len().saturating_sub(before) as u64))?;
                 if ctx.store.v.iter().rev().take(13).any(|v| !(v.x.is_finite() && v.y.is_finite())) {
                     return Err(EvalError::NonFinite { span: op.span, what: "a path point".into(), value: "undefined or infinite".into() });
