@@ -15,6 +15,7 @@ use crate::model::EvalError;
 use super::FastMap as HashMap;
 
 mod bind;
+mod names;
 mod path;
 pub use path::PathDraw;
 
@@ -61,6 +62,8 @@ struct Renderer<'g> {
     symmetry: Vec<super::state::Affine>,
     /// What each subpath draws, worked out at the first one (`path/subpath.rs`).
     subpaths: Option<std::sync::Arc<path::SubpathTypes>>,
+    /// What namespaced replacements' seeds hash (`names.rs`).
+    entropy_names: &'g std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -165,6 +168,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         first_scale: 0.0,
         symmetry: Vec::new(),
         subpaths: None,
+        entropy_names: &g.entropy_names,
     };
     r.symmetry = super::symmetry::symmetry(g, &r.scope, r.tiling.as_ref(), r.budget)?;
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
@@ -417,7 +421,7 @@ impl Renderer<'_> {
             Element::Replace(rep) if rep.shape == super::FILL && !self.rules.index.contains_key(super::FILL) => {
                 // processPrimShapeSiblings for fillType: no bounds, never
                 // copied by symmetry or tiles, always drawn; a shape all the same.
-                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
                 let mut child = *parent;
                 self.current.xor(seed);
                 self.current.next_u64();
@@ -433,7 +437,7 @@ impl Renderer<'_> {
             }
             Element::Replace(rep) => {
                 let (shape, bound) = self.target(rep)?;
-                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
                 let mut params = Vec::new();
                 let wanted: usize = self.rules.sizes[shape].iter().sum();
                 match (&rep.args, bound) {

@@ -54,6 +54,11 @@ pub struct Grammar {
     /// makes them: each takes the next number of the parse-time stream
     /// (`eval::rand_static`).
     pub rand_static: Vec<Span>,
+    /// The shape names of replacements in files imported into a
+    /// namespace, as written (what cfdg hashes into their seeds), by
+    /// where they are written and their qualified name
+    /// (`parser/namespace.rs`).
+    pub entropy_names: std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
 /// A parameter's or a function's type, as cfdg's `AST::decodeType`

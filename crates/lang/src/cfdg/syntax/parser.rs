@@ -11,6 +11,7 @@ mod expr;
 mod func;
 mod path;
 use expr::const_value;
+mod namespace;
 mod subpath;
 mod symmetry;
 pub use path::{is_path_op, path_op_arity};
@@ -60,7 +61,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None, rand_static: Vec::new() };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None, rand_static: Vec::new(), entropy_names: Default::default() };
     p.grammar()
 }
 
@@ -79,6 +80,8 @@ struct Parser<'a> {
     start_setting: Option<Replacement>,
     /// `rand_static()` calls in the order they were made.
     rand_static: Vec<Span>,
+    /// The written names of namespaced replacements ([`namespace`]).
+    entropy_names: std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -169,7 +172,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new(), entropy_names: Default::default() };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -189,6 +192,7 @@ impl Parser<'_> {
                 }
                 Tok::Word(w) if w == "include" || w == "import" => {
                     self.bump();
+                    let ns = self.namespace()?;
                     let name = match self.bump().tok {
                         Tok::Word(n) | Tok::Str(n) => n,
                         _ => return Err(ParseError::single(span, "expected a file name after `import`")),
@@ -205,6 +209,9 @@ impl Parser<'_> {
                         ParseError::single(span, format!("in `{name}` at {}:{}: {}", d.span.line, d.span.column, d.message))
                     })?;
                     more.pop(); // its end of input
+                    if let Some(ns) = &ns {
+                        namespace::qualify(&mut more, ns);
+                    }
                     let at = self.pos;
                     self.toks.splice(at..at, more);
                 }
@@ -289,6 +296,7 @@ impl Parser<'_> {
             }
         }
         g.rand_static = std::mem::take(&mut self.rand_static);
+        g.entropy_names = std::mem::take(&mut self.entropy_names);
         Ok(g)
     }
 
@@ -426,6 +434,7 @@ impl Parser<'_> {
             _ if self.path.in_path => self.err("Replacements are not allowed in paths (a subpath is `path NAME [ ]`)"),
             _ => {
                 let (shape, span) = self.name("a shape name")?;
+                self.note_written(&shape, span);
                 let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
                 let adjust = self.adjustment()?;
                 Ok(Element::Replace(Replacement { shape, adjust, args, span }))
@@ -469,6 +478,7 @@ impl Parser<'_> {
             Tok::Word(_) if self.path.in_path => self.err("Replacements are not allowed in paths"),
             Tok::Word(_) => {
                 let (shape, span) = self.name("a shape name")?;
+                self.note_written(&shape, span);
                 let adjust = self.adjustment()?;
                 Ok(Element::Replace(Replacement { shape, adjust, args: None, span }))
             }

@@ -16,6 +16,7 @@ impl Parser<'_> {
     pub(super) fn subpath(&mut self) -> Result<Element, ParseError> {
         self.bump();
         let (shape, span) = self.name("a path or shape name after `path`")?;
+        self.note_written(&shape, span);
         if shape == "FILL" || shape == "STROKE" {
             return Err(ParseError::single(span, "FILL cannot be a subpath"));
         }
