@@ -259,7 +259,8 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, scope: &Scope) -> 
             (rand.next_double() * 2.0 - 1.0) * a[1] + a[0]
         }
         "randint" => {
-            let (lo, hi) = pair(a);
+            // `randint()` is [0, 2) (ASTfunction's constructor).
+            let (lo, hi) = if a.is_empty() { (0.0, 2.0) } else { pair(a) };
             (rand.next_double() * (hi - lo).abs() + lo.min(hi)).floor()
         }
         "ftime" | "frame" => {
@@ -347,6 +348,7 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, scope: &Scope) -> 
             };
             (v & 0x000F_FFFF_FFFF_FFFF) as f64
         }
+        n if super::distributions::is_distribution(n) => super::distributions::draw(n, a, rand, span)?,
         _ => return Err(EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: unknown or unsupported function", span.line, span.column) }),
     })
 }

@@ -9,6 +9,7 @@
 pub mod adjust;
 pub mod anim;
 pub mod builtins;
+pub mod distributions;
 pub mod agg;
 pub mod expr;
 pub mod frame;

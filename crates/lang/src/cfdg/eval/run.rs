@@ -605,7 +605,7 @@ impl Renderer<'_> {
         let exact = self.sized.is_some() || self.tiling.is_some();
         if let Some(c) = self.tile_canvas {
             (cw, ch) = c;
-        } else if self.tiling.is_some() {
+        } else if self.tiling.is_some() || self.sized.is_some() {
             let (_, w, h, _) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, true);
             (cw, ch) = (w, h);
         }
@@ -626,8 +626,10 @@ impl Renderer<'_> {
             shapes: self.finished,
             width: w.clamp(0, u32::MAX as i64) as u32,
             height: h.clamp(0, u32::MAX as i64) as u32,
-            canvas_width: if self.tiling.is_some() { cw.clamp(0, u32::MAX as i64) as u32 } else { self.opts.width },
-            canvas_height: if self.tiling.is_some() { ch.clamp(0, u32::MAX as i64) as u32 } else { self.opts.height },
+            // A sized design's canvas is its size fitted exactly, as a tile's
+            // (RendererImpl::initBounds rescales the output for both).
+            canvas_width: if self.tiling.is_some() || self.sized.is_some() { cw.clamp(0, u32::MAX as i64) as u32 } else { self.opts.width },
+            canvas_height: if self.tiling.is_some() || self.sized.is_some() { ch.clamp(0, u32::MAX as i64) as u32 } else { self.opts.height },
             to_pixels,
             background,
             variation: self.opts.variation,
