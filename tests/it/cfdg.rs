@@ -324,7 +324,8 @@ fn language_constructs_match_cfdg() {
 }
 
 /// Subpaths, namespaces, animation settings in a still, `vec()`, vector
-/// path arguments and the wallpaper groups give cfdg's own SVG: the
+/// path arguments, the random distributions and the wallpaper groups give
+/// cfdg's own SVG: the
 /// examples themselves, the wallpaper groups each on the tile
 /// `wallpapertest1.cfdg` suggests for it, and subpaths of a shape variable
 /// and of primitives (subpathtest4 and subpathtest with a fixed choice
@@ -342,6 +343,9 @@ fn misc_constructs_match_cfdg() {
         ("tests/timeanimtest4.cfdg", "Q"),
         ("tests/vectormath1.cfdg", "ABC"),
         ("tests/retaintest.cfdg", "XYZ"),
+        // Every rand:: and randint:: distribution, a thousand draws each, on a CF::Size canvas of 200×32.
+        ("tests/randtest4.cfdg", "ABC"),
+        ("tests/randtest4.cfdg", "12345"),
         ("tests/wallpapertest1.cfdg", "ABC"),
         ("tests/wallpapertest45.cfdg", "ABC"),
     ] {
