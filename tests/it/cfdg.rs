@@ -525,7 +525,8 @@ fn canvas_constructs_match_cfdg() {
 
 /// Hostile tiling and symmetry end in typed errors: a shape a million
 /// tiles wide and a symmetry of order 10⁹ stop at the step limit; a zero
-/// order, a rotated tile and a wallpaper group are refused by name.
+/// order, a rotated tile and a wallpaper group on a tile it does not fit
+/// are refused by name.
 #[test]
 fn hostile_tiles_and_symmetries_end_in_typed_errors() {
     use rulemesh::model::EvalError;
@@ -536,7 +537,8 @@ fn hostile_tiles_and_symmetries_end_in_typed_errors() {
         ("startshape A\nCF::Symmetry = CF::Dihedral, 1e9\nshape A { SQUARE [] }\n", Box::new(limit)),
         ("startshape A\nCF::Symmetry = CF::Cyclic, 0\nshape A { SQUARE [] }\n", Box::new(named("CF::Symmetry"))),
         ("startshape A\nCF::Tile = [r 30]\nshape A { SQUARE [] }\n", Box::new(named("Tile must be aligned"))),
-        ("startshape A\nCF::Tile = [s 2]\nCF::Symmetry = CF::p4m\nshape A { SQUARE [] }\n", Box::new(named("p4m"))),
+        // A wallpaper group on a tile it does not fit (cfdg's check).
+        ("startshape A\nCF::Tile = [s 2 3]\nCF::Symmetry = CF::p4m\nshape A { SQUARE [] }\n", Box::new(named("p4m symmetry requires square tiling"))),
         ("startshape A\nshape A { clone CF::Cyclic, 1e9 SQUARE [] }\n", Box::new(limit)),
     ];
     for format in [Format::Svg, Format::Png] {
