@@ -323,6 +323,77 @@ fn language_constructs_match_cfdg() {
     }
 }
 
+/// Subpaths, namespaces, animation settings in a still, `vec()`, vector
+/// path arguments, the random distributions and the wallpaper groups give
+/// cfdg's own SVG: the
+/// examples themselves, the wallpaper groups each on the tile
+/// `wallpapertest1.cfdg` suggests for it, and subpaths of a shape variable
+/// and of primitives (subpathtest4 and subpathtest with a fixed choice
+/// where they choose with `select`).
+#[test]
+fn misc_constructs_match_cfdg() {
+    for (name, var) in [
+        ("tests/subpathtest2.cfdg", "ABC"),
+        ("tests/namespacetest1.cfdg", "ABC"),
+        ("tests/namespacetest1.cfdg", "XYZ"),
+        ("tests/funcnamespacetest.cfdg", "ABC"),
+        ("tests/timeanimtest1.cfdg", "ABC"),
+        ("tests/timeanimtest3.cfdg", "ABC"),
+        ("tests/timeanimtest4.cfdg", "ABC"),
+        ("tests/timeanimtest4.cfdg", "Q"),
+        ("tests/vectormath1.cfdg", "ABC"),
+        ("tests/retaintest.cfdg", "XYZ"),
+        // Every rand:: and randint:: distribution, a thousand draws each, on a CF::Size canvas of 200×32.
+        ("tests/randtest4.cfdg", "ABC"),
+        ("tests/randtest4.cfdg", "12345"),
+        ("tests/wallpapertest1.cfdg", "ABC"),
+        ("tests/wallpapertest45.cfdg", "ABC"),
+    ] {
+        let file = example(name);
+        assert_same(name, &cfdg_svg(&file, var), &rulemesh_svg(&file, var));
+    }
+    // ftime() is 0 in a still, so the start shape has size log(1) = 0: nothing at all.
+    let file = example("tests/timeanimtest2.cfdg");
+    assert!(shapes(&cfdg_svg(&file, "ABC")).is_empty() && shapes(&rulemesh_svg(&file, "ABC")).is_empty());
+    let dir = tempdir();
+    let read = |name: &str| std::fs::read_to_string(example(name)).expect("example readable");
+    let wallpaper = read("tests/wallpapertest1.cfdg");
+    let body = &wallpaper[wallpaper.find("\nshape unit").expect("shape unit")..];
+    let mut designs: Vec<(String, String)> = [
+        ("[s 2 3]", "CF::pm, 1, 0.754"),
+        ("[s 2 3]", "CF::pg, 0, 0"),
+        ("[[skew atan2(1.5, 2) 0 s 3 2]]", "CF::cm, 1, 1"),
+        ("[s 2 3]", "CF::pmm, 0.5, 0.5"),
+        ("[s 3 2]", "CF::pmg, 1, 0.2, 0.1"),
+        ("[s 5 3]", "CF::pgg, 1.25, 0.75"),
+        ("[[skew atan2(1.5, 2) 0 s 3 2]]", "CF::cmm"),
+        ("[s 3]", "CF::p4, 0.5, 0"),
+        ("[s 3]", "CF::p4m, 0.5, 0"),
+        ("[s 4]", "CF::p4g, 0.3, 0.2"),
+        ("[s 3 skew 15 15 r -15]", "CF::p3"),
+        ("[s 3 skew 15 15 r 15]", "CF::p3m1"),
+        ("[s 3 skew 15 15 r 15]", "CF::p31m, 0.1, 0.2"),
+        ("[s 3 skew 15 15 r -15]", "CF::p6"),
+        ("[s 3 skew 15 15 r -15]", "CF::p6m"),
+        // A square tile at 45°: cfdg's `square45` forms.
+        ("[trans 0 0 sqrt(2) 0 sqrt(4.5) sqrt(0.5)]", "CF::pmg, 3, 0.1, 0.2"),
+        ("[trans 0 0 sqrt(0.5) sqrt(0.5) sqrt(0.5) sqrt(4.5)]", "CF::pgg, 0.1, 0.2"),
+    ]
+    .iter()
+    .map(|(tile, group)| (group.to_string(), format!("startshape unit\nCF::Tile = {tile}\nCF::Symmetry = {group}\n{body}")))
+    .collect();
+    for prim in ["CIRCLE", "SQUARE", "TRIANGLE"] {
+        designs.push((format!("subpathtest4 {prim}"), read("tests/subpathtest4.cfdg").replace("select(randint(3), CIRCLE, SQUARE, TRIANGLE)", prim)));
+    }
+    let fixed = "switch (mod(i, 4)) {\n case 0: triangle[trans BLUE]\n case 1: triangle[trans MAGENTA]\n case 2: triangle[trans RED]\n case 3: triangle[trans GREEN]\n }";
+    designs.push(("subpathtest".into(), read("tests/subpathtest.cfdg").replace("triangle[trans select(mod(i, 4), BLUE, MAGENTA, RED, GREEN)]", fixed)));
+    for (k, (name, src)) in designs.iter().enumerate() {
+        let file = dir.path().join(format!("d{k}.cfdg"));
+        std::fs::write(&file, src).expect("writes");
+        assert_same(name, &cfdg_svg(&file, "ABC"), &rulemesh_svg(&file, "ABC"));
+    }
+}
+
 /// Hostile user functions end in typed errors naming the limit: endless
 /// recursion stops at the call depth (never a stack overflow, on a 2 MiB
 /// thread), wide recursion at the step limit (each call is a step), a
@@ -454,7 +525,8 @@ fn canvas_constructs_match_cfdg() {
 
 /// Hostile tiling and symmetry end in typed errors: a shape a million
 /// tiles wide and a symmetry of order 10⁹ stop at the step limit; a zero
-/// order, a rotated tile and a wallpaper group are refused by name.
+/// order, a rotated tile and a wallpaper group on a tile it does not fit
+/// are refused by name.
 #[test]
 fn hostile_tiles_and_symmetries_end_in_typed_errors() {
     use rulemesh::model::EvalError;
@@ -465,7 +537,8 @@ fn hostile_tiles_and_symmetries_end_in_typed_errors() {
         ("startshape A\nCF::Symmetry = CF::Dihedral, 1e9\nshape A { SQUARE [] }\n", Box::new(limit)),
         ("startshape A\nCF::Symmetry = CF::Cyclic, 0\nshape A { SQUARE [] }\n", Box::new(named("CF::Symmetry"))),
         ("startshape A\nCF::Tile = [r 30]\nshape A { SQUARE [] }\n", Box::new(named("Tile must be aligned"))),
-        ("startshape A\nCF::Tile = [s 2]\nCF::Symmetry = CF::p4m\nshape A { SQUARE [] }\n", Box::new(named("p4m"))),
+        // A wallpaper group on a tile it does not fit (cfdg's check).
+        ("startshape A\nCF::Tile = [s 2 3]\nCF::Symmetry = CF::p4m\nshape A { SQUARE [] }\n", Box::new(named("p4m symmetry requires square tiling"))),
         ("startshape A\nshape A { clone CF::Cyclic, 1e9 SQUARE [] }\n", Box::new(limit)),
     ];
     for format in [Format::Svg, Format::Png] {

@@ -107,6 +107,9 @@ pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) ->
                 continue;
             }
         }
+        if t.kind == TermKind::Transform {
+            refuse_hidden_values(&t.args, scope)?;
+        }
         a.clear();
         eval(&t.args, scope, rand, &mut a)?;
         term(t, &a, s)?;
@@ -224,7 +227,40 @@ pub(crate) fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> 
             let c = s.target.get_mut(k);
             *c = adjust(*c, clamp(a[0]), false, 0.0);
         }
+        TermKind::Time => {
+            arity(&[2])?;
+            super::anim::shift(&mut s.time, a[0], a[1]);
+        }
+        TermKind::TimeScale => {
+            arity(&[1])?;
+            s.time[0] *= a[0];
+        }
         TermKind::Ignored => {}
     }
     Ok(())
+}
+
+/// Refuses a `trans` expression that names an adjustment value inside it
+/// (`trans select(i, BLUE, RED)`, subpathtest): read as numbers it would
+/// find other variables of the same name, or none, and draw what cfdg
+/// does not; adjustments inside expressions are not read yet.
+fn refuse_hidden_values(e: &crate::cfdg::syntax::Expr, scope: &Scope) -> Result<(), EvalError> {
+    use crate::cfdg::syntax::Expr;
+    let found = match e {
+        Expr::Var(name, span) => scope.get(&super::modval::key(name)).map(|_| *span),
+        _ => None,
+    };
+    if let Some(span) = found {
+        return Err(EvalError::BadParam { name: "transform".into(), message: format!("{}:{}: an adjustment value inside an expression is not supported yet (docs/cfdg.md)", span.line, span.column) });
+    }
+    match e {
+        Expr::Unary(_, a) | Expr::Paren(a) => refuse_hidden_values(a, scope),
+        Expr::Binary(_, a, b) => {
+            refuse_hidden_values(a, scope)?;
+            refuse_hidden_values(b, scope)
+        }
+        Expr::Cons(v) => v.iter().try_for_each(|a| refuse_hidden_values(a, scope)),
+        Expr::Call(_, args, _) => args.as_ref().as_ref().map_or(Ok(()), |a| refuse_hidden_values(a, scope)),
+        _ => Ok(()),
+    }
 }

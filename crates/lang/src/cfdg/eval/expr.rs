@@ -180,7 +180,7 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
             };
             eval(items[1 + i], scope, rand, out)?;
         }
-        Expr::Call(name, args, span) if matches!(name.as_str(), "dot" | "cross" | "hsb2rgb" | "rgb2hsb") => {
+        Expr::Call(name, args, span) if matches!(name.as_str(), "dot" | "cross" | "hsb2rgb" | "rgb2hsb" | "vec") => {
             super::func::vector_builtin(name, args.as_ref().as_ref(), *span, scope, rand, out)?;
         }
         Expr::Call(name, args, span) if !crate::cfdg::syntax::is_builtin(name) => {
@@ -259,8 +259,13 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, scope: &Scope) -> 
             (rand.next_double() * 2.0 - 1.0) * a[1] + a[0]
         }
         "randint" => {
-            let (lo, hi) = pair(a);
+            // `randint()` is [0, 2) (ASTfunction's constructor).
+            let (lo, hi) = if a.is_empty() { (0.0, 2.0) } else { pair(a) };
             (rand.next_double() * (hi - lo).abs() + lo.min(hi)).floor()
+        }
+        "ftime" | "frame" => {
+            want(0)?;
+            super::anim::value(name, scope)
         }
         "cos" => (arg(0) * DEG).cos(),
         "sin" => (arg(0) * DEG).sin(),
@@ -343,6 +348,7 @@ fn call(name: &str, a: &[f64], rand: &mut Rand64, span: Span, scope: &Scope) -> 
             };
             (v & 0x000F_FFFF_FFFF_FFFF) as f64
         }
+        n if super::distributions::is_distribution(n) => super::distributions::draw(n, a, rand, span)?,
         _ => return Err(EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: unknown or unsupported function", span.line, span.column) }),
     })
 }

@@ -218,6 +218,7 @@ pub fn vector_builtin(name: &str, args: Option<&Expr>, span: Span, scope: &Scope
         vals.push(v);
     }
     match name {
+        "vec" => super::builtins::vec(&vals, span, out)?,
         "dot" | "cross" => {
             let [l, r] = vals.as_slice() else { return Err(bad_call(span, name, "takes two vectors")) };
             if name == "dot" {

@@ -7,6 +7,9 @@
 //! shapes sorted by z, then by the order they were finished.
 
 pub mod adjust;
+pub mod anim;
+pub mod builtins;
+pub mod distributions;
 pub mod agg;
 pub mod expr;
 pub mod frame;
@@ -16,6 +19,7 @@ mod pending;
 pub mod state;
 pub mod symmetry;
 pub mod tile;
+pub mod wallpaper;
 
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, Element, Grammar, Term, Value};

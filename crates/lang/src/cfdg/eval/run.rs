@@ -15,6 +15,7 @@ use crate::model::EvalError;
 use super::FastMap as HashMap;
 
 mod bind;
+mod names;
 mod path;
 pub use path::PathDraw;
 
@@ -59,6 +60,10 @@ struct Renderer<'g> {
     /// The transforms of `CF::Symmetry`: every primitive and path is
     /// finished once under each (`processPrimShape`).
     symmetry: Vec<super::state::Affine>,
+    /// What each subpath draws, worked out at the first one (`path/subpath.rs`).
+    subpaths: Option<std::sync::Arc<path::SubpathTypes>>,
+    /// What namespaced replacements' seeds hash (`names.rs`).
+    entropy_names: &'g std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
 fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
@@ -75,6 +80,8 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     let mut scope = Scope { funcs: std::sync::Arc::new(super::func::Functions::new(g.functions.clone())), rand_static: std::sync::Arc::new(super::rand_static(g, opts.variation)), ..Scope::default() };
     scope.funcs.allow(budget.steps(), budget.limits().max_steps, budget.limits().max_depth);
     bind::push_predefined(&mut scope);
+    // A still's ftime() and frame() (eval/anim.rs), before the globals use them.
+    super::anim::setup(g, &mut scope)?;
     let mut current = Rand64::seeded(opts.variation.max(1) as u64);
     current.next_u64();
     // The globals are traversed with the renderer's own stream, which the
@@ -110,13 +117,6 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     }
     scope.globals = Some(scope.vars.len());
     budget.charge_steps(scope.funcs.take_calls())?;
-    // Settings that change the picture's framing or copy its shapes are not
-    // rendered yet; refusing them beats drawing something cfdg does not.
-    for d in &g.defines {
-        if matches!(d.name.as_str(), "CF::Time" | "CF::Frame" | "CF::FrameTime") {
-            return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: this setting is not supported yet (docs/cfdg.md)", d.span.line, d.span.column) });
-        }
-    }
     // RendererImpl::init: CF::MaxNatural must be ≥ 1 and < 2⁵³; CF::Impure lifts it.
     if let Some(m) = setting(g, "CF::MaxNatural", &scope)? {
         if !(1.0..9_007_199_254_740_992.0).contains(&m) {
@@ -167,6 +167,8 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         tile_canvas: None,
         first_scale: 0.0,
         symmetry: Vec::new(),
+        subpaths: None,
+        entropy_names: &g.entropy_names,
     };
     r.symmetry = super::symmetry::symmetry(g, &r.scope, r.tiling.as_ref(), r.budget)?;
     // CF::Size fixes the bounds (centred on the origin) and the scale, and
@@ -305,6 +307,9 @@ impl Renderer<'_> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
+        if super::anim::dropped(&state) {
+            return Ok(());
+        }
         let drawn = self.rules.is_path[shape] || (shape < 3 && self.rules.by_shape[shape].is_empty());
         if drawn && !self.symmetry.is_empty() {
             // One copy per symmetry transform, each finished in turn (processPrimShape).
@@ -416,7 +421,7 @@ impl Renderer<'_> {
             Element::Replace(rep) if rep.shape == super::FILL && !self.rules.index.contains_key(super::FILL) => {
                 // processPrimShapeSiblings for fillType: no bounds, never
                 // copied by symmetry or tiles, always drawn; a shape all the same.
-                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
                 let mut child = *parent;
                 self.current.xor(seed);
                 self.current.next_u64();
@@ -432,7 +437,7 @@ impl Renderer<'_> {
             }
             Element::Replace(rep) => {
                 let (shape, bound) = self.target(rep)?;
-                let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
+                let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
                 let mut params = Vec::new();
                 let wanted: usize = self.rules.sizes[shape].iter().sum();
                 match (&rep.args, bound) {
@@ -600,7 +605,7 @@ impl Renderer<'_> {
         let exact = self.sized.is_some() || self.tiling.is_some();
         if let Some(c) = self.tile_canvas {
             (cw, ch) = c;
-        } else if self.tiling.is_some() {
+        } else if self.tiling.is_some() || self.sized.is_some() {
             let (_, w, h, _) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, true);
             (cw, ch) = (w, h);
         }
@@ -621,8 +626,10 @@ impl Renderer<'_> {
             shapes: self.finished,
             width: w.clamp(0, u32::MAX as i64) as u32,
             height: h.clamp(0, u32::MAX as i64) as u32,
-            canvas_width: if self.tiling.is_some() { cw.clamp(0, u32::MAX as i64) as u32 } else { self.opts.width },
-            canvas_height: if self.tiling.is_some() { ch.clamp(0, u32::MAX as i64) as u32 } else { self.opts.height },
+            // A sized design's canvas is its size fitted exactly, as a tile's
+            // (RendererImpl::initBounds rescales the output for both).
+            canvas_width: if self.tiling.is_some() || self.sized.is_some() { cw.clamp(0, u32::MAX as i64) as u32 } else { self.opts.width },
+            canvas_height: if self.tiling.is_some() || self.sized.is_some() { ch.clamp(0, u32::MAX as i64) as u32 } else { self.opts.height },
             to_pixels,
             background,
             variation: self.opts.variation,

@@ -210,18 +210,21 @@ pub struct State {
     pub target: Hsba,
     /// The random stream.
     pub seed: Rand64,
+    /// The time map (`agg::trans_affine_time`: scale, begin, end), moved
+    /// by `time` and `timescale` terms ([`super::anim`]).
+    pub time: [f64; 3],
 }
 
 impl State {
     /// The start state (`CFDGImpl::getInitialShape`): black, opaque targets.
     pub fn initial() -> State {
         let black = Hsba { h: 0.0, s: 0.0, b: 0.0, a: 1.0 };
-        State { transform: Affine::default(), sz: 1.0, tz: 0.0, color: black, target: black, seed: Rand64::default() }
+        State { transform: Affine::default(), sz: 1.0, tz: 0.0, color: black, target: black, seed: Rand64::default(), time: [1.0, 0.0, 0.0] }
     }
     /// Whether every number is finite (`Modification::isFinite`).
     pub fn is_finite(&self) -> bool {
         let t = &self.transform;
-        [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty, self.sz, self.tz, self.color.h, self.color.s, self.color.b, self.color.a, self.target.h, self.target.s, self.target.b, self.target.a]
+        [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty, self.sz, self.tz, self.color.h, self.color.s, self.color.b, self.color.a, self.target.h, self.target.s, self.target.b, self.target.a, self.time[0]]
             .iter()
             .all(|v| v.is_finite())
     }

@@ -6,8 +6,8 @@
 //!
 //! Read: adjustments (each one transform), `CF::Cyclic` and `CF::Dihedral`
 //! (order, mirror angle, centre) and the frieze groups `CF::p11g`, `p11m`,
-//! `p1m1`, `p2`, `p2mg`, `p2mm`. The wallpaper groups (`CF::pm` … `CF::p6m`)
-//! are refused by name. Each transform made is a step and each comparison
+//! `p1m1`, `p2`, `p2mg`, `p2mm`; the wallpaper groups (`CF::pm` …
+//! `CF::p6m`) are in [`super::wallpaper`]. Each transform made is a step and each comparison
 //! of cfdg's de-duplication is a step, so a huge order ends at the step
 //! limit, typed, rather than in a quadratic hang.
 
@@ -34,7 +34,7 @@ enum Group {
     P2,
     P2mg,
     P2mm,
-    Wallpaper,
+    Wallpaper(super::wallpaper::Wall),
 }
 
 fn group(name: &str) -> Option<Group> {
@@ -47,20 +47,19 @@ fn group(name: &str) -> Option<Group> {
         "CF::p2" => Group::P2,
         "CF::p2mg" => Group::P2mg,
         "CF::p2mm" => Group::P2mm,
-        "CF::pm" | "CF::pg" | "CF::cm" | "CF::pmm" | "CF::pmg" | "CF::pgg" | "CF::cmm" | "CF::p4" | "CF::p4m" | "CF::p4g" | "CF::p3" | "CF::p3m1" | "CF::p31m" | "CF::p6" | "CF::p6m" => Group::Wallpaper,
-        _ => return None,
+        _ => return super::wallpaper::Wall::named(name).map(Group::Wallpaper),
     })
 }
 
-fn flag(e: &Expr) -> Option<(Group, &str)> {
+fn flag(e: &Expr) -> Option<Group> {
     match e {
-        Expr::Var(v, _) => group(v).map(|g| (g, v.as_str())),
+        Expr::Var(v, _) => group(v),
         Expr::Paren(a) => flag(a),
         _ => None,
     }
 }
 
-fn bad(span: Span, message: impl std::fmt::Display) -> EvalError {
+pub(super) fn bad(span: Span, message: impl std::fmt::Display) -> EvalError {
     EvalError::BadParam { name: "CF::Symmetry".into(), message: format!("{}:{}: {message}", span.line, span.column) }
 }
 
@@ -73,8 +72,9 @@ pub fn symmetry(g: &Grammar, scope: &Scope, tiling: Option<&Tiling>, budget: &mu
         Value::Expr(e) => vec![SymmetryItem::Expr(e.clone(), d.span)],
         Value::Shape(_) => return Err(bad(d.span, "expected transforms or a symmetry group")),
     };
-    // cfdg passes the tile map, identity when the design is not tiled.
-    let tile = tiling.map_or(Affine::default(), |t| t.transform);
+    // cfdg passes the tile map with its translation (`mTileMod.m_transform`),
+    // identity when the design is not tiled.
+    let tile = tiling.map_or(Affine::default(), |t| Affine { tx: t.offset.0, ty: t.offset.1, ..t.transform });
     let tiled = tiling.is_some_and(|t| t.frieze == Frieze::None);
     let mut rand = Rand64::default();
     let (mods, syms) = list(&items, scope, &tile, tiled, &mut rand, budget)?;
@@ -97,12 +97,9 @@ pub fn list<'i>(items: &'i [SymmetryItem], scope: &Scope, tile: &Affine, tiled: 
     for item in items {
         match item {
             SymmetryItem::Expr(e, span) => {
-                if let Some((grp, name)) = flag(e) {
+                if let Some(grp) = flag(e) {
                     if let Some((grp, at, data)) = spec.take() {
                         b.group(grp, at, &data, &tile, tiled)?;
-                    }
-                    if grp == Group::Wallpaper {
-                        return Err(bad(*span, format!("the wallpaper symmetry `{name}` is not supported yet (docs/cfdg.md)")));
                     }
                     spec = Some((grp, *span, Vec::new()));
                 } else if let Some((_, _, data)) = spec.as_mut() {
@@ -141,7 +138,7 @@ fn is_geometric(k: TermKind) -> bool {
     matches!(k, TermKind::X | TermKind::Y | TermKind::Z | TermKind::Size | TermKind::ZSize | TermKind::Rotate | TermKind::Flip | TermKind::Skew | TermKind::Transform)
 }
 
-struct Builder<'b> {
+pub(super) struct Builder<'b> {
     syms: Vec<Affine>,
     budget: &'b mut Budget,
 }
@@ -152,16 +149,16 @@ fn same(a: &Affine, b: &Affine) -> bool {
     (a.sx - b.sx).abs() <= EPS && (a.shy - b.shy).abs() <= EPS && (a.shx - b.shx).abs() <= EPS && (a.sy - b.sy).abs() <= EPS && (a.tx - b.tx).abs() <= EPS && (a.ty - b.ty).abs() <= EPS
 }
 
-fn translate(t: &mut Affine, x: f64, y: f64) {
+pub(super) fn translate(t: &mut Affine, x: f64, y: f64) {
     t.tx += x;
     t.ty += y;
 }
-fn flip_x(t: &mut Affine) {
+pub(super) fn flip_x(t: &mut Affine) {
     t.sx = -t.sx;
     t.shy = -t.shy;
     t.tx = -t.tx;
 }
-fn flip_y(t: &mut Affine) {
+pub(super) fn flip_y(t: &mut Affine) {
     t.shx = -t.shx;
     t.sy = -t.sy;
     t.ty = -t.ty;
@@ -169,7 +166,7 @@ fn flip_y(t: &mut Affine) {
 
 impl Builder<'_> {
     /// `addUnique`, charging a step per comparison.
-    fn add(&mut self, t: Affine) -> Result<(), EvalError> {
+    pub(super) fn add(&mut self, t: Affine) -> Result<(), EvalError> {
         self.budget.charge_steps(1 + self.syms.len() as u64)?;
         if !self.syms.iter().any(|s| same(s, &t)) {
             self.budget.reserve_memory(TRANSFORM_BYTES)?;
@@ -179,7 +176,7 @@ impl Builder<'_> {
     }
 
     /// `processDihedral`.
-    fn dihedral(&mut self, order: f64, x: f64, y: f64, mirrored: bool, angle: f64, at: Span) -> Result<(), EvalError> {
+    pub(super) fn dihedral(&mut self, order: f64, x: f64, y: f64, mirrored: bool, angle: f64, at: Span) -> Result<(), EvalError> {
         if order.is_nan() || order < 1.0 || !order.is_finite() || !x.is_finite() || !y.is_finite() || !angle.is_finite() {
             return Err(bad(at, "Rotational symmetry order must be one or larger"));
         }
@@ -293,7 +290,7 @@ impl Builder<'_> {
                     }
                 }
             }
-            Group::Wallpaper => Err(bad(at, "wallpaper symmetry is not supported yet (docs/cfdg.md)")),
+            Group::Wallpaper(w) => self.wallpaper(w, at, data, tile, tiled),
         }
     }
 }

@@ -80,6 +80,25 @@ fn func_bytes(name: &str) -> &'static [u8] {
         "bitleft" => b"\x91\x47\xE5\xE5\x0D\xAA",
         // cfdg appends these as C strings, so this one stops at its zero byte.
         "bitright" => b"\xF1\xAB\x17",
+        "vec" => b"\xE1\x75\x95\xC9\x80\xCF",
+        "rand::exponential" => b"\x32\xDF\x4A\xFD",
+        "rand::gamma" => b"\xC9\xD5\x57\x4F\xE6\x77",
+        "rand::weibull" => b"\xE7\xCF\xA2\x01\xCD\x02",
+        "rand::extremeV" => b"\xE8\xCF\x86\x0B\xFD\x8E",
+        "rand::normal" => b"\xCF\xAC\xD4\x12\x09\xCC",
+        "rand::lognormal" => b"\x36\x65\x08\x5C\x49\xAA",
+        "rand::chisquared" => b"\x6D\x4B\x49\xA8\x83\xAD",
+        "rand::cauchy" => b"\x22\x6C\x9E\x77\x79\x89",
+        "rand::fisherF" => b"\x9B\x76\x1B\x51\xCD\xAE",
+        "rand::studentT" => b"\xF9\x41\x44\xF2\x63\xA7",
+        "randint::bernoulli" => b"\xBE\xD1\x55\x04\xD4\x54",
+        "randint::binomial" => b"\x6A\x69\x9A\x94\x36\x6C",
+        "randint::negbinomial" => b"\xED\x31\x46\x9C\xA6\xAD",
+        "randint::poisson" => b"\x09\x89\xF3\x77\xAE\x67",
+        "randint::discrete" => b"\x17\x69\x8D\x61\xFF\x2A",
+        "randint::geometric" => b"\xD5\x10\x2E\xA5\x03\xB4",
+        "ftime" => b"\x4F\xBE\xA1\x06\x80\x06",
+        "frame" => b"\x90\x70\x6A\xBB\xBA\xB0",
         "dot" => b"\x60\xAA\xB7\xE1\xB9\x06",
         "cross" => b"\x39\x38\x40\xE5\x93\xF8",
         "hsb2rgb" => b"\xC3\xD4\x57\x04\xAF\x9F",
@@ -113,7 +132,9 @@ fn term_bytes(kind: TermKind) -> &'static [u8] {
         TermKind::TargSat => b"\xDA\x75\x13\xD3\x30\xEA",
         TermKind::TargBright => b"\x8F\x01\x2B\x75\xC3\x25",
         TermKind::TargAlpha => b"\xE7\xCD\x5E\xE3\x88\xF4",
-        TermKind::Ignored => b"",
+        TermKind::Time => b"\x20\xC6\xE8\x02\xED\x27",
+        TermKind::TimeScale => b"\x78\x8E\xC8\x2C\x1C\x96",
+        TermKind::Ignored => b"\xBE\x9F\x5F\x7F\x4A\x7E",
     }
 }
 
@@ -211,7 +232,7 @@ fn constant_with(e: &Expr, consts: &[&str]) -> bool {
         Expr::Binary(_, a, b) => c(a) && c(b),
         Expr::Cons(v) => v.iter().all(c),
         // rand_static() is a constant drawn at parse time (cfdg's RandStaticIsConst).
-        Expr::Call(name, args, _) => is_builtin(name) && (name == "rand_static" || !name.starts_with("rand")) && args.as_ref().as_ref().is_none_or(c),
+        Expr::Call(name, args, _) => is_builtin(name) && (name == "rand_static" || !name.starts_with("rand")) && !matches!(name.as_str(), "ftime" | "frame") && args.as_ref().as_ref().is_none_or(c),
         Expr::Let(defs, body, _) => {
             let mut inner = consts.to_vec();
             for (name, e) in defs {

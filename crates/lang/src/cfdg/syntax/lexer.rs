@@ -34,6 +34,10 @@ pub struct Token {
     pub v3: bool,
     /// Whether it comes from an `import`ed or `include`d file.
     pub included: bool,
+    /// A name from a file imported into a namespace (`import @ns file`)
+    /// is read as `ns::name`; this keeps the name as written, which cfdg
+    /// hashes into seeds (`syntax/parser/namespace.rs`).
+    pub written: Option<Box<str>>,
 }
 
 const PUNCTS: &[&str] = &[
@@ -86,13 +90,13 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             if b[i + 1 + n] != b'"' {
                 return Err(ParseError::single(span, "unterminated string"));
             }
-            out.push(Token { v3: false, included: false, tok: Tok::Str(src[i + 1..i + 1 + n].to_string()), span });
+            out.push(Token { v3: false, included: false, written: None, tok: Tok::Str(src[i + 1..i + 1 + n].to_string()), span });
             adv(&mut i, &mut line, &mut col, n + 2);
             continue;
         }
         if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)) {
             let n = number_len(&b[i..]);
-            out.push(Token { v3: false, included: false, tok: Tok::Num(src[i..i + n].to_string()), span });
+            out.push(Token { v3: false, included: false, written: None, tok: Tok::Num(src[i..i + n].to_string()), span });
             adv(&mut i, &mut line, &mut col, n);
             continue;
         }
@@ -120,16 +124,16 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             let word = &src[start..j];
             // `|hue` etc. are single tokens only for the adjustment words.
             if c == b'|' && !matches!(word, "|hue" | "|h" | "|saturation" | "|sat" | "|brightness" | "|b" | "|alpha" | "|a") {
-                out.push(Token { v3: false, included: false, tok: Tok::Punct("|"), span });
+                out.push(Token { v3: false, included: false, written: None, tok: Tok::Punct("|"), span });
                 adv(&mut i, &mut line, &mut col, 1);
                 continue;
             }
-            out.push(Token { v3: false, included: false, tok: Tok::Word(word.to_string()), span });
+            out.push(Token { v3: false, included: false, written: None, tok: Tok::Word(word.to_string()), span });
             adv(&mut i, &mut line, &mut col, j - start);
             continue;
         }
         if let Some(p) = PUNCTS.iter().find(|p| b[i..].starts_with(p.as_bytes())) {
-            out.push(Token { v3: false, included: false, tok: Tok::Punct(p), span });
+            out.push(Token { v3: false, included: false, written: None, tok: Tok::Punct(p), span });
             adv(&mut i, &mut line, &mut col, p.len());
             continue;
         }
@@ -143,18 +147,20 @@ pub fn lex(src: &str) -> Result<Vec<Token>, ParseError> {
             ("\u{221e}", Tok::Word("infinity".into())),
         ];
         if let Some((s, t)) = uni.iter().find(|(s, _)| src[i..].starts_with(s)) {
-            out.push(Token { v3: false, included: false, tok: t.clone(), span });
+            out.push(Token { v3: false, included: false, written: None, tok: t.clone(), span });
             adv(&mut i, &mut line, &mut col, s.len());
             continue;
         }
         let ch = src[i..].chars().next().unwrap_or('?');
         if ch == '@' {
-            // `import @ns file` and `@ns` names (cfdg.l's namespace forms).
-            return Err(ParseError::single(span, "namespaces (`@`) are not supported yet (docs/cfdg.md)"));
+            // `import @ns file` (cfdg.ypp's fileNameSpace).
+            out.push(Token { v3: false, included: false, written: None, tok: Tok::Punct("@"), span });
+            adv(&mut i, &mut line, &mut col, 1);
+            continue;
         }
         return Err(ParseError::single(span, format!("unexpected character `{ch}`")));
     }
-    out.push(Token { v3: false, included: false, tok: Tok::Eof, span: Span::new(line, col) });
+    out.push(Token { v3: false, included: false, written: None, tok: Tok::Eof, span: Span::new(line, col) });
     Ok(out)
 }
 

@@ -15,7 +15,7 @@ pub mod lexer;
 mod parser;
 
 pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
-pub use parser::{is_path_op, parse, parse_with, Loader, REUSE};
+pub use parser::{is_path_op, parse, parse_with, path_op_arity, Loader, REUSE};
 
 use crate::Span;
 
@@ -54,6 +54,11 @@ pub struct Grammar {
     /// makes them: each takes the next number of the parse-time stream
     /// (`eval::rand_static`).
     pub rand_static: Vec<Span>,
+    /// The shape names of replacements in files imported into a
+    /// namespace, as written (what cfdg hashes into their seeds), by
+    /// where they are written and their qualified name
+    /// (`parser/namespace.rs`).
+    pub entropy_names: std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
 /// A parameter's or a function's type, as cfdg's `AST::decodeType`
@@ -388,7 +393,13 @@ pub enum TermKind {
     TargBright,
     /// `|a v`.
     TargAlpha,
-    /// `time`, `timescale`, `blend`: read and ignored (no animation).
+    /// `time begin end`: moves the shape's time span (`ASTmodTerm::time`,
+    /// `agg::trans_affine_time_translation`); a still draws every shape
+    /// but drops one whose span runs backwards (eval/time.rs).
+    Time,
+    /// `timescale s`: scales later time moves (`ASTmodTerm::timescale`).
+    TimeScale,
+    /// `blend`: read and ignored (no blend modes).
     Ignored,
 }
 

@@ -11,8 +11,10 @@ mod expr;
 mod func;
 mod path;
 use expr::const_value;
+mod namespace;
+mod subpath;
 mod symmetry;
-pub use path::is_path_op;
+pub use path::{is_path_op, path_op_arity};
 
 /// The argument list `(=)` stands for: the parent shape's parameters.
 pub const REUSE: &str = "(=)";
@@ -59,7 +61,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
-    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None, rand_static: Vec::new() };
+    let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None, rand_static: Vec::new(), entropy_names: Default::default() };
     p.grammar()
 }
 
@@ -78,6 +80,8 @@ struct Parser<'a> {
     start_setting: Option<Replacement>,
     /// `rand_static()` calls in the order they were made.
     rand_static: Vec<Span>,
+    /// The written names of namespaced replacements ([`namespace`]).
+    entropy_names: std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
 fn term_kind(word: &str) -> Option<TermKind> {
@@ -98,7 +102,9 @@ fn term_kind(word: &str) -> Option<TermKind> {
         "|saturation" | "|sat" => TermKind::TargSat,
         "|brightness" | "|b" => TermKind::TargBright,
         "|alpha" | "|a" => TermKind::TargAlpha,
-        "time" | "timescale" | "blend" => TermKind::Ignored,
+        "time" => TermKind::Time,
+        "timescale" => TermKind::TimeScale,
+        "blend" => TermKind::Ignored,
         _ => return None,
     })
 }
@@ -166,7 +172,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new(), entropy_names: Default::default() };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -186,6 +192,7 @@ impl Parser<'_> {
                 }
                 Tok::Word(w) if w == "include" || w == "import" => {
                     self.bump();
+                    let ns = self.namespace()?;
                     let name = match self.bump().tok {
                         Tok::Word(n) | Tok::Str(n) => n,
                         _ => return Err(ParseError::single(span, "expected a file name after `import`")),
@@ -202,6 +209,9 @@ impl Parser<'_> {
                         ParseError::single(span, format!("in `{name}` at {}:{}: {}", d.span.line, d.span.column, d.message))
                     })?;
                     more.pop(); // its end of input
+                    if let Some(ns) = &ns {
+                        namespace::qualify(&mut more, ns);
+                    }
                     let at = self.pos;
                     self.toks.splice(at..at, more);
                 }
@@ -286,6 +296,7 @@ impl Parser<'_> {
             }
         }
         g.rand_static = std::mem::take(&mut self.rand_static);
+        g.entropy_names = std::mem::take(&mut self.entropy_names);
         Ok(g)
     }
 
@@ -417,11 +428,13 @@ impl Parser<'_> {
                 Ok(Element::Transform { clone: word == "clone", adjusts, symmetry, body, span })
             }
             "finally" | "else" | "case" => self.err("unexpected keyword"),
-            "path" if self.path.in_path && matches!(self.peek_at(1), Tok::Word(_)) => Err(ParseError::single(span, "subpaths (`path NAME [ ]` inside a path) are not supported yet (docs/cfdg.md)")),
+            "path" if self.path.in_path && matches!(self.peek_at(1), Tok::Word(_)) => self.subpath(),
             w if is_path_op(w) && (self.path.in_path || !matches!(w, "FILL" | "STROKE")) && !matches!(self.peek_at(1), Tok::Punct("=")) => self.path_element(),
             _ if matches!(self.peek_at(1), Tok::Punct("=")) => Ok(Element::Define(self.define()?)),
+            _ if self.path.in_path => self.err("Replacements are not allowed in paths (a subpath is `path NAME [ ]`)"),
             _ => {
                 let (shape, span) = self.name("a shape name")?;
+                self.note_written(&shape, span);
                 let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
                 let adjust = self.adjustment()?;
                 Ok(Element::Replace(Replacement { shape, adjust, args, span }))
@@ -462,8 +475,10 @@ impl Parser<'_> {
                 Ok(Element::Loop(Loop { var: None, args: Expr::Num(value, n), adjust, body, finally: Vec::new(), v2: true, span }))
             }
             Tok::Word(w) if is_path_op(&w) && (self.path.in_path || !matches!(w.as_str(), "FILL" | "STROKE")) => self.path_element(),
+            Tok::Word(_) if self.path.in_path => self.err("Replacements are not allowed in paths"),
             Tok::Word(_) => {
                 let (shape, span) = self.name("a shape name")?;
+                self.note_written(&shape, span);
                 let adjust = self.adjustment()?;
                 Ok(Element::Replace(Replacement { shape, adjust, args: None, span }))
             }

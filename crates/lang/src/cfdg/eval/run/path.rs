@@ -20,6 +20,9 @@ use super::Renderer;
 use crate::cfdg::syntax::{path_flags as pf, Element, PathCommand, PathOp, PathOpKind};
 use crate::model::EvalError;
 
+mod subpath;
+pub(in crate::cfdg::eval) use subpath::SubpathTypes;
+
 /// cfdg's default stroke width and miter limit (`ast.h`).
 pub const DEFAULT_WIDTH: f64 = 0.1;
 /// The miter limit (`DefaultMiterLimit`).
@@ -57,27 +60,15 @@ struct Ctx {
     want_command: bool,
     closed: bool,
     stop: bool,
+    /// The path shapes being walked, outermost first (subpaths nest).
+    walking: Vec<usize>,
 }
 
-/// The kinds of element a body holds (`ASTreplacement::repElemListEnum`).
+/// The kinds of element a body holds (`ASTreplacement::repElemListEnum`;
+/// a subpath counts as the kind of the path it draws, `subpath.rs`).
 const REP_REPLACEMENT: u8 = 1;
 const REP_OP: u8 = 4;
 const REP_COMMAND: u8 = 8;
-
-fn rep_type(body: &[Element]) -> u8 {
-    body.iter().fold(0, |acc, e| {
-        acc | match e {
-            Element::PathOp(_) => REP_OP,
-            Element::PathCommand(_) => REP_COMMAND,
-            Element::Replace(_) => REP_REPLACEMENT,
-            Element::Loop(l) => rep_type(&l.body) | rep_type(&l.finally),
-            Element::If { then, otherwise, .. } => rep_type(then) | rep_type(otherwise),
-            Element::Switch { cases, otherwise, .. } => cases.iter().fold(rep_type(otherwise), |a, (_, b)| a | rep_type(b)),
-            Element::Transform { body, .. } => rep_type(body),
-            Element::Define(_) => 0,
-        }
-    })
-}
 
 fn invert(t: &Affine) -> Affine {
     let d = 1.0 / t.determinant();
@@ -91,7 +82,7 @@ fn error(op_line: crate::Span, message: &str) -> EvalError {
 
 impl Ctx {
     fn new() -> Ctx {
-        Ctx { store: PathStorage::default(), cmds: Vec::new(), index: 0, next_index: 0, last: (0.0, 0.0), want_move_to: true, want_command: true, closed: false, stop: false }
+        Ctx { store: PathStorage::default(), cmds: Vec::new(), index: 0, next_index: 0, last: (0.0, 0.0), want_move_to: true, want_command: true, closed: false, stop: false, walking: Vec::new() }
     }
 
     /// `ASTcompiledPath::finish`; returns whether the default command is needed.
@@ -114,13 +105,13 @@ impl Ctx {
     }
 
     /// `ASTcompiledPath::addPathOp`.
-    fn add_op(&mut self, op: &PathOp, mut d: [f64; 6], t: &Affine, tr: bool) -> Result<(), EvalError> {
+    fn add_op(&mut self, op: &PathOp, n: usize, mut d: [f64; 6], t: &Affine, tr: bool) -> Result<(), EvalError> {
         let arc = matches!(op.kind, PathOpKind::ArcTo | PathOpKind::ArcRel);
         let (mut rx, mut ry, mut angle) = (0.0, 0.0, 0.0);
         let mut sweep = op.flags & pf::ARC_CW == 0;
         let large = op.flags & pf::ARC_LARGE != 0;
         if arc {
-            if op.args.len() == 5 {
+            if n == 5 {
                 (rx, ry, angle) = (d[2], d[3], d[4] * 0.017_453_292_519_9);
             } else {
                 (rx, ry) = (d[2], d[2]);
@@ -196,7 +187,7 @@ impl Ctx {
                 if continuous && !matches!(s.last_command(), CURVE3 | CURVE4) {
                     return Err(error(op.span, "smooth curve operations must be preceded by another curve operation"));
                 }
-                match op.args.len() {
+                match n {
                     2 => s.curve3_smooth(d[0], d[1]),
                     4 if continuous => s.curve4_smooth((d[2], d[3]), d[0], d[1]),
                     4 => s.curve3(d[2], d[3], d[0], d[1]),
@@ -223,6 +214,7 @@ impl Renderer<'_> {
         self.bind_params(shape, &params);
         let saved_params = std::mem::replace(&mut self.params, params);
         let mut ctx = Ctx::new();
+        ctx.walking.push(shape);
         let walked = self.path_body(body, &state, false, &mut ctx);
         self.scope.vars.truncate(depth);
         self.params = saved_params;
@@ -273,6 +265,10 @@ impl Renderer<'_> {
                 for a in &op.args {
                     super::super::expr::eval(a, &self.scope, &mut self.current, &mut v)?;
                 }
+                // Vector arguments count as their numbers (checkArguments).
+                if v.len() != op.args.len() {
+                    crate::cfdg::syntax::path_op_arity(op.kind, op.flags, v.len()).map_err(|m| error(op.span, &m))?;
+                }
                 let before = ctx.store.v.len();
                 let mut d = [0.0; 6];
                 for (slot, x) in d.iter_mut().zip(&v) {
@@ -281,7 +277,7 @@ impl Renderer<'_> {
                     }
                     *slot = *x;
                 }
-                ctx.add_op(op, d, &parent.transform, tr)?;
+                ctx.add_op(op, v.len(), d, &parent.transform, tr)?;
                 self.budget.reserve_memory(VERTEX_BYTES.saturating_mul(ctx.store.v.len().saturating_sub(before) as u64))?;
                 if ctx.store.v.iter().rev().take(13).any(|v| !(v.x.is_finite() && v.y.is_finite())) {
                     return Err(EvalError::NonFinite { span: op.span, what: "a path point".into(), value: "undefined or infinite".into() });
@@ -290,7 +286,7 @@ impl Renderer<'_> {
             }
             Element::PathCommand(c) => self.path_command(c, parent, ctx),
             Element::Loop(l) => {
-                let ops_only = (rep_type(&l.body) | rep_type(&l.finally)) == REP_OP;
+                let ops_only = (self.rep_type(&l.body) | self.rep_type(&l.finally)) == REP_OP;
                 let mut child = *parent;
                 if ops_only && !tr {
                     child.transform = Affine::default();
@@ -315,7 +311,7 @@ impl Renderer<'_> {
                 Err(EvalError::BadParam { name: "transform".into(), message: format!("{}:{}: a list of transforms or a symmetry group in a path is not supported yet (docs/cfdg.md)", span.line, span.column) })
             }
             Element::Transform { clone, adjusts, body, .. } => {
-                let ops_only = rep_type(body) == REP_OP;
+                let ops_only = self.rep_type(body) == REP_OP;
                 let mut base = *parent;
                 if ops_only && !tr {
                     base.transform = Affine::default();
@@ -346,7 +342,7 @@ impl Renderer<'_> {
                 self.path_body(body, parent, tr, ctx)
             }
             Element::Define(_) => self.element(e, parent),
-            Element::Replace(r) => Err(error(r.span, "subpaths (a shape inside a `path`) are not supported yet (docs/cfdg.md)")),
+            Element::Replace(r) => self.subpath(r, parent, tr, ctx),
         }
     }
 

@@ -89,6 +89,39 @@ fn flag_value(e: &Expr) -> Option<u32> {
     }
 }
 
+/// Checks that a path operation has `n` numbers and these flags
+/// (`ASTpathOp::checkArguments`); the message says what it takes.
+pub fn path_op_arity(kind: PathOpKind, flags: u32, n: usize) -> Result<(), String> {
+    let ok = match kind {
+        PathOpKind::MoveTo | PathOpKind::MoveRel | PathOpKind::LineTo | PathOpKind::LineRel => flags == 0 && n == 2,
+        PathOpKind::ArcTo | PathOpKind::ArcRel => flags & !(pf::ARC_CW | pf::ARC_LARGE) == 0 && (n == 3 || n == 5),
+        PathOpKind::CurveTo | PathOpKind::CurveRel if flags & pf::CONTINUOUS != 0 => flags == pf::CONTINUOUS && (n == 2 || n == 4),
+        PathOpKind::CurveTo | PathOpKind::CurveRel => flags == 0 && (n == 4 || n == 6),
+        PathOpKind::ClosePoly => flags & !pf::ALIGN == 0 && n == 0,
+    };
+    if ok {
+        return Ok(());
+    }
+    let want = match kind {
+        PathOpKind::MoveTo | PathOpKind::MoveRel | PathOpKind::LineTo | PathOpKind::LineRel => "two arguments and no flags",
+        PathOpKind::ArcTo | PathOpKind::ArcRel => "three or five arguments (flags CF::ArcCW, CF::ArcLarge)",
+        PathOpKind::CurveTo | PathOpKind::CurveRel => "four or six arguments (two or four with CF::Continuous)",
+        PathOpKind::ClosePoly => "no arguments (flag CF::Align)",
+    };
+    Err(format!("this path operation takes {want}, given {n} arguments"))
+}
+
+/// Whether `e` may evaluate to more than one number (a variable, an
+/// index, a call or a list, or arithmetic on one).
+fn may_be_vector(e: &Expr) -> bool {
+    match e {
+        Expr::Num(..) => false,
+        Expr::Unary(_, a) | Expr::Paren(a) => may_be_vector(a),
+        Expr::Binary(_, a, b) => may_be_vector(a) || may_be_vector(b),
+        _ => true,
+    }
+}
+
 /// What the parser keeps while it reads a path.
 #[derive(Debug, Default)]
 pub(in crate::cfdg::syntax) struct PathState {
@@ -220,22 +253,13 @@ impl Parser<'_> {
         } else {
             return self.err("expected `(`, `{` or `[` after a path operation");
         };
-        let n = args.len();
-        let ok = match kind {
-            PathOpKind::MoveTo | PathOpKind::MoveRel | PathOpKind::LineTo | PathOpKind::LineRel => flags == 0 && n == 2,
-            PathOpKind::ArcTo | PathOpKind::ArcRel => flags & !(pf::ARC_CW | pf::ARC_LARGE) == 0 && (n == 3 || n == 5),
-            PathOpKind::CurveTo | PathOpKind::CurveRel if flags & pf::CONTINUOUS != 0 => flags == pf::CONTINUOUS && (n == 2 || n == 4),
-            PathOpKind::CurveTo | PathOpKind::CurveRel => flags == 0 && (n == 4 || n == 6),
-            PathOpKind::ClosePoly => flags & !pf::ALIGN == 0 && n == 0,
-        };
-        if !ok {
-            let want = match kind {
-                PathOpKind::MoveTo | PathOpKind::MoveRel | PathOpKind::LineTo | PathOpKind::LineRel => "two arguments and no flags",
-                PathOpKind::ArcTo | PathOpKind::ArcRel => "three or five arguments (flags CF::ArcCW, CF::ArcLarge)",
-                PathOpKind::CurveTo | PathOpKind::CurveRel => "four or six arguments (two or four with CF::Continuous)",
-                PathOpKind::ClosePoly => "no arguments (flag CF::Align)",
-            };
-            return Err(ParseError::single(span, format!("this path operation takes {want}, given {n} arguments")));
+        // A vector argument counts as its numbers (cfdg counts the
+        // evaluated size, `ASTpathOp::checkArguments`): when one may be a
+        // vector, the count is checked when the arguments are evaluated.
+        if let Err(e) = path_op_arity(kind, flags, args.len()) {
+            if flags & !(pf::ARC_CW | pf::ARC_LARGE | pf::CONTINUOUS | pf::ALIGN) != 0 || !args.iter().any(may_be_vector) {
+                return Err(ParseError::single(span, e));
+            }
         }
         Ok(PathOp { kind, args, flags, span })
     }
@@ -320,4 +344,28 @@ fn merge_flags(mut flags: u32, f: u32) -> u32 {
         flags &= !pf::CAP_MASK;
     }
     flags | f
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::cfdg::{eval, parse_checked, syntax};
+    use crate::core::budget::{Budget, Limits};
+
+    /// A vector argument counts as its numbers (retaintest): checked
+    /// when it is evaluated, with the operation's position.
+    #[test]
+    fn vector_arguments_count_as_their_numbers() {
+        let src = "startshape R((2, 3))\npath R(vector2 sz) {\n MOVETO(sz)\n LINEREL(-sz[0], 0)\n LINETO(0, 0)\n CLOSEPOLY()\n FILL[]\n}\n";
+        let g = parse_checked(src.as_bytes()).expect("parses");
+        let p = eval::render(&g, &eval::Options::default(), &mut Budget::new(Limits::default())).expect("renders");
+        let v = &p.paths[0][0].vertices;
+        assert_eq!((v[0].x, v[0].y, v[1].x, v[1].y), (2.0, 3.0, 0.0, 3.0));
+        let bad = "startshape R((2, 3, 4))\npath R(vector3 sz) {\n MOVETO(sz)\n FILL[]\n}\n";
+        let g = parse_checked(bad.as_bytes()).expect("parses");
+        let e = eval::render(&g, &eval::Options::default(), &mut Budget::new(Limits::default())).expect_err("three numbers");
+        assert!(e.to_string().contains("3:2:") && e.to_string().contains("given 3 arguments"), "{e}");
+        // Plain numbers are still counted when parsed.
+        let e = syntax::parse(b"startshape R\npath R {\n MOVETO(1)\n}\n").expect_err("one number");
+        assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (3, 2));
+    }
 }
