@@ -12,6 +12,7 @@ pub mod expr;
 pub mod frame;
 pub mod func;
 pub mod modval;
+pub mod shapeval;
 pub mod state;
 pub mod symmetry;
 pub mod tile;
@@ -137,7 +138,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
     let mut is_path = vec![false; 3];
     let sizes_of = |r: &syntax::Rule| -> Vec<usize> {
         match g.param_types.get(&r.name) {
-            Some(ps) if ps.len() == r.params.len() => ps.iter().map(|p| p.ty.size().unwrap_or(1)).collect(),
+            Some(ps) if ps.len() == r.params.len() => ps.iter().map(|p| shapeval::slot_size(p.ty)).collect(),
             _ => vec![1; r.params.len()],
         }
     };

@@ -15,6 +15,7 @@ use crate::model::EvalError;
 use std::collections::HashMap;
 
 mod bind;
+mod chosen;
 mod path;
 pub use path::PathDraw;
 
@@ -203,7 +204,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     // The start shape may be a global shape variable (stackargtest).
-    let (start_shape, bound) = r.target(start)?;
+    let (start_shape, bound) = r.target_of(start)?;
     let mut init = State::initial();
     // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
     let mut start_params = bound.unwrap_or_default();
@@ -421,23 +422,23 @@ impl Renderer<'_> {
                 Ok(())
             }
             Element::Replace(rep) => {
-                let (shape, bound) = self.target(rep)?;
+                let (shape, bound) = self.target_of(rep)?;
                 let (terms, seed) = self.seeded_terms(&rep.adjust, &rep.shape, rep.args.as_ref());
                 let mut params = Vec::new();
-                let wanted: usize = self.rules.sizes[shape].iter().sum();
+                let wanted: usize = self.rules.sizes[shape].len();
                 match (&rep.args, bound) {
                     (_, Some(b)) => params = b,
                     (Some(syntax::Expr::Var(v, _)), None) if v == syntax::REUSE => {
                         params = self.params.clone();
-                        if params.len() != wanted {
+                        if super::shapeval::split(&self.rules.sizes[shape], &params).is_none() {
                             return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: `(=)` needs a parent with the same parameters", rep.span.line, rep.span.column) });
                         }
                     }
                     (Some(a), None) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
                     (None, None) => {}
                 }
-                if params.len() != wanted {
-                    return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape `{}` takes {wanted} numbers, given {}", rep.span.line, rep.span.column, rep.shape, params.len()) });
+                if super::shapeval::split(&self.rules.sizes[shape], &params).is_none() {
+                    return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape `{}` takes {wanted} parameters, given {} numbers that do not fit them", rep.span.line, rep.span.column, rep.shape, params.len()) });
                 }
                 let mut child = *parent;
                 self.current.xor(seed);

@@ -13,9 +13,11 @@
 mod entropy;
 pub mod lexer;
 mod parser;
+mod shapes;
 
 pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
 pub use parser::{is_path_op, parse, parse_with, Loader, REUSE};
+pub use shapes::{shape_numbers, SHAPE_EXPR};
 
 use crate::Span;
 
@@ -425,6 +427,13 @@ pub enum Expr {
     Let(Vec<(String, Expr)>, Box<Expr>, Span),
     /// `name[index]` or `name[index, length, stride]` (`ASTarray`): elements of a vector.
     Index(String, Box<Expr>, Span),
+    /// A shape named in an expression, with its arguments (`ASTruleSpecifier`:
+    /// `foo(0.5)`, `CIRCLE`) and its number among the design's shapes
+    /// (primitives first, then rules in order: [`shape_numbers`]).
+    Shape(String, usize, Box<Option<Expr>>, Span),
+    /// An adjustment written inside an expression (`[r 5]` as an argument,
+    /// a `select` choice or a function's value: `ASTmodification`).
+    Adjust(Box<Adjustment>, Span),
 }
 
 impl Expr {

@@ -10,6 +10,7 @@ use crate::{ParseError, Span};
 mod expr;
 mod func;
 mod path;
+mod shapeparam;
 use expr::const_value;
 mod symmetry;
 pub use path::is_path_op;
@@ -286,6 +287,7 @@ impl Parser<'_> {
             }
         }
         g.rand_static = std::mem::take(&mut self.rand_static);
+        super::shapes::resolve(&mut g);
         Ok(g)
     }
 
@@ -336,6 +338,9 @@ impl Parser<'_> {
             Tok::Word(w) => w,
             _ => return self.err("expected a shape, `loop`, `if`, `switch`, `transform` or a definition"),
         };
+        if let Some(r) = self.chosen_shape(span)? {
+            return Ok(r);
+        }
         match word.as_str() {
             "loop" => {
                 self.bump();

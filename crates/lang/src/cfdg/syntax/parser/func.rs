@@ -66,8 +66,6 @@ impl Parser<'_> {
         let ret = if typed == 1 {
             let (w, wspan) = self.name("a type")?;
             match decode_type(&w) {
-                Some(ParamType::Adjustment) => return Err(ParseError::single(wspan, "functions returning an adjustment are not supported yet")),
-                Some(ParamType::Shape) => return Err(ParseError::single(wspan, "functions returning a shape are not supported yet")),
                 Some(t) => t,
                 None => return Err(ParseError::single(wspan, format!("unknown type `{w}` (number, natural, vectorN, shape or adjustment)"))),
             }
@@ -79,9 +77,6 @@ impl Parser<'_> {
             return Err(ParseError::single(span, "configuration names are reserved"));
         }
         let params = self.typed_params()?;
-        if let Some(p) = params.iter().find(|p| p.ty.size().is_none()) {
-            return self.err(format!("function parameters of type `{}` are not supported yet (`{}`)", type_name(p.ty), p.name));
-        }
         self.expect("=")?;
         let body = self.expr(0)?;
         Ok(Function { name, params, ret, body, span })
@@ -175,16 +170,5 @@ impl Parser<'_> {
         self.expect("]")?;
         self.depth -= 1;
         Ok(Expr::Index(name, Box::new(e), span))
-    }
-}
-
-/// A type's name as written.
-pub(super) fn type_name(t: ParamType) -> String {
-    match t {
-        ParamType::Number => "number".into(),
-        ParamType::Natural => "natural".into(),
-        ParamType::Vector(n) => format!("vector{n}"),
-        ParamType::Shape => "shape".into(),
-        ParamType::Adjustment => "adjustment".into(),
     }
 }
