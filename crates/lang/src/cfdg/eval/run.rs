@@ -211,7 +211,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     if let Some(a) = &start.args {
         super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
     }
-    let seed = if start.adjust.terms.is_empty() {
+    let seed = if start.adjust.terms.is_empty() && !g.start_from_setting {
         // A start shape without adjustment has an empty modification, seeded with the default seed.
         let mut s = Rand64::default();
         let mut i = 0;
@@ -226,7 +226,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         let mut i = 0;
         crate::cfdg::syntax::adjust_entropy(&start.adjust, &mut s, &mut i);
         s.xor(Rand64::default());
-        s.xor_bytes(start.shape.as_bytes(), &mut i);
+        s.xor_bytes(&crate::cfdg::syntax::start_name_entropy(start, g.start_from_setting), &mut i);
         s
     };
     r.current.xor(seed);

@@ -17,7 +17,7 @@ mod shapes;
 
 pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
 pub use parser::{is_path_op, parse, parse_with, Loader, REUSE};
-pub use shapes::{shape_numbers, SHAPE_EXPR};
+pub use shapes::{shape_numbers, start_name_entropy, SHAPE_EXPR};
 
 use crate::Span;
 
@@ -56,6 +56,10 @@ pub struct Grammar {
     /// makes them: each takes the next number of the parse-time stream
     /// (`eval::rand_static`).
     pub rand_static: Vec<Span>,
+    /// Whether the start shape came from `CF::StartShape = NAME(args),
+    /// [adjustment]`, whose seed hashes the arguments' text after the name
+    /// ([`start_name_entropy`]).
+    pub start_from_setting: bool,
 }
 
 /// A parameter's or a function's type, as cfdg's `AST::decodeType`

@@ -167,7 +167,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new(), start_from_setting: false };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -183,6 +183,7 @@ impl Parser<'_> {
                     // The design's own startshape wins over an imported file's.
                     if !self.toks[self.pos.saturating_sub(1)].included || g.start.is_none() {
                         g.start = Some(Replacement { shape: name, adjust, args, span: nspan });
+                        g.start_from_setting = false;
                     }
                 }
                 Tok::Word(w) if w == "include" || w == "import" => {
@@ -278,6 +279,7 @@ impl Parser<'_> {
                     if d.name == "CF::StartShape" {
                         if let Some(start) = self.start_setting.take() {
                             g.start = Some(start);
+                            g.start_from_setting = true;
                         }
                     }
                     current_shape = None;

@@ -210,3 +210,19 @@ fn expr(e: &mut Expr, n: &Names) {
         Expr::Adjust(a, _) => adjustment(a, n),
     }
 }
+
+/// The text a start shape's seed hashes after its adjustment: its name,
+/// and for the `CF::StartShape = NAME(args)` form its arguments too
+/// (`ASTstartSpecifier::compile` keeps the name alone, "StartShape only
+/// uses name for entropy"; the setting's rule specifier was compiled as an
+/// expression first, its arguments' text appended, and `MakeConfig` copies
+/// it: `astexpression.cpp`, `builder.cpp`).
+pub fn start_name_entropy(start: &Replacement, from_setting: bool) -> Vec<u8> {
+    let mut out = start.shape.as_bytes().to_vec();
+    if from_setting {
+        if let Some(a) = &start.args {
+            super::entropy::expr_entropy(a, &mut out);
+        }
+    }
+    out
+}

@@ -82,18 +82,25 @@ impl Parser<'_> {
         Ok(Function { name, params, ret, body, span })
     }
 
-    /// The value of `CF::StartShape =`: a shape name (cfdg also takes its
-    /// arguments, then `, [adjustment]`: `Builder::CheckConfig`, `builder.cpp`).
+    /// The value of `CF::StartShape =`: a shape, its arguments, then
+    /// optionally `, [adjustment]` (`Builder::MakeConfig`, `builder.cpp`:
+    /// a rule specifier, then a modification).
     pub(super) fn start_setting(&mut self) -> Result<Replacement, ParseError> {
         let (shape, span) = self.name("a shape name")?;
-        // The seed cfdg gives the start shape in this form is not the one
-        // `startshape NAME(args) [adjustment]` gets (cfstartshapetest draws
-        // other colours with every seed construction tried), so the form is
-        // refused rather than drawn differently.
-        if self.is_punct("(") || self.is_punct(",") {
-            return self.err("`CF::StartShape` with arguments or an adjustment is not supported yet (write `startshape NAME(args) [adjustment]`)");
+        let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
+        if matches!(&args, Some(Expr::Var(v, _)) if v == super::REUSE) {
+            return Err(ParseError::single(span, "the start shape cannot reuse parameters"));
         }
-        Ok(Replacement { shape, adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span })
+        let adjust = if self.is_punct(",") {
+            self.bump();
+            if !self.is_punct("[") {
+                return self.err("`CF::StartShape`'s second term must be an adjustment");
+            }
+            self.adjustment()?
+        } else {
+            Adjustment { canonical: true, terms: Vec::new() }
+        };
+        Ok(Replacement { shape, adjust, args, span })
     }
 
     /// `( [TYPE] name, … )`: typed or untyped (number) parameters.
