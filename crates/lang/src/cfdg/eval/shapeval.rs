@@ -220,3 +220,7 @@ mod tests {
         assert!(fits(ParamType::Shape, &shape_run(0, &[])));
     }
 }
+
+#[cfg(test)]
+#[path = "shapeval_tests.rs"]
+mod render_tests;
