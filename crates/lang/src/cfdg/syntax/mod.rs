@@ -130,7 +130,8 @@ pub struct Rule {
     pub body: Vec<Element>,
     /// Whether it is a `path` (drawn as a path, not expanded).
     pub is_path: bool,
-    /// The names of its shape's numeric parameters, in order.
+    /// The names of its shape's parameters, in order (their types in
+    /// [`Grammar::param_types`]).
     pub params: Vec<String>,
     /// Where it starts.
     pub span: Span,
@@ -174,7 +175,9 @@ pub enum SymmetryItem {
 /// A replacement: a shape and the adjustment placing it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Replacement {
-    /// The shape's name (a rule's or `SQUARE`, `CIRCLE`, `TRIANGLE`).
+    /// The shape's name (a rule's, `SQUARE`, `CIRCLE`, `TRIANGLE`, a shape
+    /// variable or parameter, a function returning a shape), or
+    /// [`SHAPE_EXPR`] when an expression in `args` chooses the shape.
     pub shape: String,
     /// Its adjustment.
     pub adjust: Adjustment,
