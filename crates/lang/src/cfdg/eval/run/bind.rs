@@ -141,6 +141,13 @@ impl Renderer<'_> {
             let shape = v.get(1).map_or(0, |&s| s as usize);
             return Ok((shape, Some(v.get(2..).map(<[f64]>::to_vec).unwrap_or_default())));
         }
+        // A shape parameter or a variable holding a shape (eval/shapeval.rs).
+        if let Some((shape, args)) = self.scope.get(&rep.shape).and_then(super::super::shapeval::as_shape) {
+            if rep.args.is_some() || shape >= self.rules.by_shape.len() {
+                return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: cannot bind parameters twice (`{}` is a shape parameter)", rep.span.line, rep.span.column, rep.shape) });
+            }
+            return Ok((shape, Some(args.to_vec())));
+        }
         match self.rules.index.get(rep.shape.as_str()) {
             Some(&i) => Ok((i, None)),
             None => Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape with no rules encountered: `{}`", rep.span.line, rep.span.column, rep.shape) }),

@@ -18,22 +18,15 @@ impl Renderer<'_> {
     pub(super) fn target_of(&mut self, rep: &Replacement) -> Result<(usize, Option<Vec<f64>>), EvalError> {
         let error = |what: &str| EvalError::BadParam { name: if rep.shape.is_empty() { "shape".into() } else { rep.shape.clone() }, message: format!("{}:{}: {what}", rep.span.line, rep.span.column) };
         let chosen = rep.shape == SHAPE_EXPR || (matches!(&rep.args, Some(Expr::Call(f, ..)) if *f == rep.shape) && !self.rules.index.contains_key(rep.shape.as_str()) && self.scope.funcs.defs.contains_key(&rep.shape));
-        let value = if chosen {
-            let Some(e) = &rep.args else { return Err(error("expected a shape")) };
-            let mut v = Vec::new();
-            eval(e, &self.scope, &mut self.current, &mut v)?;
-            self.charge_calls()?;
-            Some(v)
-        } else if self.scope.get(&format!("{}{}", super::super::shapeval::SHAPE_VAR, rep.shape)).is_none() {
-            // A parameter or variable holding a shape run (`thingie[]`).
-            self.scope.get(&rep.shape).filter(|v| as_shape(v).is_some()).map(<[f64]>::to_vec)
-        } else {
-            None
-        };
-        let Some(v) = value else { return self.target(rep) };
-        if rep.args.is_some() && !chosen {
-            return Err(error(&format!("cannot bind parameters twice (`{}` is a shape parameter)", rep.shape)));
+        // Parameters and variables holding a shape (`thingie[]`) are
+        // found by `target`, as a subpath finds them.
+        if !chosen {
+            return self.target(rep);
         }
+        let Some(e) = &rep.args else { return Err(error("expected a shape")) };
+        let mut v = Vec::new();
+        eval(e, &self.scope, &mut self.current, &mut v)?;
+        self.charge_calls()?;
         match as_shape(&v) {
             Some((shape, args)) if shape < self.rules.by_shape.len() => Ok((shape, Some(args.to_vec()))),
             _ => Err(error("the expression does not give a shape")),
