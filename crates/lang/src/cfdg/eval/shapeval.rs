@@ -134,6 +134,33 @@ pub fn adjust_value(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, out:
     Ok(())
 }
 
+/// Merges adjustment value `v` ([`super::modval`]'s 18 numbers) into one
+/// being built, as `Modification::merge` does (`shape.cpp`): geometry and
+/// z premultiplied, colour deltas, targets and assignment flags added.
+/// Whether the two conflict (both change one colour channel, or one assigns
+/// a hue the other changes): then nothing is merged, and cfdg reports
+/// "Conflicting color change".
+pub fn merge(v: &[f64], geo: &mut super::state::State, color: &mut [f64; 4], target: &mut [f64; 4], assign: &mut u32) -> bool {
+    let [sx, shy, shx, sy, tx, ty, sz, tz, h, s, b, a, th, ts, tb, ta, m_assign, _] = v else { return true };
+    let m_assign = *m_assign as u32;
+    const HUE_MASK: u32 = 3;
+    let conflict = (*assign & m_assign) != 0 || (m_assign & HUE_MASK != 0 && color[0] != 0.0) || (*assign & HUE_MASK != 0 && *h != 0.0) || (color[2] != 0.0 && *b != 0.0) || (color[1] != 0.0 && *s != 0.0) || (color[3] != 0.0 && *a != 0.0);
+    if conflict {
+        return true;
+    }
+    geo.transform.premultiply(&super::state::Affine { sx: *sx, shy: *shy, shx: *shx, sy: *sy, tx: *tx, ty: *ty });
+    geo.tz += geo.sz * tz;
+    geo.sz *= sz;
+    for (c, d) in color.iter_mut().zip([h, s, b, a]) {
+        *c += d;
+    }
+    for (c, d) in target.iter_mut().zip([th, ts, tb, ta]) {
+        *c += d;
+    }
+    *assign |= m_assign;
+    false
+}
+
 /// Pushes the run of a shape variable or an adjustment value kept under its
 /// own key (`draw = CIRCLE`, `next = [s 0.9]`) when `name` names one, so
 /// it can be passed on as an argument; whether it did.

@@ -80,3 +80,19 @@ fn hostile_values_end_in_typed_errors() {
     let e = render("startshape T\nshape T { C(CIRCLE)[] }\nshape C(shape what) { D(what + 1)[] }\nshape D(shape what) { what[] }\n").unwrap_err();
     assert!(matches!(e, EvalError::BadParam { .. }), "{e:?}");
 }
+
+#[test]
+fn adjustments_inside_adjustments_merge_as_cfdg_merges_them() {
+    // `trans a1` inside `a2`: geometry premultiplied, colour deltas added.
+    let p = render("startshape T\na1 = [x 1 b 0.5]\na2 = [trans a1 s 2]\nshape T { SQUARE [trans a2] }\n").unwrap();
+    let t = &p.shapes[0];
+    assert_eq!((t.transform.sx, t.transform.tx, t.rgba), (2.0, 2.0, [0.5, 0.5, 0.5, 1.0]));
+    // Both change brightness: cfdg merges nothing of `a1` and draws on.
+    let p = render("startshape T\na1 = [x 1 b 0.5]\na2 = [trans a1 b 0.3 s 2]\nshape T { SQUARE [trans a2] }\n").unwrap();
+    let t = &p.shapes[0];
+    assert_eq!((t.transform.sx, t.transform.tx), (2.0, 0.0));
+    assert!((t.rgba[0] - 0.3).abs() < 1e-12, "{:?}", t.rgba);
+    // An adjustment is only ever the argument of `trans`.
+    let e = render("startshape T\na1 = [x 1]\na2 = [x a1]\nshape T { SQUARE [trans a2] }\n").unwrap_err();
+    assert!(matches!(&e, EvalError::BadParam { message, .. } if message.starts_with("3:7:")), "{e:?}");
+}
