@@ -106,7 +106,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
                 global_rand.xor(define_seed(&d.name));
             }
             let v = super::modval::value_of(a, &scope, global_rand, constant)?;
-            scope.vars.push((super::modval::key(&d.name), v));
+            super::shapeval::push_adjust(&mut scope, &d.name, v);
         }
     }
     scope.globals = Some(scope.vars.len());
@@ -553,7 +553,7 @@ impl Renderer<'_> {
                     }
                     Value::Adjust(a) => {
                         let v = super::modval::value_of(a, &self.scope, &mut self.current, constant)?;
-                        self.scope.vars.push((super::modval::key(&d.name), v));
+                        super::shapeval::push_adjust(&mut self.scope, &d.name, v);
                     }
                     Value::Shape(_) | Value::Symmetry(_) => {}
                 }

@@ -182,6 +182,19 @@ pub fn var_fallback(name: &str, scope: &Scope<'_>, out: &mut Vec<f64>) -> bool {
     false
 }
 
+/// Pushes adjustment value `v` ([`super::modval`]'s 18 numbers) defined as
+/// `name`: under its own key, for `trans name`, and as an adjustment run
+/// under the name itself, so it shadows an outer variable of that name
+/// wherever it is named (`BLUE = [b .73 h BLUE]` inside a loop hides a
+/// global number `BLUE` from `select(i, BLUE, RED)`, as in cfdg's scopes).
+pub fn push_adjust(scope: &mut Scope<'_>, name: &str, v: Vec<f64>) {
+    let mut run = Vec::with_capacity(ADJUST_LEN);
+    run.push(f64::from_bits(ADJUST_BITS));
+    run.extend_from_slice(&v);
+    scope.vars.push((super::modval::key(name), v));
+    scope.vars.push((name.to_string(), run));
+}
+
 /// The prefix of a shape variable's key among the scope's variables (the
 /// renderer's `bind::SHAPE_VAR`): its value is `[constant, shape, args…]`.
 pub const SHAPE_VAR: char = '\u{1}';

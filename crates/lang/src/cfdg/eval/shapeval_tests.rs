@@ -96,3 +96,12 @@ fn adjustments_inside_adjustments_merge_as_cfdg_merges_them() {
     let e = render("startshape T\na1 = [x 1]\na2 = [x a1]\nshape T { SQUARE [trans a2] }\n").unwrap_err();
     assert!(matches!(&e, EvalError::BadParam { message, .. } if message.starts_with("3:7:")), "{e:?}");
 }
+
+#[test]
+fn a_local_adjustment_hides_a_global_number_of_its_name() {
+    // subpathtest's pattern: `BLUE = [h BLUE …]` in a loop, then `select(…, BLUE, …)`.
+    let p = render("BLUE = 201\nstartshape T\nshape T {\n loop i = 0, 2 [] {\n  BLUE = [b 1 x BLUE]\n  SQUARE [trans select(i, BLUE, [])]\n }\n}\n").unwrap();
+    assert_eq!(p.shapes.len(), 2);
+    assert_eq!((p.shapes[0].transform.tx, p.shapes[0].rgba), (201.0, [1.0, 1.0, 1.0, 1.0]));
+    assert_eq!((p.shapes[1].transform.tx, p.shapes[1].rgba), (0.0, [0.0, 0.0, 0.0, 1.0]));
+}
