@@ -252,7 +252,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
     match &g.start {
         None => Err(ParseError::single(Span::new(1, 1), "no `startshape`")),
         // The start shape may be a global shape variable (stackargtest).
-        Some(s) if !rules.index.contains_key(s.shape.as_str()) && !g.defines.iter().any(|d| d.name == s.shape) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
+        Some(s) if !rules.index.contains_key(s.shape.as_str()) && !g.defines.iter().any(|d| d.name == s.shape) && s.shape != syntax::SHAPE_EXPR && !g.functions.contains_key(&s.shape) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
         Some(_) => Ok(()),
     }
 }

@@ -207,8 +207,9 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     let (start_shape, bound) = r.target_of(start)?;
     let mut init = State::initial();
     // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
+    let chosen = bound.is_some();
     let mut start_params = bound.unwrap_or_default();
-    if let Some(a) = &start.args {
+    if let (Some(a), false) = (&start.args, chosen) {
         super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
     }
     let seed = if start.adjust.terms.is_empty() && !g.start_from_setting {

@@ -105,3 +105,15 @@ fn a_local_adjustment_hides_a_global_number_of_its_name() {
     assert_eq!((p.shapes[0].transform.tx, p.shapes[0].rgba), (201.0, [1.0, 1.0, 1.0, 1.0]));
     assert_eq!((p.shapes[1].transform.tx, p.shapes[1].rgba), (0.0, [0.0, 0.0, 0.0, 1.0]));
 }
+
+#[test]
+fn a_start_shape_may_be_chosen_by_an_expression() {
+    let p = render("startshape select(1, CIRCLE, C(2))[b 1]\nshape C(n) { TRIANGLE [s n] }\n").unwrap();
+    assert_eq!(kinds(&p), [2]);
+    assert_eq!((p.shapes[0].transform.sx, p.shapes[0].rgba), (2.0, [1.0, 1.0, 1.0, 1.0]));
+    let p = render("startshape pick()\nshape pick() = if(0, CIRCLE, SQUARE)\n").unwrap();
+    assert_eq!(kinds(&p), [1]);
+    // cfdg's setting takes a shape specification only.
+    let e = crate::cfdg::syntax::parse(b"CF::StartShape = if(1, A, B)\nshape A { SQUARE [] }\n").unwrap_err();
+    assert_eq!((e.diagnostics[0].span.line, e.diagnostics[0].span.column), (1, 18), "{e}");
+}

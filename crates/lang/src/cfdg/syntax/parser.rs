@@ -179,6 +179,7 @@ impl Parser<'_> {
                     self.bump();
                     let (name, nspan) = self.name("a shape name after `startshape`")?;
                     let args = if self.is_punct("(") { self.call_args(&name)? } else { None };
+                    let (name, args) = shapeparam::chosen_start(name, args, nspan);
                     let adjust = if self.is_punct("[") { self.adjustment()? } else { Adjustment { canonical: true, terms: Vec::new() } };
                     // The design's own startshape wins over an imported file's.
                     if !self.toks[self.pos.saturating_sub(1)].included || g.start.is_none() {

@@ -88,6 +88,11 @@ impl Parser<'_> {
     pub(super) fn start_setting(&mut self) -> Result<Replacement, ParseError> {
         let (shape, span) = self.name("a shape name")?;
         let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
+        // cfdg reads `select(…)`/`if(…)` here as a function, not a shape
+        // specification, and refuses it (`Builder::MakeConfig`).
+        if matches!(shape.as_str(), "select" | "if" | "let") {
+            return Err(ParseError::single(span, "`CF::StartShape` must start with a shape specification"));
+        }
         if matches!(&args, Some(Expr::Var(v, _)) if v == super::REUSE) {
             return Err(ParseError::single(span, "the start shape cannot reuse parameters"));
         }

@@ -7,7 +7,7 @@
 //! expression. An `if` followed by its parenthesis and then `[` is this
 //! form; followed by anything else it is the `if` statement.
 
-use super::super::{Element, Replacement, SHAPE_EXPR};
+use super::super::{Element, Expr, Replacement, SHAPE_EXPR};
 use super::{Parser, Tok};
 use crate::{ParseError, Span};
 
@@ -47,5 +47,17 @@ impl Parser<'_> {
             }
             k += 1;
         }
+    }
+}
+
+/// A start shape chosen by `select(…)` or `if(…)` (`startshape select(…)`,
+/// `CF::StartShape = if(…)`: `Builder::MakeRuleSpec` with `makeStart`): the
+/// shape name [`SHAPE_EXPR`] and the call as its arguments; any other
+/// name and arguments unchanged.
+pub(super) fn chosen_start(name: String, args: Option<Expr>, span: Span) -> (String, Option<Expr>) {
+    if matches!(name.as_str(), "select" | "if") && args.is_some() {
+        (SHAPE_EXPR.to_string(), Some(Expr::Call(name, Box::new(args), span)))
+    } else {
+        (name, args)
     }
 }
