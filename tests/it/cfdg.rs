@@ -125,6 +125,31 @@ fn a_dozen_examples_match_cfdg() {
     }
 }
 
+/// Shapes and adjustments as values (`shape`/`adjustment` parameters,
+/// functions returning them, `select`/`if`/`let` choosing a shape,
+/// adjustments inside expressions, `CF::StartShape` with arguments and an
+/// adjustment) match cfdg -V, random ones under several variation codes.
+#[test]
+fn shape_and_adjustment_values_match_cfdg() {
+    for name in [
+        "tests/shapeparamtest1.cfdg",
+        "tests/paramtest2.cfdg",
+        "tests/paramtest3.cfdg",
+        "tests/crashtest1.cfdg",
+        "tests/lettest1.cfdg",
+        "tests/modparamtest.cfdg",
+        "tests/constfunctest1.cfdg",
+        "tests/selecttest.cfdg",
+        "tests/variationtest1.cfdg",
+        "tests/cfstartshapetest.cfdg",
+    ] {
+        let file = example(name);
+        for var in ["ABC", "XYZ", "12345"] {
+            assert_same(&format!("{name} {var}"), &cfdg_svg(&file, var), &rulemesh_svg(&file, var));
+        }
+    }
+}
+
 /// Paths (`path`, MOVETO … CLOSEPOLY, STROKE and FILL with widths, joins,
 /// caps, even-odd and iso, loops of operations): the same elements as
 /// cfdg -V, transforms within 10⁻⁴ of the picture, colours within a step.

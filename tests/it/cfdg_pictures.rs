@@ -113,6 +113,11 @@ fn pngs_cover_cfdgs_pixels() {
         ("mtree.cfdg", "XYZ"),
         ("tree_number_5.cfdg", "ABC"),
         ("welcome.cfdg", "ABC"),
+        // Shapes and adjustments as values.
+        ("tests/shapeparamtest1.cfdg", "ABC"),
+        ("tests/selecttest.cfdg", "ABC"),
+        ("tests/modparamtest.cfdg", "ABC"),
+        ("tests/cfstartshapetest.cfdg", "ABC"),
     ];
     let mut failures = Vec::new();
     for (name, var) in named {

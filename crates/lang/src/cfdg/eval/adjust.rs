@@ -112,7 +112,11 @@ pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) ->
         }
         a.clear();
         eval(&t.args, scope, rand, &mut a)?;
-        term(t, &a, s)?;
+        // `trans` of an adjustment-valued expression (eval/shapeval.rs).
+        match super::shapeval::as_adjust(&a) {
+            Some(v) if t.kind == TermKind::Transform => super::modval::apply(v, s),
+            _ => term(t, &a, s)?,
+        }
     }
     Ok(())
 }

@@ -78,6 +78,7 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
         Expr::Var(name, span) => match scope.get(name) {
             Some(v) => out.extend_from_slice(v),
             None if name == "infinity" => out.push(f64::INFINITY),
+            None if super::shapeval::var_fallback(name, scope, out) => {}
             None => return Err(bad(*span, &format!("`{name}` (not defined)"), "undefined")),
         },
         Expr::Paren(a) => eval(a, scope, rand, out)?,
@@ -188,6 +189,8 @@ pub fn eval(e: &Expr, scope: &Scope, rand: &mut Rand64, out: &mut Vec<f64>) -> R
         }
         Expr::Let(defs, body, span) => super::func::let_in(defs, body, *span, scope, rand, out)?,
         Expr::Index(name, args, span) => super::func::index(name, args, *span, scope, rand, out)?,
+        Expr::Shape(name, shape, args, span) => super::shapeval::shape_value(name, *shape, args.as_ref().as_ref(), *span, scope, rand, out)?,
+        Expr::Adjust(a, _) => super::shapeval::adjust_value(a, scope, rand, out)?,
         Expr::Call(name, args, span) => {
             let mut a = Vec::new();
             if let Some(x) = args.as_ref() {

@@ -117,16 +117,13 @@ pub fn call(name: &str, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand
     // StackType::evalArgs takes the arguments as one flat list, matched
     // against the parameters' sizes in order.
     let flat: Vec<f64> = given.into_iter().flatten().collect();
-    let wanted: usize = f.params.iter().filter_map(|p| p.ty.size()).sum();
-    if flat.len() != wanted {
-        return Err(bad_call(span, name, format!("takes {wanted} numbers, given {}", flat.len())));
-    }
+    let sizes: Vec<usize> = f.params.iter().map(|p| super::shapeval::slot_size(p.ty)).collect();
+    let Some(parts) = super::shapeval::split(&sizes, &flat) else {
+        return Err(bad_call(span, name, format!("takes {} parameters, given {} numbers that do not fit them", f.params.len(), flat.len())));
+    };
     let mut vars = Vec::with_capacity(f.params.len());
-    let mut at = 0;
-    for p in &f.params {
-        let n = p.ty.size().unwrap_or(1);
-        let v = flat[at..at + n].to_vec();
-        at += n;
+    for (p, v) in f.params.iter().zip(parts) {
+        let v = v.to_vec();
         if p.ty == ParamType::Natural && !is_natural(v[0], scope.max_natural) {
             return Err(bad_call(span, name, format!("argument `{}` is {}, not a natural number", p.name, v[0])));
         }
@@ -138,9 +135,8 @@ pub fn call(name: &str, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand
     let r = eval(&f.body, &inner, rand, out);
     scope.funcs.leave();
     r?;
-    let size = f.ret.size().unwrap_or(1);
-    if out.len() - from != size {
-        return Err(bad_call(f.span, name, format!("returns {} numbers, but its type holds {size}", out.len() - from)));
+    if !super::shapeval::fits(f.ret, &out[from..]) {
+        return Err(bad_call(f.span, name, format!("returns {} numbers that its type `{:?}` does not hold", out.len() - from, f.ret)));
     }
     Ok(())
 }

@@ -16,6 +16,7 @@ pub mod frame;
 pub mod func;
 pub mod modval;
 mod pending;
+pub mod shapeval;
 pub mod state;
 pub mod symmetry;
 pub mod tile;
@@ -153,7 +154,7 @@ fn compile(g: &Grammar) -> Result<Rules<'_>, ParseError> {
     let mut is_path = vec![false; 3];
     let sizes_of = |r: &syntax::Rule| -> Vec<usize> {
         match g.param_types.get(&r.name) {
-            Some(ps) if ps.len() == r.params.len() => ps.iter().map(|p| p.ty.size().unwrap_or(1)).collect(),
+            Some(ps) if ps.len() == r.params.len() => ps.iter().map(|p| shapeval::slot_size(p.ty)).collect(),
             _ => vec![1; r.params.len()],
         }
     };
@@ -267,7 +268,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
     match &g.start {
         None => Err(ParseError::single(Span::new(1, 1), "no `startshape`")),
         // The start shape may be a global shape variable (stackargtest).
-        Some(s) if !rules.index.contains_key(s.shape.as_str()) && !g.defines.iter().any(|d| d.name == s.shape) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
+        Some(s) if !rules.index.contains_key(s.shape.as_str()) && !g.defines.iter().any(|d| d.name == s.shape) && s.shape != syntax::SHAPE_EXPR && !g.functions.contains_key(&s.shape) => Err(ParseError::single(s.span, format!("start shape `{}` has no rules", s.shape))),
         Some(_) => Ok(()),
     }
 }

@@ -43,7 +43,7 @@ pub fn lookup<'s>(e: &Expr, scope: &'s Scope<'_>) -> Option<&'s [f64]> {
 }
 
 fn refuse(t: &crate::cfdg::syntax::Term, what: &str) -> EvalError {
-    EvalError::BadParam { name: "adjustment".into(), message: format!("{}:{}: {what} is not supported yet (docs/cfdg.md)", t.span.line, t.span.column) }
+    EvalError::BadParam { name: "adjustment".into(), message: format!("{}:{}: {what} is not allowed", t.span.line, t.span.column) }
 }
 
 /// Evaluates `adj` into an adjustment value (`ASTmodification::setVal`);
@@ -58,11 +58,22 @@ pub fn value_of(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, constant
     let (mut color, mut target, mut assign) = ([0.0f64; 4], [0.0f64; 4], 0u32);
     let mut a = Vec::with_capacity(6);
     for t in &p.rest {
-        if lookup(&t.args, scope).is_some() {
-            return Err(refuse(t, "an adjustment value inside another (`Modification::merge`)"));
-        }
         a.clear();
-        eval(&t.args, scope, rand, &mut a)?;
+        match lookup(&t.args, scope) {
+            Some(v) => a.extend_from_slice(v),
+            None => eval(&t.args, scope, rand, &mut a)?,
+        }
+        // An adjustment inside another: merged (eval/shapeval.rs).
+        let nested = if a.len() + 1 == super::shapeval::ADJUST_LEN && lookup(&t.args, scope).is_some() { Some(&a[..]) } else { super::shapeval::as_adjust(&a) };
+        if let Some(v) = nested {
+            if t.kind != TermKind::Transform {
+                return Err(refuse(t, "an adjustment as the argument of a term other than `trans`"));
+            }
+            // On a colour conflict cfdg merges nothing and draws on (its
+            // "Conflicting color change" is not reported by the CLI).
+            super::shapeval::merge(v, &mut geo, &mut color, &mut target, &mut assign);
+            continue;
+        }
         let clamp = |v: f64| v.clamp(-1.0, 1.0);
         let channel = |k: TermKind| match k {
             TermKind::Hue | TermKind::HueTarg | TermKind::TargHue => 0,

@@ -16,6 +16,7 @@ use super::FastMap as HashMap;
 
 mod bind;
 mod names;
+mod chosen;
 mod path;
 pub use path::PathDraw;
 
@@ -112,7 +113,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
                 global_rand.xor(define_seed(&d.name));
             }
             let v = super::modval::value_of(a, &scope, global_rand, constant)?;
-            scope.vars.push((super::modval::key(&d.name), v));
+            super::shapeval::push_adjust(&mut scope, &d.name, v);
         }
     }
     scope.globals = Some(scope.vars.len());
@@ -205,14 +206,15 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     }
     let start = g.start.as_ref().ok_or_else(|| EvalError::BadParam { name: "startshape".into(), message: "the design has no startshape".into() })?;
     // The start shape may be a global shape variable (stackargtest).
-    let (start_shape, bound) = r.target(start)?;
+    let (start_shape, bound) = r.target_of(start)?;
     let mut init = State::initial();
     // The start shape's arguments are evaluated before its seed is mixed in (ASTreplacement::replace).
+    let chosen = bound.is_some();
     let mut start_params = bound.unwrap_or_default();
-    if let Some(a) = &start.args {
+    if let (Some(a), false) = (&start.args, chosen) {
         super::expr::eval(a, &r.scope, &mut r.current, &mut start_params)?;
     }
-    let seed = if start.adjust.terms.is_empty() {
+    let seed = if start.adjust.terms.is_empty() && !g.start_from_setting {
         // A start shape without adjustment has an empty modification, seeded with the default seed.
         let mut s = Rand64::default();
         let mut i = 0;
@@ -227,7 +229,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         let mut i = 0;
         crate::cfdg::syntax::adjust_entropy(&start.adjust, &mut s, &mut i);
         s.xor(Rand64::default());
-        s.xor_bytes(start.shape.as_bytes(), &mut i);
+        s.xor_bytes(&crate::cfdg::syntax::start_name_entropy(start, g.start_from_setting), &mut i);
         s
     };
     r.current.xor(seed);
@@ -436,23 +438,23 @@ impl Renderer<'_> {
                 Ok(())
             }
             Element::Replace(rep) => {
-                let (shape, bound) = self.target(rep)?;
+                let (shape, bound) = self.target_of(rep)?;
                 let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
                 let mut params = Vec::new();
-                let wanted: usize = self.rules.sizes[shape].iter().sum();
+                let wanted: usize = self.rules.sizes[shape].len();
                 match (&rep.args, bound) {
                     (_, Some(b)) => params = b,
                     (Some(syntax::Expr::Var(v, _)), None) if v == syntax::REUSE => {
                         params = self.params.clone();
-                        if params.len() != wanted {
+                        if super::shapeval::split(&self.rules.sizes[shape], &params).is_none() {
                             return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: `(=)` needs a parent with the same parameters", rep.span.line, rep.span.column) });
                         }
                     }
                     (Some(a), None) => super::expr::eval(a, &self.scope, &mut self.current, &mut params)?,
                     (None, None) => {}
                 }
-                if params.len() != wanted {
-                    return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape `{}` takes {wanted} numbers, given {}", rep.span.line, rep.span.column, rep.shape, params.len()) });
+                if super::shapeval::split(&self.rules.sizes[shape], &params).is_none() {
+                    return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: shape `{}` takes {wanted} parameters, given {} numbers that do not fit them", rep.span.line, rep.span.column, rep.shape, params.len()) });
                 }
                 let mut child = *parent;
                 self.current.xor(seed);
@@ -567,7 +569,7 @@ impl Renderer<'_> {
                     }
                     Value::Adjust(a) => {
                         let v = super::modval::value_of(a, &self.scope, &mut self.current, constant)?;
-                        self.scope.vars.push((super::modval::key(&d.name), v));
+                        super::shapeval::push_adjust(&mut self.scope, &d.name, v);
                     }
                     Value::Shape(_) | Value::Symmetry(_) => {}
                 }

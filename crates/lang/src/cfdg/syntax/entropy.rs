@@ -175,6 +175,15 @@ pub fn expr_entropy(e: &Expr, out: &mut Vec<u8>) {
             out.extend_from_slice(name.as_bytes());
             expr_entropy(args, out);
         }
+        // ASTruleSpecifier: its name, then its arguments (`compile`).
+        Expr::Shape(name, _, args, _) => {
+            out.extend_from_slice(name.as_bytes());
+            if let Some(a) = args.as_ref() {
+                expr_entropy(a, out);
+            }
+        }
+        // ASTmodification has no entropy of its own (the base's, empty).
+        Expr::Adjust(..) => {}
         // ASTlet is a user function named `let` whose arguments are its
         // non-constant definitions, appended into one list (`ASTlet::compile`,
         // `ASTexpression::Append`, which flattens lists); a constant let is
@@ -228,6 +237,8 @@ fn constant_with(e: &Expr, consts: &[&str]) -> bool {
         Expr::Num(..) => true,
         Expr::Var(name, _) => consts.contains(&name.as_str()),
         Expr::Index(..) => false,
+        Expr::Shape(_, _, args, _) => args.as_ref().as_ref().is_none_or(c),
+        Expr::Adjust(a, _) => a.terms.iter().all(|t| c(&t.args)),
         Expr::Unary(_, a) | Expr::Paren(a) => c(a),
         Expr::Binary(_, a, b) => c(a) && c(b),
         Expr::Cons(v) => v.iter().all(c),

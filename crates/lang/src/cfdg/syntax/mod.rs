@@ -13,9 +13,11 @@
 mod entropy;
 pub mod lexer;
 mod parser;
+mod shapes;
 
 pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
 pub use parser::{is_path_op, parse, parse_with, path_op_arity, Loader, REUSE};
+pub use shapes::{shape_numbers, start_name_entropy, SHAPE_EXPR};
 
 use crate::Span;
 
@@ -59,6 +61,10 @@ pub struct Grammar {
     /// where they are written and their qualified name
     /// (`parser/namespace.rs`).
     pub entropy_names: std::collections::BTreeMap<(u32, u32, String), String>,
+    /// Whether the start shape came from `CF::StartShape = NAME(args),
+    /// [adjustment]`, whose seed hashes the arguments' text after the name
+    /// ([`start_name_entropy`]).
+    pub start_from_setting: bool,
 }
 
 /// A parameter's or a function's type, as cfdg's `AST::decodeType`
@@ -129,7 +135,8 @@ pub struct Rule {
     pub body: Vec<Element>,
     /// Whether it is a `path` (drawn as a path, not expanded).
     pub is_path: bool,
-    /// The names of its shape's numeric parameters, in order.
+    /// The names of its shape's parameters, in order (their types in
+    /// [`Grammar::param_types`]).
     pub params: Vec<String>,
     /// Where it starts.
     pub span: Span,
@@ -173,7 +180,9 @@ pub enum SymmetryItem {
 /// A replacement: a shape and the adjustment placing it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Replacement {
-    /// The shape's name (a rule's or `SQUARE`, `CIRCLE`, `TRIANGLE`).
+    /// The shape's name (a rule's, `SQUARE`, `CIRCLE`, `TRIANGLE`, a shape
+    /// variable or parameter, a function returning a shape), or
+    /// [`SHAPE_EXPR`] when an expression in `args` chooses the shape.
     pub shape: String,
     /// Its adjustment.
     pub adjust: Adjustment,
@@ -436,6 +445,13 @@ pub enum Expr {
     Let(Vec<(String, Expr)>, Box<Expr>, Span),
     /// `name[index]` or `name[index, length, stride]` (`ASTarray`): elements of a vector.
     Index(String, Box<Expr>, Span),
+    /// A shape named in an expression, with its arguments (`ASTruleSpecifier`:
+    /// `foo(0.5)`, `CIRCLE`) and its number among the design's shapes
+    /// (primitives first, then rules in order: [`shape_numbers`]).
+    Shape(String, usize, Box<Option<Expr>>, Span),
+    /// An adjustment written inside an expression (`[r 5]` as an argument,
+    /// a `select` choice or a function's value: `ASTmodification`).
+    Adjust(Box<Adjustment>, Span),
 }
 
 impl Expr {

@@ -10,6 +10,7 @@ use crate::{ParseError, Span};
 mod expr;
 mod func;
 mod path;
+mod shapeparam;
 use expr::const_value;
 mod namespace;
 mod subpath;
@@ -172,7 +173,7 @@ impl Parser<'_> {
     }
 
     fn grammar(&mut self) -> Result<Grammar, ParseError> {
-        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new(), entropy_names: Default::default() };
+        let mut g = Grammar { version: self.version, start: None, rules: Vec::new(), defines: Vec::new(), background: None, warnings: Vec::new(), functions: Default::default(), param_types: Default::default(), rand_static: Vec::new(), entropy_names: Default::default(), start_from_setting: false };
         let mut current_shape: Option<String> = None;
         let mut current_params: Vec<String> = Vec::new();
         let mut declared: std::collections::HashMap<String, Vec<String>> = std::collections::HashMap::new();
@@ -184,10 +185,12 @@ impl Parser<'_> {
                     self.bump();
                     let (name, nspan) = self.name("a shape name after `startshape`")?;
                     let args = if self.is_punct("(") { self.call_args(&name)? } else { None };
+                    let (name, args) = shapeparam::chosen_start(name, args, nspan);
                     let adjust = if self.is_punct("[") { self.adjustment()? } else { Adjustment { canonical: true, terms: Vec::new() } };
                     // The design's own startshape wins over an imported file's.
                     if !self.toks[self.pos.saturating_sub(1)].included || g.start.is_none() {
                         g.start = Some(Replacement { shape: name, adjust, args, span: nspan });
+                        g.start_from_setting = false;
                     }
                 }
                 Tok::Word(w) if w == "include" || w == "import" => {
@@ -287,6 +290,7 @@ impl Parser<'_> {
                     if d.name == "CF::StartShape" {
                         if let Some(start) = self.start_setting.take() {
                             g.start = Some(start);
+                            g.start_from_setting = true;
                         }
                     }
                     current_shape = None;
@@ -297,6 +301,7 @@ impl Parser<'_> {
         }
         g.rand_static = std::mem::take(&mut self.rand_static);
         g.entropy_names = std::mem::take(&mut self.entropy_names);
+        super::shapes::resolve(&mut g);
         Ok(g)
     }
 
@@ -347,6 +352,9 @@ impl Parser<'_> {
             Tok::Word(w) => w,
             _ => return self.err("expected a shape, `loop`, `if`, `switch`, `transform` or a definition"),
         };
+        if let Some(r) = self.chosen_shape(span)? {
+            return Ok(r);
+        }
         match word.as_str() {
             "loop" => {
                 self.bump();

@@ -22,7 +22,7 @@ use crate::model::EvalError;
 
 /// The prefix that marks a shape variable among the scope's variables (a
 /// character no CFDG name can hold).
-pub(super) const SHAPE_VAR: char = '\u{1}';
+pub(super) const SHAPE_VAR: char = super::super::shapeval::SHAPE_VAR;
 
 fn key(name: &str) -> String {
     format!("{SHAPE_VAR}{name}")
@@ -44,7 +44,8 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
             }
             Ok(rules.index.get(name.as_str()).map(|&i| vec![constant, i as f64]))
         }
-        Expr::Call(name, args, span) if !syntax::is_builtin(name) && !scope.funcs.defs.contains_key(name) => {
+        Expr::Shape(name, _, args, _) if args.is_none() => shape_value(&Expr::Var(name.clone(), crate::Span::new(0, 0)), rules, scope, rand, parent),
+        Expr::Call(name, args, span) | Expr::Shape(name, _, args, span) if !syntax::is_builtin(name) && !scope.funcs.defs.contains_key(name) => {
             let Some(&i) = rules.index.get(name.as_str()) else { return Ok(None) };
             let mut v = vec![constant, i as f64];
             match args.as_ref() {
@@ -52,9 +53,9 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
                 Some(a) => eval(a, scope, rand, &mut v)?,
                 None => {}
             }
-            let wanted = rules.sizes[i].iter().sum::<usize>();
-            if v.len() - 2 != wanted {
-                return Err(EvalError::BadParam { name: name.clone(), message: format!("{}:{}: shape `{name}` takes {wanted} numbers, given {}", span.line, span.column, v.len() - 2) });
+            if super::super::shapeval::split(&rules.sizes[i], &v[2..]).is_none() {
+                let wanted = rules.sizes[i].len();
+                return Err(EvalError::BadParam { name: name.clone(), message: format!("{}:{}: shape `{name}` takes {wanted} parameters, given {} numbers that do not fit them", span.line, span.column, v.len() - 2) });
             }
             Ok(Some(v))
         }
@@ -69,7 +70,8 @@ pub(super) fn shape_is_constant(e: &Expr, scope: &Scope<'_>) -> bool {
     match e {
         Expr::Paren(a) => shape_is_constant(a, scope),
         Expr::Var(name, _) => scope.get(&key(name)).is_none_or(|v| v.first() == Some(&1.0)),
-        Expr::Call(_, args, _) => match args.as_ref() {
+        Expr::Shape(name, _, args, _) if args.is_none() => shape_is_constant(&Expr::Var(name.clone(), crate::Span::new(0, 0)), scope),
+        Expr::Call(_, args, _) | Expr::Shape(_, _, args, _) => match args.as_ref() {
             Some(Expr::Var(r, _)) if r == syntax::REUSE => false,
             Some(a) => syntax::is_constant(a),
             None => true,
@@ -101,7 +103,8 @@ pub(super) fn names_rule(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>) -> bool
     match e {
         Expr::Paren(a) => names_rule(a, rules, scope),
         Expr::Var(name, _) => scope.get(&key(name)).is_some() || (scope.get(name).is_none() && rules.index.contains_key(name.as_str())),
-        Expr::Call(name, _, _) => !syntax::is_builtin(name) && !scope.funcs.defs.contains_key(name) && rules.index.contains_key(name.as_str()),
+        Expr::Shape(name, _, args, _) if args.is_none() => names_rule(&Expr::Var(name.clone(), crate::Span::new(0, 0)), rules, scope),
+        Expr::Call(name, _, _) | Expr::Shape(name, _, _, _) => !syntax::is_builtin(name) && !scope.funcs.defs.contains_key(name) && rules.index.contains_key(name.as_str()),
         _ => false,
     }
 }
@@ -111,6 +114,13 @@ impl Renderer<'_> {
     /// the parameters' sizes.
     pub(super) fn bind_params(&mut self, shape: usize, params: &[f64]) {
         let names = self.rules.params[shape];
+        // Typed parameters (shapes, adjustments) split by their runs.
+        if let Some(parts) = super::super::shapeval::split(&self.rules.sizes[shape], params) {
+            for (n, v) in names.iter().zip(parts) {
+                self.scope.vars.push((n.clone(), v.to_vec()));
+            }
+            return;
+        }
         let mut at = 0;
         for (i, n) in names.iter().enumerate() {
             let k = self.rules.sizes[shape].get(i).copied().unwrap_or(1);
@@ -130,6 +140,13 @@ impl Renderer<'_> {
             }
             let shape = v.get(1).map_or(0, |&s| s as usize);
             return Ok((shape, Some(v.get(2..).map(<[f64]>::to_vec).unwrap_or_default())));
+        }
+        // A shape parameter or a variable holding a shape (eval/shapeval.rs).
+        if let Some((shape, args)) = self.scope.get(&rep.shape).and_then(super::super::shapeval::as_shape) {
+            if rep.args.is_some() || shape >= self.rules.by_shape.len() {
+                return Err(EvalError::BadParam { name: rep.shape.clone(), message: format!("{}:{}: cannot bind parameters twice (`{}` is a shape parameter)", rep.span.line, rep.span.column, rep.shape) });
+            }
+            return Ok((shape, Some(args.to_vec())));
         }
         match self.rules.index.get(rep.shape.as_str()) {
             Some(&i) => Ok((i, None)),

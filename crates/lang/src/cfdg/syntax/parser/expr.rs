@@ -64,6 +64,8 @@ impl Parser<'_> {
                 self.expect(")")?;
                 Ok(Expr::Paren(Box::new(e)))
             }
+            // An adjustment inside an expression (`exp3`'s `modification`).
+            Tok::Punct("[") if self.v3() => Ok(Expr::Adjust(Box::new(self.adjustment()?), span)),
             Tok::Word(w) if w == "let" && matches!(self.peek_at(1), Tok::Punct("(")) => {
                 self.bump();
                 self.let_expr(span)
@@ -126,13 +128,8 @@ impl Parser<'_> {
 
     /// `(number a, vector2 b, …)` after `shape NAME` or `path NAME`: the
     /// names, the types kept in `last_params` ([`super::func`]).
-    /// `shape` and `adjustment` parameters are refused for now.
     pub(super) fn param_list(&mut self) -> Result<Vec<String>, ParseError> {
-        let span = self.span();
         let params = self.typed_params()?;
-        if let Some(p) = params.iter().find(|p| p.ty.size().is_none()) {
-            return Err(ParseError::single(span, format!("only `number`, `natural` and `vectorN` parameters are supported yet, found `{}` (`{}`)", super::func::type_name(p.ty), p.name)));
-        }
         let names = params.iter().map(|p| p.name.clone()).collect();
         self.last_params = params;
         Ok(names)

@@ -66,8 +66,6 @@ impl Parser<'_> {
         let ret = if typed == 1 {
             let (w, wspan) = self.name("a type")?;
             match decode_type(&w) {
-                Some(ParamType::Adjustment) => return Err(ParseError::single(wspan, "functions returning an adjustment are not supported yet")),
-                Some(ParamType::Shape) => return Err(ParseError::single(wspan, "functions returning a shape are not supported yet")),
                 Some(t) => t,
                 None => return Err(ParseError::single(wspan, format!("unknown type `{w}` (number, natural, vectorN, shape or adjustment)"))),
             }
@@ -79,26 +77,35 @@ impl Parser<'_> {
             return Err(ParseError::single(span, "configuration names are reserved"));
         }
         let params = self.typed_params()?;
-        if let Some(p) = params.iter().find(|p| p.ty.size().is_none()) {
-            return self.err(format!("function parameters of type `{}` are not supported yet (`{}`)", type_name(p.ty), p.name));
-        }
         self.expect("=")?;
         let body = self.expr(0)?;
         Ok(Function { name, params, ret, body, span })
     }
 
-    /// The value of `CF::StartShape =`: a shape name (cfdg also takes its
-    /// arguments, then `, [adjustment]`: `Builder::CheckConfig`, `builder.cpp`).
+    /// The value of `CF::StartShape =`: a shape, its arguments, then
+    /// optionally `, [adjustment]` (`Builder::MakeConfig`, `builder.cpp`:
+    /// a rule specifier, then a modification).
     pub(super) fn start_setting(&mut self) -> Result<Replacement, ParseError> {
         let (shape, span) = self.name("a shape name")?;
-        // The seed cfdg gives the start shape in this form is not the one
-        // `startshape NAME(args) [adjustment]` gets (cfstartshapetest draws
-        // other colours with every seed construction tried), so the form is
-        // refused rather than drawn differently.
-        if self.is_punct("(") || self.is_punct(",") {
-            return self.err("`CF::StartShape` with arguments or an adjustment is not supported yet (write `startshape NAME(args) [adjustment]`)");
+        let args = if self.is_punct("(") { self.call_args(&shape)? } else { None };
+        // cfdg reads `select(…)`/`if(…)` here as a function, not a shape
+        // specification, and refuses it (`Builder::MakeConfig`).
+        if matches!(shape.as_str(), "select" | "if" | "let") {
+            return Err(ParseError::single(span, "`CF::StartShape` must start with a shape specification"));
         }
-        Ok(Replacement { shape, adjust: Adjustment { canonical: true, terms: Vec::new() }, args: None, span })
+        if matches!(&args, Some(Expr::Var(v, _)) if v == super::REUSE) {
+            return Err(ParseError::single(span, "the start shape cannot reuse parameters"));
+        }
+        let adjust = if self.is_punct(",") {
+            self.bump();
+            if !self.is_punct("[") {
+                return self.err("`CF::StartShape`'s second term must be an adjustment");
+            }
+            self.adjustment()?
+        } else {
+            Adjustment { canonical: true, terms: Vec::new() }
+        };
+        Ok(Replacement { shape, adjust, args, span })
     }
 
     /// `( [TYPE] name, … )`: typed or untyped (number) parameters.
@@ -175,16 +182,5 @@ impl Parser<'_> {
         self.expect("]")?;
         self.depth -= 1;
         Ok(Expr::Index(name, Box::new(e), span))
-    }
-}
-
-/// A type's name as written.
-pub(super) fn type_name(t: ParamType) -> String {
-    match t {
-        ParamType::Number => "number".into(),
-        ParamType::Natural => "natural".into(),
-        ParamType::Vector(n) => format!("vector{n}"),
-        ParamType::Shape => "shape".into(),
-        ParamType::Adjustment => "adjustment".into(),
     }
 }
