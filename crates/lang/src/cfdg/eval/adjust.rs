@@ -107,9 +107,6 @@ pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) ->
                 continue;
             }
         }
-        if t.kind == TermKind::Transform {
-            refuse_hidden_values(&t.args, scope)?;
-        }
         a.clear();
         eval(&t.args, scope, rand, &mut a)?;
         // `trans` of an adjustment-valued expression (eval/shapeval.rs).
@@ -242,29 +239,4 @@ pub(crate) fn term(t: &Term, a: &[f64], s: &mut State) -> Result<(), EvalError> 
         TermKind::Ignored => {}
     }
     Ok(())
-}
-
-/// Refuses a `trans` expression that names an adjustment value inside it
-/// (`trans select(i, BLUE, RED)`, subpathtest): read as numbers it would
-/// find other variables of the same name, or none, and draw what cfdg
-/// does not; adjustments inside expressions are not read yet.
-fn refuse_hidden_values(e: &crate::cfdg::syntax::Expr, scope: &Scope) -> Result<(), EvalError> {
-    use crate::cfdg::syntax::Expr;
-    let found = match e {
-        Expr::Var(name, span) => scope.get(&super::modval::key(name)).map(|_| *span),
-        _ => None,
-    };
-    if let Some(span) = found {
-        return Err(EvalError::BadParam { name: "transform".into(), message: format!("{}:{}: an adjustment value inside an expression is not supported yet (docs/cfdg.md)", span.line, span.column) });
-    }
-    match e {
-        Expr::Unary(_, a) | Expr::Paren(a) => refuse_hidden_values(a, scope),
-        Expr::Binary(_, a, b) => {
-            refuse_hidden_values(a, scope)?;
-            refuse_hidden_values(b, scope)
-        }
-        Expr::Cons(v) => v.iter().try_for_each(|a| refuse_hidden_values(a, scope)),
-        Expr::Call(_, args, _) => args.as_ref().as_ref().map_or(Ok(()), |a| refuse_hidden_values(a, scope)),
-        _ => Ok(()),
-    }
 }
