@@ -222,3 +222,30 @@ async fn grpc_render_batch_streams_the_same_members_and_bytes_as_http() {
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }
+
+/// A Context Free design's response names its variation code
+/// (`x-rulemesh-variation`, HTTP and gRPC), and the code drawn back with
+/// `variation` is the same model: seed 5 is variation 6, `F`.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_context_free_design_says_its_variation_code() {
+    let (srv, base) = start(config()).await;
+    let c = client();
+    let r = c.get(format!("{base}/v1/models/cfdg-spiral.svg?p.variation=XYZ")).send().await.expect("get");
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "x-rulemesh-variation"), "XYZ");
+    let by_seed = c.get(format!("{base}/v1/models/cfdg-spiral.svg?seed=5")).send().await.expect("get");
+    assert_eq!((by_seed.status().as_u16(), header(&by_seed, "x-rulemesh-variation")), (200, "F"));
+    let seed_bytes = by_seed.bytes().await.expect("body");
+    let by_code = c.get(format!("{base}/v1/models/cfdg-spiral.svg?p.variation=F")).send().await.expect("get");
+    assert_eq!(header(&by_code, "x-rulemesh-variation"), "F");
+    assert_eq!(by_code.bytes().await.expect("body"), seed_bytes);
+    // Another language has no variation code.
+    let r = c.get(format!("{base}/v1/models/gem.glb")).send().await.expect("get");
+    assert!(r.headers().get("x-rulemesh-variation").is_none());
+    let source = std::fs::read_to_string(common::repo().join("grammars/cfdg-spiral.cfdg")).expect("grammar");
+    let mut g = grpc_client(&srv).await;
+    let reply = g.render(pb::RenderRequest { source, seed: Some(5), ..Default::default() }).await.expect("Render");
+    assert_eq!(reply.metadata().get("x-rulemesh-variation").and_then(|v| v.to_str().ok()), Some("F"));
+    srv.shutdown();
+    srv.wait().await.expect("clean shutdown");
+}

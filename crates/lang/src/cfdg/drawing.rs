@@ -16,13 +16,13 @@ use crate::model::drawing::{DrawnPath, Drawing, Mark, MarkKind, PathStyle, Segme
 use crate::model::EvalError;
 
 /// Quantises a channel to 8 bits as AGG's `rgba8` does (round to nearest).
-pub fn to_u8(c: f64) -> u8 {
+pub(crate) fn to_u8(c: f64) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
 /// The map from design space to canvas pixels of `p` (cfdg's `m_currTrans`
 /// followed by the canvas's y flip and centring offset).
-pub fn canvas_transform(p: &Picture) -> Affine {
+pub(crate) fn canvas_transform(p: &Picture) -> Affine {
     let mut off = Affine::translation((f64::from(p.canvas_width) - f64::from(p.width)) / 2.0, (f64::from(p.canvas_height) - f64::from(p.height)) / 2.0);
     off.premultiply(&Affine { sx: 1.0, shy: 0.0, shx: 0.0, sy: -1.0, tx: 0.0, ty: f64::from(p.canvas_height) });
     let mut t = p.to_pixels;

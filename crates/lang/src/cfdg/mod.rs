@@ -14,7 +14,7 @@
 
 pub mod drawing;
 pub mod eval;
-pub mod rand64;
+pub(crate) mod rand64;
 pub mod solid;
 pub mod syntax;
 pub mod tiles;
@@ -28,13 +28,13 @@ use crate::model::{BuildError, BuildRequest, EvalError, Model};
 use crate::{Diagnostic, FrontEnd, Language, ParseError};
 
 /// The request parameter naming a variation code (`"ABC"`), as cfdg's `-v`.
-pub const VARIATION_PARAM: &str = "variation";
+pub(crate) const VARIATION_PARAM: &str = "variation";
 
 /// Whether unnamed source reads as CFDG rather than MDG (which shares
 /// `startshape` and `rule`): it has `startshape` and a 3.x `shape` line, a
 /// `CF::` setting or one of Context Free's 2D primitives as a whole word,
 /// and none of MDG's own words (`@param`, `@define`, `selector`, `linerule`).
-pub fn looks_like_cfdg(text: &str) -> bool {
+pub(crate) fn looks_like_cfdg(text: &str) -> bool {
     let word = |w: &str| {
         text.match_indices(w).any(|(i, _)| {
             let before = text[..i].chars().next_back().is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
@@ -51,13 +51,13 @@ pub fn looks_like_cfdg(text: &str) -> bool {
 pub struct Cfdg;
 
 /// Parses and checks `source` (every shape named has rules); `import` is an error.
-pub fn parse_checked(source: &[u8]) -> Result<syntax::Grammar, ParseError> {
+pub(crate) fn parse_checked(source: &[u8]) -> Result<syntax::Grammar, ParseError> {
     parse_checked_in(source, None)
 }
 
 /// Reads an imported file `name` from `dir`: a bare file name only (no
 /// folder, no `..`), so a design reads nothing but the files beside it.
-pub fn read_beside(dir: &std::path::Path, name: &str) -> Option<Vec<u8>> {
+pub(crate) fn read_beside(dir: &std::path::Path, name: &str) -> Option<Vec<u8>> {
     let ok = !name.is_empty() && !name.contains(['/', '\\']) && !name.starts_with('.');
     if !ok {
         return None;
@@ -76,10 +76,21 @@ pub fn parse_checked_in(source: &[u8], dir: Option<&std::path::Path>) -> Result<
     Ok(g)
 }
 
+/// The variation code (`"ABC"`) of a CFDG model, whose seed is its
+/// variation number ([`Model::seed`]): what the service sends as
+/// `X-Rulemesh-Variation`, so a client can pin a design by its code, as
+/// Context Free shows and takes it. `None` for another language.
+pub fn variation_code(language: Language, seed: u64) -> Option<String> {
+    if language != Language::Cfdg {
+        return None;
+    }
+    i32::try_from(seed).ok().and_then(variation::to_code)
+}
+
 /// The variation a request asks for: its `variation` parameter (a code or
 /// number), else its seed folded into cfdg's range (seed `s` → variation
 /// `s mod (2³¹−1) + 1`), else 1 (`A`).
-pub fn variation_of(req: &BuildRequest<'_>) -> Result<i32, EvalError> {
+pub(crate) fn variation_of(req: &BuildRequest<'_>) -> Result<i32, EvalError> {
     if let Some(v) = req.params.get(VARIATION_PARAM) {
         let code = match v {
             ParamValue::Text(t) => t.clone(),

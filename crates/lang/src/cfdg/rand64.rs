@@ -12,7 +12,7 @@
 /// Context Free's multiplier (`RAND64_MULT`).
 const MULT: u64 = 2_685_821_657_736_338_717;
 /// The seed used when 0 is given (`RAND64_SEED`).
-pub const DEFAULT_SEED: u64 = 0x3DF4_1234_ABCD_330E;
+pub(crate) const DEFAULT_SEED: u64 = 0x3DF4_1234_ABCD_330E;
 
 /// One random stream: `Rand64` of Context Free (a xorshift64* state).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -39,7 +39,7 @@ impl Rand64 {
     }
 
     /// One xorshift step without output (`discard(1)`).
-    pub fn discard(&mut self) {
+    pub(crate) fn discard(&mut self) {
         let mut s = self.state;
         s ^= s >> 12;
         s ^= s << 25;
@@ -49,21 +49,21 @@ impl Rand64 {
 
     /// The next 64-bit output (`operator()`): the state times the
     /// multiplier, then a step.
-    pub fn next_u64(&mut self) -> u64 {
+    pub(crate) fn next_u64(&mut self) -> u64 {
         let r = self.state.wrapping_mul(MULT);
         self.discard();
         r
     }
 
     /// A double in [0, 1) from the low 52 bits of the next output (`getDouble`).
-    pub fn next_double(&mut self) -> f64 {
+    pub(crate) fn next_double(&mut self) -> f64 {
         let n = self.next_u64() & 0x000F_FFFF_FFFF_FFFF;
         n as f64 * (1.0 / 4_503_599_627_370_496.0)
     }
 
     /// Xors `bytes` in at byte positions starting from `*index` (mod 8),
     /// stepping after each byte (`xorString`); `*index` moves on.
-    pub fn xor_bytes(&mut self, bytes: &[u8], index: &mut u32) {
+    pub(crate) fn xor_bytes(&mut self, bytes: &[u8], index: &mut u32) {
         for &c in bytes {
             self.state ^= u64::from(c) << (*index * 8);
             self.discard();

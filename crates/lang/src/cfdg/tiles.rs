@@ -14,7 +14,7 @@ use crate::model::{BuildRequest, EvalError};
 use glam::{DVec3, Mat3, Vec3};
 
 /// Tile thickness as a fraction of the picture's larger side.
-pub const THICKNESS: f64 = 0.002;
+pub(crate) const THICKNESS: f64 = 0.002;
 
 /// sRGB to linear (the Model's colours are linear; cfdg's are sRGB).
 fn linear(c: f64) -> f32 {

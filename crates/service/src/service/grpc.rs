@@ -131,12 +131,16 @@ pub(super) fn meta(served: &Served) -> pb::RenderMeta {
 
 /// `response` with the request's timing as `server-timing` metadata (the
 /// HTTP `Server-Timing` header's value) and the model's seed as
-/// `x-rulemesh-seed` (decimal, as the HTTP header), in the response headers.
+/// `x-rulemesh-seed` (decimal, as the HTTP header), and a Context Free
+/// design's variation code as `x-rulemesh-variation`, in the response headers.
 fn with_timing<T>(mut response: Response<T>, served: &Served) -> Response<T> {
     if let Ok(v) = tonic::metadata::MetadataValue::try_from(served.timing.header_value()) {
         response.metadata_mut().insert("server-timing", v);
     }
     response.metadata_mut().insert("x-rulemesh-seed", tonic::metadata::MetadataValue::from(served.model.seed));
+    if let Some(code) = crate::lang::cfdg::variation_code(served.model.language, served.model.seed).and_then(|c| tonic::metadata::MetadataValue::try_from(c).ok()) {
+        response.metadata_mut().insert("x-rulemesh-variation", code);
+    }
     response
 }
 

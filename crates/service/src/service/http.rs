@@ -82,6 +82,7 @@ fn cors(origins: &[String]) -> Option<tower_http::cors::CorsLayer> {
                 name("x-rulemesh-error"),
                 name("x-rulemesh-primitives"),
                 name("x-rulemesh-seed"),
+                name("x-rulemesh-variation"),
                 name("x-rulemesh-triangles"),
                 name("x-rulemesh-truncated"),
                 name("x-rulemesh-truncated-limit"),
@@ -313,6 +314,10 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
     h.insert(header::ETAG, header_value(&format!("\"{}\"", m.etag)));
     h.insert("x-rulemesh-cache", HeaderValue::from_static(if served.cache == CacheOutcome::Hit { "hit" } else { "miss" }));
     h.insert("x-rulemesh-seed", HeaderValue::from(m.seed));
+    // A Context Free design's variation code, the seed as Context Free names it.
+    if let Some(code) = crate::lang::cfdg::variation_code(m.language, m.seed) {
+        h.insert("x-rulemesh-variation", header_value(&code));
+    }
     h.insert("x-rulemesh-primitives", HeaderValue::from(m.primitives));
     h.insert("x-rulemesh-triangles", HeaderValue::from(m.triangles));
     h.insert("x-rulemesh-truncated", HeaderValue::from_static(if m.truncated.is_some() { "true" } else { "false" }));
@@ -350,6 +355,7 @@ fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'sta
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
             ("X-Rulemesh-Seed" = String, description = "The seed the model was made with, in decimal (0 to 2^64 - 1): the request's, else the grammar's own seed directive, else 0"),
+            ("X-Rulemesh-Variation" = String, description = "language cfdg only: the variation code the design was drawn with (`ABC`; Context Free's -v), which the `variation` parameter takes back"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),
@@ -423,6 +429,7 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
             ("ETag" = String, description = "Strong ETag: the BLAKE3 content hash (suffixed with the encoding when compressed)"),
             ("X-Rulemesh-Cache" = String, description = "hit or miss"),
             ("X-Rulemesh-Seed" = String, description = "The seed the model was made with, in decimal (0 to 2^64 - 1): the request's, else the grammar's own seed directive, else 0"),
+            ("X-Rulemesh-Variation" = String, description = "language cfdg only: the variation code the design was drawn with (`ABC`; Context Free's -v), which the `variation` parameter takes back"),
             ("X-Rulemesh-Primitives" = u64, description = "Primitive instances"),
             ("X-Rulemesh-Triangles" = u64, description = "Triangles"),
             ("X-Rulemesh-Truncated" = bool, description = "Whether a limit cut the model short"),

@@ -89,7 +89,7 @@ pub fn prepare(adj: &Adjustment) -> Prepared {
 }
 
 /// Applies a prepared adjustment to `s`.
-pub fn apply_prepared(p: &Prepared, s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
+pub(crate) fn apply_prepared(p: &Prepared, s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
     if let Some(m) = &p.folded {
         s.transform.premultiply(m);
     }

@@ -15,19 +15,19 @@ use crate::cfdg::syntax::path_flags as pf;
 use crate::geom::curves::{flatten_cubic, flatten_quad};
 
 /// AGG's path commands (`path_commands_e`) and the close flag.
-pub const STOP: u8 = 0;
+pub(crate) const STOP: u8 = 0;
 /// Starts a subpath.
-pub const MOVE_TO: u8 = 1;
+pub(crate) const MOVE_TO: u8 = 1;
 /// A line.
-pub const LINE_TO: u8 = 2;
+pub(crate) const LINE_TO: u8 = 2;
 /// A quadratic curve's control or end point.
-pub const CURVE3: u8 = 3;
+pub(crate) const CURVE3: u8 = 3;
 /// A cubic curve's control or end point.
-pub const CURVE4: u8 = 4;
+pub(crate) const CURVE4: u8 = 4;
 /// Ends a polygon (with [`CLOSE`] when closed).
-pub const END_POLY: u8 = 0x0F;
+pub(crate) const END_POLY: u8 = 0x0F;
 /// `path_flags_close`.
-pub const CLOSE: u8 = 0x40;
+pub(crate) const CLOSE: u8 = 0x40;
 
 /// One vertex and its command.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,7 +41,7 @@ pub struct Vertex {
 }
 
 /// `is_vertex`: a move, line or curve point.
-pub fn is_vertex(c: u8) -> bool {
+pub(crate) fn is_vertex(c: u8) -> bool {
     (MOVE_TO..END_POLY).contains(&c)
 }
 
@@ -51,7 +51,7 @@ fn is_curve(c: u8) -> bool {
 
 /// AGG's `path_storage`.
 #[derive(Debug, Clone, Default)]
-pub struct PathStorage {
+pub(crate) struct PathStorage {
     /// The vertices.
     pub v: Vec<Vertex>,
 }
@@ -61,11 +61,11 @@ impl PathStorage {
         self.v.push(Vertex { x, y, cmd });
     }
     /// The last command, [`STOP`] when empty.
-    pub fn last_command(&self) -> u8 {
+    pub(crate) fn last_command(&self) -> u8 {
         self.v.last().map_or(STOP, |v| v.cmd)
     }
     /// The last vertex and its command.
-    pub fn last_vertex(&self) -> (f64, f64, u8) {
+    pub(crate) fn last_vertex(&self) -> (f64, f64, u8) {
         self.v.last().map_or((0.0, 0.0, STOP), |v| (v.x, v.y, v.cmd))
     }
     fn prev_vertex(&self) -> (f64, f64, u8) {
@@ -78,7 +78,7 @@ impl PathStorage {
         }
     }
     /// Makes a relative point absolute.
-    pub fn rel_to_abs(&self, x: &mut f64, y: &mut f64) {
+    pub(crate) fn rel_to_abs(&self, x: &mut f64, y: &mut f64) {
         let (x2, y2, c) = self.last_vertex();
         if is_vertex(c) {
             *x += x2;
@@ -86,20 +86,20 @@ impl PathStorage {
         }
     }
     /// `move_to`.
-    pub fn move_to(&mut self, x: f64, y: f64) {
+    pub(crate) fn move_to(&mut self, x: f64, y: f64) {
         self.add(x, y, MOVE_TO);
     }
     /// `line_to`.
-    pub fn line_to(&mut self, x: f64, y: f64) {
+    pub(crate) fn line_to(&mut self, x: f64, y: f64) {
         self.add(x, y, LINE_TO);
     }
     /// `curve3(ctrl, to)`.
-    pub fn curve3(&mut self, cx: f64, cy: f64, x: f64, y: f64) {
+    pub(crate) fn curve3(&mut self, cx: f64, cy: f64, x: f64, y: f64) {
         self.add(cx, cy, CURVE3);
         self.add(x, y, CURVE3);
     }
     /// `curve3(to)`: the control point reflected from the last curve's.
-    pub fn curve3_smooth(&mut self, x: f64, y: f64) {
+    pub(crate) fn curve3_smooth(&mut self, x: f64, y: f64) {
         let (x0, y0, c) = self.last_vertex();
         if is_vertex(c) {
             let (px, py, pc) = self.prev_vertex();
@@ -108,13 +108,13 @@ impl PathStorage {
         }
     }
     /// `curve4(ctrl1, ctrl2, to)`.
-    pub fn curve4(&mut self, c1: (f64, f64), c2: (f64, f64), x: f64, y: f64) {
+    pub(crate) fn curve4(&mut self, c1: (f64, f64), c2: (f64, f64), x: f64, y: f64) {
         self.add(c1.0, c1.1, CURVE4);
         self.add(c2.0, c2.1, CURVE4);
         self.add(x, y, CURVE4);
     }
     /// `curve4(ctrl2, to)`: the first control point reflected.
-    pub fn curve4_smooth(&mut self, c2: (f64, f64), x: f64, y: f64) {
+    pub(crate) fn curve4_smooth(&mut self, c2: (f64, f64), x: f64, y: f64) {
         let (x0, y0, c) = self.last_vertex();
         if is_vertex(c) {
             let (px, py, pc) = self.prev_vertex();
@@ -123,23 +123,23 @@ impl PathStorage {
         }
     }
     /// `end_poly(flags)`.
-    pub fn end_poly(&mut self, flags: u8) {
+    pub(crate) fn end_poly(&mut self, flags: u8) {
         if is_vertex(self.last_command()) {
             self.add(0.0, 0.0, END_POLY | flags);
         }
     }
     /// `close_polygon`.
-    pub fn close_polygon(&mut self) {
+    pub(crate) fn close_polygon(&mut self) {
         self.end_poly(CLOSE);
     }
     /// `start_new_path`.
-    pub fn start_new_path(&mut self) {
+    pub(crate) fn start_new_path(&mut self) {
         if self.last_command() != STOP {
             self.add(0.0, 0.0, STOP);
         }
     }
     /// Applies `t` to every vertex from `start` on.
-    pub fn transform_from(&mut self, start: usize, t: &Affine) {
+    pub(crate) fn transform_from(&mut self, start: usize, t: &Affine) {
         for v in self.v.iter_mut().skip(start) {
             if is_vertex(v.cmd) {
                 (v.x, v.y) = t.apply(v.x, v.y);
@@ -148,7 +148,7 @@ impl PathStorage {
     }
     /// `arc_to`: an SVG elliptical arc from the last point to `(x, y)`.
     #[allow(clippy::too_many_arguments)]
-    pub fn arc_to(&mut self, rx: f64, ry: f64, angle: f64, large: bool, sweep: bool, x: f64, y: f64) {
+    pub(crate) fn arc_to(&mut self, rx: f64, ry: f64, angle: f64, large: bool, sweep: bool, x: f64, y: f64) {
         let (x0, y0, c) = self.last_vertex();
         if !is_vertex(c) {
             self.move_to(x, y);

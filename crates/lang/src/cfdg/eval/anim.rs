@@ -25,7 +25,7 @@ use crate::cfdg::syntax::{Grammar, Value};
 use crate::model::EvalError;
 
 /// The hidden variable `ftime()` reads (no CFDG name holds a NUL).
-pub const FTIME: &str = "\u{0}ftime";
+pub(crate) const FTIME: &str = "\u{0}ftime";
 /// The hidden variable `frame()` reads.
 pub const FRAME: &str = "\u{0}frame";
 
@@ -51,7 +51,7 @@ pub fn value(name: &str, scope: &Scope) -> f64 {
 
 /// Checks `CF::Time` and pushes what `ftime()` and `frame()` give onto
 /// `scope` (before the globals, which may use them).
-pub fn setup(g: &Grammar, scope: &mut Scope) -> Result<(), EvalError> {
+pub(crate) fn setup(g: &Grammar, scope: &mut Scope) -> Result<(), EvalError> {
     if let Some(d) = g.defines.iter().rev().find(|d| d.name == "CF::Time") {
         let Value::Adjust(a) = &d.value else {
             return Err(EvalError::BadParam { name: d.name.clone(), message: format!("{}:{}: CF::Time takes an adjustment", d.span.line, d.span.column) });

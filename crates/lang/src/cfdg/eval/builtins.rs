@@ -7,7 +7,7 @@ use crate::model::EvalError;
 use crate::Span;
 
 /// cfdg's largest vector (`AST::MaxVectorSize`).
-pub const MAX_VECTOR: usize = 99;
+pub(crate) const MAX_VECTOR: usize = 99;
 
 fn bad(span: Span, name: &str, message: &str) -> EvalError {
     EvalError::BadParam { name: name.to_string(), message: format!("{}:{}: {message}", span.line, span.column) }

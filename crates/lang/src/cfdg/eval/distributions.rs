@@ -21,7 +21,7 @@ use crate::model::EvalError;
 use crate::Span;
 
 /// Most rejections a draw may make before it is an error.
-pub const MAX_TRIES: u32 = 100_000;
+pub(crate) const MAX_TRIES: u32 = 100_000;
 
 /// The draw did not end; `what` names the distribution.
 fn stuck(span: Span, what: &str) -> EvalError {
@@ -318,7 +318,7 @@ fn nat(v: f64) -> i64 {
 }
 
 /// Whether `name` is one of the distributions.
-pub fn is_distribution(name: &str) -> bool {
+pub(crate) fn is_distribution(name: &str) -> bool {
     matches!(
         name,
         "rand::exponential" | "rand::gamma" | "rand::weibull" | "rand::extremeV" | "rand::normal" | "rand::lognormal" | "rand::chisquared" | "rand::cauchy" | "rand::fisherF" | "rand::studentT" | "randint::bernoulli" | "randint::binomial" | "randint::negbinomial" | "randint::poisson" | "randint::discrete" | "randint::geometric"

@@ -44,12 +44,12 @@ impl Bounds {
         }
     }
     /// Scaled by `d` about its centre (`Bounds::dilate`).
-    pub fn dilate(&self, d: f64) -> Bounds {
+    pub(crate) fn dilate(&self, d: f64) -> Bounds {
         let (cx, cy) = ((self.min_x + self.max_x) * 0.5, (self.min_y + self.max_y) * 0.5);
         Bounds { min_x: d * (self.min_x - cx) + cx, max_x: d * (self.max_x - cx) + cx, min_y: d * (self.min_y - cy) + cy, max_y: d * (self.max_y - cy) + cy }
     }
     /// The box of `points` under `t`.
-    pub fn of_polygon(t: &super::state::Affine, points: &[(f64, f64)]) -> Bounds {
+    pub(crate) fn of_polygon(t: &super::state::Affine, points: &[(f64, f64)]) -> Bounds {
         let mut b = Bounds::default();
         for &(x, y) in points {
             let (px, py) = t.apply(x, y);
@@ -67,13 +67,13 @@ impl Bounds {
     /// The scale fitting the box into `width`×`height` less the borders, the
     /// canvas size it implies, and the map from design to pixels
     /// (`Bounds::computeScale` with `modify` and a transform; `exact` off).
-    pub fn compute_scale(&self, width: i64, height: i64, border_x: f64, border_y: f64) -> (f64, i64, i64, super::state::Affine) {
+    pub(crate) fn compute_scale(&self, width: i64, height: i64, border_x: f64, border_y: f64) -> (f64, i64, i64, super::state::Affine) {
         self.compute_scale_exact(width, height, border_x, border_y, false)
     }
 
     /// [`Bounds::compute_scale`], with `exact` as cfdg passes it for sized
     /// and tiled designs (the implied size is not rounded to the canvas's parity).
-    pub fn compute_scale_exact(&self, width: i64, height: i64, border_x: f64, border_y: f64, exact: bool) -> (f64, i64, i64, super::state::Affine) {
+    pub(crate) fn compute_scale_exact(&self, width: i64, height: i64, border_x: f64, border_y: f64, exact: bool) -> (f64, i64, i64, super::state::Affine) {
         let (mut vw, mut vh) = (self.max_x - self.min_x, self.max_y - self.min_y);
         if !self.valid() {
             vw = 1.0;
@@ -124,7 +124,7 @@ pub fn polygon(kind: usize) -> &'static [(f64, f64)] {
 /// `CommandInfo` has no fill flag at bounds time, `pathIterator::boundingRect`
 /// strokes it, `agg_vcgen_stroke`), which for these regular polygons moves
 /// each vertex out along its bisector by `0.05 / sin(half angle)`.
-pub fn bounds_polygon(kind: usize) -> Vec<(f64, f64)> {
+pub(crate) fn bounds_polygon(kind: usize) -> Vec<(f64, f64)> {
     let (r, half_angle) = match kind {
         0 => (0.5, 67.5f64),
         1 => (std::f64::consts::FRAC_1_SQRT_2, 45.0),
@@ -149,7 +149,7 @@ where
 }
 
 /// `std::push_heap` after a push: restores the max-heap with the last element added.
-pub fn push_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
+pub(crate) fn push_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
     if v.is_empty() {
         return;
     }
@@ -160,7 +160,7 @@ pub fn push_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
 
 /// `std::pop_heap`: moves the greatest element to the end and restores the
 /// heap over the rest (`__pop_heap` and `__adjust_heap`).
-pub fn pop_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
+pub(crate) fn pop_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
     let n = v.len();
     if n < 2 {
         return;

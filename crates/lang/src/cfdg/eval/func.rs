@@ -26,7 +26,7 @@ use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 /// on a thread with a 2 MiB stack. cfdg's own bound is its parameter stack
 /// ("Maximum stack size exceeded"); Ackermann's function at (3, 5), in
 /// `recursiontest.cfdg`, nests about 255 deep.
-pub const MAX_CALL_DEPTH: u32 = 400;
+pub(crate) const MAX_CALL_DEPTH: u32 = 400;
 
 /// The user functions of a design and the meter of their calls.
 #[derive(Debug, Default)]
@@ -63,7 +63,7 @@ impl Functions {
     }
 
     /// The calls made since the last take, to be charged as steps.
-    pub fn take_calls(&self) -> u64 {
+    pub(crate) fn take_calls(&self) -> u64 {
         self.calls.swap(0, Ordering::Relaxed)
     }
 
@@ -147,7 +147,7 @@ fn is_natural(v: f64, max: f64) -> bool {
 
 /// `let(a = e; …; body)`: each definition evaluated in turn, seeing the
 /// caller's variables and those before it, then the body (`ASTlet`).
-pub fn let_in(defs: &[(String, Expr)], body: &Expr, _span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
+pub(crate) fn let_in(defs: &[(String, Expr)], body: &Expr, _span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
     scope.funcs.enter()?;
     let mut inner = Scope { vars: Vec::with_capacity(defs.len()), up: Some((scope, scope.vars.len())), globals: Some(0), max_natural: scope.max_natural, funcs: scope.funcs.clone(), rand_static: scope.rand_static.clone() };
     let mut r = Ok(());
@@ -205,7 +205,7 @@ pub fn index(name: &str, args: &Expr, span: Span, scope: &Scope<'_>, rand: &mut 
 /// The built-ins on vectors (`ASTfunction::evaluate`): `dot(u, v)`,
 /// `cross(u, v)` of two vector3s, and `hsb2rgb(h, s, b)` / `rgb2hsb(r, g, b)`
 /// through `HSBColor` (its hextant formula and its inverse, `HSBColor.cpp`).
-pub fn vector_builtin(name: &str, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
+pub(crate) fn vector_builtin(name: &str, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
     let items = args.map(|a| a.items()).unwrap_or_default();
     let mut vals = Vec::with_capacity(items.len());
     for a in &items {

@@ -6,17 +6,17 @@
 //! minimum size at the scale the picture has so far, and the finished
 //! shapes sorted by z, then by the order they were finished.
 
-pub mod adjust;
+pub(crate) mod adjust;
 pub mod anim;
-pub mod builtins;
+pub(crate) mod builtins;
 pub mod distributions;
 pub mod agg;
 pub mod expr;
 pub mod frame;
-pub mod func;
-pub mod modval;
+pub(crate) mod func;
+pub(crate) mod modval;
 mod pending;
-pub mod shapeval;
+pub(crate) mod shapeval;
 pub mod state;
 pub mod symmetry;
 pub mod tile;
@@ -35,7 +35,7 @@ use state::{Affine, State};
 pub(crate) type FastMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
 
 /// The primitives' shape numbers (`primShape`): CIRCLE, SQUARE, TRIANGLE.
-pub const PRIMITIVES: [&str; 3] = ["CIRCLE", "SQUARE", "TRIANGLE"];
+pub(crate) const PRIMITIVES: [&str; 3] = ["CIRCLE", "SQUARE", "TRIANGLE"];
 
 /// `FILL` as a shape outside a path: the whole canvas blended with the
 /// shape's colour (`primShape::fillType`); finished as [`Finished::kind`] 4.
@@ -274,13 +274,13 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
 }
 
 mod run;
-pub use run::PathDraw;
+pub(crate) use run::PathDraw;
 
 /// The stack the render runs on: user functions recurse through the
 /// evaluator (a few Rust frames per call, about 9 KiB in a debug build), so
 /// [`func::MAX_CALL_DEPTH`] calls need more than the 2 MiB a server or test
 /// thread has. Reserved address space; only the pages used are touched.
-pub const RENDER_STACK: usize = 64 << 20;
+pub(crate) const RENDER_STACK: usize = 64 << 20;
 
 /// Renders `g` as cfdg renders it with `opts`, charging `budget` (a step
 /// per rule expanded, per loop iteration and per user function call,

@@ -22,7 +22,7 @@ use crate::cfdg::syntax::{Adjustment, Expr, TermKind};
 use crate::model::EvalError;
 
 /// The prefix marking an adjustment value among the scope's variables.
-pub const MOD_VAR: char = '\u{2}';
+pub(crate) const MOD_VAR: char = '\u{2}';
 
 /// `HSBColor::Color2Value`, `ColorTarget`: a channel's assignment flags.
 const TWO_VALUE: u32 = 3;
@@ -49,7 +49,7 @@ fn refuse(t: &crate::cfdg::syntax::Term, what: &str) -> EvalError {
 /// Evaluates `adj` into an adjustment value (`ASTmodification::setVal`);
 /// `constant` as [`is_constant`] says (the definition is then folded where
 /// it is used, see [`fold_seeds`]).
-pub fn value_of(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, constant: bool) -> Result<Vec<f64>, EvalError> {
+pub(crate) fn value_of(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, constant: bool) -> Result<Vec<f64>, EvalError> {
     let p = prepare(adj);
     let mut geo = State::initial();
     if let Some(m) = p.folded {
@@ -125,7 +125,7 @@ pub fn value_of(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, constant
 /// Found against cfdg's output: a constant `b9 = [s 10]` mixes nothing in
 /// (arraytest1), a constant `x5 = [alpha -.5 sat .5]` its seed (`mod exp
 /// test`, where it changes the rules chosen after it).
-pub fn is_constant(adj: &Adjustment) -> bool {
+pub(crate) fn is_constant(adj: &Adjustment) -> bool {
     adj.terms.iter().all(|t| crate::cfdg::syntax::is_constant(&t.args) && !is_colour(t.kind))
 }
 
@@ -139,7 +139,7 @@ fn is_colour(k: TermKind) -> bool {
 /// `Modification::operator*=` when `ASTmodTerm::evaluate` folds the value
 /// into the replacement's constant part (`ASTparameter::constCopy`). Found
 /// against cfdg's output: without it `mtree mod def test` expands differently.
-pub fn fold_seeds(adj: &Adjustment, scope: &Scope<'_>, seed: &mut Rand64) {
+pub(crate) fn fold_seeds(adj: &Adjustment, scope: &Scope<'_>, seed: &mut Rand64) {
     for t in &adj.terms {
         if t.kind != TermKind::Transform {
             continue;

@@ -18,7 +18,7 @@ mod bind;
 mod names;
 mod chosen;
 mod path;
-pub use path::PathDraw;
+pub(crate) use path::PathDraw;
 
 /// Bytes accounted per unfinished or finished shape.
 const SHAPE_BYTES: u64 = 160;

@@ -26,16 +26,16 @@ const SHAPE_BITS: u64 = 0x7FF8_5348_4150_4531;
 const ADJUST_BITS: u64 = 0x7FF8_4144_4A55_5354;
 
 /// Numbers in an adjustment's run: its tag and [`super::modval`]'s 18.
-pub const ADJUST_LEN: usize = 19;
+pub(crate) const ADJUST_LEN: usize = 19;
 
 /// The slot size standing for an adjustment parameter (above any
 /// `vectorN`'s 99, so the two are never confused).
-pub const ADJUST_SLOT: usize = 1000;
+pub(crate) const ADJUST_SLOT: usize = 1000;
 
 /// The slot a parameter of type `ty` takes in a shape's argument list:
 /// its count of numbers, 0 for a shape (a run of its own length),
 /// [`ADJUST_SLOT`] for an adjustment.
-pub fn slot_size(ty: ParamType) -> usize {
+pub(crate) fn slot_size(ty: ParamType) -> usize {
     match ty {
         ParamType::Number | ParamType::Natural => 1,
         ParamType::Vector(n) => n,
@@ -49,7 +49,7 @@ fn is(v: Option<&f64>, bits: u64) -> bool {
 }
 
 /// The shape number and arguments of a shape run, if `v` is exactly one.
-pub fn as_shape(v: &[f64]) -> Option<(usize, &[f64])> {
+pub(crate) fn as_shape(v: &[f64]) -> Option<(usize, &[f64])> {
     if !is(v.first(), SHAPE_BITS) || v.get(1).copied() != Some(v.len() as f64) {
         return None;
     }
@@ -58,7 +58,7 @@ pub fn as_shape(v: &[f64]) -> Option<(usize, &[f64])> {
 }
 
 /// The 18 numbers of an adjustment run, if `v` is exactly one.
-pub fn as_adjust(v: &[f64]) -> Option<&[f64]> {
+pub(crate) fn as_adjust(v: &[f64]) -> Option<&[f64]> {
     (v.len() == ADJUST_LEN && is(v.first(), ADJUST_BITS)).then(|| &v[1..])
 }
 
@@ -102,7 +102,7 @@ pub fn split<'v>(sizes: &[usize], flat: &'v [f64]) -> Option<Vec<&'v [f64]>> {
 /// Evaluates a shape named in an expression (`foo(0.5)`, `CIRCLE`) into a
 /// shape run (`ASTruleSpecifier::evalArgs`): its arguments now, in the
 /// caller's scope and stream. A variable of that name, if any, wins.
-pub fn shape_value(name: &str, shape: usize, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
+pub(crate) fn shape_value(name: &str, shape: usize, args: Option<&Expr>, span: Span, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
     if args.is_none() {
         if let Some(v) = scope.get(name) {
             out.extend_from_slice(v);
@@ -127,7 +127,7 @@ pub fn shape_value(name: &str, shape: usize, args: Option<&Expr>, span: Span, sc
 
 /// Evaluates an adjustment written in an expression into an adjustment run
 /// (`ASTmodification::setVal`: colours as deltas and targets, not applied).
-pub fn adjust_value(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
+pub(crate) fn adjust_value(adj: &Adjustment, scope: &Scope<'_>, rand: &mut Rand64, out: &mut Vec<f64>) -> Result<(), EvalError> {
     let v = super::modval::value_of(adj, scope, rand, false)?;
     out.push(f64::from_bits(ADJUST_BITS));
     out.extend_from_slice(&v);
@@ -164,7 +164,7 @@ pub fn merge(v: &[f64], geo: &mut super::state::State, color: &mut [f64; 4], tar
 /// Pushes the run of a shape variable or an adjustment value kept under its
 /// own key (`draw = CIRCLE`, `next = [s 0.9]`) when `name` names one, so
 /// it can be passed on as an argument; whether it did.
-pub fn var_fallback(name: &str, scope: &Scope<'_>, out: &mut Vec<f64>) -> bool {
+pub(crate) fn var_fallback(name: &str, scope: &Scope<'_>, out: &mut Vec<f64>) -> bool {
     if let Some(v) = scope.get(&format!("{SHAPE_VAR}{name}")) {
         if let Some((_, rest)) = v.split_first() {
             out.extend_from_slice(&[f64::from_bits(SHAPE_BITS), (rest.len() + 2) as f64]);
@@ -187,7 +187,7 @@ pub fn var_fallback(name: &str, scope: &Scope<'_>, out: &mut Vec<f64>) -> bool {
 /// under the name itself, so it shadows an outer variable of that name
 /// wherever it is named (`BLUE = [b .73 h BLUE]` inside a loop hides a
 /// global number `BLUE` from `select(i, BLUE, RED)`, as in cfdg's scopes).
-pub fn push_adjust(scope: &mut Scope<'_>, name: &str, v: Vec<f64>) {
+pub(crate) fn push_adjust(scope: &mut Scope<'_>, name: &str, v: Vec<f64>) {
     let mut run = Vec::with_capacity(ADJUST_LEN);
     run.push(f64::from_bits(ADJUST_BITS));
     run.extend_from_slice(&v);
@@ -197,7 +197,7 @@ pub fn push_adjust(scope: &mut Scope<'_>, name: &str, v: Vec<f64>) {
 
 /// The prefix of a shape variable's key among the scope's variables (the
 /// renderer's `bind::SHAPE_VAR`): its value is `[constant, shape, args…]`.
-pub const SHAPE_VAR: char = '\u{1}';
+pub(crate) const SHAPE_VAR: char = '\u{1}';
 
 /// Whether `v` is a value of type `ty` (a function's result).
 pub fn fits(ty: ParamType, v: &[f64]) -> bool {

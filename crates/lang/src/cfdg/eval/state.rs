@@ -62,7 +62,7 @@ impl Affine {
         Affine { sx: c, shy: s, shx: -s, sy: c, tx: 0.0, ty: 0.0 }
     }
     /// A skew by angles `x`, `y` radians.
-    pub fn skewing(x: f64, y: f64) -> Affine {
+    pub(crate) fn skewing(x: f64, y: f64) -> Affine {
         Affine { sx: 1.0, shy: y.tan(), shx: x.tan(), sy: 1.0, tx: 0.0, ty: 0.0 }
     }
     /// A reflection across the line through the origin at angle `a` radians.
@@ -146,7 +146,7 @@ impl Hsba {
 const EQ: f64 = 0.00001;
 
 /// `HSBColor::adjust`: moves `base` by `adj` towards 0 or 1, or towards `target`.
-pub fn adjust(base: f64, adj: f64, use_target: bool, target: f64) -> f64 {
+pub(crate) fn adjust(base: f64, adj: f64, use_target: bool, target: f64) -> f64 {
     if adj == 0.0 {
         return base;
     }
@@ -168,7 +168,7 @@ pub fn adjust(base: f64, adj: f64, use_target: bool, target: f64) -> f64 {
 }
 
 /// `HSBColor::adjustHue`: adds degrees, or moves towards `target`.
-pub fn adjust_hue(base: f64, adj: f64, use_target: bool, target: f64) -> f64 {
+pub(crate) fn adjust_hue(base: f64, adj: f64, use_target: bool, target: f64) -> f64 {
     if adj == 0.0 {
         return base;
     }

@@ -89,7 +89,7 @@ pub fn tiling(g: &Grammar, scope: &super::expr::Scope) -> Result<Option<Tiling>,
 /// The tiling in pixels for a picture drawn at `scale` (`tiledCanvas::scale`):
 /// the lattice map in pixels and its inverse, which takes pixels to lattice
 /// units (for a frieze, only the repeating axis is inverted).
-pub struct PixelTiling {
+pub(crate) struct PixelTiling {
     offset: Affine,
     invert: Affine,
     frieze: Frieze,

@@ -139,7 +139,7 @@ fn term_bytes(kind: TermKind) -> &'static [u8] {
 }
 
 /// Appends `e`'s entropy to `out` (`ASTexpression::entropy` and its overrides).
-pub fn expr_entropy(e: &Expr, out: &mut Vec<u8>) {
+pub(crate) fn expr_entropy(e: &Expr, out: &mut Vec<u8>) {
     match e {
         Expr::Num(_, text) => out.extend_from_slice(text.as_bytes()),
         Expr::Var(name, _) => out.extend_from_slice(name.as_bytes()),
@@ -218,14 +218,14 @@ pub fn expr_entropy(e: &Expr, out: &mut Vec<u8>) {
 
 /// Whether `name` is one of cfdg's built-in functions (`ASTfunction::GetFuncType`),
 /// not a user function.
-pub fn is_builtin(name: &str) -> bool {
+pub(crate) fn is_builtin(name: &str) -> bool {
     !func_bytes(name).is_empty()
 }
 
 /// Whether cfdg folds `e` at compile time (`isConstant`): numbers and pure
 /// built-ins of them; never a variable, a random draw or a user function
 /// (`ASTuserFunction::compile` sets `isConstant = false`).
-pub fn is_constant(e: &Expr) -> bool {
+pub(crate) fn is_constant(e: &Expr) -> bool {
     constant_with(e, &[])
 }
 
@@ -258,7 +258,7 @@ fn constant_with(e: &Expr, consts: &[&str]) -> bool {
 }
 
 /// Hashes an adjustment's terms into `seed` from byte index `*index`.
-pub fn adjust_entropy(adj: &Adjustment, seed: &mut Rand64, index: &mut u32) {
+pub(crate) fn adjust_entropy(adj: &Adjustment, seed: &mut Rand64, index: &mut u32) {
     for t in &adj.terms {
         let mut ent = Vec::new();
         expr_entropy(&t.args, &mut ent);
@@ -270,7 +270,7 @@ pub fn adjust_entropy(adj: &Adjustment, seed: &mut Rand64, index: &mut u32) {
 /// The seed a replacement of `shape` with `adj` xors into the random state
 /// (`mChildChange.modData.mRand64Seed`): its terms, then the shape's name.
 /// A shape given arguments hashes them after its name (`ASTruleSpecifier::compile`).
-pub fn term_seed(adj: &Adjustment, shape: &str, args: Option<&Expr>) -> Rand64 {
+pub(crate) fn term_seed(adj: &Adjustment, shape: &str, args: Option<&Expr>) -> Rand64 {
     let mut seed = Rand64::raw(0);
     let mut index = 0;
     adjust_entropy(adj, &mut seed, &mut index);
@@ -287,7 +287,7 @@ pub fn term_seed(adj: &Adjustment, shape: &str, args: Option<&Expr>) -> Rand64 {
 /// arguments' text (`ASTloop::compile`); a 3.x loop hashes its adjustment
 /// apart and the two are combined by xor with their byte indices summed
 /// (`ASTmodification::grab`); a 2.x loop's index is the hidden `~~inaccessiblevar~~`.
-pub fn loop_seed(adj: &Adjustment, var: &str, args: &Expr, v2: bool) -> Rand64 {
+pub(crate) fn loop_seed(adj: &Adjustment, var: &str, args: &Expr, v2: bool) -> Rand64 {
     let mut ent = var.as_bytes().to_vec();
     expr_entropy(args, &mut ent);
     if v2 {
@@ -318,7 +318,7 @@ pub fn loop_seed(adj: &Adjustment, var: &str, args: &Expr, v2: bool) -> Rand64 {
 }
 
 /// The seed of a definition: its name (`ASTdefine::ASTdefine`), from the default seed.
-pub fn define_seed(name: &str) -> Rand64 {
+pub(crate) fn define_seed(name: &str) -> Rand64 {
     let mut seed = Rand64::default();
     let mut index = 0;
     seed.xor_bytes(name.as_bytes(), &mut index);

@@ -10,7 +10,7 @@ use crate::{ParseError, Span};
 
 /// One token kind.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Tok {
+pub(crate) enum Tok {
     /// A number, with its text as written (Context Free hashes the text).
     Num(String),
     /// A name, keyword or adjustment word (`shape`, `x`, `CF::Size`, `|hue`).
@@ -25,7 +25,7 @@ pub enum Tok {
 
 /// A token and where it starts.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Token {
+pub(crate) struct Token {
     /// What it is.
     pub tok: Tok,
     /// Where it starts.

@@ -11,13 +11,14 @@
 //! gives the same picture only if the text is hashed as cfdg hashes it.
 
 mod entropy;
-pub mod lexer;
+pub(crate) mod lexer;
 mod parser;
 mod shapes;
 
-pub use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
-pub use parser::{is_path_op, parse, parse_with, path_op_arity, Loader, REUSE};
-pub use shapes::{shape_numbers, start_name_entropy, SHAPE_EXPR};
+pub(crate) use entropy::{adjust_entropy, define_seed, is_builtin, is_constant, loop_seed, term_seed};
+pub use parser::parse;
+pub(crate) use parser::{parse_with, path_op_arity, REUSE};
+pub(crate) use shapes::{start_name_entropy, SHAPE_EXPR};
 
 use crate::Span;
 
@@ -302,29 +303,29 @@ pub struct PathCommand {
 }
 
 /// Context Free's path flags (`ast.h` `FlagTypes`, with AGG's join and cap numbers).
-pub mod path_flags {
+pub(crate) mod path_flags {
     /// Mask of the line join (AGG: 0 miter, 2 round, 3 bevel).
-    pub const JOIN_MASK: u32 = 0x7;
+    pub(crate) const JOIN_MASK: u32 = 0x7;
     /// A join was given.
-    pub const JOIN_PRESENT: u32 = 8;
+    pub(crate) const JOIN_PRESENT: u32 = 8;
     /// Shift of the line cap (AGG: 0 butt, 1 square, 2 round).
-    pub const CAP_SHIFT: u32 = 4;
+    pub(crate) const CAP_SHIFT: u32 = 4;
     /// Mask of the line cap.
-    pub const CAP_MASK: u32 = 0x7 << CAP_SHIFT;
+    pub(crate) const CAP_MASK: u32 = 0x7 << CAP_SHIFT;
     /// A cap was given.
-    pub const CAP_PRESENT: u32 = 8 << CAP_SHIFT;
+    pub(crate) const CAP_PRESENT: u32 = 8 << CAP_SHIFT;
     /// Arc clockwise.
-    pub const ARC_CW: u32 = 1 << 8;
+    pub(crate) const ARC_CW: u32 = 1 << 8;
     /// The large arc.
-    pub const ARC_LARGE: u32 = 1 << 9;
+    pub(crate) const ARC_LARGE: u32 = 1 << 9;
     /// A smooth curve (control point reflected).
-    pub const CONTINUOUS: u32 = 1 << 10;
+    pub(crate) const CONTINUOUS: u32 = 1 << 10;
     /// CLOSEPOLY moves the last point onto the first.
-    pub const ALIGN: u32 = 1 << 11;
+    pub(crate) const ALIGN: u32 = 1 << 11;
     /// Even-odd fill.
-    pub const EVEN_ODD: u32 = 1 << 12;
+    pub(crate) const EVEN_ODD: u32 = 1 << 12;
     /// Stroke width in pixels of the untransformed path (`iso`).
-    pub const ISO_WIDTH: u32 = 1 << 13;
+    pub(crate) const ISO_WIDTH: u32 = 1 << 13;
     /// Fill (else stroke).
     pub const FILL: u32 = 1 << 14;
 }

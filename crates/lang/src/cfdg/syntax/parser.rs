@@ -15,21 +15,21 @@ use expr::const_value;
 mod namespace;
 mod subpath;
 mod symmetry;
-pub use path::{is_path_op, path_op_arity};
+pub(crate) use path::{is_path_op, path_op_arity};
 
 /// The argument list `(=)` stands for: the parent shape's parameters.
-pub const REUSE: &str = "(=)";
+pub(crate) const REUSE: &str = "(=)";
 
 /// Deepest nesting of bodies and expressions the parser follows; deeper
 /// input is an error, never a stack overflow.
-pub const MAX_NESTING: usize = 200;
+pub(crate) const MAX_NESTING: usize = 200;
 
 /// Reads the file an `import`/`include` names (a bare file name); `None`
 /// when it cannot be read or no files may be read.
-pub type Loader<'a> = &'a dyn Fn(&str) -> Option<Vec<u8>>;
+pub(crate) type Loader<'a> = &'a dyn Fn(&str) -> Option<Vec<u8>>;
 
 /// Most files one design may import, counting repeats (an import cycle ends here).
-pub const MAX_IMPORTS: usize = 64;
+pub(crate) const MAX_IMPORTS: usize = 64;
 
 /// Parses CFDG `source` (UTF-8; invalid UTF-8 is an error at its position);
 /// `import`/`include` are errors.
@@ -59,7 +59,7 @@ fn tokens(source: &[u8], included: bool) -> Result<Vec<Token>, ParseError> {
 }
 
 /// Parses CFDG `source`, reading imported files through `load`.
-pub fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
+pub(crate) fn parse_with(source: &[u8], load: Loader<'_>) -> Result<Grammar, ParseError> {
     let toks = tokens(source, false)?;
     let version = if toks.first().is_some_and(|t| t.v3) { Version::V3 } else { Version::V2 };
     let mut p = Parser { toks, pos: 0, version, depth: 0, load, imports: 0, path: path::PathState::default(), last_params: Vec::new(), start_setting: None, rand_static: Vec::new(), entropy_names: Default::default() };

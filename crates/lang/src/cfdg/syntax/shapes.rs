@@ -21,11 +21,11 @@ use std::collections::{HashMap, HashSet};
 /// (`select(…)[ ]`, `if(…)[ ]`, `let(…)[ ]`): the expression is its
 /// arguments. Empty, as cfdg's rule specifier built from an expression has
 /// no name to hash (`ASTruleSpecifier(exp_ptr, loc)`).
-pub const SHAPE_EXPR: &str = "";
+pub(crate) const SHAPE_EXPR: &str = "";
 
 /// The number of each shape of `g`, as the renderer numbers them: the three
 /// primitives, then each rule's shape in order of its first rule.
-pub fn shape_numbers(g: &Grammar) -> HashMap<String, usize> {
+pub(crate) fn shape_numbers(g: &Grammar) -> HashMap<String, usize> {
     let mut index: HashMap<String, usize> = HashMap::new();
     for (i, p) in ["CIRCLE", "SQUARE", "TRIANGLE"].iter().enumerate() {
         index.insert((*p).to_string(), i);
@@ -217,7 +217,7 @@ fn expr(e: &mut Expr, n: &Names) {
 /// uses name for entropy"; the setting's rule specifier was compiled as an
 /// expression first, its arguments' text appended, and `MakeConfig` copies
 /// it: `astexpression.cpp`, `builder.cpp`).
-pub fn start_name_entropy(start: &Replacement, from_setting: bool) -> Vec<u8> {
+pub(crate) fn start_name_entropy(start: &Replacement, from_setting: bool) -> Vec<u8> {
     let mut out = start.shape.as_bytes().to_vec();
     if from_setting {
         if let Some(a) = &start.args {

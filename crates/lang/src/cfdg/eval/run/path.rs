@@ -24,9 +24,9 @@ mod subpath;
 pub(in crate::cfdg::eval) use subpath::SubpathTypes;
 
 /// cfdg's default stroke width and miter limit (`ast.h`).
-pub const DEFAULT_WIDTH: f64 = 0.1;
+pub(crate) const DEFAULT_WIDTH: f64 = 0.1;
 /// The miter limit (`DefaultMiterLimit`).
-pub const MITER_LIMIT: f64 = 4.0;
+pub(crate) const MITER_LIMIT: f64 = 4.0;
 
 /// Bytes accounted per path vertex a command keeps.
 const VERTEX_BYTES: u64 = std::mem::size_of::<Vertex>() as u64;

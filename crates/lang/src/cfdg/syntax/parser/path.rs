@@ -16,7 +16,7 @@ use super::Tok;
 use crate::{ParseError, Span};
 
 /// Whether `w` names a path operation or command.
-pub fn is_path_op(w: &str) -> bool {
+pub(crate) fn is_path_op(w: &str) -> bool {
     op_kind(w).is_some() || w == "STROKE" || w == "FILL"
 }
 
@@ -91,7 +91,7 @@ fn flag_value(e: &Expr) -> Option<u32> {
 
 /// Checks that a path operation has `n` numbers and these flags
 /// (`ASTpathOp::checkArguments`); the message says what it takes.
-pub fn path_op_arity(kind: PathOpKind, flags: u32, n: usize) -> Result<(), String> {
+pub(crate) fn path_op_arity(kind: PathOpKind, flags: u32, n: usize) -> Result<(), String> {
     let ok = match kind {
         PathOpKind::MoveTo | PathOpKind::MoveRel | PathOpKind::LineTo | PathOpKind::LineRel => flags == 0 && n == 2,
         PathOpKind::ArcTo | PathOpKind::ArcRel => flags & !(pf::ARC_CW | pf::ARC_LARGE) == 0 && (n == 3 || n == 5),

@@ -34,14 +34,14 @@ use std::sync::Arc;
 
 /// Deepest nesting of subpaths, whatever the budget allows: each level is
 /// a few frames of the walker.
-pub const MAX_SUBPATH_DEPTH: u32 = 100;
+pub(crate) const MAX_SUBPATH_DEPTH: u32 = 100;
 
 /// The kind (`REP_OP`, `REP_COMMAND` or both) of every subpath of the
 /// design, by the address of its [`Replacement`], and of every path body,
 /// by shape number; worked out once per render, in the order the shapes
 /// were defined, as cfdg's parser does it.
 #[derive(Debug, Default)]
-pub struct SubpathTypes {
+pub(crate) struct SubpathTypes {
     by_rep: HashMap<usize, u8>,
     by_shape: Vec<u8>,
 }
