@@ -38,28 +38,22 @@ impl Default for Scope<'_> {
 
 impl Scope<'_> {
     pub(crate) fn get(&self, name: &str) -> Option<&[f64]> {
-        self.get_in(name, self.vars.len())
+        self.find_in(&|n: &str| n == name, self.vars.len())
     }
 
     /// The value of `marker` + `name` (a shape or adjustment variable's
     /// key), found without building the key: the renderer asks this for
     /// every shape it places.
     pub(crate) fn get_marked(&self, marker: char, name: &str) -> Option<&[f64]> {
-        self.get_marked_in(marker, name, self.vars.len())
+        self.find_in(&|n: &str| n.strip_prefix(marker) == Some(name), self.vars.len())
     }
 
-    fn get_marked_in(&self, marker: char, name: &str, visible: usize) -> Option<&[f64]> {
-        let is = |n: &str| n.strip_prefix(marker) == Some(name);
+    /// The innermost visible variable whose key `is` accepts, this scope's
+    /// first `visible` variables and then the enclosing scopes'.
+    fn find_in(&self, is: &dyn Fn(&str) -> bool, visible: usize) -> Option<&[f64]> {
         match self.vars[..visible.min(self.vars.len())].iter().rev().find(|(n, _)| is(n)) {
             Some((_, v)) => Some(v.as_slice()),
-            None => self.up.and_then(|(s, n)| s.get_marked_in(marker, name, n)),
-        }
-    }
-
-    fn get_in(&self, name: &str, visible: usize) -> Option<&[f64]> {
-        match self.vars[..visible.min(self.vars.len())].iter().rev().find(|(n, _)| n == name) {
-            Some((_, v)) => Some(v.as_slice()),
-            None => self.up.and_then(|(s, n)| s.get_in(name, n)),
+            None => self.up.and_then(|(s, n)| s.find_in(is, n)),
         }
     }
 }

@@ -37,7 +37,7 @@ pub fn key(name: &str) -> String {
 pub fn lookup<'s>(e: &Expr, scope: &'s Scope<'_>) -> Option<&'s [f64]> {
     match e {
         Expr::Paren(a) => lookup(a, scope),
-        Expr::Var(name, _) => scope.get(&key(name)),
+        Expr::Var(name, _) => scope.get_marked(MOD_VAR, name),
         _ => None,
     }
 }

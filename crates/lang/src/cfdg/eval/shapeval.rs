@@ -172,7 +172,7 @@ pub(crate) fn var_fallback(name: &str, scope: &Scope<'_>, out: &mut Vec<f64>) ->
             return true;
         }
     }
-    if let Some(v) = scope.get(&super::modval::key(name)) {
+    if let Some(v) = scope.get_marked(super::modval::MOD_VAR, name) {
         if v.len() + 1 == ADJUST_LEN {
             out.push(f64::from_bits(ADJUST_BITS));
             out.extend_from_slice(v);

@@ -36,7 +36,7 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
     match e {
         Expr::Paren(a) => shape_value(a, rules, scope, rand, parent),
         Expr::Var(name, _) => {
-            if let Some(v) = scope.get(&key(name)) {
+            if let Some(v) = scope.get_marked(SHAPE_VAR, name) {
                 return Ok(Some(v.to_vec()));
             }
             if scope.get(name).is_some() {
@@ -69,7 +69,7 @@ pub(super) fn shape_value(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>, rand: 
 pub(super) fn shape_is_constant(e: &Expr, scope: &Scope<'_>) -> bool {
     match e {
         Expr::Paren(a) => shape_is_constant(a, scope),
-        Expr::Var(name, _) => scope.get(&key(name)).is_none_or(|v| v.first() == Some(&1.0)),
+        Expr::Var(name, _) => scope.get_marked(SHAPE_VAR, name).is_none_or(|v| v.first() == Some(&1.0)),
         Expr::Shape(name, _, args, _) if args.is_none() => shape_is_constant(&Expr::Var(name.clone(), crate::Span::new(0, 0)), scope),
         Expr::Call(_, args, _) | Expr::Shape(_, _, args, _) => match args.as_ref() {
             Some(Expr::Var(r, _)) if r == syntax::REUSE => false,
@@ -102,7 +102,7 @@ pub(super) fn push_predefined(scope: &mut Scope<'_>) {
 pub(super) fn names_rule(e: &Expr, rules: &Rules<'_>, scope: &Scope<'_>) -> bool {
     match e {
         Expr::Paren(a) => names_rule(a, rules, scope),
-        Expr::Var(name, _) => scope.get(&key(name)).is_some() || (scope.get(name).is_none() && rules.index.contains_key(name.as_str())),
+        Expr::Var(name, _) => scope.get_marked(SHAPE_VAR, name).is_some() || (scope.get(name).is_none() && rules.index.contains_key(name.as_str())),
         Expr::Shape(name, _, args, _) if args.is_none() => names_rule(&Expr::Var(name.clone(), crate::Span::new(0, 0)), rules, scope),
         Expr::Call(name, _, _) | Expr::Shape(name, _, _, _) => !syntax::is_builtin(name) && !scope.funcs.defs.contains_key(name) && rules.index.contains_key(name.as_str()),
         _ => false,
