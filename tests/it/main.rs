@@ -9,6 +9,7 @@ mod picture;
 mod cfdg;
 mod cfdg_limits;
 mod cfdg_pictures;
+mod cfdg_examples;
 mod cli;
 mod c_decoder;
 mod c_scene;

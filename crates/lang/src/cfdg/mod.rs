@@ -137,10 +137,11 @@ impl FrontEnd for Cfdg {
         // A picture of the design is drawn from its drawing alone.
         let mut scene = if req.picture_only { crate::model::Scene::default() } else { tiles::scene(&picture, req, budget)? };
         scene.truncated = picture.truncated;
-        let drawing = drawing::of(&picture, budget)?;
+        let primitives = picture.shapes.len() as u64;
+        let drawing = drawing::into_drawing(picture, budget)?;
         Ok(Model {
             language: Language::Cfdg,
-            primitives: picture.shapes.len() as u64,
+            primitives,
             scene,
             hierarchy: None,
             drawing: Some(drawing),

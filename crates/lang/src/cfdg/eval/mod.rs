@@ -274,7 +274,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
 }
 
 mod run;
-pub(crate) use run::PathDraw;
+pub(crate) use run::{PathDraw, SHAPE_BYTES};
 
 /// The stack the render runs on: user functions recurse through the
 /// evaluator (a few Rust frames per call, about 9 KiB in a debug build), so

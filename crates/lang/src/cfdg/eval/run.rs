@@ -21,7 +21,7 @@ mod path;
 pub(crate) use path::PathDraw;
 
 /// Bytes accounted per unfinished or finished shape.
-const SHAPE_BYTES: u64 = 160;
+pub(crate) const SHAPE_BYTES: u64 = 160;
 /// cfdg's fixed border in pixels (`FIXED_BORDER`).
 const FIXED_BORDER: f64 = 8.0;
 
