@@ -119,16 +119,26 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
 /// the picture's is one step's marks.
 const STEP: usize = 1 << 16;
 
-/// The drawing of `p`, as [`of`] draws it, taking the picture's shapes as
-/// it goes: each step of [`STEP`] shapes is drawn, then the memory those
-/// shapes held is handed back (to the allocator and to the budget). So the
-/// picture and its drawing are never both whole at once, and a design of
-/// a million squares (Context Free's `tests/perftest.cfdg`) is drawn under
-/// the default memory limit, where holding both took 272 MB. The marks
-/// are the same, in the same order, as [`of`]'s.
+/// The drawing of `p`, as [`of`] draws it, consuming the picture. When
+/// the picture and its whole drawing would not fit the memory limit
+/// together, it takes the picture's shapes as it goes: each step of
+/// [`STEP`] shapes is drawn, then the memory those shapes held is handed
+/// back (to the allocator and to the budget). So a design of a million
+/// squares (Context Free's `tests/perftest.cfdg`) is drawn under the
+/// default memory limit, where holding both took 272 MB. The marks are the
+/// same, in the same order, either way.
 pub fn into_drawing(mut p: Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
+    let commands = commands_of(&p.shapes, &p);
+    // When the whole drawing fits beside the picture, it is drawn in one
+    // go, as `of` draws it: handing shapes back costs a reversal and a
+    // shrink per step, a tenth of the bush's drawing time.
+    let all = MARK_BYTES.saturating_mul((p.shapes.len() + commands) as u64);
+    if budget.check_memory(all).is_ok() {
+        let d = of(&p, budget)?;
+        budget.release_memory(SHAPE_BYTES.saturating_mul(p.shapes.len() as u64));
+        return Ok(d);
+    }
     let mut shapes = std::mem::take(&mut p.shapes);
-    let commands = commands_of(&shapes, &p);
     // Drawn from the back: popping is what lets the vector shrink.
     shapes.reverse();
     let mut m = Marker::new(&p, shapes.len() + commands);
