@@ -172,7 +172,12 @@ async fn malformed_requests_never_enter_and_a_cleared_cache_ends_fast_answers() 
     let mut answer = Vec::new();
     let _ = s.read_to_end(&mut answer).await;
     assert!(answer.is_empty() || answer.starts_with(b"HTTP/1.1 400"), "{}", String::from_utf8_lossy(&answer));
-    assert_eq!(srv.state.fast.len(), 0, "nothing kept from malformed requests or bodies");
+    // A key past the bound (here a long Origin) is answered, never kept.
+    let long = get("/v1/models/gem.glb?seed=9", &format!("origin: https://{}.example\r\n", "o".repeat(3000)));
+    for _ in 0..3 {
+        assert_eq!(raw(&srv, &long).await.head[0], "HTTP/1.1 200 OK");
+    }
+    assert_eq!(srv.state.fast.len(), 0, "nothing kept from malformed requests, bodies or long keys");
     assert_eq!(fast_hits(&base).await, 0);
     // The well-formed request is kept, answered fast, and still right.
     let req = get("/v1/models/gem.glb?seed=9", "");
@@ -189,6 +194,26 @@ async fn malformed_requests_never_enter_and_a_cleared_cache_ends_fast_answers() 
     raw(&srv, &req).await;
     assert_eq!(raw(&srv, &req).await, routed);
     assert_eq!(fast_hits(&base).await, 2);
+    srv.shutdown();
+    srv.wait().await.expect("clean shutdown");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn cors_answers_are_kept_per_origin() {
+    let (srv, base) = start(ServeConfig { cors_origins: vec!["https://app.example".into()], ..config() }).await;
+    // Each origin its own seed, so that its first request renders and its second is the router's hit.
+    for (seed, origin) in [(12, "https://app.example"), (13, "https://other.example")] {
+        let req = get(&format!("/v1/models/gem.glb?seed={seed}"), &format!("origin: {origin}\r\n"));
+        raw(&srv, &req).await;
+        let before = fast_hits(&base).await;
+        let routed = raw(&srv, &req).await;
+        let fast = raw(&srv, &req).await;
+        assert_eq!(fast_hits(&base).await, before + 1, "{origin}");
+        assert_eq!(fast, routed, "{origin}");
+        let allowed = line(&fast, "access-control-allow-origin");
+        assert_eq!(allowed, if origin == "https://app.example" { origin } else { "" }, "{fast:?}");
+    }
+    assert_eq!(srv.state.fast.len(), 2);
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }

@@ -43,9 +43,10 @@
 //!   hit and the memory-tier lookup, plus `rulemesh_fast_path_hits_total`;
 //!   the access log writes the same short line under `--access-log`. While
 //!   DEBUG lines are on (which carry the request's span), the router answers.
-//! - **Bounded.** At most [`MAX_ENTRIES`] entries of targets up to
-//!   [`MAX_TARGET`] bytes; an entry holds its headers and a weak reference to
-//!   the model, so it never keeps model bytes the cache has let go.
+//! - **Bounded.** At most [`MAX_ENTRIES`] entries of keys up to
+//!   [`MAX_TARGET`] bytes; an entry holds its response headers (a 200's and
+//!   a 304's, each about a kilobyte) and a weak reference to the model, so
+//!   it never keeps model bytes the cache has let go.
 
 use super::access_log::{log_request, Finished};
 use super::timing::RequestTiming;
@@ -61,7 +62,8 @@ use std::time::Instant;
 
 /// Most entries held (a full map drops an arbitrary entry for a new one).
 pub(crate) const MAX_ENTRIES: usize = 1024;
-/// Longest request target (path and query) kept, in bytes.
+/// Most bytes of a kept key: the request target (path and query) with its
+/// `Accept-Encoding` and `Origin` values.
 pub(crate) const MAX_TARGET: usize = 2048;
 
 /// Marks a model response the fast path may keep: the plan's cache key, the
@@ -162,6 +164,10 @@ impl Answers {
         }
         let accept_encoding = single(h, header::ACCEPT_ENCODING)?;
         let origin = single(h, header::ORIGIN)?;
+        // The whole key is bounded, not only the target: hyper admits header values of hundreds of KB.
+        if target.len() + accept_encoding.map_or(0, <[u8]>::len) + origin.map_or(0, <[u8]>::len) > MAX_TARGET {
+            return None;
+        }
         let phone = super::phone::is_phone(h);
         let hash = self.hasher.hash_one((target, phone, accept_encoding, origin));
         Some(Probe { hash, target, phone, accept_encoding, origin })
