@@ -217,3 +217,40 @@ async fn cors_answers_are_kept_per_origin() {
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn with_api_keys_each_key_has_its_entries_and_fast_answers_are_admitted() {
+    use rulemesh::service::access::{ApiKeySpec, ApiKeys};
+    // Four requests a burst, next to none a second: the fifth is over the rate.
+    let limited = ApiKeySpec { rate_per_sec: Some(0.001), burst: Some(4), ..ApiKeySpec::new("limited", "k-limited") };
+    let keys = ApiKeys(vec![limited, ApiKeySpec::new("open", "k-open")]);
+    let (srv, base) = start(ServeConfig { api_keys: keys, ..config() }).await;
+    let as_key = |key: &str| get("/v1/models/gem.glb?seed=21", &format!("x-api-key: {key}\r\n"));
+    let rendered = raw(&srv, &as_key("k-limited")).await;
+    assert_eq!(line(&rendered, "x-rulemesh-cache"), "miss");
+    let routed = raw(&srv, &as_key("k-limited")).await;
+    assert_eq!(fast_hits(&base).await, 0);
+    assert_eq!(raw(&srv, &as_key("k-limited")).await, routed);
+    assert_eq!(raw(&srv, &as_key("k-limited")).await, routed);
+    assert_eq!(fast_hits(&base).await, 2);
+    // The bucket is empty: the fast path steps aside and the router refuses.
+    let refused = raw(&srv, &as_key("k-limited")).await;
+    assert_eq!(refused.head[0], "HTTP/1.1 429 Too Many Requests", "{refused:?}");
+    assert_eq!(fast_hits(&base).await, 2);
+    // Another key, a wrong key and no key never share the first key's entry.
+    let other = raw(&srv, &as_key("k-open")).await;
+    assert_eq!((line(&other, "x-rulemesh-cache"), fast_hits(&base).await), ("hit", 2));
+    assert_eq!(raw(&srv, &as_key("k-open")).await, other);
+    assert_eq!(fast_hits(&base).await, 3);
+    for bad in [as_key("k-wrong"), get("/v1/models/gem.glb?seed=21", "")] {
+        assert_eq!(raw(&srv, &bad).await.head[0], "HTTP/1.1 401 Unauthorized");
+        assert_eq!(raw(&srv, &bad).await.head[0], "HTTP/1.1 401 Unauthorized");
+    }
+    assert_eq!(fast_hits(&base).await, 3);
+    let text = client().get(format!("{base}/metrics")).send().await.expect("metrics").text().await.expect("text");
+    assert!(text.contains("rulemesh_access_rejections_total{reason=\"rate_limited\"} 1"), "{text}");
+    assert!(text.contains("rulemesh_access_rejections_total{reason=\"unauthorized\"} 4"), "{text}");
+    assert_eq!(srv.state.fast.len(), 2);
+    srv.shutdown();
+    srv.wait().await.expect("clean shutdown");
+}

@@ -20,9 +20,12 @@
 //!   [`super::http::etag_matches`] against the model's ETag). A request
 //!   asking for a fresh render (`Cache-Control`/`Pragma: no-cache`), with a
 //!   body, repeated `Accept-Encoding` or `Origin` headers, or not HTTP/1.1
-//!   always takes the router. So does every request while API keys are
-//!   configured (admission and rate limits are per key) or while spans are
-//!   exported (each request is a span of its trace).
+//!   always takes the router. So does every request while spans are
+//!   exported (each request is a span of its trace). With API keys, the
+//!   key's digest is part of the entry's key (its ceiling plans its
+//!   requests), and every fast answer is admitted first as the router's
+//!   `access` admits (key, rate, concurrency share); a refusal goes to the
+//!   router, which answers and counts it.
 //! - **Filled only by the router's own answer.** An entry is the response
 //!   the router gave to the same key (status, every header in its order),
 //!   kept only when the handler marked it [`Fillable`] and it was a hit of
@@ -88,6 +91,10 @@ pub(crate) struct Probe<'a> {
     phone: bool,
     accept_encoding: Option<&'a [u8]>,
     origin: Option<&'a [u8]>,
+    /// The API key presented, when keys are configured (for admission).
+    presented: Option<&'a str>,
+    /// Its digest (the entry's owner).
+    caller: Option<[u8; 32]>,
 }
 
 /// The inputs of a response, owned (kept from a request the router answers).
@@ -98,16 +105,28 @@ pub(crate) struct Target {
     phone: bool,
     accept_encoding: Option<Box<[u8]>>,
     origin: Option<Box<[u8]>>,
+    caller: Option<[u8; 32]>,
 }
 
 impl Probe<'_> {
     /// The owned copy, for [`Answers::offer`].
     pub(crate) fn to_target(self) -> Target {
-        Target { hash: self.hash, target: self.target.into(), phone: self.phone, accept_encoding: self.accept_encoding.map(Into::into), origin: self.origin.map(Into::into) }
+        Target {
+            hash: self.hash,
+            target: self.target.into(),
+            phone: self.phone,
+            accept_encoding: self.accept_encoding.map(Into::into),
+            origin: self.origin.map(Into::into),
+            caller: self.caller,
+        }
     }
 
     fn is(&self, t: &Target) -> bool {
-        *self.target == *t.target && self.phone == t.phone && self.accept_encoding == t.accept_encoding.as_deref() && self.origin == t.origin.as_deref()
+        *self.target == *t.target
+            && self.phone == t.phone
+            && self.accept_encoding == t.accept_encoding.as_deref()
+            && self.origin == t.origin.as_deref()
+            && self.caller == t.caller
     }
 }
 
@@ -159,9 +178,16 @@ impl Answers {
         if target.len() > MAX_TARGET || !req.body().is_end_stream() || h.contains_key(header::TRANSFER_ENCODING) || super::http::wants_fresh(h) {
             return None;
         }
-        if state.access.enabled() || super::telemetry::tracing_on() || super::access_log::detail_enabled() {
+        if super::telemetry::tracing_on() || super::access_log::detail_enabled() {
             return None;
         }
+        // With API keys, each key has its own entries (its ceiling plans its
+        // requests), named by the key's digest, never by the secret itself.
+        let presented = match state.access.enabled() {
+            true => Some(super::access::presented_key(|n| h.get(n).and_then(|v| v.to_str().ok()))?),
+            false => None,
+        };
+        let caller = presented.map(|k| *blake3::hash(k.as_bytes()).as_bytes());
         let accept_encoding = single(h, header::ACCEPT_ENCODING)?;
         let origin = single(h, header::ORIGIN)?;
         // The whole key is bounded, not only the target: hyper admits header values of hundreds of KB.
@@ -169,8 +195,8 @@ impl Answers {
             return None;
         }
         let phone = super::phone::is_phone(h);
-        let hash = self.hasher.hash_one((target, phone, accept_encoding, origin));
-        Some(Probe { hash, target, phone, accept_encoding, origin })
+        let hash = self.hasher.hash_one((target, phone, accept_encoding, origin, caller));
+        Some(Probe { hash, target, phone, accept_encoding, origin, presented, caller })
     }
 
     /// Answers `req` from its entry when the cache still holds the entry's
@@ -186,6 +212,12 @@ impl Answers {
                 self.forget(probe);
                 return None;
             }
+        };
+        // Admitted as the router's `access` would (key, rate, share), held
+        // until the response is made; a refusal is the router's to answer and count.
+        let admission = match state.access.enabled() {
+            true => Some(state.access.admit(probe.presented, &state.ceiling).ok()?),
+            false => None,
         };
         state.engine.cache().observe_memory_hit(took);
         let timing = RequestTiming { lookup: Lookup { outcome: CacheOutcome::Hit, tier: Some(Tier::Memory), took }, ran: None };
@@ -214,6 +246,7 @@ impl Answers {
         let finished =
             Finished { id, method: "GET", route: chosen.route, status: Some(status.as_u16()), code: None, wall, bytes: Some(bytes as u64), etag, timing: Some(&timing) };
         log_request(&finished, &tracing::Span::none());
+        drop(admission);
         Some(resp)
     }
 
