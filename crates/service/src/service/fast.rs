@@ -83,8 +83,9 @@ pub(crate) struct Fillable {
     pub route: &'static str,
 }
 
-/// The inputs of a response, borrowed from a request.
-#[derive(Debug, Clone, Copy)]
+/// The inputs of a response, borrowed from a request (no `Debug`: it holds
+/// the API key presented).
+#[derive(Clone, Copy)]
 pub(crate) struct Probe<'a> {
     hash: u64,
     target: &'a str,
