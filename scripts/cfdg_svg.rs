@@ -41,6 +41,7 @@ fn main() {
         Err(RenderError::Limit(e)) if e.limit == Limit::Memory => {
             let mut req = request(Format::Svg);
             req.limits.max_memory = BIG_SVG_MEMORY;
+            req.limits.timeout_ms = 120_000;
             render(&src, &req).map(|o| {
                 eprintln!("svg: {e} at the default limits; written under {BIG_SVG_MEMORY} bytes");
                 o
