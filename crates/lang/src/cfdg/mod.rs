@@ -134,9 +134,12 @@ impl FrontEnd for Cfdg {
             // A picture is drawn for its size, as `cfdg -s` draws it.
             (opts.width, opts.height) = (side, side);
         }
-        // Where the output instances, a memoised run records its nodes
-        // and becomes a hierarchy of its distinct subtrees (instanced.rs).
-        opts.record = req.hierarchy && !req.picture_only;
+        // Where the output writes instances (`scene`, instanced glTF: the
+        // pipeline then prices instances, `Downstream::per_instance`), a
+        // memoised run records its nodes and becomes a hierarchy of its
+        // distinct subtrees (instanced.rs). A print and strips keep the flat
+        // tiles, whose one thickness and drawing-order lift a relief needs.
+        opts.record = req.hierarchy && !req.picture_only && req.downstream.per_instance.is_some();
         let picture = eval::render(&g, &opts, budget)?;
         let hierarchy = if opts.record { instanced::hierarchy(&picture, budget)? } else { None };
         // A picture of the design is drawn from its drawing alone.
