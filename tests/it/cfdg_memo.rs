@@ -126,4 +126,14 @@ fn the_262k_square_bush_is_a_scene_of_18_objects() {
     let mut walked = 0u64;
     h.walk(&mut |_| walked += 1);
     assert_eq!(walked, 5095);
+    // The instanced glb is written from the hierarchy and validates.
+    let req = RenderRequest { language: Some(Language::Cfdg), format: Format::Glb, limits: Limits { max_primitives: 5095, ..Limits::default() }, on_limit: OnLimit::Truncate, ..RenderRequest::default() };
+    let out = render(&src, &req).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(out.primitives, 5095);
+    let dir = crate::common::tempdir();
+    let glb = dir.path().join("bush.glb");
+    std::fs::write(&glb, &out.bytes).expect("writes");
+    for (errors, _, report) in crate::common::validate_gltf(&[glb]) {
+        assert_eq!(errors, 0, "{report}");
+    }
 }
