@@ -137,3 +137,35 @@ fn the_262k_square_bush_is_a_scene_of_18_objects() {
         assert_eq!(errors, 0, "{report}");
     }
 }
+
+#[test]
+fn designs_that_are_not_context_free_take_the_general_path() {
+    let dir = crate::common::tempdir();
+    let cases = [
+        // Rule choice by weight draws on the shape's stream.
+        ("two_rules", "startshape B\nshape B\nrule { SQUARE [] B [y 1 s 0.8] }\nrule { CIRCLE [] B [y 1 s 0.8] }\n"),
+        // A random adjustment.
+        ("random", "startshape B\nshape B { SQUARE [] B [y 1 r rand(-9, 9) s 0.8] }\n"),
+        // A variable in an adjustment.
+        ("variable", "k = 0.8\nstartshape B\nshape B { SQUARE [] B [y 1 s k] }\n"),
+        // Parameters.
+        ("params", "startshape B(1)\nshape B(number n) { SQUARE [] B(n + 1) [y 1 s 0.8] }\n"),
+        // A loop.
+        ("loop", "startshape B\nshape B { loop 2 [r 90] SQUARE [] B [y 1 s 0.5] }\n"),
+        // A tiled design.
+        ("tiled", "CF::Tile = [s 3]\nstartshape B\nshape B { SQUARE [] B [y 1 s 0.8] }\n"),
+        // Symmetry.
+        ("symmetric", "CF::Symmetry = CF::Cyclic, 3\nstartshape B\nshape B { SQUARE [] B [y 1 s 0.8] }\n"),
+    ];
+    for (name, src) in cases {
+        let f = dir.path().join(format!("{name}.cfdg"));
+        std::fs::write(&f, src).expect("writes");
+        assert!(!memoised(&f), "{name} must not be memoised");
+        let (_, svg) = svg(&f, &eval::Options::default(), Limits { max_primitives: 2000, ..Limits::default() });
+        assert!(svg.is_ok() || svg.as_ref().is_err_and(|e| e.contains("primitives")), "{name}: {svg:?}");
+    }
+    // The same bush without any of these is.
+    let f = dir.path().join("plain.cfdg");
+    std::fs::write(&f, "startshape B\nshape B { SQUARE [] B [y 1 s 0.8 b 0.1] }\n").expect("writes");
+    assert!(memoised(&f));
+}
