@@ -58,6 +58,22 @@ impl Pending {
         pop_heap(&mut self.heap, &less);
         let (_, slot) = self.heap.pop()?;
         self.free.push(slot);
-        self.slots.get_mut(slot as usize).and_then(Option::take)
+        let s = self.slots.get_mut(slot as usize).and_then(Option::take);
+        self.prefetch_top();
+        s
+    }
+
+    /// Asks the cache for the slot of the shape now on top, usually the
+    /// next one out: slots are met in area order, scattered over a large
+    /// array, and fetching one cold was a tenth of the bush benchmark.
+    fn prefetch_top(&self) {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(next) = self.heap.first().and_then(|&(_, i)| self.slots.get(i as usize)) {
+            use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+            // SAFETY: `_mm_prefetch` needs SSE, which every x86_64 target
+            // has (it is in the baseline), and is a hint that never reads
+            // or faults; the pointer comes from a live reference anyway.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>((next as *const Option<Unfinished>).cast::<i8>()) };
+        }
     }
 }
