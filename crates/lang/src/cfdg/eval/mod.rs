@@ -135,10 +135,7 @@ pub struct Picture {
 struct Unfinished {
     shape: usize,
     state: State,
-    area: f64,
     params: Vec<f64>,
-    /// Its node in a recorded memoised expansion (`run/memo.rs`), else 0.
-    node: u32,
 }
 
 /// A compiled rule set: rules of each shape with cumulative weights.

@@ -339,7 +339,7 @@ impl Renderer<'_> {
             if !self.bounds.valid() || area * self.scale_area >= self.min_area {
                 self.budget.reserve_memory(SHAPE_BYTES)?;
                 self.budget.reserve_memory(8 * params.len() as u64)?;
-                self.unfinished.push(Unfinished { shape, state, area, params, node: 0 });
+                self.unfinished.push(area, Unfinished { shape, state, params });
             }
             return Ok(());
         }

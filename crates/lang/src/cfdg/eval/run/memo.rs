@@ -48,7 +48,8 @@
 
 use super::super::adjust::{prepare, term};
 use super::super::state::{Affine, State};
-use super::super::{Unfinished, FILL};
+use super::super::pending::Pending;
+use super::super::FILL;
 use super::{Renderer, SHAPE_BYTES};
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, Element, Replacement, Term};
@@ -203,7 +204,11 @@ impl Renderer<'_> {
     }
 
     /// Expands `start` from `init` by the compiled bodies of `x.plan`, in
-    /// cfdg's order and with the general loop's charges (`expand`).
+    /// cfdg's order and with the general loop's charges (`expand`). When no
+    /// edge changes anything but the transform, a waiting shape keeps only
+    /// its transform (the rest is the start state's): a quarter of the
+    /// bytes per slot, the slots being fetched in area order, all over a
+    /// large array.
     pub(super) fn memo_expand(&mut self, x: &mut Expansion, start: usize, init: State) -> Result<(), EvalError> {
         x.start_shape = start;
         x.start = Some(init);
@@ -211,29 +216,47 @@ impl Renderer<'_> {
         // The finished shapes' room, up front: at most what the primitive
         // and shape limits let finish (capped at 2²⁰; pages are touched only
         // as shapes finish), so 262 143 shapes of 152 bytes are not copied
-        // by doubling (a tenth of the bush benchmark in `memmove` and faults).
+        // by doubling.
         let room = self.budget.limits().max_primitives.saturating_sub(self.budget.primitives()).saturating_add(1).min(self.max_shapes).min(1 << 20);
         self.finished.reserve(usize::try_from(room).unwrap_or(0));
+        if x.plan.bodies.iter().flatten().all(|e| e.rest.is_empty()) {
+            self.memo_run::<Affine>(x, start, init)
+        } else {
+            self.memo_run::<State>(x, start, init)
+        }
+    }
+
+    fn memo_run<C: Carried>(&mut self, x: &mut Expansion, start: usize, init: State) -> Result<(), EvalError> {
+        let mut waiting: Pending<Waiting<C>> = Pending::default();
+        let result = self.memo_loop(x, &mut waiting, start, init);
+        // What still waits is given back, as `finish` gives back the general loop's.
+        self.budget.release_memory(SHAPE_BYTES * waiting.len() as u64);
+        result
+    }
+
+    fn memo_loop<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, start: usize, init: State) -> Result<(), EvalError> {
         let leaf = self.is_leaf(start);
-        x.root = self.memo_process(x, start, leaf, init)?;
-        while !self.unfinished.is_empty() {
-            if self.shape_count.max(self.unfinished.len() as u64) >= self.max_shapes {
+        x.root = self.memo_process(x, waiting, start, leaf, init)?;
+        while !waiting.is_empty() {
+            if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
                 break;
             }
-            let Some(s) = self.unfinished.pop() else { break };
-            self.budget.release_memory(SHAPE_BYTES + 8 * s.params.len() as u64);
+            let Some(w) = waiting.pop() else { break };
+            self.budget.release_memory(SHAPE_BYTES);
             self.budget.charge_step()?;
-            let edges = x.plan.bodies[s.shape].len();
+            let state = w.carried.state(&init);
+            let shape = w.shape as usize;
+            let edges = x.plan.bodies[shape].len();
             if x.recorded {
                 self.budget.reserve_memory(4 * edges as u64)?;
-                x.first[s.node as usize] = x.outcomes.len() as u32;
+                x.first[w.node as usize] = x.outcomes.len() as u32;
             }
             for k in 0..edges {
-                let e = &x.plan.bodies[s.shape][k];
-                let (shape, leaf) = (e.shape, e.leaf);
-                let mut child = s.state;
+                let e = &x.plan.bodies[shape][k];
+                let (target, leaf) = (e.shape, e.leaf);
+                let mut child = state;
                 e.apply(&mut child)?;
-                let out = self.memo_process(x, shape, leaf, child)?;
+                let out = self.memo_process(x, waiting, target, leaf, child)?;
                 if x.recorded {
                     x.outcomes.push(out);
                 }
@@ -244,7 +267,7 @@ impl Renderer<'_> {
 
     /// `process` for a compiled design: finishes a primitive or keeps a
     /// shape big enough to expand, and says which.
-    fn memo_process(&mut self, x: &mut Expansion, shape: usize, leaf: bool, state: State) -> Result<u32, EvalError> {
+    fn memo_process<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, shape: usize, leaf: bool, state: State) -> Result<u32, EvalError> {
         if !state.is_finite() {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
@@ -264,9 +287,44 @@ impl Renderer<'_> {
             self.budget.reserve_memory(SHAPE_BYTES)?;
             self.budget.reserve_memory(0)?;
             let node = x.node(shape);
-            self.unfinished.push(Unfinished { shape, state, area, params: Vec::new(), node });
+            waiting.push(area, Waiting { shape: shape as u32, node, carried: C::of(&state) });
             return Ok(if x.recorded { node } else { NONE });
         }
         Ok(NONE)
     }
+}
+
+/// What a waiting shape keeps of its state.
+trait Carried: Copy {
+    fn of(s: &State) -> Self;
+    /// The whole state again, the rest taken from `base` (the start state).
+    fn state(&self, base: &State) -> State;
+}
+
+impl Carried for State {
+    fn of(s: &State) -> Self {
+        *s
+    }
+    fn state(&self, _: &State) -> State {
+        *self
+    }
+}
+
+/// Only the transform: every other part of every state is the start's
+/// when no edge has a term left after folding (all of them geometric).
+impl Carried for Affine {
+    fn of(s: &State) -> Self {
+        s.transform
+    }
+    fn state(&self, base: &State) -> State {
+        State { transform: *self, ..*base }
+    }
+}
+
+/// A shape waiting to be expanded: its shape, its recorded node and its state.
+#[derive(Clone, Copy)]
+struct Waiting<C> {
+    shape: u32,
+    node: u32,
+    carried: C,
 }
