@@ -41,6 +41,10 @@ use std::collections::HashMap;
 const NONE: u32 = u32::MAX;
 const LEAF: u32 = 1 << 31;
 
+/// An edge's translation (x, y), rotation angle and uniform scale, and
+/// for a primitive its slot among its body's `m` primitives: (k, m).
+type Placement = (f64, f64, f64, f64, u32, u32);
+
 /// Rotation angle and uniform scale of a non-mirrored similarity, else `None`.
 fn similarity(m: &Affine) -> Option<(f64, f64)> {
     let s = m.sx.hypot(m.shy);
@@ -75,7 +79,7 @@ pub fn hierarchy(p: &Picture, budget: &mut Budget) -> Result<Option<Hierarchy>, 
     let Some((start_angle, start_scale)) = similarity(&start.transform) else { return Ok(None) };
     // Every edge a similarity that leaves z alone; its placement and, for
     // a primitive, its slot among the body's primitives.
-    let mut place: Vec<Vec<Option<(f64, f64, f64, f64, u32, u32)>>> = Vec::with_capacity(x.plan.bodies.len());
+    let mut place: Vec<Vec<Option<Placement>>> = Vec::with_capacity(x.plan.bodies.len());
     for body in &x.plan.bodies {
         let m = body.iter().filter(|e| e.leaf).count() as u32;
         let mut k = 0;
