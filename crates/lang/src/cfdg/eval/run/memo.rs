@@ -213,11 +213,12 @@ impl Renderer<'_> {
         x.start_shape = start;
         x.start = Some(init);
         x.root = NONE;
-        // The finished shapes' room, up front: at most what the primitive
-        // and shape limits let finish (capped at 2²⁰; pages are touched only
+        // The finished shapes' room, up front: at most what the primitive,
+        // shape and memory limits let finish (capped at 2²⁰; pages are touched only
         // as shapes finish), so 262 143 shapes of 152 bytes are not copied
         // by doubling.
-        let room = self.budget.limits().max_primitives.saturating_sub(self.budget.primitives()).saturating_add(1).min(self.max_shapes).min(1 << 20);
+        let memory = self.budget.limits().max_memory.saturating_sub(self.budget.memory()) / SHAPE_BYTES;
+        let room = self.budget.limits().max_primitives.saturating_sub(self.budget.primitives()).saturating_add(1).min(self.max_shapes).min(memory).min(1 << 20);
         self.finished.reserve(usize::try_from(room).unwrap_or(0));
         if x.plan.bodies.iter().flatten().all(|e| e.rest.is_empty()) {
             self.memo_run::<Affine>(x, start, init)
