@@ -69,19 +69,37 @@ fn rulemesh_svg(file: &Path, var: &str) -> String {
 
 /// Asserts the two SVGs hold the same shapes within the tolerances.
 fn assert_same(name: &str, cf: &str, rm: &str) {
-    let (a, b) = (shapes(cf), shapes(rm));
-    assert!(!a.is_empty(), "{name}: cfdg drew nothing");
-    assert_eq!(a.len(), b.len(), "{name}: shape count");
-    for (i, (x, y)) in a.iter().zip(&b).enumerate() {
-        assert_eq!(x.0, y.0, "{name}: shape {i} kind");
-        for k in 0..6 {
-            assert!((x.3[k] - y.3[k]).abs() <= 1e-4 * f64::from(SIZE), "{name}: shape {i} transform {:?} vs {:?}", x.3, y.3);
-        }
-        for k in 0..3 {
-            assert!(x.1[k].abs_diff(y.1[k]) <= 1, "{name}: shape {i} colour {:?} vs {:?}", x.1, y.1);
-        }
-        assert!((x.2 - y.2).abs() <= 1.0 / 255.0 + 1e-6, "{name}: shape {i} alpha");
+    if let Some(why) = difference(name, cf, rm, SIZE) {
+        panic!("{why}");
     }
+}
+
+/// The first way rulemesh's SVG `rm` differs from cfdg's `cf` beyond the
+/// issue's tolerances (count, kind and order; transforms within 10⁻⁴ of the
+/// picture's size, `size` pixels; colours within one 8-bit step), or `None`.
+pub(crate) fn difference(name: &str, cf: &str, rm: &str, size: u32) -> Option<String> {
+    let (a, b) = (shapes(cf), shapes(rm));
+    if a.is_empty() {
+        return Some(format!("{name}: cfdg drew nothing"));
+    }
+    if a.len() != b.len() {
+        return Some(format!("{name}: {} shapes, cfdg {}", b.len(), a.len()));
+    }
+    for (i, (x, y)) in a.iter().zip(&b).enumerate() {
+        if x.0 != y.0 {
+            return Some(format!("{name}: shape {i} kind {} vs {}", x.0, y.0));
+        }
+        if (0..6).any(|k| (x.3[k] - y.3[k]).abs() > 1e-4 * f64::from(size)) {
+            return Some(format!("{name}: shape {i} transform {:?} vs {:?}", x.3, y.3));
+        }
+        if (0..3).any(|k| x.1[k].abs_diff(y.1[k]) > 1) {
+            return Some(format!("{name}: shape {i} colour {:?} vs {:?}", x.1, y.1));
+        }
+        if (x.2 - y.2).abs() > 1.0 / 255.0 + 1e-6 {
+            return Some(format!("{name}: shape {i} alpha {} vs {}", x.2, y.2));
+        }
+    }
+    None
 }
 
 fn example(name: &str) -> PathBuf {

@@ -8,7 +8,7 @@
 //! installed by `scripts/test`).
 
 #[path = "../../scripts/png_compare.rs"]
-mod png_compare;
+pub(crate) mod png_compare;
 
 use crate::common::{run, tempdir};
 use rulemesh::core::{Budget, Limits, ParamValue};
@@ -28,7 +28,7 @@ fn example(name: &str) -> PathBuf {
 }
 
 /// cfdg's output of `file` at variation `var` with extra arguments (`-V`, `-s N`).
-fn cfdg(file: &Path, var: &str, args: &[&str], ext: &str) -> Vec<u8> {
+pub(crate) fn cfdg(file: &Path, var: &str, args: &[&str], ext: &str) -> Vec<u8> {
     let dir = tempdir();
     let out = dir.path().join(format!("c.{ext}"));
     let status = Command::new("cfdg")
@@ -43,20 +43,20 @@ fn cfdg(file: &Path, var: &str, args: &[&str], ext: &str) -> Vec<u8> {
 }
 
 /// A CFDG request for `file` at variation `var` in `format`.
-fn request(file: &Path, var: &str, format: Format) -> RenderRequest {
+pub(crate) fn request(file: &Path, var: &str, format: Format) -> RenderRequest {
     let mut req = RenderRequest { language: Some(Language::Cfdg), format, script_dir: file.parent().map(Path::to_path_buf), ..RenderRequest::default() };
     req.params.insert("variation".into(), ParamValue::Text(var.into()));
     req
 }
 
 /// The background of `file`'s drawing (what "foreground" is measured against).
-fn background(file: &Path, var: &str, size: u32) -> [u8; 4] {
+pub(crate) fn background(file: &Path, var: &str, size: u32) -> [u8; 4] {
     let src = std::fs::read(file).expect("read");
     let g = parse_checked_in(&src, file.parent()).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
     let opts = eval::Options { width: size, height: size, variation: variation::from_code(var).expect("code"), ..eval::Options::default() };
     let mut budget = Budget::new(Limits::default());
     let p = eval::render(&g, &opts, &mut budget).expect("renders");
-    drawing::of(&p, &mut budget).expect("fits").background
+    drawing::background(&p)
 }
 
 /// `format=svg` at its defaults is cfdg -V's file at its defaults, byte for byte.

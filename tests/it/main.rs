@@ -10,6 +10,7 @@ mod cfdg;
 mod cfdg_limits;
 mod cfdg_memo;
 mod cfdg_pictures;
+mod cfdg_examples;
 mod cli;
 mod c_decoder;
 mod c_scene;

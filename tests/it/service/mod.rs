@@ -19,6 +19,7 @@ mod library;
 mod print_report;
 mod options;
 mod phone;
+mod fast;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).

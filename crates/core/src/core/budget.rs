@@ -11,6 +11,13 @@ use std::time::{Duration, Instant};
 
 /// The limits a request runs under. Defaults suit a phone icon; each may be
 /// raised by a request up to [`Limits::ceiling`].
+///
+/// The default primitive limit is 1,000,000, the shapes of Context Free's
+/// own performance test (`tests/perftest.cfdg`, which cfdg draws with no
+/// limit of its own; docs/cfdg.md). A flat 2D shape is a mark of about a
+/// hundred bytes, so a million of them fit the default memory limit; for
+/// the 3D languages the triangle limit (an MDG box is 12 triangles) and the
+/// memory limit bind long before the primitive limit does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Limits {
@@ -35,7 +42,7 @@ impl Default for Limits {
     fn default() -> Self {
         Limits {
             max_depth: 1_000,
-            max_primitives: 200_000,
+            max_primitives: 1_000_000,
             max_triangles: 2_000_000,
             max_memory: 256 * 1024 * 1024,
             timeout_ms: 10_000,

@@ -19,34 +19,77 @@
 //! step is integer arithmetic or `f32` adds and multiplies with no SIMD,
 //! so the same drawing gives the same bits everywhere.
 //!
+//! Big drawings are filled in parallel horizontal bands ([`render`]), with
+//! the same bits as one band.
+//!
 //! Budget: the canvas is reserved before it is allocated; every mark costs
 //! a step plus one per [`PIXELS_PER_STEP`] pixels of its box on the canvas,
-//! charged before it is filled (charging checks the deadline).
+//! all charged in drawing order before any is filled (charging checks the
+//! deadline), and each band looks at the deadline as it fills.
 
 use super::{Image, PreviewError, PreviewOptions};
-use crate::core::budget::Budget;
-use crate::geom::curves::{flatten_cubic, flatten_quad};
-use crate::model::drawing::{Drawing, DrawnPath, MarkKind, PathStyle, Segment};
-use zeno::{Cap, Command, Fill, Join, Mask, Point, Stroke, Style, Transform};
+use crate::core::budget::{Budget, LimitExceeded};
+use crate::model::drawing::{Drawing, Mark, MarkKind};
+use zeno::{Command, Fill, Mask, Style, Transform};
+
+mod outline;
+use outline::{outline, path_outline};
 
 /// Bounding-box pixels per budget step (the 3D rasteriser charges 64
 /// samples per step; a mask pixel is one cell's work or less).
 pub(crate) const PIXELS_PER_STEP: u64 = 256;
 
 /// Bytes per pixel: the premultiplied canvas, its straight-alpha copy, and
-/// at most one mask byte.
-const BYTES_PER_PIXEL: u64 = 9;
+/// at most one mask byte per band.
+const BYTES_PER_PIXEL: u64 = 8;
 
 /// Marks with a coordinate farther than this many pixels from the canvas
 /// are not drawn: the rasteriser's cells are 24.8 fixed point.
 const FAR: f64 = 4_000_000.0;
 
+/// Drawings with fewer marks are filled on the calling thread: a band
+/// thread costs more than it saves.
+const BANDS_FROM: usize = 8192;
+
+/// At most this many bands (threads) fill one picture.
+const MOST_BANDS: usize = 4;
+
+/// One mark to fill, planned: which mark, and its box on the canvas in
+/// whole pixels (left, top, width, height), or the whole canvas for a fill.
+#[derive(Clone, Copy)]
+struct Job {
+    mark: u32,
+    left: u32,
+    top: u32,
+    width: u32,
+    height: u32,
+}
+
+/// Bytes accounted per planned mark.
+const JOB_BYTES: u64 = std::mem::size_of::<Job>() as u64;
+
 /// Draws `drawing` at the request's `size` (the front end made its canvas
 /// that size, `BuildRequest::canvas`; another canvas is scaled to fit), over
 /// the request's `background` when it names one, else the drawing's own
 /// (`CF::Background`, white by default).
+///
+/// Two passes. The first, on the calling thread, finds every mark's box
+/// and charges its steps in drawing order, as a fill would. The second
+/// fills the marks in parallel horizontal bands of the canvas (for a
+/// drawing of at least [`BANDS_FROM`] marks): each band takes every mark
+/// whose box meets it, in drawing order, rasterises its whole mask exactly
+/// as a single band would, and blends only its own rows. Every pixel lies
+/// in one band and sees the same blends in the same order with the same
+/// coverage, so the picture is the same bits for any number of bands.
 pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) -> Result<Image, PreviewError> {
+    let bands = if drawing.marks.len() < BANDS_FROM { 1 } else { std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, MOST_BANDS) };
+    render_in(drawing, options, budget, bands)
+}
+
+/// [`render`] with `bands` bands (at least one).
+fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, bands: usize) -> Result<Image, PreviewError> {
     options.validate().map_err(PreviewError::BadOptions)?;
+    let bands = bands.max(1);
     let size = options.size;
     // A square drawing fills the square picture; another (a tiled design's
     // canvas, the shape of its tile) keeps its shape, its longer side `size`.
@@ -62,36 +105,48 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         (side(drawing.width), side(drawing.height))
     };
     let pixels = u64::from(width) * u64::from(height);
-    let bytes = pixels.saturating_mul(BYTES_PER_PIXEL);
+    let bytes = pixels.saturating_mul(BYTES_PER_PIXEL + bands as u64).saturating_add(JOB_BYTES.saturating_mul(drawing.marks.len() as u64));
     budget.reserve_memory(bytes)?;
+    let jobs = &plan(drawing, fit, (width, height), budget)?;
     let bg = match options.background {
         Some([r, g, b]) => [r, g, b, 255],
         None => drawing.background,
     };
     let mut canvas: Vec<[u8; 4]> = vec![premultiply(bg); pixels as usize];
-    let mut path: Vec<Command> = Vec::with_capacity(16);
-    let mut mask: Vec<u8> = Vec::new();
-    // zeno's rasteriser without scratch memory builds (and zeroes) a
-    // 16 KiB cell array on the stack for every mark; kept scratch memory
-    // gives the same coverage without it, which halved the preview of
-    // the 262,143-square bush (docs/benchmarks.md).
-    let mut scratch = zeno::Scratch::new();
-    for mark in &drawing.marks {
+    let rows = (height as usize).div_ceil(bands).max(1);
+    let budget_ref: &Budget = budget;
+    let failed: Option<LimitExceeded> = if bands == 1 {
+        fill(drawing, jobs, fit, width, 0, &mut canvas, budget_ref).err()
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = canvas.chunks_mut(rows * width as usize).enumerate().map(|(k, band)| scope.spawn(move || fill(drawing, jobs, fit, width, (k * rows) as u32, band, budget_ref))).collect();
+            // A band thread that panicked is a bug; it ends this render with the deadline's error rather than taking the worker down.
+            handles.into_iter().map(|h| h.join().unwrap_or_else(|_| Err(budget_ref.deadline_stop().error()))).find_map(Result::err)
+        })
+    };
+    if let Some(e) = failed {
+        return Err(e.into());
+    }
+    let rgba: Vec<u8> = canvas.iter().flat_map(|&p| demultiply(p)).collect();
+    drop(canvas);
+    budget.release_memory(bytes);
+    Ok(Image { size: width, height, rgba })
+}
+
+/// The first pass: each mark's box on the canvas, its steps charged in
+/// drawing order (a mark costs a step plus one per [`PIXELS_PER_STEP`]
+/// pixels of its box; a fill, of the canvas), and the marks to fill.
+fn plan(drawing: &Drawing, fit: f64, (width, height): (u32, u32), budget: &mut Budget) -> Result<Vec<Job>, PreviewError> {
+    let pixels = u64::from(width) * u64::from(height);
+    let mut jobs = Vec::with_capacity(drawing.marks.len());
+    let (mut path, mut points) = (Vec::with_capacity(16), Vec::with_capacity(16));
+    for (i, mark) in drawing.marks.iter().enumerate() {
         if mark.kind == MarkKind::Fill {
-            // AGG's `renderer_base::fill`: the colour blended over every pixel.
             budget.charge_steps(1 + pixels / PIXELS_PER_STEP)?;
-            let [r, g, b, a] = mark.rgba;
-            for px in canvas.iter_mut() {
-                blend(px, [r, g, b], mul(255, a));
-            }
+            jobs.push(Job { mark: i as u32, left: 0, top: 0, width, height });
             continue;
         }
-        let m = mark.raster.map(|v| v * fit);
-        let (corners, style, transform) = match (mark.kind, drawing.paths.get(mark.path as usize)) {
-            (MarkKind::Path, Some(p)) => path_outline(p, &m, &mut path),
-            (MarkKind::Path, None) => continue,
-            (kind, _) => (outline(kind, &m, &mut path), Style::Fill(Fill::NonZero), None),
-        };
+        let Some((corners, ..)) = shape(drawing, mark, fit, &mut path, &mut points) else { continue };
         let Some((x0, y0, x1, y1)) = corners else { continue };
         // The box on the canvas, in whole pixels.
         let (bx0, by0) = (x0.floor().max(0.0), y0.floor().max(0.0));
@@ -101,33 +156,77 @@ pub fn render(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget) 
         if w <= 0.0 || h <= 0.0 || [x0, y0, x1, y1].iter().any(|v| v.abs() > FAR) {
             continue;
         }
-        let (w, h) = (w as u32, h as u32);
+        jobs.push(Job { mark: i as u32, left: bx0 as u32, top: by0 as u32, width: w as u32, height: h as u32 });
+    }
+    Ok(jobs)
+}
+
+/// A mark's outline (into `path`), style and pen map at the picture's
+/// fit; `None` for a path mark whose path is missing.
+fn shape(drawing: &Drawing, mark: &Mark, fit: f64, path: &mut Vec<Command>, points: &mut Vec<(f64, f64)>) -> Option<outline::Outline> {
+    let m = mark.raster.map(|v| v * fit);
+    match (mark.kind, drawing.paths.get(mark.path as usize)) {
+        (MarkKind::Path, Some(p)) => Some(path_outline(p, &m, path)),
+        (MarkKind::Path, None) => None,
+        (kind, _) => Some((outline(kind, &m, path, points), Style::Fill(Fill::NonZero), None)),
+    }
+}
+
+/// The second pass over one band: the canvas rows `top..` in `band`
+/// (whole rows of `width` pixels), every planned mark meeting them filled
+/// in order. The deadline is looked at every 1,024 marks.
+fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &mut [[u8; 4]], budget: &Budget) -> Result<(), LimitExceeded> {
+    let bottom = top + (band.len() / width.max(1) as usize) as u32;
+    let (mut path, mut points, mut mask) = (Vec::with_capacity(16), Vec::with_capacity(16), Vec::new());
+    // zeno's rasteriser without scratch memory builds (and zeroes) a
+    // 16 KiB cell array on the stack for every mark; kept scratch memory
+    // gives the same coverage without it, which halved the preview of
+    // the 262,143-square bush (docs/benchmarks.md).
+    let mut scratch = zeno::Scratch::new();
+    for (n, job) in jobs.iter().enumerate() {
+        if n % 1024 == 1023 {
+            budget.check_deadline()?;
+        }
+        if job.top >= bottom || job.top + job.height <= top {
+            continue;
+        }
+        let Some(mark) = drawing.marks.get(job.mark as usize) else { continue };
+        let [r, g, b, a] = mark.rgba;
+        if mark.kind == MarkKind::Fill {
+            // AGG's `renderer_base::fill`: the colour blended over every pixel.
+            for px in band.iter_mut() {
+                blend(px, [r, g, b], mul(255, a));
+            }
+            continue;
+        }
+        let Some((_, style, transform)) = shape(drawing, mark, fit, &mut path, &mut points) else { continue };
+        let (w, h) = (job.width, job.height);
+        let (bx0, by0) = (f64::from(job.left), f64::from(job.top));
         mask.clear();
         mask.resize(w as usize * h as usize, 0);
-        let mut job = Mask::with_scratch(&path, &mut scratch);
-        job.size(w, h).style(style);
+        let mut fill = Mask::with_scratch(&path, &mut scratch);
+        fill.size(w, h).style(style);
         match transform {
             // The box offset goes into the map, applied after the pen.
-            Some(t) => job.transform(Some(Transform::new(t.xx, t.xy, t.yx, t.yy, t.x - bx0 as f32, t.y - by0 as f32))),
-            None => job.offset(zeno::Vector::new(-bx0 as f32, -by0 as f32)),
+            Some(t) => fill.transform(Some(Transform::new(t.xx, t.xy, t.yx, t.yy, t.x - bx0 as f32, t.y - by0 as f32))),
+            None => fill.offset(zeno::Vector::new(-bx0 as f32, -by0 as f32)),
         };
-        job.render_into(&mut mask, None);
-        let [r, g, b, a] = mark.rgba;
-        let (left, top) = (bx0 as usize, by0 as usize);
+        fill.render_into(&mut mask, None);
+        let left = job.left as usize;
         for (row, covers) in mask.chunks_exact(w as usize).enumerate() {
-            let start = (top + row) * width as usize + left;
-            for (px, &cover) in canvas[start..start + w as usize].iter_mut().zip(covers) {
+            let y = job.top + row as u32;
+            if y < top || y >= bottom {
+                continue;
+            }
+            let start = (y - top) as usize * width as usize + left;
+            for (px, &cover) in band[start..start + w as usize].iter_mut().zip(covers) {
                 if cover != 0 {
                     blend(px, [r, g, b], mul(cover, a));
                 }
             }
         }
     }
-    drop(mask);
-    let rgba: Vec<u8> = canvas.iter().flat_map(|&p| demultiply(p)).collect();
-    drop(canvas);
-    budget.release_memory(bytes);
-    Ok(Image { size: width, height, rgba })
+    Ok(())
 }
 
 /// `a·b/255`, rounded as AGG's `int8u` multiply (`agg::rgba8::multiply`).
@@ -159,127 +258,38 @@ fn blend(px: &mut [u8; 4], rgb: [u8; 3], alpha: u8) {
     px[3] = alpha.saturating_add(mul(px[3], keep));
 }
 
-/// The outline of path `p` placed by `m` into `cmds`, with its style and
-/// the map zeno applies after its pen (a stroke not `iso` is drawn with a
-/// pen in the path's own units, then mapped, as AGG's
-/// `conv_transform<conv_stroke<…>>` in `pathIterator`), and its box on the
-/// canvas. Curves are flattened here as AGG flattens them for drawing
-/// (approximation scale: pixels per unit), so zeno gets cfdg's polygons.
-type Outline = (Option<(f64, f64, f64, f64)>, Style<'static>, Option<Transform>);
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-fn path_outline(p: &DrawnPath, m: &[f64; 6], cmds: &mut Vec<Command>) -> Outline {
-    cmds.clear();
-    let none = (None, Style::Fill(Fill::NonZero), None);
-    if !m.iter().all(|v| v.is_finite()) {
-        return none;
-    }
-    let at = |(x, y): (f64, f64)| (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5]);
-    let det = (m[0] * m[3] - m[1] * m[2]).abs();
-    let scale = det.sqrt();
-    let (local, half, style) = match p.style {
-        PathStyle::Fill { even_odd } => (false, 0.0, Style::Fill(if even_odd { Fill::EvenOdd } else { Fill::NonZero })),
-        PathStyle::Stroke { width, iso, join, cap, miter_limit } => {
-            let w = if iso { width * scale } else { width };
-            let mut s = Stroke::new(w as f32);
-            s.join(match join {
-                2 => Join::Round,
-                3 => Join::Bevel,
-                _ => Join::Miter,
-            })
-            .cap(match cap {
-                1 => Cap::Square,
-                2 => Cap::Round,
-                _ => Cap::Butt,
-            })
-            .miter_limit(miter_limit as f32);
-            (!iso, w / 2.0 * miter_limit.max(1.0) * if iso { 1.0 } else { m[0].hypot(m[1]).max(m[2].hypot(m[3])) }, Style::Stroke(s))
+    /// 9,000 marks of every kind but paths, large and small, overlapping
+    /// and translucent, some off the canvas: bands of 2, 3 and 4 give the
+    /// single band's bits.
+    #[test]
+    fn bands_give_the_same_bits_as_one() {
+        let kinds = [MarkKind::Square, MarkKind::Circle, MarkKind::Triangle];
+        let mut marks = Vec::new();
+        let mut x = 12345u64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % 10_000) as f64 / 10_000.0
+        };
+        for i in 0..9_000 {
+            let (s, r) = (1.0 + 60.0 * next().powi(3), 6.3 * next());
+            let m = [s * r.cos(), s * r.sin(), -s * r.sin(), s * r.cos(), 220.0 * next() - 10.0, 220.0 * next() - 10.0];
+            let rgba = [(255.0 * next()) as u8, (255.0 * next()) as u8, (255.0 * next()) as u8, 40 + (200.0 * next()) as u8];
+            let kind = if i == 4_000 { MarkKind::Fill } else { kinds[i % 3] };
+            marks.push(Mark { kind, matrix: m, raster: m, rgba, path: 0 });
         }
-    };
-    // Points in the frame the pen works in: the path's units, or pixels.
-    let frame = |q: (f64, f64)| if local { q } else { at(q) };
-    let approx = if local { scale.max(1e-9) } else { 1.0 };
-    let mut pts: Vec<(f64, f64)> = Vec::new();
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-    let mut last = (0.0, 0.0);
-    let pt = |(x, y): (f64, f64)| Point::new(x as f32, y as f32);
-    for s in &p.segments {
-        pts.clear();
-        match *s {
-            Segment::MoveTo([x, y]) => {
-                last = frame((x, y));
-                cmds.push(Command::MoveTo(pt(last)));
-                pts.push(last);
-            }
-            Segment::LineTo([x, y]) => pts.push(frame((x, y))),
-            Segment::QuadTo([cx, cy], [x, y]) => flatten_quad(last, frame((cx, cy)), frame((x, y)), approx, &mut pts),
-            Segment::CubicTo([ax, ay], [bx, by], [x, y]) => flatten_cubic(last, frame((ax, ay)), frame((bx, by)), frame((x, y)), approx, &mut pts),
-            Segment::Close => cmds.push(Command::Close),
-        }
-        if !matches!(s, Segment::MoveTo(_) | Segment::Close) {
-            cmds.extend(pts.iter().map(|&q| Command::LineTo(pt(q))));
-        }
-        if let Some(&q) = pts.last() {
-            last = q;
-        }
-        for &q in &pts {
-            let (x, y) = if local { at(q) } else { q };
-            (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
+        let d = Drawing { width: 200, height: 200, background: [255, 255, 255, 255], marks, paths: Vec::new() };
+        let opts = PreviewOptions { size: 200, ..PreviewOptions::default() };
+        let draw = |bands| render_in(&d, &opts, &mut Budget::new(crate::core::Limits::default()), bands).expect("draws").rgba;
+        let one = draw(1);
+        assert!(one.chunks(4).filter(|p| p != &[255, 255, 255, 255]).count() > 30_000, "the marks cover the canvas");
+        for bands in [2, 3, 4] {
+            assert!(draw(bands) == one, "{bands} bands differ from one");
         }
     }
-    if cmds.is_empty() || !(x0 <= x1 && y0 <= y1) {
-        return none;
-    }
-    let transform = local.then(|| Transform::new(m[0] as f32, m[1] as f32, m[2] as f32, m[3] as f32, m[4] as f32, m[5] as f32));
-    (Some((x0 - half, y0 - half, x1 + half, y1 + half)), style, transform)
-}
-
-/// Writes the outline of a unit mark placed by `m` (canvas pixels, y down)
-/// into `path` and returns its box, or `None` when the map is not finite.
-/// A circle is flattened as AGG flattens it (`fast_ellipse`), with
-/// `libm`'s sine and cosine so every machine gets the same vertices.
-fn outline(kind: MarkKind, m: &[f64; 6], path: &mut Vec<Command>) -> Option<(f64, f64, f64, f64)> {
-    if !m.iter().all(|v| v.is_finite()) {
-        return None;
-    }
-    let at = |x: f64, y: f64| (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5]);
-    let pt = |(x, y): (f64, f64)| Point::new(x as f32, y as f32);
-    path.clear();
-    let mut points: Vec<(f64, f64)> = Vec::with_capacity(16);
-    match kind {
-        MarkKind::Square => {
-            points.extend([at(-0.5, -0.5), at(0.5, -0.5), at(0.5, 0.5), at(-0.5, 0.5)]);
-            path.push(Command::MoveTo(pt(points[0])));
-            path.extend(points[1..].iter().map(|&p| Command::LineTo(pt(p))));
-        }
-        // Drawn by `path_outline`, and over the whole canvas.
-        MarkKind::Path | MarkKind::Fill => return None,
-        MarkKind::Triangle => {
-            points.extend(MarkKind::TRIANGLE.iter().map(|&(x, y)| at(x, y)));
-            path.push(Command::MoveTo(pt(points[0])));
-            path.extend(points[1..].iter().map(|&p| Command::LineTo(pt(p))));
-        }
-        MarkKind::Circle => {
-            // AGG's `fast_ellipse` as cfdg sets it up (`aggCanvas::primitive`):
-            // int(mean radius in pixels) + 8 segments, rounded up to a multiple
-            // of 8, the vertices half a step off the axes. An inscribed
-            // polygon, not the true circle: where a design overlaps hundreds
-            // of small circles (`underground`), their edges add up. Above a
-            // radius of 4096 px the count stops growing (0.03 px off at 10⁵ px).
-            let radius = 0.25 * (m[0].hypot(m[1]) + m[2].hypot(m[3]));
-            let steps = (radius.min(4096.0) as u32).saturating_add(8).next_multiple_of(8);
-            let step = 2.0 * std::f64::consts::PI / f64::from(steps);
-            for k in 0..steps {
-                let angle = (f64::from(k) + 0.5) * step;
-                points.push(at(0.5 * libm::cos(angle), 0.5 * libm::sin(angle)));
-            }
-            path.push(Command::MoveTo(pt(points[0])));
-            path.extend(points[1..].iter().map(|&p| Command::LineTo(pt(p))));
-        }
-    }
-    path.push(Command::Close);
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for (x, y) in points {
-        (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
-    }
-    Some((x0, y0, x1, y1))
 }

@@ -9,7 +9,7 @@
 use super::eval::agg::{CLOSE, CURVE3, CURVE4, END_POLY, LINE_TO, MOVE_TO, STOP};
 use super::eval::frame::Bounds;
 use super::eval::tile::PixelTiling;
-use super::eval::{state::Affine, PathDraw, Picture};
+use super::eval::{state::Affine, Finished, PathDraw, Picture, SHAPE_BYTES};
 use crate::cfdg::syntax::path_flags as pf;
 use crate::core::budget::Budget;
 use crate::model::drawing::{DrawnPath, Drawing, Mark, MarkKind, PathStyle, Segment, MARK_BYTES, SEGMENT_BYTES};
@@ -18,6 +18,12 @@ use crate::model::EvalError;
 /// Quantises a channel to 8 bits as AGG's `rgba8` does (round to nearest).
 pub(crate) fn to_u8(c: f64) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+/// The background of `p`'s drawing, 8-bit sRGB with straight alpha (what
+/// a picture's "foreground" is measured against, without drawing it).
+pub fn background(p: &Picture) -> [u8; 4] {
+    p.background.map(to_u8)
 }
 
 /// The map from design space to canvas pixels of `p` (cfdg's `m_currTrans`
@@ -100,40 +106,113 @@ fn style(d: &PathDraw) -> PathStyle {
 /// mark per primitive, one per path command (as cfdg's canvases get one
 /// `path` call per command).
 pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
-    let commands: usize = p.shapes.iter().filter(|s| s.kind == 3).map(|s| p.paths.get(s.path).map_or(0, Vec::len)).sum();
+    let commands = commands_of(&p.shapes, p);
     budget.reserve_memory(MARK_BYTES.saturating_mul((p.shapes.len() + commands) as u64))?;
-    let base = canvas_transform(p);
-    // The canvas's own part of `base`: its centring and y flip (SVGCanvas's `mOffset`).
-    let mut flip = Affine::translation((f64::from(p.canvas_width) - f64::from(p.width)) / 2.0, (f64::from(p.canvas_height) - f64::from(p.height)) / 2.0);
-    flip.premultiply(&Affine { sx: 1.0, shy: 0.0, shx: 0.0, sy: -1.0, tx: 0.0, ty: f64::from(p.canvas_height) });
-    // A tiled design's shapes are drawn once per copy touching the canvas,
-    // each copy's pixel map moved by its lattice offset before the canvas
-    // flips it (`tiledCanvas::primitive`, `tiledCanvas::path`).
-    let tiles = p.tiling.as_ref().map(|(t, scale)| PixelTiling::new(t, *scale));
-    let mark = |kind: MarkKind, k: usize, transform: &Affine, rgba: [f64; 4], path: u32, shift: Option<(f64, f64)>| {
+    let mut m = Marker::new(p, p.shapes.len() + commands);
+    for s in &p.shapes {
+        m.add(s, budget)?;
+    }
+    Ok(m.finish())
+}
+
+/// Shapes drawn per step of [`into_drawing`]: the memory it holds beyond
+/// the picture's is one step's marks.
+const STEP: usize = 1 << 16;
+
+/// The drawing of `p`, as [`of`] draws it, consuming the picture. When
+/// the picture and its whole drawing would not fit the memory limit
+/// together, it takes the picture's shapes as it goes: each step of
+/// [`STEP`] shapes is drawn, then the memory those shapes held is handed
+/// back (to the allocator and to the budget). So a design of a million
+/// squares (Context Free's `tests/perftest.cfdg`) is drawn under the
+/// default memory limit, where holding both took 272 MB. The marks are the
+/// same, in the same order, either way.
+pub fn into_drawing(mut p: Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
+    let commands = commands_of(&p.shapes, &p);
+    // When the whole drawing fits beside the picture, it is drawn in one
+    // go, as `of` draws it: handing shapes back costs a reversal and a
+    // shrink per step, a tenth of the bush's drawing time.
+    let all = MARK_BYTES.saturating_mul((p.shapes.len() + commands) as u64);
+    if budget.check_memory(all).is_ok() {
+        let d = of(&p, budget)?;
+        budget.release_memory(SHAPE_BYTES.saturating_mul(p.shapes.len() as u64));
+        return Ok(d);
+    }
+    let mut shapes = std::mem::take(&mut p.shapes);
+    // Drawn from the back: popping is what lets the vector shrink.
+    shapes.reverse();
+    let mut m = Marker::new(&p, shapes.len() + commands);
+    while !shapes.is_empty() {
+        let n = STEP.min(shapes.len());
+        let tail = &shapes[shapes.len() - n..];
+        budget.reserve_memory(MARK_BYTES.saturating_mul((n + commands_of(tail, &p)) as u64))?;
+        for _ in 0..n {
+            if let Some(s) = shapes.pop() {
+                m.add(&s, budget)?;
+            }
+        }
+        shapes.shrink_to_fit();
+        budget.release_memory(SHAPE_BYTES.saturating_mul(n as u64));
+    }
+    Ok(m.finish())
+}
+
+/// Path commands among `shapes`: each is a mark of its own.
+fn commands_of(shapes: &[Finished], p: &Picture) -> usize {
+    shapes.iter().filter(|s| s.kind == 3).map(|s| p.paths.get(s.path).map_or(0, Vec::len)).sum()
+}
+
+/// Builds a drawing's marks shape by shape, in drawing order.
+struct Marker<'p> {
+    p: &'p Picture,
+    /// Design space to canvas pixels ([`canvas_transform`]).
+    base: Affine,
+    /// The canvas's own part of `base`: its centring and y flip (SVGCanvas's `mOffset`).
+    flip: Affine,
+    /// A tiled design's shapes are drawn once per copy touching the canvas,
+    /// each copy's pixel map moved by its lattice offset before the canvas
+    /// flips it (`tiledCanvas::primitive`, `tiledCanvas::path`).
+    tiles: Option<PixelTiling>,
+    marks: Vec<Mark>,
+    paths: Vec<DrawnPath>,
+    /// Identical outlines are kept once (cfdg writes a `<use>` of a cached path).
+    seen: std::collections::HashMap<String, u32>,
+}
+
+impl<'p> Marker<'p> {
+    fn new(p: &'p Picture, marks: usize) -> Marker<'p> {
+        let mut flip = Affine::translation((f64::from(p.canvas_width) - f64::from(p.width)) / 2.0, (f64::from(p.canvas_height) - f64::from(p.height)) / 2.0);
+        flip.premultiply(&Affine { sx: 1.0, shy: 0.0, shx: 0.0, sy: -1.0, tx: 0.0, ty: f64::from(p.canvas_height) });
+        let tiles = p.tiling.as_ref().map(|(t, scale)| PixelTiling::new(t, *scale));
+        Marker { p, base: canvas_transform(p), flip, tiles, marks: Vec::with_capacity(marks), paths: Vec::new(), seen: Default::default() }
+    }
+
+    fn mark(&self, kind: MarkKind, k: usize, transform: &Affine, rgba: [f64; 4], path: u32, shift: Option<(f64, f64)>) -> Mark {
+        let p = self.p;
         let mut up = *transform;
         up.multiply(&p.to_pixels);
         let t = match shift {
             None => {
                 let mut t = *transform;
-                t.multiply(&base);
+                t.multiply(&self.base);
                 t
             }
             Some((dx, dy)) => {
                 up.tx += dx;
                 up.ty += dy;
                 let mut t = up;
-                t.multiply(&flip);
+                t.multiply(&self.flip);
                 t
             }
         };
         Mark { kind, matrix: [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty], raster: raster(k, &up, p), rgba: rgba.map(to_u8), path }
-    };
-    let mut marks = Vec::with_capacity(p.shapes.len() + commands);
-    let mut paths = Vec::new();
-    let mut seen: std::collections::HashMap<String, u32> = std::collections::HashMap::new();
-    for s in &p.shapes {
-        let shifts: Vec<Option<(f64, f64)>> = match &tiles {
+    }
+
+    /// Adds the marks of `s`: one per tile copy touching the canvas, and a
+    /// path's one per command.
+    fn add(&mut self, s: &Finished, budget: &mut Budget) -> Result<(), EvalError> {
+        let p = self.p;
+        let shifts: Vec<Option<(f64, f64)>> = match &self.tiles {
             None => vec![None],
             // A fill covers the canvas once (`tiledCanvas::primitive`).
             Some(_) if s.kind == 4 => vec![None],
@@ -154,28 +233,34 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
             4 => MarkKind::Fill,
             _ => {
                 for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
-                    // Identical outlines are kept once (cfdg writes a `<use>` of a cached path).
                     let drawn = DrawnPath { segments: segments(d), style: style(d) };
                     let key = format!("{drawn:?}");
-                    let index = match seen.get(&key) {
+                    let index = match self.seen.get(&key) {
                         Some(&i) => i,
                         None => {
                             budget.reserve_memory(SEGMENT_BYTES.saturating_mul(drawn.segments.len() as u64).saturating_add(key.len() as u64))?;
-                            seen.insert(key, paths.len() as u32);
-                            paths.push(drawn);
-                            paths.len() as u32 - 1
+                            self.seen.insert(key, self.paths.len() as u32);
+                            self.paths.push(drawn);
+                            self.paths.len() as u32 - 1
                         }
                     };
                     for &shift in &shifts {
-                        marks.push(mark(MarkKind::Path, 3, &d.transform, d.rgba, index, shift));
+                        let m = self.mark(MarkKind::Path, 3, &d.transform, d.rgba, index, shift);
+                        self.marks.push(m);
                     }
                 }
-                continue;
+                return Ok(());
             }
         };
         for &shift in &shifts {
-            marks.push(mark(kind, s.kind, &s.transform, s.rgba, 0, shift));
+            let m = self.mark(kind, s.kind, &s.transform, s.rgba, 0, shift);
+            self.marks.push(m);
         }
+        Ok(())
     }
-    Ok(Drawing { width: p.canvas_width, height: p.canvas_height, background: p.background.map(to_u8), marks, paths })
+
+    fn finish(self) -> Drawing {
+        let p = self.p;
+        Drawing { width: p.canvas_width, height: p.canvas_height, background: background(p), marks: self.marks, paths: self.paths }
+    }
 }

@@ -149,11 +149,12 @@ impl FrontEnd for Cfdg {
             (None, false) => tiles::scene(&picture, req, budget)?,
         };
         scene.truncated = picture.truncated;
+        let primitives = picture.shapes.len() as u64;
         // A hierarchy is asked for only by 3D outputs, which never read the drawing.
-        let drawing = if hierarchy.is_some() { None } else { Some(drawing::of(&picture, budget)?) };
+        let drawing = if hierarchy.is_some() { None } else { Some(drawing::into_drawing(picture, budget)?) };
         Ok(Model {
             language: Language::Cfdg,
-            primitives: picture.shapes.len() as u64,
+            primitives,
             scene,
             hierarchy,
             drawing,

@@ -253,6 +253,24 @@ impl ModelCache {
         }
     }
 
+    /// The model the in-process tier holds for `key` now, and how long
+    /// asking took: the service's fast path (`service::fast`) answers only
+    /// while this is the model it kept. Not reported to the observer, so
+    /// that a peek that finds nothing is not counted beside the lookup the
+    /// router then makes; a peek that answers is ([`Self::observe_memory_hit`]).
+    pub(crate) async fn memory_peek(&self, key: &CacheKey) -> (Option<Arc<Rendered>>, Duration) {
+        let started = Instant::now();
+        let found = self.inner.get(key).await;
+        (found, started.elapsed())
+    }
+
+    /// Reports a memory-tier hit that took `took` (a peek that answered).
+    pub(crate) fn observe_memory_hit(&self, took: Duration) {
+        if let Some(o) = &self.observer {
+            o.lookup(Tier::Memory, true, took);
+        }
+    }
+
     /// Disk and Redis entries that did not verify (misses, never served).
     pub fn corrupt(&self) -> u64 {
         self.disk.as_ref().map_or(0, |d| d.corrupt()) + self.redis.as_ref().map_or(0, |r| r.corrupt())

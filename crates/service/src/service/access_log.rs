@@ -92,6 +92,12 @@ pub struct Finished<'a> {
     pub timing: Option<&'a RequestTiming>,
 }
 
+/// Whether the DEBUG detail line is on: it is written inside the request's
+/// span, which only the router makes, so the fast path steps aside then.
+pub(crate) fn detail_enabled() -> bool {
+    tracing::enabled!(tracing::Level::DEBUG)
+}
+
 /// Logs `r`: the short INFO line (when the mode wants it), outside the
 /// request's span so that the line carries only its own fields (in JSON,
 /// `fields` alone; in text, no span prefix with the 64-digit cache key),
@@ -118,7 +124,7 @@ pub(crate) fn log_request(r: &Finished<'_>, span: &tracing::Span) {
             "request"
         );
     }
-    if tracing::enabled!(tracing::Level::DEBUG) {
+    if detail_enabled() {
         span.in_scope(|| log_detail(r));
     }
 }

@@ -116,11 +116,13 @@ impl Drop for InFlight {
     }
 }
 
-/// The router as a hyper service that keeps its connection's [`Activity`].
+/// The router as a hyper service that keeps its connection's [`Activity`],
+/// with the cached-GET fast path ([`super::fast`]) in front of it.
 #[derive(Clone)]
 struct Tracked {
     inner: TowerToHyperService<Router>,
     activity: Arc<Activity>,
+    state: Arc<AppState>,
 }
 
 type BoxFuture<T> = Pin<Box<dyn Future<Output = T> + Send>>;
@@ -133,9 +135,23 @@ impl hyper::service::Service<hyper::Request<hyper::body::Incoming>> for Tracked 
     fn call(&self, req: hyper::Request<hyper::body::Incoming>) -> Self::Future {
         self.activity.in_flight.fetch_add(1, Ordering::AcqRel);
         let guard = InFlight(self.activity.clone());
-        let fut = self.inner.call(req);
+        let (state, inner) = (self.state.clone(), self.inner.clone());
         Box::pin(async move {
-            let r = fut.await;
+            let fast = &state.fast;
+            let target = match fast.probe(&state, &req) {
+                Some(probe) => match fast.answer(&state, &probe, req.headers()).await {
+                    Some(resp) => {
+                        drop(guard);
+                        return Ok(resp);
+                    }
+                    None => Some(probe.to_target()),
+                },
+                None => None,
+            };
+            let r = inner.call(req).await;
+            if let (Some(target), Ok(resp)) = (target, &r) {
+                fast.offer(target, resp);
+            }
             drop(guard);
             r
         })
@@ -148,7 +164,7 @@ async fn connection(stream: TcpStream, app: Router, state: Arc<AppState>, mut st
     metrics.connection(1);
     let _ = stream.set_nodelay(true);
     let activity = Arc::new(Activity::new());
-    let service = Tracked { inner: TowerToHyperService::new(app), activity: activity.clone() };
+    let service = Tracked { inner: TowerToHyperService::new(app), activity: activity.clone(), state: state.clone() };
     let idle = state.config.idle_timeout();
     let mut builder = hyper::server::conn::http1::Builder::new();
     builder.timer(TokioTimer::new()).header_read_timeout(state.config.header_timeout()).keep_alive(true);

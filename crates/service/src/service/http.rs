@@ -397,7 +397,7 @@ async fn render_post(State(st): State<Arc<AppState>>, Extension(caller): Extensi
 }
 
 /// Whether `If-None-Match` lists `etag` (or `*`).
-fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
+pub(super) fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
     headers.get_all(header::IF_NONE_MATCH).iter().filter_map(|v| v.to_str().ok()).any(|v| {
         v.split(',').map(str::trim).any(|t| {
             let t = t.trim_start_matches("W/").trim_matches('"');
@@ -406,6 +406,9 @@ fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
         })
     })
 }
+
+/// The route of [`model_get`], as the router's `MatchedPath` names it.
+const MODELS_ROUTE: &str = "/v1/models/{file}";
 
 /// `GET /v1/models/{name}.{glb|gltf|stl|3mf|png}?seed=N&p.<param>=V&detail=D&…`: the
 /// declaration's query options (`request::query_body`); a png also `size`, `view`, `background`.
@@ -475,23 +478,28 @@ async fn model_get(
         let print = body.options.print == Some(true);
         let plan = body.plan(&Limits::defaults_for(print).clamped_to(&caller.ceiling), wants_fresh(&headers))?;
         let format = plan.request.format;
+        let key = plan.key;
         let served = st.engine.serve(plan).await?;
-        Ok((served, pinned, text, format))
+        Ok((served, pinned, text, format, key))
     }
     .await;
     match result {
-        Ok((served, pinned, text, format)) => {
+        Ok((served, pinned, text, format, key)) => {
             let cc = if pinned { CACHE_IMMUTABLE } else { CACHE_SHORT };
+            // What the fast path (`service::fast`) needs to answer this again.
+            let fill = super::fast::Fillable { key, model: served.model.clone(), format, route: MODELS_ROUTE };
             if etag_matches(&headers, &served.model.etag) {
                 let mut resp = StatusCode::NOT_MODIFIED.into_response();
                 model_headers(resp.headers_mut(), &served, Some(cc));
                 super::phone::vary(resp.headers_mut(), format);
                 resp.extensions_mut().insert(served.timing);
+                resp.extensions_mut().insert(fill);
                 return resp;
             }
             st.metrics.bytes_out("http", format, served.model.bytes.len());
             let mut resp = model_response(&served, Some(cc), text);
             super::phone::vary(resp.headers_mut(), format);
+            resp.extensions_mut().insert(fill);
             resp
         }
         Err(e) => e.into_response(),

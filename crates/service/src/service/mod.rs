@@ -12,6 +12,7 @@ pub mod config;
 pub mod conn;
 pub mod engine;
 pub mod error;
+pub mod fast;
 pub mod grpc;
 pub(crate) mod grpc_batch;
 pub(crate) mod grpc_conn;
@@ -58,6 +59,8 @@ pub struct AppState {
     pub ceiling: Limits,
     /// API keys, their rates, shares and ceilings (open when none are configured).
     pub access: access::Access,
+    /// Responses kept for the cached-GET fast path.
+    pub fast: fast::Answers,
     ready: AtomicBool,
 }
 
@@ -73,6 +76,7 @@ impl AppState {
             access: access::Access::new(&config.api_keys, &ceiling),
             ceiling,
             config,
+            fast: fast::Answers::default(),
             ready: AtomicBool::new(true),
         })
     }

@@ -98,6 +98,10 @@ pub(crate) fn apply_prepared(p: &Prepared, s: &mut State, scope: &Scope, rand: &
 
 /// Applies `terms` to `s`, drawing random numbers from `rand`.
 pub fn apply(terms: &[Term], s: &mut State, scope: &Scope, rand: &mut Rand64) -> Result<(), EvalError> {
+    // Most replacements' terms fold into a constant map: no buffer then.
+    if terms.is_empty() {
+        return Ok(());
+    }
     let mut a = Vec::with_capacity(6);
     for t in terms {
         // `trans NAME` with an adjustment value (eval/modval.rs).

@@ -43,14 +43,17 @@ impl Scope<'_> {
 
     /// The value of `marker` + `name` (a shape or adjustment variable's
     /// key), found without building the key: the renderer asks this for
-    /// every shape it places.
+    /// every shape it places. The length is compared first, so most keys
+    /// are passed over without comparing a byte (a third of the bush's
+    /// time went to `memcmp` on the marker when it was compared first).
     pub(crate) fn get_marked(&self, marker: char, name: &str) -> Option<&[f64]> {
-        self.find_in(&|n: &str| n.strip_prefix(marker) == Some(name), self.vars.len())
+        let len = marker.len_utf8() + name.len();
+        self.find_in(&|n: &str| n.len() == len && n.ends_with(name) && n.starts_with(marker), self.vars.len())
     }
 
     /// The innermost visible variable whose key `is` accepts, this scope's
     /// first `visible` variables and then the enclosing scopes'.
-    fn find_in(&self, is: &dyn Fn(&str) -> bool, visible: usize) -> Option<&[f64]> {
+    fn find_in<F: Fn(&str) -> bool>(&self, is: &F, visible: usize) -> Option<&[f64]> {
         match self.vars[..visible.min(self.vars.len())].iter().rev().find(|(n, _)| is(n)) {
             Some((_, v)) => Some(v.as_slice()),
             None => self.up.and_then(|(s, n)| s.find_in(is, n)),

@@ -282,7 +282,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
 }
 
 mod run;
-pub(crate) use run::PathDraw;
+pub(crate) use run::{PathDraw, SHAPE_BYTES};
 pub use run::memo::Expansion;
 
 /// The stack the render runs on: user functions recurse through the

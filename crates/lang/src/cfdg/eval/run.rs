@@ -22,14 +22,14 @@ mod path;
 pub(crate) use path::PathDraw;
 
 /// Bytes accounted per unfinished or finished shape.
-const SHAPE_BYTES: u64 = 160;
+pub(crate) const SHAPE_BYTES: u64 = 160;
 /// cfdg's fixed border in pixels (`FIXED_BORDER`).
 const FIXED_BORDER: f64 = 8.0;
 
 struct Renderer<'g> {
     rules: Rules<'g>,
     opts: Options,
-    cache: HashMap<usize, (Prepared, Rand64)>,
+    cache: HashMap<usize, std::rc::Rc<(Prepared, Rand64)>>,
     scope: Scope<'static>,
     current: Rand64,
     unfinished: super::pending::Pending,
@@ -68,8 +68,10 @@ struct Renderer<'g> {
     entropy_names: &'g std::collections::BTreeMap<(u32, u32, String), String>,
 }
 
-fn cached<'a>(cache: &'a mut HashMap<usize, (Prepared, Rand64)>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> &'a (Prepared, Rand64) {
-    cache.entry(key).or_insert_with(make)
+/// A replacement's prepared terms and seed, made once per replacement
+/// (shared, so a lookup copies no terms).
+fn cached(cache: &mut HashMap<usize, std::rc::Rc<(Prepared, Rand64)>>, key: usize, make: impl FnOnce() -> (Prepared, Rand64)) -> std::rc::Rc<(Prepared, Rand64)> {
+    cache.entry(key).or_insert_with(|| std::rc::Rc::new(make())).clone()
 }
 
 /// Renders `g` as cfdg renders it with `opts`, charging `budget`: a step
@@ -406,7 +408,7 @@ impl Renderer<'_> {
         Ok(())
     }
 
-    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> (Prepared, Rand64) {
+    fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> std::rc::Rc<(Prepared, Rand64)> {
         let key = adj as *const Adjustment as usize;
         let scope = &self.scope;
         cached(&mut self.cache, key, || {
@@ -414,7 +416,6 @@ impl Renderer<'_> {
             super::modval::fold_seeds(adj, scope, &mut seed);
             (prepare(adj), seed)
         })
-        .clone()
     }
 
     fn body(&mut self, body: &[Element], parent: &State) -> Result<(), EvalError> {
@@ -431,7 +432,8 @@ impl Renderer<'_> {
             Element::Replace(rep) if rep.shape == super::FILL && !self.rules.index.contains_key(super::FILL) => {
                 // processPrimShapeSiblings for fillType: no bounds, never
                 // copied by symmetry or tiles, always drawn; a shape all the same.
-                let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
+                let prepared = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
+                let (terms, seed) = (&prepared.0, prepared.1);
                 let mut child = *parent;
                 self.current.xor(seed);
                 self.current.next_u64();
@@ -447,7 +449,8 @@ impl Renderer<'_> {
             }
             Element::Replace(rep) => {
                 let (shape, bound) = self.target_of(rep)?;
-                let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
+                let prepared = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
+                let (terms, seed) = (&prepared.0, prepared.1);
                 let mut params = Vec::new();
                 let wanted: usize = self.rules.sizes[shape].len();
                 match (&rep.args, bound) {
@@ -590,7 +593,7 @@ impl Renderer<'_> {
     fn loop_setup(&mut self, l: &syntax::Loop) -> Result<(Prepared, String, f64, f64, f64), EvalError> {
         let key = l as *const syntax::Loop as usize;
         let var = l.var.clone().unwrap_or_else(|| "~~inaccessiblevar~~".into());
-        let (terms, seed) = cached(&mut self.cache, key, || (prepare(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).clone();
+        let (terms, seed) = cached(&mut self.cache, key, || (prepare(&l.adjust), loop_seed(&l.adjust, &var, &l.args, l.v2))).as_ref().clone();
         self.current.xor(seed);
         let mut a = Vec::new();
         super::expr::eval(&l.args, &self.scope, &mut self.current, &mut a)?;

@@ -132,6 +132,8 @@ pub struct Metrics {
     quick: Family<QuickLabels, Counter>,
     memory_refusals: Counter,
     memory_waits: Counter,
+    /// Cached GETs answered by `service::fast` before the router.
+    fast_hits: Counter,
     cache: Arc<OnceLock<ModelCache>>,
     memory: Arc<OnceLock<Arc<crate::service::memory::MemoryGuard>>>,
 }
@@ -178,6 +180,7 @@ impl Metrics {
             quick: Family::default(),
             memory_refusals: Counter::default(),
             memory_waits: Counter::default(),
+            fast_hits: Counter::default(),
             cache: Arc::new(OnceLock::new()),
             memory: Arc::new(OnceLock::new()),
             registry: Registry::default(),
@@ -206,6 +209,7 @@ impl Metrics {
         r.register("quick_renders", "Renders known to be quick, run on the async worker (outcome done) or sent back to the blocking pool at the try's deadline (outcome fell_back)", m.quick.clone());
         r.register("memory_refusals", "Renders refused because resident memory plus their memory budget would pass the memory ceiling (HTTP 503 memory_pressure)", m.memory_refusals.clone());
         r.register("memory_waits", "Renders that waited for memory under the ceiling and then started", m.memory_waits.clone());
+        r.register("fast_path_hits", "Cached GETs answered before the router from a kept response (also counted in requests, cache_hits and cache_lookups)", m.fast_hits.clone());
         r.register_collector(Box::new(figures::CacheFigures::new(m.cache.clone())));
         r.register_collector(Box::new(figures::MemoryFigures::new(m.memory.clone())));
         r.register_collector(Box::new(figures::LogFigures));
@@ -228,6 +232,11 @@ impl Metrics {
     /// Counts a render refused by the memory guard.
     pub fn memory_refused(&self) {
         self.memory_refusals.inc();
+    }
+
+    /// Counts a cached GET answered by the fast path (`service::fast`).
+    pub(crate) fn fast_path_hit(&self) {
+        self.fast_hits.inc();
     }
 
     /// Counts a render that waited for memory and then started.

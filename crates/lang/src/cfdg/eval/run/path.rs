@@ -349,7 +349,8 @@ impl Renderer<'_> {
     /// `ASTpathCommand::traverse`: the command's shape, then what it draws.
     fn path_command(&mut self, c: &PathCommand, parent: &State, ctx: &mut Ctx) -> Result<(), EvalError> {
         self.budget.charge_step()?;
-        let (terms, seed) = self.seeded_terms(&c.adjust, if c.fill { "FILL" } else { "STROKE" }, None);
+        let prepared = self.seeded_terms(&c.adjust, if c.fill { "FILL" } else { "STROKE" }, None);
+        let (terms, seed) = (&prepared.0, prepared.1);
         let mut child = *parent;
         self.current.xor(seed);
         self.current.next_u64();

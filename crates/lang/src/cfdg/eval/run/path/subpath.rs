@@ -173,7 +173,8 @@ impl<'g> Renderer<'g> {
         if params.len() != wanted {
             return Err(error(rep.span, &format!("shape `{}` takes {wanted} numbers, given {}", rep.shape, params.len())));
         }
-        let (terms, seed) = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
+        let prepared = self.seeded_terms(&rep.adjust, self.entropy_name(rep), rep.args.as_ref());
+        let (terms, seed) = (&prepared.0, prepared.1);
         self.current.xor(seed);
         self.current.next_u64();
         apply_prepared(&terms, &mut child, &self.scope, &mut self.current)?;
