@@ -8,6 +8,7 @@ mod picture;
 
 mod cfdg;
 mod cfdg_limits;
+mod cfdg_memo;
 mod cfdg_pictures;
 mod cfdg_examples;
 mod cli;

@@ -14,6 +14,7 @@
 
 pub mod drawing;
 pub mod eval;
+pub mod instanced;
 pub(crate) mod rand64;
 pub mod solid;
 pub mod syntax;
@@ -133,18 +134,30 @@ impl FrontEnd for Cfdg {
             // A picture is drawn for its size, as `cfdg -s` draws it.
             (opts.width, opts.height) = (side, side);
         }
+        // Where the output writes instances (`scene`, instanced glTF: the
+        // pipeline then prices instances, `Downstream::per_instance`), a
+        // memoised run records its nodes and becomes a hierarchy of its
+        // distinct subtrees (instanced.rs). A print and strips keep the flat
+        // tiles, whose one thickness and drawing-order lift a relief needs.
+        opts.record = req.hierarchy && !req.picture_only && req.downstream.per_instance.is_some();
         let picture = eval::render(&g, &opts, budget)?;
+        let hierarchy = if opts.record { instanced::hierarchy(&picture, budget)? } else { None };
         // A picture of the design is drawn from its drawing alone.
-        let mut scene = if req.picture_only { crate::model::Scene::default() } else { tiles::scene(&picture, req, budget)? };
+        let mut scene = match (&hierarchy, req.picture_only) {
+            (_, true) => crate::model::Scene::default(),
+            (Some(_), false) => crate::model::Scene { background: tiles::background(&picture), ..Default::default() },
+            (None, false) => tiles::scene(&picture, req, budget)?,
+        };
         scene.truncated = picture.truncated;
         let primitives = picture.shapes.len() as u64;
-        let drawing = drawing::into_drawing(picture, budget)?;
+        // A hierarchy is asked for only by 3D outputs, which never read the drawing.
+        let drawing = if hierarchy.is_some() { None } else { Some(drawing::into_drawing(picture, budget)?) };
         Ok(Model {
             language: Language::Cfdg,
             primitives,
             scene,
-            hierarchy: None,
-            drawing: Some(drawing),
+            hierarchy,
+            drawing,
             warnings: g.warnings,
             promised: 0,
             seed: var as u64,

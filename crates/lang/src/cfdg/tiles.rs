@@ -22,6 +22,11 @@ fn linear(c: f64) -> f32 {
     (if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }) as f32
 }
 
+/// The picture's background as the Model's linear colour.
+pub(crate) fn background(p: &Picture) -> Option<[f32; 4]> {
+    Some([linear(p.background[0]), linear(p.background[1]), linear(p.background[2]), p.background[3] as f32])
+}
+
 /// Builds the tiles of `p`, charging the memory the scene keeps.
 pub fn scene(p: &Picture, _req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Scene, EvalError> {
     let mut scene = Scene::default();
@@ -29,7 +34,7 @@ pub fn scene(p: &Picture, _req: &BuildRequest<'_>, budget: &mut Budget) -> Resul
     let extent = f64::from(p.width.max(p.height)) / scale;
     let h = (extent * THICKNESS).max(f64::MIN_POSITIVE);
     let n = p.shapes.len().max(1) as f64;
-    scene.background = Some([linear(p.background[0]), linear(p.background[1]), linear(p.background[2]), p.background[3] as f32]);
+    scene.background = background(p);
     for (i, s) in p.shapes.iter().enumerate() {
         let t = &s.transform;
         let z = h * i as f64 / n;

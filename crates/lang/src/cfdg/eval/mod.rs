@@ -60,11 +60,17 @@ pub struct Options {
     /// At a budget limit, stop expanding and keep the shapes finished so
     /// far ([`OnLimit::Truncate`]), as cfdg's `-m` stops, or fail.
     pub on_limit: OnLimit,
+    /// Expand a provably context-free design by its compiled bodies
+    /// (`run/memo.rs`); off forces the general evaluator, which gives the
+    /// same picture (the differential tests compare the two).
+    pub memo: bool,
+    /// Record the memoised expansion's nodes, for an instancing hierarchy.
+    pub record: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { width: 500, height: 500, min_size: 0.3, border: 2.0, variation: 1, max_shapes: 0, on_limit: OnLimit::Error }
+        Options { width: 500, height: 500, min_size: 0.3, border: 2.0, variation: 1, max_shapes: 0, on_limit: OnLimit::Error, memo: true, record: false }
     }
 }
 
@@ -120,13 +126,15 @@ pub struct Picture {
     /// the picture then holds the shapes finished before it, largest first
     /// as cfdg expands them (what `cfdg -m` draws).
     pub truncated: Option<LimitExceeded>,
+    /// The memoised expansion, when the design is context-free and
+    /// [`Options::record`] asked for it (`cfdg/instanced.rs` reads it).
+    pub memo: Option<std::sync::Arc<Expansion>>,
 }
 
 #[derive(Debug, Clone)]
 struct Unfinished {
     shape: usize,
     state: State,
-    area: f64,
     params: Vec<f64>,
 }
 
@@ -275,6 +283,7 @@ pub fn check(g: &Grammar) -> Result<(), ParseError> {
 
 mod run;
 pub(crate) use run::{PathDraw, SHAPE_BYTES};
+pub use run::memo::Expansion;
 
 /// The stack the render runs on: user functions recurse through the
 /// evaluator (a few Rust frames per call, about 9 KiB in a debug build), so

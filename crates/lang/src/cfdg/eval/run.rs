@@ -17,6 +17,7 @@ use super::FastMap as HashMap;
 mod bind;
 mod names;
 mod chosen;
+pub(crate) mod memo;
 mod path;
 pub(crate) use path::PathDraw;
 
@@ -240,12 +241,19 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
     init.transform.tx += offset.0;
     init.transform.ty += offset.1;
     init.seed = r.current;
-    let truncated = match r.expand(start_shape, init, start_params) {
+    // A context-free design expands by its compiled bodies (run/memo.rs).
+    let plan = if opts.memo && !chosen && start.args.is_none() { r.memo_plan(start_shape) } else { None };
+    let mut memo = plan.map(|plan| memo::Expansion { plan, recorded: opts.record, ..Default::default() });
+    let expanded = match memo.as_mut() {
+        Some(x) => r.memo_expand(x, start_shape, init),
+        None => r.expand(start_shape, init, start_params),
+    };
+    let truncated = match expanded {
         Ok(()) => None,
         Err(EvalError::Limit(e)) if opts.on_limit == OnLimit::Truncate => Some(e),
         Err(e) => return Err(e),
     };
-    Ok(Picture { truncated, ..r.finish(background) })
+    Ok(Picture { truncated, memo: memo.filter(|x| x.recorded).map(std::sync::Arc::new), ..r.finish(background) })
 }
 
 impl Renderer<'_> {
@@ -333,7 +341,7 @@ impl Renderer<'_> {
             if !self.bounds.valid() || area * self.scale_area >= self.min_area {
                 self.budget.reserve_memory(SHAPE_BYTES)?;
                 self.budget.reserve_memory(8 * params.len() as u64)?;
-                self.unfinished.push(Unfinished { shape, state, area, params });
+                self.unfinished.push(area, Unfinished { shape, state, params });
             }
             return Ok(());
         }
@@ -642,6 +650,7 @@ impl Renderer<'_> {
             paths: self.paths,
             tiling: self.tiling.map(|t| (t, scale)),
             truncated: None,
+            memo: None,
         }
     }
 }
