@@ -387,6 +387,7 @@ pub fn render(source: &[u8], req: &RenderRequest) -> Result<RenderOutput, Render
         // A picture's side, for languages that evaluate in pixels (Context Free).
         canvas: route.canvas(req),
         picture_only: route.picture_only(),
+        print: req.export_options.print.enabled,
     };
     budget.set_stage_share(truncating.then_some(EVAL_SHARE));
     crate::core::memprobe::mark("start", &budget);

@@ -125,6 +125,13 @@ impl FrontEnd for Cfdg {
     fn draws(&self) -> bool {
         true
     }
+    /// A memoised design's hierarchy lifts children onto their parents and
+    /// scales each tile's thickness with it (instanced.rs), where the flat
+    /// tiles share one thickness: its own geometry, shown by every format
+    /// that instances, `instancing=flat` included.
+    fn own_hierarchy_geometry(&self) -> bool {
+        true
+    }
     fn build_model(&self, source: &[u8], req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
         let g = parse_checked_in(source, req.script_dir)?;
         clock.lap(Phase::Parse);
@@ -134,12 +141,14 @@ impl FrontEnd for Cfdg {
             // A picture is drawn for its size, as `cfdg -s` draws it.
             (opts.width, opts.height) = (side, side);
         }
-        // Where the output writes instances (`scene`, instanced glTF: the
-        // pipeline then prices instances, `Downstream::per_instance`), a
-        // memoised run records its nodes and becomes a hierarchy of its
-        // distinct subtrees (instanced.rs). A print and strips keep the flat
+        // Where the pipeline asks for a hierarchy (`scene`, and glTF and
+        // usdz with or without instancing, since this hierarchy is geometry
+        // of its own: `own_hierarchy_geometry`), a memoised run records its
+        // nodes and becomes a hierarchy of its distinct subtrees
+        // (instanced.rs), so every one of those formats shows the same
+        // model. A print, strips and the other flat formats keep the flat
         // tiles, whose one thickness and drawing-order lift a relief needs.
-        opts.record = req.hierarchy && !req.picture_only && req.downstream.per_instance.is_some();
+        opts.record = req.hierarchy && !req.picture_only && !req.print;
         let picture = eval::render(&g, &opts, budget)?;
         let hierarchy = if opts.record { instanced::hierarchy(&picture, budget)? } else { None };
         // A picture of the design is drawn from its drawing alone.

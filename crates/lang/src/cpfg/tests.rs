@@ -35,6 +35,7 @@ fn build(front: &dyn crate::FrontEnd, src: &str, files: &BTreeMap<String, Vec<u8
         files,
         canvas: None,
         picture_only: false,
+        print: false,
     };
     front.build_model(src.as_bytes(), &req, &mut Budget::new(limits), &mut StageClock::start())
 }

@@ -78,4 +78,10 @@ pub struct BuildRequest<'a> {
     /// Free's tiles would cost a tenth of its picture's time). Like
     /// `canvas`, it names no format.
     pub picture_only: bool,
+    /// Whether the model is for a print (`print=true`). A front end whose
+    /// hierarchy draws the model differently from its flat geometry
+    /// (Context Free's reliefs, where each tile's thickness follows its
+    /// size and children stand on their parents) keeps its flat model for
+    /// a print, which must unite into one shell. Like `canvas`, it names no format.
+    pub print: bool,
 }
