@@ -7,6 +7,7 @@ pub mod budget;
 pub mod choice;
 pub mod diagnostic;
 pub mod frame;
+pub mod hugepages;
 pub mod library;
 pub mod memprobe;
 pub mod mtrand;

@@ -32,6 +32,7 @@ use crate::core::budget::{Budget, LimitExceeded};
 use crate::model::drawing::{Drawing, Mark, MarkKind};
 use zeno::{Command, Fill, Mask, Style, Transform};
 
+mod cells;
 mod outline;
 use outline::{outline, path_outline};
 
@@ -139,6 +140,7 @@ fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, b
 fn plan(drawing: &Drawing, fit: f64, (width, height): (u32, u32), budget: &mut Budget) -> Result<Vec<Job>, PreviewError> {
     let pixels = u64::from(width) * u64::from(height);
     let mut jobs = Vec::with_capacity(drawing.marks.len());
+    crate::core::hugepages::advise(&mut jobs);
     let (mut path, mut points) = (Vec::with_capacity(16), Vec::with_capacity(16));
     for (i, mark) in drawing.marks.iter().enumerate() {
         if mark.kind == MarkKind::Fill {
@@ -189,6 +191,7 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
     // gives the same coverage without it, which halved the preview of
     // the 262,143-square bush (docs/benchmarks.md).
     let mut scratch = zeno::Scratch::new();
+    let (mut small, mut corners) = (cells::Cells::default(), Vec::with_capacity(16));
     for (n, job) in jobs.iter().enumerate() {
         if n % 1024 == 1023 {
             budget.check_deadline()?;
@@ -210,14 +213,21 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
         let (bx0, by0) = (f64::from(job.left), f64::from(job.top));
         mask.clear();
         mask.resize(w as usize * h as usize, 0);
-        let mut fill = Mask::with_scratch(&path, &mut scratch);
-        fill.size(w, h).style(style);
-        match transform {
-            // The box offset goes into the map, applied after the pen.
-            Some(t) => fill.transform(Some(Transform::new(t.xx, t.xy, t.yx, t.yy, t.x - bx0 as f32, t.y - by0 as f32))),
-            None => fill.offset(zeno::Vector::new(-bx0 as f32, -by0 as f32)),
-        };
-        fill.render_into(&mut mask, None);
+        if mark.kind != MarkKind::Path && w * h <= cells::MOST_PIXELS {
+            // A primitive a few pixels across: zeno's coverage, without zeno's setup (cells.rs).
+            corners.clear();
+            corners.extend(points.iter().map(|&(x, y)| (x as f32, y as f32)));
+            small.fill(&corners, (-bx0 as f32, -by0 as f32), w, h, &mut mask);
+        } else {
+            let mut fill = Mask::with_scratch(&path, &mut scratch);
+            fill.size(w, h).style(style);
+            match transform {
+                // The box offset goes into the map, applied after the pen.
+                Some(t) => fill.transform(Some(Transform::new(t.xx, t.xy, t.yx, t.yy, t.x - bx0 as f32, t.y - by0 as f32))),
+                None => fill.offset(zeno::Vector::new(-bx0 as f32, -by0 as f32)),
+            };
+            fill.render_into(&mut mask, None);
+        }
         let left = job.left as usize;
         for (row, covers) in mask.chunks_exact(w as usize).enumerate() {
             let y = job.top + row as u32;

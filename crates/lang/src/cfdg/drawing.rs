@@ -53,7 +53,12 @@ fn raster(kind: usize, t: &Affine, p: &Picture) -> [f64; 6] {
     // A path is not grown (`aggCanvas::path`).
     let grow = GROW.get(kind).copied().unwrap_or(0.0);
     let scale = |size: f64| if size < SMALL { (SMALL + grow) / SMALL } else { (size + grow) / size };
-    let (gx, gy) = (scale(t.sx.hypot(t.shy)), scale(t.shx.hypot(t.sy)));
+    // `hypot` only where the side may reach SMALL: below 24.9 the sum of
+    // squares (a few ulps off) puts the exact length under 5 for certain,
+    // so the growth is the same bits; most marks of a big design are that
+    // small, and `hypot` was a tenth of turning them into marks.
+    let side = |x: f64, y: f64| if x * x + y * y < 24.9 { 0.0 } else { x.hypot(y) };
+    let (gx, gy) = (scale(side(t.sx, t.shy)), scale(side(t.shx, t.sy)));
     let off_x = f64::from((p.canvas_width.saturating_sub(p.width)) / 2);
     let off_y = f64::from((p.canvas_height.saturating_sub(p.height)) / 2);
     let h = f64::from(p.canvas_height);
@@ -109,11 +114,16 @@ pub fn of(p: &Picture, budget: &mut Budget) -> Result<Drawing, EvalError> {
     let commands = commands_of(&p.shapes, p);
     budget.reserve_memory(MARK_BYTES.saturating_mul((p.shapes.len() + commands) as u64))?;
     let mut m = Marker::new(p, p.shapes.len() + commands);
-    for s in &p.shapes {
-        m.add(s, budget)?;
+    if commands > 0 || m.tiles.is_some() || !m.add_in_parallel(&p.shapes) {
+        for s in &p.shapes {
+            m.add(s, budget)?;
+        }
     }
     Ok(m.finish())
 }
+
+/// Pictures with fewer shapes are marked on the calling thread.
+const PARALLEL_FROM: usize = 1 << 16;
 
 /// Shapes drawn per step of [`into_drawing`]: the memory it holds beyond
 /// the picture's is one step's marks.
@@ -158,6 +168,16 @@ pub fn into_drawing(mut p: Picture, budget: &mut Budget) -> Result<Drawing, Eval
 }
 
 /// Path commands among `shapes`: each is a mark of its own.
+/// The mark kind of a finished shape that is not a path.
+fn primitive_kind(kind: usize) -> MarkKind {
+    match kind {
+        0 => MarkKind::Circle,
+        1 => MarkKind::Square,
+        2 => MarkKind::Triangle,
+        _ => MarkKind::Fill,
+    }
+}
+
 fn commands_of(shapes: &[Finished], p: &Picture) -> usize {
     shapes.iter().filter(|s| s.kind == 3).map(|s| p.paths.get(s.path).map_or(0, Vec::len)).sum()
 }
@@ -184,7 +204,9 @@ impl<'p> Marker<'p> {
         let mut flip = Affine::translation((f64::from(p.canvas_width) - f64::from(p.width)) / 2.0, (f64::from(p.canvas_height) - f64::from(p.height)) / 2.0);
         flip.premultiply(&Affine { sx: 1.0, shy: 0.0, shx: 0.0, sy: -1.0, tx: 0.0, ty: f64::from(p.canvas_height) });
         let tiles = p.tiling.as_ref().map(|(t, scale)| PixelTiling::new(t, *scale));
-        Marker { p, base: canvas_transform(p), flip, tiles, marks: Vec::with_capacity(marks), paths: Vec::new(), seen: Default::default() }
+        let mut list = Vec::with_capacity(marks);
+        crate::core::hugepages::advise(&mut list);
+        Marker { p, base: canvas_transform(p), flip, tiles, marks: list, paths: Vec::new(), seen: Default::default() }
     }
 
     fn mark(&self, kind: MarkKind, k: usize, transform: &Affine, rgba: [f64; 4], path: u32, shift: Option<(f64, f64)>) -> Mark {
@@ -208,6 +230,44 @@ impl<'p> Marker<'p> {
         Mark { kind, matrix: [t.sx, t.shy, t.shx, t.sy, t.tx, t.ty], raster: raster(k, &up, p), rgba: rgba.map(to_u8), path }
     }
 
+    /// Adds the marks of `shapes` (no path among them, no tiling: one mark
+    /// each, a pure function of the shape and the framing) on up to four
+    /// threads, each writing its own stretch of the marks in place; false,
+    /// having added nothing, for fewer than [`PARALLEL_FROM`] shapes or
+    /// marks already made. The marks are the ones [`Marker::add`] makes,
+    /// in the same order.
+    fn add_in_parallel(&mut self, shapes: &[Finished]) -> bool {
+        let n = shapes.len();
+        if n < PARALLEL_FROM || !self.marks.is_empty() || shapes.iter().any(|s| s.kind == 3) {
+            return false;
+        }
+        self.marks.reserve(n);
+        let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).clamp(1, 4);
+        let per = n.div_ceil(threads);
+        let mut room = std::mem::take(&mut self.marks);
+        let this = &*self;
+        let spare = &mut room.spare_capacity_mut()[..n];
+        std::thread::scope(|scope| {
+            for (out, input) in spare.chunks_mut(per).zip(shapes.chunks(per)) {
+                scope.spawn(move || {
+                    for (slot, s) in out.iter_mut().zip(input) {
+                        slot.write(this.mark(primitive_kind(s.kind), s.kind, &s.transform, s.rgba, 0, None));
+                    }
+                });
+            }
+        });
+        // SAFETY: `room` had capacity for at least `n` marks (reserved
+        // above) and held none; `spare` is its first `n` slots, split into
+        // chunks that zip one for one with `shapes`' chunks of the same
+        // size, and each chunk's thread wrote every slot of its chunk.
+        // `thread::scope` returns only after every thread has finished (and
+        // re-raises a thread's panic instead of returning), so all `n`
+        // slots are initialised when the length is set.
+        unsafe { room.set_len(n) };
+        self.marks = room;
+        true
+    }
+
     /// Adds the marks of `s`: one per tile copy touching the canvas, and a
     /// path's one per command.
     fn add(&mut self, s: &Finished, budget: &mut Budget) -> Result<(), EvalError> {
@@ -226,11 +286,14 @@ impl<'p> Marker<'p> {
                 offsets.into_iter().map(Some).collect()
             }
         };
+        if self.tiles.is_none() && s.kind != 3 {
+            // One mark, at no offset: no list of offsets to build.
+            let m = self.mark(primitive_kind(s.kind), s.kind, &s.transform, s.rgba, 0, None);
+            self.marks.push(m);
+            return Ok(());
+        }
         let kind = match s.kind {
-            0 => MarkKind::Circle,
-            1 => MarkKind::Square,
-            2 => MarkKind::Triangle,
-            4 => MarkKind::Fill,
+            0 | 1 | 2 | 4 => primitive_kind(s.kind),
             _ => {
                 for d in p.paths.get(s.path).map_or(&[][..], Vec::as_slice) {
                     let drawn = DrawnPath { segments: segments(d), style: style(d) };

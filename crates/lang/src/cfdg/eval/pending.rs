@@ -42,6 +42,15 @@ impl<T> Pending<T> {
         self.heap.is_empty()
     }
 
+    /// Room for `n` waiting shapes without growing, on huge pages
+    /// (`core::hugepages`); only what is used becomes resident.
+    pub(super) fn reserve(&mut self, n: usize) {
+        self.heap.reserve(n);
+        self.slots.reserve(n);
+        crate::core::hugepages::advise(&mut self.heap);
+        crate::core::hugepages::advise(&mut self.slots);
+    }
+
     /// Adds `s`, which waits by its `area`.
     pub(super) fn push(&mut self, area: f64, s: T) {
         let slot = match self.free.pop() {
@@ -50,11 +59,20 @@ impl<T> Pending<T> {
                 i
             }
             None => {
+                let room = self.slots.capacity();
                 self.slots.push(Some(s));
+                if self.slots.capacity() != room {
+                    // Grown: the new buffer is fresh memory (module documentation of `hugepages`).
+                    crate::core::hugepages::advise(&mut self.slots);
+                }
                 (self.slots.len() - 1) as u32
             }
         };
+        let room = self.heap.capacity();
         self.heap.push((area, slot));
+        if self.heap.capacity() != room {
+            crate::core::hugepages::advise(&mut self.heap);
+        }
         push_heap(&mut self.heap, &less);
     }
 

@@ -36,6 +36,8 @@ struct Renderer<'g> {
     finished: Vec<Finished>,
     bounds: Bounds,
     scale_area: f64,
+    /// Whether `finish_shape` has set `scale_area` from the bounds yet.
+    scaled: bool,
     min_area: f64,
     fixed_border: f64,
     /// cfdg's `mFixedBorderY` (differs from x only for a frieze).
@@ -156,6 +158,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         finished: Vec::new(),
         bounds: Bounds::default(),
         scale_area: 0.0,
+        scaled: false,
         min_area: min_size * min_size,
         fixed_border,
         fixed_border_y: fixed_border,
@@ -388,6 +391,7 @@ impl Renderer<'_> {
             }
             None if self.tile_canvas.is_some() => {}
             None => {
+                let before = self.bounds;
                 self.bounds.merge(&b.dilate(self.shape_border));
                 if let Some(t) = &self.tiling {
                     // A frieze's repeating axis keeps the tile's extent.
@@ -397,15 +401,31 @@ impl Renderer<'_> {
                         Frieze::None => {}
                     }
                 }
-                let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border_y);
-                self.scale_area = scale * scale;
+                // The scale is a function of the bounds alone (the canvas and
+                // borders are fixed for the run), and most shapes land inside
+                // the bounds so far: the same bounds keep the same scale.
+                if self.bounds != before || !self.scaled {
+                    let (scale, ..) = self.bounds.compute_scale(i64::from(self.opts.width), i64::from(self.opts.height), self.fixed_border, self.fixed_border_y);
+                    self.scale_area = scale * scale;
+                    self.scaled = true;
+                }
             }
         }
         self.shape_count += 1;
         self.budget.charge_primitive(2)?;
         self.budget.reserve_memory(SHAPE_BYTES)?;
-        self.finished.push(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path, bounds: b });
+        self.keep(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path, bounds: b });
         Ok(())
+    }
+
+    /// Appends a finished shape; a grown array asks for huge pages
+    /// (`core::hugepages`: fresh memory filled front to back).
+    fn keep(&mut self, f: Finished) {
+        let room = self.finished.capacity();
+        self.finished.push(f);
+        if self.finished.capacity() != room {
+            crate::core::hugepages::advise(&mut self.finished);
+        }
     }
 
     fn seeded_terms(&mut self, adj: &Adjustment, shape: &str, args: Option<&syntax::Expr>) -> std::rc::Rc<(Prepared, Rand64)> {
@@ -444,7 +464,7 @@ impl Renderer<'_> {
                 self.shape_count += 1;
                 self.budget.charge_primitive(2)?;
                 self.budget.reserve_memory(SHAPE_BYTES)?;
-                self.finished.push(Finished { kind: 4, transform: child.transform, z: child.tz, rgba: child.color.rgba(), order: self.shape_count, box_area: 1.0, path: 0, bounds: Bounds::default() });
+                self.keep(Finished { kind: 4, transform: child.transform, z: child.tz, rgba: child.color.rgba(), order: self.shape_count, box_area: 1.0, path: 0, bounds: Bounds::default() });
                 Ok(())
             }
             Element::Replace(rep) => {
@@ -625,7 +645,13 @@ impl Renderer<'_> {
         let (scale, w, h, to_pixels) = self.bounds.compute_scale_exact(cw, ch, self.fixed_border, self.fixed_border_y, exact);
         let area = scale * scale;
         let finished = self.finished.len() as u64;
-        self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
+        // Finished in order, so sorted already when no z goes down (every
+        // shape of most designs is at z 0): a stable sort would still copy
+        // the whole array through a buffer half its size.
+        let by_z = |a: &Finished, b: &Finished| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order));
+        if !self.finished.is_sorted_by(|a, b| by_z(a, b).is_le()) {
+            self.finished.sort_by(by_z);
+        }
         let min_area = self.min_area;
         self.finished.retain(|s| {
             if s.kind == 4 {

@@ -219,16 +219,22 @@ impl Renderer<'_> {
         // by doubling.
         let memory = self.budget.limits().max_memory.saturating_sub(self.budget.memory()) / SHAPE_BYTES;
         let room = self.budget.limits().max_primitives.saturating_sub(self.budget.primitives()).saturating_add(1).min(self.max_shapes).min(memory).min(1 << 20);
-        self.finished.reserve(usize::try_from(room).unwrap_or(0));
+        let room = usize::try_from(room).unwrap_or(0);
+        self.finished.reserve(room);
+        crate::core::hugepages::advise(&mut self.finished);
         if x.plan.bodies.iter().flatten().all(|e| e.rest.is_empty()) {
-            self.memo_run::<Affine>(x, start, init)
+            self.memo_run::<Affine>(x, start, init, room)
         } else {
-            self.memo_run::<State>(x, start, init)
+            self.memo_run::<State>(x, start, init, room)
         }
     }
 
-    fn memo_run<C: Carried>(&mut self, x: &mut Expansion, start: usize, init: State) -> Result<(), EvalError> {
+    fn memo_run<C: Carried>(&mut self, x: &mut Expansion, start: usize, init: State, room: usize) -> Result<(), EvalError> {
         let mut waiting: Pending<Waiting<C>> = Pending::default();
+        // As many may wait as may finish, at most (each waiting shape is
+        // charged as a finished one is): room that is never touched costs
+        // no memory, and a grown array is a copy into fresh pages.
+        waiting.reserve(room);
         let result = self.memo_loop(x, &mut waiting, start, init);
         // What still waits is given back, as `finish` gives back the general loop's.
         self.budget.release_memory(SHAPE_BYTES * waiting.len() as u64);
