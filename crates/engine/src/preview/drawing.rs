@@ -57,6 +57,10 @@ const MOST_BANDS: usize = 4;
 
 /// One mark to fill, planned: which mark, and its box on the canvas in
 /// whole pixels (left, top, width, height), or the whole canvas for a fill.
+/// A small primitive (at most [`cells::MOST_PIXELS`] pixels of box, at
+/// most four corners) also carries its colour and corners, so the fill
+/// neither reads its mark again nor rebuilds its outline: on a big design
+/// of tiny marks, fetching the marks again had been a sixth of the fill.
 #[derive(Clone, Copy)]
 struct Job {
     mark: u32,
@@ -64,6 +68,17 @@ struct Job {
     top: u32,
     width: u32,
     height: u32,
+    /// The corners in `points` (0: read the mark and build its outline).
+    corners: u8,
+    rgba: [u8; 4],
+    points: [(f32, f32); 4],
+}
+
+impl Job {
+    /// A job that reads its mark when filled.
+    fn of_mark(mark: usize, left: u32, top: u32, width: u32, height: u32) -> Job {
+        Job { mark: mark as u32, left, top, width, height, corners: 0, rgba: [0; 4], points: [(0.0, 0.0); 4] }
+    }
 }
 
 /// Bytes accounted per planned mark.
@@ -114,13 +129,18 @@ fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, b
         None => drawing.background,
     };
     let mut canvas: Vec<[u8; 4]> = vec![premultiply(bg); pixels as usize];
-    let rows = (height as usize).div_ceil(bands).max(1);
     let budget_ref: &Budget = budget;
     let failed: Option<LimitExceeded> = if bands == 1 {
         fill(drawing, jobs, fit, width, 0, &mut canvas, budget_ref).err()
     } else {
         std::thread::scope(|scope| {
-            let handles: Vec<_> = canvas.chunks_mut(rows * width as usize).enumerate().map(|(k, band)| scope.spawn(move || fill(drawing, jobs, fit, width, (k * rows) as u32, band, budget_ref))).collect();
+            let mut rest: &mut [[u8; 4]] = &mut canvas;
+            let mut handles = Vec::with_capacity(bands);
+            for (top, bottom) in band_rows(jobs, height, bands) {
+                let (band, after) = rest.split_at_mut((bottom - top) as usize * width as usize);
+                rest = after;
+                handles.push(scope.spawn(move || fill(drawing, jobs, fit, width, top, band, budget_ref)));
+            }
             // A band thread that panicked is a bug; it ends this render with the deadline's error rather than taking the worker down.
             handles.into_iter().map(|h| h.join().unwrap_or_else(|_| Err(budget_ref.deadline_stop().error()))).find_map(Result::err)
         })
@@ -134,6 +154,34 @@ fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, b
     Ok(Image { size: width, height, rgba })
 }
 
+/// The rows of each band, top to bottom, covering the canvas: cut where
+/// the marks' work is shared evenly (a mark costs a fixed amount plus its
+/// box's pixels, counted at its top row), since most of a design's marks
+/// may lie in a few rows (the bush's crown), and equal heights would leave
+/// one thread doing most of the work. Any cut gives the same bits.
+fn band_rows(jobs: &[Job], height: u32, bands: usize) -> Vec<(u32, u32)> {
+    let mut work = vec![0u64; height as usize];
+    for j in jobs {
+        if let Some(w) = work.get_mut(j.top as usize) {
+            *w += 64 + u64::from(j.width) * u64::from(j.height);
+        }
+    }
+    let total: u64 = work.iter().sum();
+    let mut cuts = Vec::with_capacity(bands);
+    let (mut top, mut sum) = (0u32, 0u64);
+    for (row, w) in work.iter().enumerate() {
+        sum += w;
+        let row = row as u32 + 1;
+        let k = cuts.len() as u64 + 1;
+        if cuts.len() + 1 < bands && sum * bands as u64 >= total * k && row < height {
+            cuts.push((top, row));
+            top = row;
+        }
+    }
+    cuts.push((top, height));
+    cuts
+}
+
 /// The first pass: each mark's box on the canvas, its steps charged in
 /// drawing order (a mark costs a step plus one per [`PIXELS_PER_STEP`]
 /// pixels of its box; a fill, of the canvas), and the marks to fill.
@@ -145,7 +193,7 @@ fn plan(drawing: &Drawing, fit: f64, (width, height): (u32, u32), budget: &mut B
     for (i, mark) in drawing.marks.iter().enumerate() {
         if mark.kind == MarkKind::Fill {
             budget.charge_steps(1 + pixels / PIXELS_PER_STEP)?;
-            jobs.push(Job { mark: i as u32, left: 0, top: 0, width, height });
+            jobs.push(Job::of_mark(i, 0, 0, width, height));
             continue;
         }
         let Some((corners, ..)) = shape(drawing, mark, fit, &mut path, &mut points) else { continue };
@@ -164,7 +212,15 @@ fn plan(drawing: &Drawing, fit: f64, (width, height): (u32, u32), budget: &mut B
         if w <= 0.0 || h <= 0.0 || [x0, y0, x1, y1].iter().any(|v| v.abs() > FAR) {
             continue;
         }
-        jobs.push(Job { mark: i as u32, left: bx0 as u32, top: by0 as u32, width: w as u32, height: h as u32 });
+        let mut job = Job::of_mark(i, bx0 as u32, by0 as u32, w as u32, h as u32);
+        if mark.kind != MarkKind::Path && points.len() <= 4 && job.width * job.height <= cells::MOST_PIXELS {
+            job.corners = points.len() as u8;
+            job.rgba = mark.rgba;
+            for (c, &(x, y)) in job.points.iter_mut().zip(points.iter()) {
+                *c = (x as f32, y as f32);
+            }
+        }
+        jobs.push(job);
     }
     Ok(jobs)
 }
@@ -199,6 +255,16 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
         if job.top >= bottom || job.top + job.height <= top {
             continue;
         }
+        let (w, h) = (job.width, job.height);
+        let (bx0, by0) = (f64::from(job.left), f64::from(job.top));
+        if job.corners > 0 {
+            // A primitive a few pixels across: zeno's coverage, without zeno's setup (cells.rs).
+            mask.clear();
+            mask.resize(w as usize * h as usize, 0);
+            small.fill(&job.points[..usize::from(job.corners)], (-bx0 as f32, -by0 as f32), w, h, &mut mask);
+            blend_mask(band, width, top, bottom, job, &mask);
+            continue;
+        }
         let Some(mark) = drawing.marks.get(job.mark as usize) else { continue };
         let [r, g, b, a] = mark.rgba;
         if mark.kind == MarkKind::Fill {
@@ -209,8 +275,6 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
             continue;
         }
         let Some((_, style, transform)) = shape(drawing, mark, fit, &mut path, &mut points) else { continue };
-        let (w, h) = (job.width, job.height);
-        let (bx0, by0) = (f64::from(job.left), f64::from(job.top));
         mask.clear();
         mask.resize(w as usize * h as usize, 0);
         if mark.kind != MarkKind::Path && w * h <= cells::MOST_PIXELS {
@@ -228,21 +292,29 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
             };
             fill.render_into(&mut mask, None);
         }
-        let left = job.left as usize;
-        for (row, covers) in mask.chunks_exact(w as usize).enumerate() {
-            let y = job.top + row as u32;
-            if y < top || y >= bottom {
-                continue;
-            }
-            let start = (y - top) as usize * width as usize + left;
-            for (px, &cover) in band[start..start + w as usize].iter_mut().zip(covers) {
-                if cover != 0 {
-                    blend(px, [r, g, b], mul(cover, a));
-                }
+        blend_mask(band, width, top, bottom, &Job { rgba: [r, g, b, a], ..*job }, &mask);
+    }
+    Ok(())
+}
+
+/// Blends `job`'s colour through its coverage `mask` (its box) into the
+/// band's rows `top..bottom`.
+fn blend_mask(band: &mut [[u8; 4]], width: u32, top: u32, bottom: u32, job: &Job, mask: &[u8]) {
+    let [r, g, b, a] = job.rgba;
+    let (left, w) = (job.left as usize, job.width as usize);
+    for (row, covers) in mask.chunks_exact(w.max(1)).enumerate() {
+        let y = job.top + row as u32;
+        if y < top || y >= bottom {
+            continue;
+        }
+        let start = (y - top) as usize * width as usize + left;
+        let Some(pixels) = band.get_mut(start..start + w) else { continue };
+        for (px, &cover) in pixels.iter_mut().zip(covers) {
+            if cover != 0 {
+                blend(px, [r, g, b], mul(cover, a));
             }
         }
     }
-    Ok(())
 }
 
 /// `a·b/255`, rounded as AGG's `int8u` multiply (`agg::rgba8::multiply`).
