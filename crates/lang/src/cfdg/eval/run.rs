@@ -38,6 +38,11 @@ struct Renderer<'g> {
     scale_area: f64,
     /// Whether `finish_shape` has set `scale_area` from the bounds yet.
     scaled: bool,
+    /// Whether a finished shape has a lower z than the one before it.
+    unsorted: bool,
+    /// The least and greatest box area of the finished shapes but fills,
+    /// and whether one was NaN.
+    boxes: (f64, f64, bool),
     min_area: f64,
     fixed_border: f64,
     /// cfdg's `mFixedBorderY` (differs from x only for a frieze).
@@ -159,6 +164,8 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         bounds: Bounds::default(),
         scale_area: 0.0,
         scaled: false,
+        unsorted: false,
+        boxes: (f64::INFINITY, f64::NEG_INFINITY, false),
         min_area: min_size * min_size,
         fixed_border,
         fixed_border_y: fixed_border,
@@ -421,6 +428,15 @@ impl Renderer<'_> {
     /// Appends a finished shape; a grown array asks for huge pages
     /// (`core::hugepages`: fresh memory filled front to back).
     fn keep(&mut self, f: Finished) {
+        // What `finish` would otherwise learn by reading every shape again:
+        // whether they need sorting, and their least and greatest box.
+        if self.finished.last().is_some_and(|last| last.z.total_cmp(&f.z).is_gt()) {
+            self.unsorted = true;
+        }
+        if f.kind != 4 {
+            let b = f.box_area;
+            (self.boxes.0, self.boxes.1, self.boxes.2) = (self.boxes.0.min(b), self.boxes.1.max(b), self.boxes.2 | b.is_nan());
+        }
         let room = self.finished.capacity();
         self.finished.push(f);
         if self.finished.capacity() != room {
@@ -646,14 +662,21 @@ impl Renderer<'_> {
         let area = scale * scale;
         let finished = self.finished.len() as u64;
         // Finished in order, so sorted already when no z goes down (every
-        // shape of most designs is at z 0): a stable sort would still copy
-        // the whole array through a buffer half its size.
-        let by_z = |a: &Finished, b: &Finished| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order));
-        if !self.finished.is_sorted_by(|a, b| by_z(a, b).is_le()) {
-            self.finished.sort_by(by_z);
+        // shape of most designs is at z 0; `keep` notes a z going down): a
+        // stable sort would still copy the whole array through a buffer
+        // half its size.
+        if self.unsorted {
+            self.finished.sort_by(|a, b| a.z.total_cmp(&b.z).then(a.order.cmp(&b.order)));
         }
         let min_area = self.min_area;
+        // Every shape passes when the least and the greatest box do (a box
+        // times the scale is monotone in the box): no pass over them all.
+        let (least, most, nan) = self.boxes;
+        let all_pass = !nan && (least * area).is_finite() && least * area >= min_area && (most * area).is_finite();
         self.finished.retain(|s| {
+            if all_pass || s.kind == 4 {
+                return true;
+            }
             if s.kind == 4 {
                 return true;
             }

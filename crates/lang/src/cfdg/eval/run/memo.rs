@@ -243,7 +243,10 @@ impl Renderer<'_> {
 
     fn memo_loop<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, start: usize, init: State) -> Result<(), EvalError> {
         let leaf = self.is_leaf(start);
-        x.root = self.memo_process(x, waiting, start, leaf, init)?;
+        // Whether the start state is finite but for its transform: all a
+        // transform-only run needs to know of the rest (`Carried::finite`).
+        let base_finite = State { transform: Affine::scaling(1.0, 1.0), ..init }.is_finite();
+        x.root = self.memo_process(x, waiting, start, leaf, init, base_finite)?;
         while !waiting.is_empty() {
             if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
                 break;
@@ -263,7 +266,7 @@ impl Renderer<'_> {
                 let (target, leaf) = (e.shape, e.leaf);
                 let mut child = state;
                 e.apply(&mut child)?;
-                let out = self.memo_process(x, waiting, target, leaf, child)?;
+                let out = self.memo_process(x, waiting, target, leaf, child, base_finite)?;
                 if x.recorded {
                     x.outcomes.push(out);
                 }
@@ -274,8 +277,8 @@ impl Renderer<'_> {
 
     /// `process` for a compiled design: finishes a primitive or keeps a
     /// shape big enough to expand, and says which.
-    fn memo_process<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, shape: usize, leaf: bool, state: State) -> Result<u32, EvalError> {
-        if !state.is_finite() {
+    fn memo_process<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, shape: usize, leaf: bool, state: State, base_finite: bool) -> Result<u32, EvalError> {
+        if !C::finite(&state, base_finite) {
             return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
         }
         if super::super::anim::dropped(&state) {
@@ -306,6 +309,9 @@ trait Carried: Copy {
     fn of(s: &State) -> Self;
     /// The whole state again, the rest taken from `base` (the start state).
     fn state(&self, base: &State) -> State;
+    /// `s.is_finite()`, for a state of this run; `base_finite` says whether
+    /// the start state is finite but for its transform.
+    fn finite(s: &State, base_finite: bool) -> bool;
 }
 
 impl Carried for State {
@@ -314,6 +320,9 @@ impl Carried for State {
     }
     fn state(&self, _: &State) -> State {
         *self
+    }
+    fn finite(s: &State, _: bool) -> bool {
+        s.is_finite()
     }
 }
 
@@ -325,6 +334,11 @@ impl Carried for Affine {
     }
     fn state(&self, base: &State) -> State {
         State { transform: *self, ..*base }
+    }
+    /// Everything but the transform is the start state's.
+    fn finite(s: &State, base_finite: bool) -> bool {
+        let t = &s.transform;
+        base_finite && super::super::state::all_finite(&[t.sx, t.shy, t.shx, t.sy, t.tx, t.ty])
     }
 }
 
