@@ -68,6 +68,8 @@ struct Job {
     top: u32,
     width: u32,
     height: u32,
+    /// The budget steps it costs (charged in drawing order by [`plan`]).
+    steps: u32,
     /// The corners in `points` (0: read the mark and build its outline).
     corners: u8,
     rgba: [u8; 4],
@@ -77,7 +79,7 @@ struct Job {
 impl Job {
     /// A job that reads its mark when filled.
     fn of_mark(mark: usize, left: u32, top: u32, width: u32, height: u32) -> Job {
-        Job { mark: mark as u32, left, top, width, height, corners: 0, rgba: [0; 4], points: [(0.0, 0.0); 4] }
+        Job { mark: mark as u32, left, top, width, height, steps: 0, corners: 0, rgba: [0; 4], points: [(0.0, 0.0); 4] }
     }
 }
 
@@ -123,7 +125,7 @@ fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, b
     let pixels = u64::from(width) * u64::from(height);
     let bytes = pixels.saturating_mul(BYTES_PER_PIXEL + bands as u64).saturating_add(JOB_BYTES.saturating_mul(drawing.marks.len() as u64));
     budget.reserve_memory(bytes)?;
-    let jobs = &plan(drawing, fit, (width, height), budget)?;
+    let jobs = &plan(drawing, fit, (width, height), budget, bands)?;
     let bg = match options.background {
         Some([r, g, b]) => [r, g, b, 255],
         None => drawing.background,
@@ -161,7 +163,7 @@ fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, b
 /// one thread doing most of the work. Any cut gives the same bits.
 fn band_rows(jobs: &[Job], height: u32, bands: usize) -> Vec<(u32, u32)> {
     let mut work = vec![0u64; height as usize];
-    for j in jobs {
+    for j in jobs.iter().filter(|j| j.width > 0) {
         if let Some(w) = work.get_mut(j.top as usize) {
             *w += 64 + u64::from(j.width) * u64::from(j.height);
         }
@@ -184,45 +186,100 @@ fn band_rows(jobs: &[Job], height: u32, bands: usize) -> Vec<(u32, u32)> {
 
 /// The first pass: each mark's box on the canvas, its steps charged in
 /// drawing order (a mark costs a step plus one per [`PIXELS_PER_STEP`]
-/// pixels of its box; a fill, of the canvas), and the marks to fill.
-fn plan(drawing: &Drawing, fit: f64, (width, height): (u32, u32), budget: &mut Budget) -> Result<Vec<Job>, PreviewError> {
-    let pixels = u64::from(width) * u64::from(height);
-    let mut jobs = Vec::with_capacity(drawing.marks.len());
+/// pixels of its box; a fill, of the canvas), and the marks to fill: one
+/// job per mark, in order, a job of no width filling nothing.
+///
+/// A big drawing is planned on up to `threads` threads, each writing the
+/// jobs of its own stretch of marks in place (a job depends on its mark
+/// alone); the steps are then charged on this thread, mark by mark in
+/// drawing order, as a single pass would charge them.
+fn plan(drawing: &Drawing, fit: f64, canvas: (u32, u32), budget: &mut Budget, threads: usize) -> Result<Vec<Job>, PreviewError> {
+    let n = drawing.marks.len();
+    let mut jobs: Vec<Job> = Vec::with_capacity(n);
     crate::core::hugepages::advise(&mut jobs);
-    let (mut path, mut points) = (Vec::with_capacity(16), Vec::with_capacity(16));
-    for (i, mark) in drawing.marks.iter().enumerate() {
-        if mark.kind == MarkKind::Fill {
-            budget.charge_steps(1 + pixels / PIXELS_PER_STEP)?;
-            jobs.push(Job::of_mark(i, 0, 0, width, height));
-            continue;
-        }
-        let Some((corners, ..)) = shape(drawing, mark, fit, &mut path, &mut points) else { continue };
-        let Some((x0, y0, x1, y1)) = corners else { continue };
-        // The box on the canvas, in whole pixels.
-        let (bx0, by0) = (x0.floor().max(0.0), y0.floor().max(0.0));
-        let (bx1, by1) = (x1.ceil().min(f64::from(width)), y1.ceil().min(f64::from(height)));
-        let (w, h) = (bx1 - bx0, by1 - by0);
-        match 1 + (w.max(0.0) * h.max(0.0)) as u64 / PIXELS_PER_STEP {
+    let threads = if n < BANDS_FROM { 1 } else { threads.max(1) };
+    let per = n.div_ceil(threads).max(1);
+    let shared: &Budget = budget;
+    let spare = &mut jobs.spare_capacity_mut()[..n];
+    let late = if threads == 1 {
+        plan_marks(drawing, 0, fit, canvas, spare, shared)
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = spare.chunks_mut(per).enumerate().map(|(k, out)| scope.spawn(move || plan_marks(drawing, k * per, fit, canvas, out, shared))).collect();
+            // A thread that panicked is a bug; it ends this render with the deadline's error rather than taking the worker down.
+            handles.into_iter().map(|h| h.join().unwrap_or_else(|_| Some(shared.deadline_stop().error()))).fold(None, |first, e| first.or(e))
+        })
+    };
+    // SAFETY: `jobs` had capacity for `n` jobs and held none; `spare` is
+    // its first `n` slots, and `plan_marks` writes every slot it is given
+    // (each chunk's thread its whole chunk, the chunks covering `spare`).
+    // `thread::scope` returns only after every thread has finished, and a
+    // panicking thread never returns here: `thread::scope` re-raises its
+    // panic. So all `n` jobs are initialised when the length is set.
+    unsafe { jobs.set_len(n) };
+    if let Some(e) = late {
+        return Err(e.into());
+    }
+    for job in &jobs {
+        match job.steps {
+            0 => {}
             // Most marks of a big drawing are a pixel or two: their step
             // looks at the clock every 1,024 steps, not every mark (the
             // clock was 3 % of the bush's time).
             1 => budget.charge_step()?,
-            n => budget.charge_steps(n)?,
+            n => budget.charge_steps(u64::from(n))?,
         }
-        if w <= 0.0 || h <= 0.0 || [x0, y0, x1, y1].iter().any(|v| v.abs() > FAR) {
-            continue;
-        }
-        let mut job = Job::of_mark(i, bx0 as u32, by0 as u32, w as u32, h as u32);
-        if mark.kind != MarkKind::Path && points.len() <= 4 && job.width * job.height <= cells::MOST_PIXELS {
-            job.corners = points.len() as u8;
-            job.rgba = mark.rgba;
-            for (c, &(x, y)) in job.points.iter_mut().zip(points.iter()) {
-                *c = (x as f32, y as f32);
-            }
-        }
-        jobs.push(job);
     }
     Ok(jobs)
+}
+
+/// Plans the marks from `first` on into every slot of `out`, one job per
+/// mark; looks at the deadline every 1,024 marks and, past it, writes empty
+/// jobs for the rest and returns the deadline's error.
+fn plan_marks(drawing: &Drawing, first: usize, fit: f64, (width, height): (u32, u32), out: &mut [std::mem::MaybeUninit<Job>], budget: &Budget) -> Option<LimitExceeded> {
+    let pixels = u64::from(width) * u64::from(height);
+    let (mut path, mut points) = (Vec::with_capacity(16), Vec::with_capacity(16));
+    let mut late = None;
+    for (k, slot) in out.iter_mut().enumerate() {
+        let i = first + k;
+        if k % 1024 == 1023 && late.is_none() {
+            late = budget.check_deadline().err();
+        }
+        let job = match (&late, drawing.marks.get(i)) {
+            (None, Some(mark)) => plan_mark(drawing, i, mark, fit, (width, height), pixels, &mut path, &mut points),
+            _ => Job::of_mark(i, 0, 0, 0, 0),
+        };
+        slot.write(job);
+    }
+    late
+}
+
+/// One mark's job: its box, its steps, and for a small primitive its corners.
+#[allow(clippy::too_many_arguments)]
+fn plan_mark(drawing: &Drawing, i: usize, mark: &Mark, fit: f64, (width, height): (u32, u32), pixels: u64, path: &mut Vec<Command>, points: &mut Vec<(f64, f64)>) -> Job {
+    let none = Job::of_mark(i, 0, 0, 0, 0);
+    if mark.kind == MarkKind::Fill {
+        return Job { steps: u32::try_from(1 + pixels / PIXELS_PER_STEP).unwrap_or(u32::MAX), ..Job::of_mark(i, 0, 0, width, height) };
+    }
+    let Some((corners, ..)) = shape(drawing, mark, fit, path, points) else { return none };
+    let Some((x0, y0, x1, y1)) = corners else { return none };
+    // The box on the canvas, in whole pixels.
+    let (bx0, by0) = (x0.floor().max(0.0), y0.floor().max(0.0));
+    let (bx1, by1) = (x1.ceil().min(f64::from(width)), y1.ceil().min(f64::from(height)));
+    let (w, h) = (bx1 - bx0, by1 - by0);
+    let steps = u32::try_from(1 + (w.max(0.0) * h.max(0.0)) as u64 / PIXELS_PER_STEP).unwrap_or(u32::MAX);
+    if w <= 0.0 || h <= 0.0 || [x0, y0, x1, y1].iter().any(|v| v.abs() > FAR) {
+        return Job { steps, ..none };
+    }
+    let mut job = Job { steps, ..Job::of_mark(i, bx0 as u32, by0 as u32, w as u32, h as u32) };
+    if mark.kind != MarkKind::Path && points.len() <= 4 && job.width * job.height <= cells::MOST_PIXELS {
+        job.corners = points.len() as u8;
+        job.rgba = mark.rgba;
+        for (c, &(x, y)) in job.points.iter_mut().zip(points.iter()) {
+            *c = (x as f32, y as f32);
+        }
+    }
+    job
 }
 
 /// A mark's outline (into `path`), style and pen map at the picture's
@@ -252,7 +309,7 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
         if n % 1024 == 1023 {
             budget.check_deadline()?;
         }
-        if job.top >= bottom || job.top + job.height <= top {
+        if job.width == 0 || job.top >= bottom || job.top + job.height <= top {
             continue;
         }
         let (w, h) = (job.width, job.height);

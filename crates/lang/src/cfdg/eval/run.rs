@@ -6,7 +6,7 @@ use super::expr::{scalar, Scope};
 use super::frame::{bounds_polygon, Bounds};
 use super::tile::{Frieze, Tiling};
 use super::adjust::{apply_prepared, prepare, Prepared};
-use super::state::{Hsba, State};
+use super::state::{Affine, Hsba, State};
 use super::{compile, setting, terms_of, Finished, Options, Picture, Rules, Unfinished};
 use crate::cfdg::rand64::Rand64;
 use crate::cfdg::syntax::{self, define_seed, loop_seed, term_seed, Adjustment, Element, Grammar, Value};
@@ -371,7 +371,7 @@ impl Renderer<'_> {
             return Ok(());
         }
         let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
-        self.finish_shape(shape, state, b, box_area, 0)
+        self.finish_shape(shape, &state.transform, state.tz, state.color.rgba(), b, box_area, 0)
     }
 
     /// cfdg's `mScale` of a tiled design: guessed from the first finished
@@ -388,7 +388,8 @@ impl Renderer<'_> {
     /// Keeps a finished shape of bounds `b` (unless a sized design drops it
     /// off the canvas), growing the picture's bounds and scale
     /// (`processPrimShapeSiblings`).
-    fn finish_shape(&mut self, kind: usize, state: State, b: Bounds, box_area: f64, path: usize) -> Result<(), EvalError> {
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn finish_shape(&mut self, kind: usize, transform: &Affine, z: f64, rgba: [f64; 4], b: Bounds, box_area: f64, path: usize) -> Result<(), EvalError> {
         match &self.sized {
             // Off-canvas shapes are dropped from a sized design.
             Some(fixed) => {
@@ -421,7 +422,7 @@ impl Renderer<'_> {
         self.shape_count += 1;
         self.budget.charge_primitive(2)?;
         self.budget.reserve_memory(SHAPE_BYTES)?;
-        self.keep(Finished { kind, transform: state.transform, z: state.tz, rgba: state.color.rgba(), order: self.shape_count, box_area, path, bounds: b });
+        self.keep(Finished { kind, transform: *transform, z, rgba, order: self.shape_count, box_area, path, bounds: b });
         Ok(())
     }
 

@@ -222,31 +222,37 @@ impl Renderer<'_> {
         let room = usize::try_from(room).unwrap_or(0);
         self.finished.reserve(room);
         crate::core::hugepages::advise(&mut self.finished);
-        if x.plan.bodies.iter().flatten().all(|e| e.rest.is_empty()) {
-            self.memo_run::<Affine>(x, start, init, room)
-        } else {
-            self.memo_run::<State>(x, start, init, room)
-        }
-    }
-
-    fn memo_run<C: Carried>(&mut self, x: &mut Expansion, start: usize, init: State, room: usize) -> Result<(), EvalError> {
-        let mut waiting: Pending<Waiting<C>> = Pending::default();
+        let affine = x.plan.bodies.iter().flatten().all(|e| e.rest.is_empty());
+        let mut waiting: Pending<Waiting<State>> = Pending::default();
+        let mut moved: Pending<Waiting<Affine>> = Pending::default();
         // As many may wait as may finish, at most (each waiting shape is
         // charged as a finished one is): room that is never touched costs
         // no memory, and a grown array is a copy into fresh pages.
-        waiting.reserve(room);
-        let result = self.memo_loop(x, &mut waiting, start, init);
+        let result = if affine {
+            moved.reserve(room);
+            self.memo_loop_affine(x, &mut moved, start, init)
+        } else {
+            waiting.reserve(room);
+            self.memo_loop(x, &mut waiting, start, init)
+        };
         // What still waits is given back, as `finish` gives back the general loop's.
-        self.budget.release_memory(SHAPE_BYTES * waiting.len() as u64);
+        self.budget.release_memory(SHAPE_BYTES * (waiting.len() + moved.len()) as u64);
         result
     }
 
-    fn memo_loop<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, start: usize, init: State) -> Result<(), EvalError> {
+    /// [`Renderer::memo_loop`] for a design whose every edge only moves the
+    /// transform (no term left after folding): every other part of every
+    /// state is the start state's, so a waiting shape keeps only its
+    /// transform (a quarter of the bytes per slot, the slots fetched in
+    /// area order all over a large array), and a child is its parent's
+    /// transform premultiplied by the edge's folded map, with no whole
+    /// state copied. The colour, z and drop test are the start state's,
+    /// worked out once. Each step is `memo_loop`'s, in the same order.
+    fn memo_loop_affine(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<Affine>>, start: usize, init: State) -> Result<(), EvalError> {
         let leaf = self.is_leaf(start);
-        // Whether the start state is finite but for its transform: all a
-        // transform-only run needs to know of the rest (`Carried::finite`).
+        x.root = self.memo_process(x, waiting, start, leaf, init)?;
         let base_finite = State { transform: Affine::scaling(1.0, 1.0), ..init }.is_finite();
-        x.root = self.memo_process(x, waiting, start, leaf, init, base_finite)?;
+        let (dropped, z, rgba) = (super::super::anim::dropped(&init), init.tz, init.color.rgba());
         while !waiting.is_empty() {
             if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
                 break;
@@ -254,7 +260,48 @@ impl Renderer<'_> {
             let Some(w) = waiting.pop() else { break };
             self.budget.release_memory(SHAPE_BYTES);
             self.budget.charge_step()?;
-            let state = w.carried.state(&init);
+            let shape = w.shape as usize;
+            let edges = x.plan.bodies[shape].len();
+            if x.recorded {
+                self.budget.reserve_memory(4 * edges as u64)?;
+                x.first[w.node as usize] = x.outcomes.len() as u32;
+            }
+            for k in 0..edges {
+                let e = &x.plan.bodies[shape][k];
+                let (target, leaf) = (e.shape, e.leaf);
+                let mut t = w.carried;
+                if let Some(m) = &e.folded {
+                    t.premultiply(m);
+                }
+                if !(base_finite && super::super::state::all_finite(&[t.sx, t.shy, t.shx, t.sy, t.tx, t.ty])) {
+                    return Err(non_finite());
+                }
+                let out = if dropped {
+                    NONE
+                } else if leaf {
+                    self.memo_leaf(target, &t, z, rgba)?
+                } else {
+                    self.memo_keep(x, waiting, target, t.determinant().abs(), t)?
+                };
+                if x.recorded {
+                    x.outcomes.push(out);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn memo_loop(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<State>>, start: usize, init: State) -> Result<(), EvalError> {
+        let leaf = self.is_leaf(start);
+        x.root = self.memo_process(x, waiting, start, leaf, init)?;
+        while !waiting.is_empty() {
+            if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
+                break;
+            }
+            let Some(w) = waiting.pop() else { break };
+            self.budget.release_memory(SHAPE_BYTES);
+            self.budget.charge_step()?;
+            let state = w.carried;
             let shape = w.shape as usize;
             let edges = x.plan.bodies[shape].len();
             if x.recorded {
@@ -266,7 +313,7 @@ impl Renderer<'_> {
                 let (target, leaf) = (e.shape, e.leaf);
                 let mut child = state;
                 e.apply(&mut child)?;
-                let out = self.memo_process(x, waiting, target, leaf, child, base_finite)?;
+                let out = self.memo_process(x, waiting, target, leaf, child)?;
                 if x.recorded {
                     x.outcomes.push(out);
                 }
@@ -277,52 +324,60 @@ impl Renderer<'_> {
 
     /// `process` for a compiled design: finishes a primitive or keeps a
     /// shape big enough to expand, and says which.
-    fn memo_process<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, shape: usize, leaf: bool, state: State, base_finite: bool) -> Result<u32, EvalError> {
-        if !C::finite(&state, base_finite) {
-            return Err(EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() });
+    fn memo_process<C: Carried>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, shape: usize, leaf: bool, state: State) -> Result<u32, EvalError> {
+        if !state.is_finite() {
+            return Err(non_finite());
         }
         if super::super::anim::dropped(&state) {
             return Ok(NONE);
         }
         if leaf {
-            let before = self.shape_count;
-            self.drawn(shape, state, Vec::new())?;
-            return Ok(match u32::try_from(before) {
-                Ok(o) if self.shape_count > before && o < LEAF => LEAF | o,
-                _ => NONE,
-            });
+            return self.memo_leaf(shape, &state.transform, state.tz, state.color.rgba());
         }
-        let area = state.area();
+        self.memo_keep(x, waiting, shape, state.area(), C::of(&state))
+    }
+
+    /// Finishes primitive `shape` placed by `t` (`drawn` for a primitive,
+    /// which is all a compiled design finishes), and says which it became.
+    fn memo_leaf(&mut self, shape: usize, t: &Affine, z: f64, rgba: [f64; 4]) -> Result<u32, EvalError> {
+        let before = self.shape_count;
+        let b = super::super::frame::Bounds::of_polygon(t, &self.polygons[shape]);
+        if b.valid() {
+            let box_area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
+            self.finish_shape(shape, t, z, rgba, b, box_area, 0)?;
+        }
+        Ok(match u32::try_from(before) {
+            Ok(o) if self.shape_count > before && o < LEAF => LEAF | o,
+            _ => NONE,
+        })
+    }
+
+    /// Keeps a shape of `area` to expand when it is big enough (`process`).
+    fn memo_keep<C>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>, shape: usize, area: f64, carried: C) -> Result<u32, EvalError> {
         if !self.bounds.valid() || area * self.scale_area >= self.min_area {
             self.budget.reserve_memory(SHAPE_BYTES)?;
             self.budget.reserve_memory(0)?;
             let node = x.node(shape);
-            waiting.push(area, Waiting { shape: shape as u32, node, carried: C::of(&state) });
+            waiting.push(area, Waiting { shape: shape as u32, node, carried });
             return Ok(if x.recorded { node } else { NONE });
         }
         Ok(NONE)
     }
 }
 
+/// The error of a shape whose state is not finite (`memo_process`).
+fn non_finite() -> EvalError {
+    EvalError::NonFinite { span: crate::Span::new(1, 1), what: "a shape's state".into(), value: "undefined or infinite".into() }
+}
+
 /// What a waiting shape keeps of its state.
 trait Carried: Copy {
     fn of(s: &State) -> Self;
-    /// The whole state again, the rest taken from `base` (the start state).
-    fn state(&self, base: &State) -> State;
-    /// `s.is_finite()`, for a state of this run; `base_finite` says whether
-    /// the start state is finite but for its transform.
-    fn finite(s: &State, base_finite: bool) -> bool;
 }
 
 impl Carried for State {
     fn of(s: &State) -> Self {
         *s
-    }
-    fn state(&self, _: &State) -> State {
-        *self
-    }
-    fn finite(s: &State, _: bool) -> bool {
-        s.is_finite()
     }
 }
 
@@ -331,14 +386,6 @@ impl Carried for State {
 impl Carried for Affine {
     fn of(s: &State) -> Self {
         s.transform
-    }
-    fn state(&self, base: &State) -> State {
-        State { transform: *self, ..*base }
-    }
-    /// Everything but the transform is the start state's.
-    fn finite(s: &State, base_finite: bool) -> bool {
-        let t = &s.transform;
-        base_finite && super::super::state::all_finite(&[t.sx, t.shy, t.shx, t.sy, t.tx, t.ty])
     }
 }
 

@@ -245,7 +245,7 @@ impl Renderer<'_> {
         let area = ((b.max_x - b.min_x) * (b.max_y - b.min_y)).abs();
         let index = self.paths.len();
         self.paths.push(ctx.cmds);
-        self.finish_shape(3, state, b, area, index)
+        self.finish_shape(3, &state.transform, state.tz, state.color.rgba(), b, area, index)
     }
 
     fn path_body(&mut self, body: &[Element], parent: &State, tr: bool, ctx: &mut Ctx) -> Result<(), EvalError> {
