@@ -176,6 +176,12 @@ pub(crate) fn pop_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
         if less(&v[second], &v[second - 1]) {
             second -= 1;
         }
+        // The sift goes down a level per turn: asking now for the
+        // grandchildren of the hole's new place hides a level of cache
+        // misses of a heap larger than the cache (the bush's waits
+        // 131,072 shapes, 2 MiB).
+        prefetch(v, 4 * second + 3);
+        prefetch(v, 4 * second + 6);
         v[hole] = v[second].clone();
         hole = second;
     }
@@ -185,6 +191,21 @@ pub(crate) fn pop_heap<T: Clone>(v: &mut [T], less: &impl Fn(&T, &T) -> bool) {
         hole = second - 1;
     }
     push_up(&mut v[..len], hole, top, value, less);
+}
+
+/// Asks the cache for `v[i]` when it exists: a hint, which changes no value.
+#[inline(always)]
+fn prefetch<T>(v: &[T], i: usize) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(e) = v.get(i) {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        // SAFETY: `_mm_prefetch` needs SSE, which every x86_64 target has
+        // (it is in the baseline), and is a hint that never reads or
+        // faults; the pointer comes from a live reference anyway.
+        unsafe { _mm_prefetch::<_MM_HINT_T0>((e as *const T).cast::<i8>()) };
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (v, i);
 }
 
 #[cfg(test)]
