@@ -34,6 +34,8 @@ use zeno::{Command, Fill, Mask, Style, Transform};
 
 mod cells;
 mod outline;
+mod pixel;
+use pixel::{blend, demultiply, mul, premultiply};
 use outline::{outline, path_outline};
 
 /// Bounding-box pixels per budget step (the 3D rasteriser charges 64
@@ -150,7 +152,10 @@ fn render_in(drawing: &Drawing, options: &PreviewOptions, budget: &mut Budget, b
     if let Some(e) = failed {
         return Err(e.into());
     }
-    let rgba: Vec<u8> = canvas.iter().flat_map(|&p| demultiply(p)).collect();
+    let mut rgba: Vec<u8> = Vec::with_capacity(canvas.len() * 4);
+    for &p in &canvas {
+        rgba.extend_from_slice(&demultiply(p));
+    }
     drop(canvas);
     budget.release_memory(bytes);
     Ok(Image { size: width, height, rgba })
@@ -372,35 +377,6 @@ fn blend_mask(band: &mut [[u8; 4]], width: u32, top: u32, bottom: u32, job: &Job
             }
         }
     }
-}
-
-/// `a·b/255`, rounded as AGG's `int8u` multiply (`agg::rgba8::multiply`).
-fn mul(a: u8, b: u8) -> u8 {
-    let t = u32::from(a) * u32::from(b) + 128;
-    (((t >> 8) + t) >> 8) as u8
-}
-
-/// A straight-alpha colour premultiplied.
-fn premultiply([r, g, b, a]: [u8; 4]) -> [u8; 4] {
-    [mul(r, a), mul(g, a), mul(b, a), a]
-}
-
-/// A premultiplied colour back to straight alpha (PNG's).
-fn demultiply([r, g, b, a]: [u8; 4]) -> [u8; 4] {
-    if a == 0 {
-        return [0; 4];
-    }
-    let d = |c: u8| ((u32::from(c) * 255 + u32::from(a) / 2) / u32::from(a)).min(255) as u8;
-    [d(r), d(g), d(b), a]
-}
-
-/// Source over a premultiplied pixel: colour `rgb` at coverage-scaled alpha `alpha`.
-fn blend(px: &mut [u8; 4], rgb: [u8; 3], alpha: u8) {
-    let keep = 255 - alpha;
-    for k in 0..3 {
-        px[k] = mul(rgb[k], alpha).saturating_add(mul(px[k], keep));
-    }
-    px[3] = alpha.saturating_add(mul(px[3], keep));
 }
 
 #[cfg(test)]
