@@ -321,10 +321,13 @@ fn fill(drawing: &Drawing, jobs: &[Job], fit: f64, width: u32, top: u32, band: &
         let (bx0, by0) = (f64::from(job.left), f64::from(job.top));
         if job.corners > 0 {
             // A primitive a few pixels across: zeno's coverage, without zeno's setup (cells.rs).
-            mask.clear();
-            mask.resize(w as usize * h as usize, 0);
-            small.fill(&job.points[..usize::from(job.corners)], (-bx0 as f32, -by0 as f32), w, h, &mut mask);
-            blend_mask(band, width, top, bottom, job, &mask);
+            // `Cells::fill` writes every byte of the mask: no zeroing first.
+            let n = w as usize * h as usize;
+            if mask.len() < n {
+                mask.resize(n, 0);
+            }
+            small.fill(&job.points[..usize::from(job.corners)], (-bx0 as f32, -by0 as f32), w, h, &mut mask[..n]);
+            blend_mask(band, width, top, bottom, job, &mask[..n]);
             continue;
         }
         let Some(mark) = drawing.marks.get(job.mark as usize) else { continue };

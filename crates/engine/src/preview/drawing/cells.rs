@@ -45,13 +45,16 @@ pub(super) struct Cells {
 }
 
 impl Cells {
-    /// Writes into `mask` (`width`×`height`, zeroed by the caller) the
+    /// Writes into every byte of `mask` (`width`×`height`; it need not be zeroed) the
     /// non-zero coverage of the closed polygon `points`, each point moved
     /// by `shift` before it is rounded to fixed point, as zeno's
     /// `Mask::render_into` writes it for a path of `MoveTo`, `LineTo`s and
     /// `Close` with that size and offset.
     pub(super) fn fill(&mut self, points: &[(f32, f32)], shift: (f32, f32), width: u32, height: u32, mask: &mut [u8]) {
-        let Some(&first) = points.first() else { return };
+        let Some(&first) = points.first() else {
+            mask.fill(0);
+            return;
+        };
         let (w, h) = (width as i32, height as i32);
         self.width = w;
         self.height = h;
