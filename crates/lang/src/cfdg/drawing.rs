@@ -167,7 +167,6 @@ pub fn into_drawing(mut p: Picture, budget: &mut Budget) -> Result<Drawing, Eval
     Ok(m.finish())
 }
 
-/// Path commands among `shapes`: each is a mark of its own.
 /// The mark kind of a finished shape that is not a path.
 fn primitive_kind(kind: usize) -> MarkKind {
     match kind {
@@ -178,7 +177,13 @@ fn primitive_kind(kind: usize) -> MarkKind {
     }
 }
 
+/// Path commands among `shapes`: each is a mark of its own. None without
+/// a path shape, and then no pass over the shapes (tens of megabytes for
+/// a big design, read three times before).
 fn commands_of(shapes: &[Finished], p: &Picture) -> usize {
+    if !p.has_paths {
+        return 0;
+    }
     shapes.iter().filter(|s| s.kind == 3).map(|s| p.paths.get(s.path).map_or(0, Vec::len)).sum()
 }
 
@@ -238,7 +243,7 @@ impl<'p> Marker<'p> {
     /// in the same order.
     fn add_in_parallel(&mut self, shapes: &[Finished]) -> bool {
         let n = shapes.len();
-        if n < PARALLEL_FROM || !self.marks.is_empty() || shapes.iter().any(|s| s.kind == 3) {
+        if n < PARALLEL_FROM || !self.marks.is_empty() || self.p.has_paths {
             return false;
         }
         self.marks.reserve(n);

@@ -129,6 +129,9 @@ pub struct Picture {
     /// The memoised expansion, when the design is context-free and
     /// [`Options::record`] asked for it (`cfdg/instanced.rs` reads it).
     pub memo: Option<std::sync::Arc<Expansion>>,
+    /// Whether a path shape was finished (false: `shapes` holds no path,
+    /// and a drawing need not look for one).
+    pub has_paths: bool,
 }
 
 #[derive(Debug, Clone)]

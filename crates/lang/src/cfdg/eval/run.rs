@@ -43,6 +43,8 @@ struct Renderer<'g> {
     /// The least and greatest box area of the finished shapes but fills,
     /// and whether one was NaN.
     boxes: (f64, f64, bool),
+    /// Whether a path shape was finished.
+    has_paths: bool,
     min_area: f64,
     fixed_border: f64,
     /// cfdg's `mFixedBorderY` (differs from x only for a frieze).
@@ -166,6 +168,7 @@ pub(super) fn render(g: &Grammar, opts: &Options, budget: &mut Budget) -> Result
         scaled: false,
         unsorted: false,
         boxes: (f64::INFINITY, f64::NEG_INFINITY, false),
+        has_paths: false,
         min_area: min_size * min_size,
         fixed_border,
         fixed_border_y: fixed_border,
@@ -434,6 +437,7 @@ impl Renderer<'_> {
         if self.finished.last().is_some_and(|last| last.z.total_cmp(&f.z).is_gt()) {
             self.unsorted = true;
         }
+        self.has_paths |= f.kind == 3;
         if f.kind != 4 {
             let b = f.box_area;
             (self.boxes.0, self.boxes.1, self.boxes.2) = (self.boxes.0.min(b), self.boxes.1.max(b), self.boxes.2 | b.is_nan());
@@ -701,6 +705,7 @@ impl Renderer<'_> {
             tiling: self.tiling.map(|t| (t, scale)),
             truncated: None,
             memo: None,
+            has_paths: self.has_paths,
         }
     }
 }
