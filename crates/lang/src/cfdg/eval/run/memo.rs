@@ -230,7 +230,23 @@ impl Renderer<'_> {
         // no memory, and a grown array is a copy into fresh pages.
         let result = if affine {
             moved.reserve(room);
-            self.memo_loop_affine(x, &mut moved, start, init)
+            // The finished shapes' pages are faulted in on another thread,
+            // ahead of this one (`core::hugepages::Prefault`): this loop is
+            // sequential, and first touching 40 MB had been a tenth of the
+            // bush's expansion, more when the machine's host backs the pages late.
+            let ahead = crate::core::hugepages::Prefault::of(&self.finished);
+            let room_bytes = room.saturating_mul(std::mem::size_of::<super::super::Finished>());
+            if room_bytes > crate::core::hugepages::AHEAD {
+                std::thread::scope(|scope| {
+                    // Without a thread (the system refuses one) the loop runs alone.
+                    let helper = std::thread::Builder::new().name("cfdg-prefault".into()).spawn_scoped(scope, || ahead.run(std::time::Duration::from_micros(200)));
+                    let r = self.memo_loop_affine(x, &mut moved, start, init, helper.is_ok().then_some(&ahead));
+                    ahead.finish();
+                    r
+                })
+            } else {
+                self.memo_loop_affine(x, &mut moved, start, init, None)
+            }
         } else {
             waiting.reserve(room);
             self.memo_loop(x, &mut waiting, start, init)
@@ -248,11 +264,12 @@ impl Renderer<'_> {
     /// transform premultiplied by the edge's folded map, with no whole
     /// state copied. The colour, z and drop test are the start state's,
     /// worked out once. Each step is `memo_loop`'s, in the same order.
-    fn memo_loop_affine(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<Affine>>, start: usize, init: State) -> Result<(), EvalError> {
+    fn memo_loop_affine(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<Affine>>, start: usize, init: State, ahead: Option<&crate::core::hugepages::Prefault>) -> Result<(), EvalError> {
         let leaf = self.is_leaf(start);
         x.root = self.memo_process(x, waiting, start, leaf, init)?;
         let base_finite = State { transform: Affine::scaling(1.0, 1.0), ..init }.is_finite();
         let (dropped, z, rgba) = (super::super::anim::dropped(&init), init.tz, init.color.rgba());
+        let mut reported = 0usize;
         while !waiting.is_empty() {
             if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
                 break;
@@ -260,6 +277,12 @@ impl Renderer<'_> {
             let Some(w) = waiting.pop() else { break };
             self.budget.release_memory(SHAPE_BYTES);
             self.budget.charge_step()?;
+            if let Some(a) = ahead {
+                if self.finished.len() >= reported + 4096 {
+                    reported = self.finished.len();
+                    a.written(reported, std::mem::size_of::<super::super::Finished>());
+                }
+            }
             let shape = w.shape as usize;
             let edges = x.plan.bodies[shape].len();
             if x.recorded {
