@@ -110,13 +110,21 @@ impl Prefault {
     /// Keeps the pages ahead of the writer faulted in until
     /// [`Prefault::finish`], looking every `every`.
     pub fn run(&self, every: std::time::Duration) {
+        Prefault::run_all(&[self], every);
+    }
+
+    /// [`Prefault::run`] for several arrays with one thread, until the first
+    /// is finished.
+    pub fn run_all(arrays: &[&Prefault], every: std::time::Duration) {
         use std::sync::atomic::Ordering;
-        let mut faulted = 0usize;
-        while !self.done.load(Ordering::Acquire) {
-            let want = self.written.load(Ordering::Acquire).saturating_add(AHEAD).min(self.bytes);
-            if want > faulted {
-                populate_range(self.start.saturating_add(faulted), want - faulted);
-                faulted = want;
+        let mut faulted = vec![0usize; arrays.len()];
+        while !arrays.first().is_none_or(|a| a.done.load(Ordering::Acquire)) {
+            for (a, done) in arrays.iter().zip(faulted.iter_mut()) {
+                let want = a.written.load(Ordering::Acquire).saturating_add(AHEAD).min(a.bytes);
+                if want > *done {
+                    populate_range(a.start.saturating_add(*done), want - *done);
+                    *done = want;
+                }
             }
             std::thread::sleep(every);
         }

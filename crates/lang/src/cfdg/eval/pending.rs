@@ -51,6 +51,17 @@ impl<T> Pending<T> {
         crate::core::hugepages::advise(&mut self.slots);
     }
 
+    /// A prefaulter for the slots (`core::hugepages::Prefault`): they fill
+    /// front to back, a freed slot taken again first.
+    pub(super) fn slots_prefault(&self) -> crate::core::hugepages::Prefault {
+        crate::core::hugepages::Prefault::of(&self.slots)
+    }
+
+    /// Tells `ahead` (from [`Pending::slots_prefault`]) how far the slots are used.
+    pub(super) fn report_slots(&self, ahead: &crate::core::hugepages::Prefault) {
+        ahead.written(self.slots.len(), std::mem::size_of::<Option<T>>());
+    }
+
     /// Adds `s`, which waits by its `area`.
     pub(super) fn push(&mut self, area: f64, s: T) {
         let slot = match self.free.pop() {

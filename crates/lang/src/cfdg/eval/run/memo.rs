@@ -234,14 +234,15 @@ impl Renderer<'_> {
             // ahead of this one (`core::hugepages::Prefault`): this loop is
             // sequential, and first touching 40 MB had been a tenth of the
             // bush's expansion, more when the machine's host backs the pages late.
-            let ahead = crate::core::hugepages::Prefault::of(&self.finished);
+            // The waiting shapes' slots too, as they fill.
+            let ahead = [crate::core::hugepages::Prefault::of(&self.finished), moved.slots_prefault()];
             let room_bytes = room.saturating_mul(std::mem::size_of::<super::super::Finished>());
             if room_bytes > crate::core::hugepages::AHEAD {
                 std::thread::scope(|scope| {
                     // Without a thread (the system refuses one) the loop runs alone.
-                    let helper = std::thread::Builder::new().name("cfdg-prefault".into()).spawn_scoped(scope, || ahead.run(std::time::Duration::from_micros(200)));
+                    let helper = std::thread::Builder::new().name("cfdg-prefault".into()).spawn_scoped(scope, || crate::core::hugepages::Prefault::run_all(&[&ahead[0], &ahead[1]], std::time::Duration::from_micros(200)));
                     let r = self.memo_loop_affine(x, &mut moved, start, init, helper.is_ok().then_some(&ahead));
-                    ahead.finish();
+                    ahead[0].finish();
                     r
                 })
             } else {
@@ -264,7 +265,7 @@ impl Renderer<'_> {
     /// transform premultiplied by the edge's folded map, with no whole
     /// state copied. The colour, z and drop test are the start state's,
     /// worked out once. Each step is `memo_loop`'s, in the same order.
-    fn memo_loop_affine(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<Affine>>, start: usize, init: State, ahead: Option<&crate::core::hugepages::Prefault>) -> Result<(), EvalError> {
+    fn memo_loop_affine(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<Affine>>, start: usize, init: State, ahead: Option<&[crate::core::hugepages::Prefault; 2]>) -> Result<(), EvalError> {
         let leaf = self.is_leaf(start);
         x.root = self.memo_process(x, waiting, start, leaf, init)?;
         let base_finite = State { transform: Affine::scaling(1.0, 1.0), ..init }.is_finite();
@@ -280,7 +281,8 @@ impl Renderer<'_> {
             if let Some(a) = ahead {
                 if self.finished.len() >= reported + 4096 {
                     reported = self.finished.len();
-                    a.written(reported, std::mem::size_of::<super::super::Finished>());
+                    a[0].written(reported, std::mem::size_of::<super::super::Finished>());
+                    waiting.report_slots(&a[1]);
                 }
             }
             let shape = w.shape as usize;
