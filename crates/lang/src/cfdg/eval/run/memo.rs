@@ -271,13 +271,7 @@ impl Renderer<'_> {
         let base_finite = State { transform: Affine::scaling(1.0, 1.0), ..init }.is_finite();
         let (dropped, z, rgba) = (super::super::anim::dropped(&init), init.tz, init.color.rgba());
         let mut reported = 0usize;
-        while !waiting.is_empty() {
-            if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
-                break;
-            }
-            let Some(w) = waiting.pop() else { break };
-            self.budget.release_memory(SHAPE_BYTES);
-            self.budget.charge_step()?;
+        while let Some((w, edges)) = self.memo_next(x, waiting)? {
             if let Some(a) = ahead {
                 if self.finished.len() >= reported + 4096 {
                     reported = self.finished.len();
@@ -286,11 +280,6 @@ impl Renderer<'_> {
                 }
             }
             let shape = w.shape as usize;
-            let edges = x.plan.bodies[shape].len();
-            if x.recorded {
-                self.budget.reserve_memory(4 * edges as u64)?;
-                x.first[w.node as usize] = x.outcomes.len() as u32;
-            }
             for k in 0..edges {
                 let e = &x.plan.bodies[shape][k];
                 let (target, leaf) = (e.shape, e.leaf);
@@ -319,20 +308,8 @@ impl Renderer<'_> {
     fn memo_loop(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<State>>, start: usize, init: State) -> Result<(), EvalError> {
         let leaf = self.is_leaf(start);
         x.root = self.memo_process(x, waiting, start, leaf, init)?;
-        while !waiting.is_empty() {
-            if self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
-                break;
-            }
-            let Some(w) = waiting.pop() else { break };
-            self.budget.release_memory(SHAPE_BYTES);
-            self.budget.charge_step()?;
-            let state = w.carried;
-            let shape = w.shape as usize;
-            let edges = x.plan.bodies[shape].len();
-            if x.recorded {
-                self.budget.reserve_memory(4 * edges as u64)?;
-                x.first[w.node as usize] = x.outcomes.len() as u32;
-            }
+        while let Some((w, edges)) = self.memo_next(x, waiting)? {
+            let (state, shape) = (w.carried, w.shape as usize);
             for k in 0..edges {
                 let e = &x.plan.bodies[shape][k];
                 let (target, leaf) = (e.shape, e.leaf);
@@ -345,6 +322,25 @@ impl Renderer<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The next shape to expand and its number of edges, taken as the
+    /// general loop takes it (largest first, cfdg's maximum shapes, a step
+    /// charged and its memory given back), its node's outcomes begun when
+    /// recorded; `None` when none is left to expand.
+    fn memo_next<C>(&mut self, x: &mut Expansion, waiting: &mut Pending<Waiting<C>>) -> Result<Option<(Waiting<C>, usize)>, EvalError> {
+        if waiting.is_empty() || self.shape_count.max(waiting.len() as u64) >= self.max_shapes {
+            return Ok(None);
+        }
+        let Some(w) = waiting.pop() else { return Ok(None) };
+        self.budget.release_memory(SHAPE_BYTES);
+        self.budget.charge_step()?;
+        let edges = x.plan.bodies[w.shape as usize].len();
+        if x.recorded {
+            self.budget.reserve_memory(4 * edges as u64)?;
+            x.first[w.node as usize] = x.outcomes.len() as u32;
+        }
+        Ok(Some((w, edges)))
     }
 
     /// `process` for a compiled design: finishes a primitive or keeps a
