@@ -19,8 +19,11 @@
 //! step is integer arithmetic or `f32` adds and multiplies with no SIMD,
 //! so the same drawing gives the same bits everywhere.
 //!
-//! Big drawings are filled in parallel horizontal bands ([`render`]), with
-//! the same bits as one band.
+//! A primitive of at most `cells::MOST_PIXELS` mask pixels, most marks
+//! of a big design, takes a port of zeno's rasteriser without its setup
+//! (`drawing/cells.rs`, zeno's bytes). Big drawings are planned and filled
+//! in parallel horizontal bands cut by work ([`render`]), with the same
+//! bits as one band.
 //!
 //! Budget: the canvas is reserved before it is allocated; every mark costs
 //! a step plus one per [`PIXELS_PER_STEP`] pixels of its box on the canvas,
