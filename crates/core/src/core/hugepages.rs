@@ -82,6 +82,15 @@ pub struct Prefault {
     done: std::sync::atomic::AtomicBool,
 }
 
+/// Calls [`Prefault::finish`] when dropped ([`Prefault::finish_on_drop`]).
+pub struct FinishOnDrop<'a>(&'a Prefault);
+
+impl Drop for FinishOnDrop<'_> {
+    fn drop(&mut self) {
+        self.0.finish();
+    }
+}
+
 /// How far ahead of the writer pages are faulted in.
 pub const AHEAD: usize = 8 << 20;
 
@@ -105,6 +114,14 @@ impl Prefault {
     /// The writer is finished: [`Prefault::run`] returns.
     pub fn finish(&self) {
         self.done.store(true, std::sync::atomic::Ordering::Release);
+    }
+
+    /// A guard that calls [`Prefault::finish`] when dropped: the writer
+    /// holds it, so that the helper stops even when the writer unwinds
+    /// from a panic (a scope joins its threads before it re-raises one, and
+    /// would wait for a helper never told to stop).
+    pub fn finish_on_drop(&self) -> FinishOnDrop<'_> {
+        FinishOnDrop(self)
     }
 
     /// Keeps the pages ahead of the writer faulted in until
@@ -176,6 +193,22 @@ mod tests {
         let mut small: Vec<u8> = vec![7; 100];
         advise(&mut small);
         assert_eq!(small, vec![7; 100]);
+    }
+
+    /// A writer that panics still stops its helper: the scope returns (by
+    /// re-raising the panic) instead of waiting for the helper for ever.
+    #[test]
+    fn a_panicking_writer_stops_its_helper() {
+        let v: Vec<u64> = Vec::with_capacity(2 * AHEAD / 8);
+        let ahead = Prefault::of(&v);
+        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            std::thread::scope(|scope| {
+                scope.spawn(|| ahead.run(std::time::Duration::from_micros(50)));
+                let _done = ahead.finish_on_drop();
+                panic!("the writer fails");
+            })
+        }));
+        assert!(outcome.is_err());
     }
 
     /// A writer filling an array while a helper faults in its pages ahead

@@ -240,10 +240,10 @@ impl Renderer<'_> {
             if room_bytes > crate::core::hugepages::AHEAD {
                 std::thread::scope(|scope| {
                     // Without a thread (the system refuses one) the loop runs alone.
+                    // Stops the helper however the loop ends, a panic included.
+                    let _done = ahead[0].finish_on_drop();
                     let helper = std::thread::Builder::new().name("cfdg-prefault".into()).spawn_scoped(scope, || crate::core::hugepages::Prefault::run_all(&[&ahead[0], &ahead[1]], std::time::Duration::from_micros(200)));
-                    let r = self.memo_loop_affine(x, &mut moved, start, init, helper.is_ok().then_some(&ahead));
-                    ahead[0].finish();
-                    r
+                    self.memo_loop_affine(x, &mut moved, start, init, helper.is_ok().then_some(&ahead))
                 })
             } else {
                 self.memo_loop_affine(x, &mut moved, start, init, None)
