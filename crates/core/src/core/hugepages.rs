@@ -34,18 +34,9 @@ pub fn advise<T>(v: &mut Vec<T>) {
 
 #[cfg(target_os = "linux")]
 fn advise_range(start: *mut u8, bytes: usize) {
-    // SAFETY: sysconf has no preconditions; it returns -1 on error.
-    let page = usize::try_from(unsafe { libc::sysconf(libc::_SC_PAGESIZE) }).unwrap_or(0);
-    if page == 0 || !page.is_power_of_two() {
-        return;
-    }
     // Only the whole pages inside the allocation: a page shared with a
     // neighbouring allocation is not advised.
-    let from = (start as usize).next_multiple_of(page);
-    let to = (start as usize).saturating_add(bytes) & !(page - 1);
-    if to <= from {
-        return;
-    }
+    let Some((from, to)) = whole_pages(start as usize, bytes) else { return };
     // SAFETY: `from..to` lies inside one live allocation of this process
     // (`start..start + bytes`, the vector's buffer, rounded inwards to whole
     // pages), so the call names only mapped memory that this allocation
@@ -150,16 +141,7 @@ impl Prefault {
 
 #[cfg(target_os = "linux")]
 fn populate_range(start: usize, bytes: usize) {
-    // SAFETY: sysconf has no preconditions; it returns -1 on error.
-    let page = usize::try_from(unsafe { libc::sysconf(libc::_SC_PAGESIZE) }).unwrap_or(0);
-    if page == 0 || !page.is_power_of_two() {
-        return;
-    }
-    let from = start.next_multiple_of(page);
-    let to = start.saturating_add(bytes) & !(page - 1);
-    if to <= from {
-        return;
-    }
+    let Some((from, to)) = whole_pages(start, bytes) else { return };
     // SAFETY: MADV_POPULATE_WRITE never changes what memory holds: a page
     // already mapped is left as it is (the kernel serialises this with the
     // writer's own faults on the same page), and a page not yet mapped is
@@ -176,6 +158,18 @@ fn populate_range(start: usize, bytes: usize) {
 
 #[cfg(not(target_os = "linux"))]
 fn populate_range(_: usize, _: usize) {}
+
+/// The whole pages inside `start..start + bytes` (rounded inwards), or
+/// `None` when there is none or the page size is unknown: the one range
+/// both `madvise` calls may name.
+#[cfg(target_os = "linux")]
+fn whole_pages(start: usize, bytes: usize) -> Option<(usize, usize)> {
+    // SAFETY: sysconf has no preconditions; it returns -1 on error.
+    let page = usize::try_from(unsafe { libc::sysconf(libc::_SC_PAGESIZE) }).ok().filter(|p| p.is_power_of_two())?;
+    let from = start.next_multiple_of(page);
+    let to = start.saturating_add(bytes) & !(page - 1);
+    (to > from).then_some((from, to))
+}
 
 #[cfg(test)]
 mod tests {
