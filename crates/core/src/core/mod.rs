@@ -11,6 +11,7 @@ pub mod hugepages;
 pub mod library;
 pub mod memprobe;
 pub mod mtrand;
+pub mod parallel;
 pub mod param;
 pub mod primitive;
 pub mod quantise;

@@ -32,6 +32,7 @@
 
 use super::{Image, PreviewError, PreviewOptions};
 use crate::core::budget::{Budget, LimitExceeded};
+use crate::core::parallel::Slots;
 use crate::model::drawing::{Drawing, Mark, MarkKind};
 use zeno::{Command, Fill, Mask, Style, Transform};
 
@@ -206,25 +207,12 @@ fn plan(drawing: &Drawing, fit: f64, canvas: (u32, u32), budget: &mut Budget, th
     let mut jobs: Vec<Job> = Vec::with_capacity(n);
     crate::core::hugepages::advise(&mut jobs);
     let threads = if n < BANDS_FROM { 1 } else { threads.max(1) };
-    let per = n.div_ceil(threads).max(1);
     let shared: &Budget = budget;
-    let spare = &mut jobs.spare_capacity_mut()[..n];
-    let late = if threads == 1 {
-        plan_marks(drawing, 0, fit, canvas, spare, shared)
-    } else {
-        std::thread::scope(|scope| {
-            let handles: Vec<_> = spare.chunks_mut(per).enumerate().map(|(k, out)| scope.spawn(move || plan_marks(drawing, k * per, fit, canvas, out, shared))).collect();
-            // A thread that panicked is a bug; it ends this render with the deadline's error rather than taking the worker down.
-            handles.into_iter().map(|h| h.join().unwrap_or_else(|_| Some(shared.deadline_stop().error()))).fold(None, |first, e| first.or(e))
-        })
+    let late = match crate::core::parallel::fill_in_place(&mut jobs, n, threads, |range, out| plan_marks(drawing, range, fit, canvas, out, shared)) {
+        Ok(late) => late.into_iter().flatten().next(),
+        // A thread that panicked is a bug; it ends this render with the deadline's error rather than taking the worker down.
+        Err(_) => Some(shared.deadline_stop().error()),
     };
-    // SAFETY: `jobs` had capacity for `n` jobs and held none; `spare` is
-    // its first `n` slots, and `plan_marks` writes every slot it is given
-    // (each chunk's thread its whole chunk, the chunks covering `spare`).
-    // `thread::scope` returns only after every thread has finished, and a
-    // panicking thread never returns here: `thread::scope` re-raises its
-    // panic. So all `n` jobs are initialised when the length is set.
-    unsafe { jobs.set_len(n) };
     if let Some(e) = late {
         return Err(e.into());
     }
@@ -241,15 +229,14 @@ fn plan(drawing: &Drawing, fit: f64, canvas: (u32, u32), budget: &mut Budget, th
     Ok(jobs)
 }
 
-/// Plans the marks from `first` on into every slot of `out`, one job per
-/// mark; looks at the deadline every 1,024 marks and, past it, writes empty
-/// jobs for the rest and returns the deadline's error.
-fn plan_marks(drawing: &Drawing, first: usize, fit: f64, (width, height): (u32, u32), out: &mut [std::mem::MaybeUninit<Job>], budget: &Budget) -> Option<LimitExceeded> {
+/// Plans the marks of `range`, pushing one job per mark into `out`; looks
+/// at the deadline every 1,024 marks and, past it, pushes empty jobs for
+/// the rest and returns the deadline's error.
+fn plan_marks(drawing: &Drawing, range: std::ops::Range<usize>, fit: f64, (width, height): (u32, u32), out: &mut Slots<'_, Job>, budget: &Budget) -> Option<LimitExceeded> {
     let pixels = u64::from(width) * u64::from(height);
     let (mut path, mut points) = (Vec::with_capacity(16), Vec::with_capacity(16));
     let mut late = None;
-    for (k, slot) in out.iter_mut().enumerate() {
-        let i = first + k;
+    for (k, i) in range.enumerate() {
         if k % 1024 == 1023 && late.is_none() {
             late = budget.check_deadline().err();
         }
@@ -257,7 +244,7 @@ fn plan_marks(drawing: &Drawing, first: usize, fit: f64, (width, height): (u32, 
             (None, Some(mark)) => plan_mark(drawing, i, mark, fit, (width, height), pixels, &mut path, &mut points),
             _ => Job::of_mark(i, 0, 0, 0, 0),
         };
-        slot.write(job);
+        out.push(job);
     }
     late
 }

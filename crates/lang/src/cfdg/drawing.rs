@@ -246,29 +246,18 @@ impl<'p> Marker<'p> {
         if n < PARALLEL_FROM || !self.marks.is_empty() || self.p.has_paths {
             return false;
         }
-        self.marks.reserve(n);
         let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).clamp(1, 4);
-        let per = n.div_ceil(threads);
         let mut room = std::mem::take(&mut self.marks);
         let this = &*self;
-        let spare = &mut room.spare_capacity_mut()[..n];
-        std::thread::scope(|scope| {
-            for (out, input) in spare.chunks_mut(per).zip(shapes.chunks(per)) {
-                scope.spawn(move || {
-                    for (slot, s) in out.iter_mut().zip(input) {
-                        slot.write(this.mark(primitive_kind(s.kind), s.kind, &s.transform, s.rgba, 0, None));
-                    }
-                });
+        let filled = crate::core::parallel::fill_in_place(&mut room, n, threads, |range, marks| {
+            for s in &shapes[range] {
+                marks.push(this.mark(primitive_kind(s.kind), s.kind, &s.transform, s.rgba, 0, None));
             }
         });
-        // SAFETY: `room` had capacity for at least `n` marks (reserved
-        // above) and held none; `spare` is its first `n` slots, split into
-        // chunks that zip one for one with `shapes`' chunks of the same
-        // size, and each chunk's thread wrote every slot of its chunk.
-        // `thread::scope` returns only after every thread has finished (and
-        // re-raises a thread's panic instead of returning), so all `n`
-        // slots are initialised when the length is set.
-        unsafe { room.set_len(n) };
+        if filled.is_err() {
+            // A bug in `mark`; the one-thread path meets it again.
+            return false;
+        }
         self.marks = room;
         true
     }
