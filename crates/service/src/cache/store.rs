@@ -84,12 +84,22 @@ enum Fill<E> {
 /// The byte-budgeted, single-flight model store.
 #[derive(Clone)]
 pub struct ModelCache {
-    inner: Cache<CacheKey, Arc<Rendered>>,
+    inner: Cache<CacheKey, Arc<Rendered>, KeyHasher>,
     evictions: Arc<AtomicU64>,
     disk: Option<Arc<DiskTier>>,
     redis: Option<Arc<RedisTier>>,
     observer: Option<Arc<dyn CacheObserver>>,
 }
+
+/// The hasher of the model cache's table. Its keys are BLAKE3 digests, so
+/// SipHash (moka's default, `RandomState`) bought nothing but time: under a
+/// stream of fresh renders every insert evicts, and moka's concurrent table
+/// rehashes its whole key set now and then to drop the evicted entries'
+/// tombstones, which cost about 5 µs of each fresh `gem.glb` request's
+/// CPU in SipHash alone (issue 33's profile). foldhash is hashbrown's own
+/// hasher, seeded per process, so a client that chooses sources still cannot
+/// aim keys at one bucket.
+type KeyHasher = foldhash::fast::RandomState;
 
 /// Bytes charged per entry besides the model itself (key, metadata, moka's bookkeeping).
 const ENTRY_OVERHEAD: usize = 256;
@@ -109,7 +119,7 @@ impl ModelCache {
                     counter.fetch_add(1, Ordering::Relaxed);
                 }
             })
-            .build();
+            .build_with_hasher(KeyHasher::default());
         ModelCache { inner, evictions, disk: None, redis: None, observer: None }
     }
 
