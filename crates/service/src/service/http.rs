@@ -230,7 +230,9 @@ pub(crate) fn next_request_id() -> u64 {
 /// Counts every request by route and status and logs it in a span with a
 /// request id, the language, the cache key and the cache result.
 async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -> Response {
-    let route = req.extensions().get::<MatchedPath>().map_or_else(|| "unmatched".to_string(), |m| m.as_str().to_string());
+    // The matched path is shared (an `Arc<str>` inside): cloned, not copied.
+    let matched = req.extensions().get::<MatchedPath>().cloned();
+    let route = matched.as_ref().map_or("unmatched", MatchedPath::as_str);
     let id = next_request_id();
     let method = req.method().clone();
     let span = tracing::info_span!(
@@ -238,22 +240,27 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
         id,
         method = %method,
         route = %route,
-        otel.name = %format!("{} {route}", req.method()),
+        otel.name = tracing::field::Empty,
         otel.kind = "server",
         language = tracing::field::Empty,
         key = tracing::field::Empty,
         cache = tracing::field::Empty
     );
+    // The span's name in a trace; only spans being exported need it, and
+    // formatting it cost every request an allocation (issue 33).
+    if super::telemetry::tracing_on() {
+        span.record("otel.name", tracing::field::display(format_args!("{method} {route}")));
+    }
     super::telemetry::adopt_parent(&span, |name| req.headers().get(name).and_then(|v| v.to_str().ok()));
     let started = Instant::now();
     let mut resp = next.run(req).instrument(span.clone()).await;
     let status = resp.status().as_u16();
     let took = started.elapsed();
-    state.metrics.request("http", &route, status, took);
+    state.metrics.request("http", route, status, took);
     let etag = resp.headers().get(header::ETAG).and_then(|v| v.to_str().ok());
     let timing = resp.extensions().get::<RequestTiming>();
     let bytes = axum::body::HttpBody::size_hint(resp.body()).exact();
-    let finished = Finished { id, method: method.as_str(), route: &route, status: Some(status), code: None, wall: took, bytes, etag, timing };
+    let finished = Finished { id, method: method.as_str(), route, status: Some(status), code: None, wall: took, bytes, etag, timing };
     log_request(&finished, &span);
     if let Ok(v) = HeaderValue::from_str(&id.to_string()) {
         resp.headers_mut().insert("x-request-id", v);
@@ -458,8 +465,11 @@ async fn model_get(
     Extension(caller): Extension<Caller>,
     Path(file): Path<String>,
     RawQuery(query): RawQuery,
-    headers: HeaderMap,
+    // The request itself, not a `HeaderMap` extractor: that one clones the
+    // headers of every request (issue 33's profile).
+    req: Request,
 ) -> Response {
+    let headers = req.headers();
     let result = async {
         // Every extension of the registry's formats (the first format that claims one).
         let known = || Format::extensions().join(", ");
@@ -472,11 +482,11 @@ async fn model_get(
         };
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
         let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.as_deref().unwrap_or(""))?;
-        let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?.with_phone_default(super::phone::is_phone(&headers));
+        let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?.with_phone_default(super::phone::is_phone(headers));
         let pinned = body.options.seed.is_some();
         let text = is_text(format);
         let print = body.options.print == Some(true);
-        let plan = body.plan(&Limits::defaults_for(print).clamped_to(&caller.ceiling), wants_fresh(&headers))?;
+        let plan = body.plan(&Limits::defaults_for(print).clamped_to(&caller.ceiling), wants_fresh(headers))?;
         let format = plan.request.format;
         let key = plan.key;
         let served = st.engine.serve(plan).await?;
@@ -488,7 +498,7 @@ async fn model_get(
             let cc = if pinned { CACHE_IMMUTABLE } else { CACHE_SHORT };
             // What the fast path (`service::fast`) needs to answer this again.
             let fill = super::fast::Fillable { key, model: served.model.clone(), format, route: MODELS_ROUTE };
-            if etag_matches(&headers, &served.model.etag) {
+            if etag_matches(headers, &served.model.etag) {
                 let mut resp = StatusCode::NOT_MODIFIED.into_response();
                 model_headers(resp.headers_mut(), &served, Some(cc));
                 super::phone::vary(resp.headers_mut(), format);
