@@ -347,15 +347,7 @@ pub(super) fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Track
     serialise(&doc.finish(meta)?)
 }
 
-/// `root` as compact JSON, the bytes `Root::to_vec` gives, written into a
-/// buffer sized for the document up front: `to_vec` starts at 128 bytes
-/// and doubles, and the copies of that growth were a seventh of the
-/// serialisation of a small instanced glb (issue 33's profile).
+/// `root` as compact JSON, the bytes `Root::to_vec` gives (`json_out`).
 pub(super) fn serialise(root: &json::Root) -> Result<Vec<u8>, ExportError> {
-    // About what one accessor, view, node or mesh takes, with room to spare
-    // for the asset, the scene and the extras.
-    let items = root.accessors.len() + root.buffer_views.len() + root.nodes.len() + root.meshes.len() + root.materials.len();
-    let mut out = Vec::with_capacity(1024 + 160 * items);
-    serde_json::to_writer(&mut out, root)?;
-    Ok(out)
+    super::json_out::root_json(root)
 }

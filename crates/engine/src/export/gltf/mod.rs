@@ -38,6 +38,7 @@ pub mod compact;
 mod document;
 mod gpu_instancing;
 mod graph;
+mod json_out;
 mod instanced;
 
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};

@@ -1,0 +1,283 @@
+//! A glTF document's JSON: the bytes serde_json writes for gltf-json's
+//! `Root` (`Root::to_vec`), with the two arrays that make up most of a
+//! document, its accessors and buffer views, written without serde.
+//!
+//! Why: in a fresh icon render (issue 33's `gem.glb`: 25 accessors and 25
+//! views in 5 KB of JSON) serialising the document was a quarter of the
+//! whole render's CPU, mostly serde's per-field machinery around short
+//! keys (`format_escaped_str` alone a third of it). An accessor or a view
+//! with nothing but numbers and fixed words is written here as plain
+//! bytes; anything else (a name, extensions, extras, sparse storage, the
+//! other arrays and objects) goes through serde_json as before, field by
+//! field in gltf-json's declaration order, so the output is the same bytes
+//! `Root::to_vec` gives. The unit tests compare the two on documents with
+//! every field these writers set, and the golden table on every model.
+
+use crate::export::ExportError;
+use gltf_json as json;
+use json::validation::Checked;
+use serde::Serialize;
+
+/// `root` as compact JSON: the bytes of `Root::to_vec`.
+pub(super) fn root_json(root: &json::Root) -> Result<Vec<u8>, ExportError> {
+    // About what one accessor, view, node or mesh takes, with room to spare
+    // for the asset, the scene and the extras: one allocation, not the
+    // doubling from 128 bytes that `to_vec` starts with.
+    let items = root.accessors.len() + root.buffer_views.len() + root.nodes.len() + root.meshes.len() + root.materials.len();
+    let mut o = Out { bytes: Vec::with_capacity(1024 + 160 * items), first: true };
+    o.bytes.push(b'{');
+    // gltf-json's `Root` fields in declaration order, each skipped exactly
+    // when its `skip_serializing_if` says.
+    if !root.accessors.is_empty() {
+        o.key("accessors");
+        o.array(&root.accessors, accessor)?;
+    }
+    o.vec_field("animations", &root.animations)?;
+    o.field("asset", &root.asset)?;
+    o.vec_field("buffers", &root.buffers)?;
+    if !root.buffer_views.is_empty() {
+        o.key("bufferViews");
+        o.array(&root.buffer_views, view)?;
+    }
+    o.option_field("scene", &root.scene)?;
+    o.option_field("extensions", &root.extensions)?;
+    o.option_field("extras", &root.extras)?;
+    o.vec_field("extensionsUsed", &root.extensions_used)?;
+    o.vec_field("extensionsRequired", &root.extensions_required)?;
+    o.vec_field("cameras", &root.cameras)?;
+    o.vec_field("images", &root.images)?;
+    o.vec_field("materials", &root.materials)?;
+    o.vec_field("meshes", &root.meshes)?;
+    o.vec_field("nodes", &root.nodes)?;
+    o.vec_field("samplers", &root.samplers)?;
+    o.vec_field("scenes", &root.scenes)?;
+    o.vec_field("skins", &root.skins)?;
+    o.vec_field("textures", &root.textures)?;
+    o.bytes.push(b'}');
+    Ok(o.bytes)
+}
+
+/// The JSON being written, and whether the open object has a field yet.
+struct Out {
+    bytes: Vec<u8>,
+    first: bool,
+}
+
+impl Out {
+    /// Starts field `name` of the open object (no key needs escaping).
+    fn key(&mut self, name: &str) {
+        if !self.first {
+            self.bytes.push(b',');
+        }
+        self.first = false;
+        self.bytes.push(b'"');
+        self.bytes.extend_from_slice(name.as_bytes());
+        self.bytes.extend_from_slice(b"\":");
+    }
+
+    /// A field whose value serde writes.
+    fn field(&mut self, name: &str, value: &impl Serialize) -> Result<(), ExportError> {
+        self.key(name);
+        serde_json::to_writer(&mut self.bytes, value)?;
+        Ok(())
+    }
+
+    /// A field skipped when `None` (`skip_serializing_if = "Option::is_none"`).
+    fn option_field<T: Serialize>(&mut self, name: &str, value: &Option<T>) -> Result<(), ExportError> {
+        match value {
+            Some(v) => self.field(name, v),
+            None => Ok(()),
+        }
+    }
+
+    /// A field skipped when empty (`skip_serializing_if = "Vec::is_empty"`).
+    fn vec_field<T: Serialize>(&mut self, name: &str, value: &[T]) -> Result<(), ExportError> {
+        match value.is_empty() {
+            true => Ok(()),
+            false => self.field(name, &value),
+        }
+    }
+
+    /// An array whose elements `write` writes (each an object of its own).
+    fn array<T>(&mut self, items: &[T], write: fn(&mut Out, &T) -> Result<(), ExportError>) -> Result<(), ExportError> {
+        self.bytes.push(b'[');
+        for (k, item) in items.iter().enumerate() {
+            if k > 0 {
+                self.bytes.push(b',');
+            }
+            self.first = true;
+            write(self, item)?;
+        }
+        self.bytes.push(b']');
+        self.first = false;
+        Ok(())
+    }
+
+    /// A number field.
+    fn number(&mut self, name: &str, value: u64) {
+        self.key(name);
+        self.bytes.extend_from_slice(itoa::Buffer::new().format(value).as_bytes());
+    }
+}
+
+/// The value of a `Checked` enum, or `None` for `Invalid` (which serde refuses).
+fn valid<T: Copy>(c: &Checked<T>) -> Option<T> {
+    match c {
+        Checked::Valid(v) => Some(*v),
+        Checked::Invalid => None,
+    }
+}
+
+/// One accessor: by hand when it holds only numbers, bounds and fixed
+/// words, else by serde.
+fn accessor(o: &mut Out, a: &json::Accessor) -> Result<(), ExportError> {
+    let (Some(component), Some(kind)) = (valid(&a.component_type), valid(&a.type_)) else {
+        serde_json::to_writer(&mut o.bytes, a)?;
+        return Ok(());
+    };
+    if a.extensions.is_some() || a.extras.is_some() || a.name.is_some() || a.sparse.is_some() {
+        serde_json::to_writer(&mut o.bytes, a)?;
+        return Ok(());
+    }
+    o.bytes.push(b'{');
+    if let Some(v) = a.buffer_view {
+        o.number("bufferView", v.value() as u64);
+    }
+    if let Some(off) = a.byte_offset {
+        o.number("byteOffset", off.0);
+    }
+    o.number("count", a.count.0);
+    o.number("componentType", u64::from(component.0.as_gl_enum()));
+    o.key("type");
+    o.bytes.push(b'"');
+    o.bytes.extend_from_slice(type_name(kind).as_bytes());
+    o.bytes.push(b'"');
+    o.option_field("min", &a.min)?;
+    o.option_field("max", &a.max)?;
+    if a.normalized {
+        o.key("normalized");
+        o.bytes.extend_from_slice(b"true");
+    }
+    o.bytes.push(b'}');
+    Ok(())
+}
+
+/// An accessor type's word, as gltf-json writes it.
+fn type_name(t: json::accessor::Type) -> &'static str {
+    use json::accessor::Type;
+    match t {
+        Type::Scalar => "SCALAR",
+        Type::Vec2 => "VEC2",
+        Type::Vec3 => "VEC3",
+        Type::Vec4 => "VEC4",
+        Type::Mat2 => "MAT2",
+        Type::Mat3 => "MAT3",
+        Type::Mat4 => "MAT4",
+    }
+}
+
+/// One buffer view: by hand when it holds only numbers, else by serde.
+fn view(o: &mut Out, v: &json::buffer::View) -> Result<(), ExportError> {
+    let target = match &v.target {
+        None => None,
+        Some(t) => match valid(t) {
+            Some(t) => Some(t),
+            None => {
+                serde_json::to_writer(&mut o.bytes, v)?;
+                return Ok(());
+            }
+        },
+    };
+    if v.extensions.is_some() || v.extras.is_some() || v.name.is_some() {
+        serde_json::to_writer(&mut o.bytes, v)?;
+        return Ok(());
+    }
+    o.bytes.push(b'{');
+    o.number("buffer", v.buffer.value() as u64);
+    o.number("byteLength", v.byte_length.0);
+    if let Some(off) = v.byte_offset {
+        o.number("byteOffset", off.0);
+    }
+    if let Some(s) = v.byte_stride {
+        o.number("byteStride", s.0 as u64);
+    }
+    if let Some(t) = target {
+        o.number("target", u64::from(match t {
+            json::buffer::Target::ArrayBuffer => json::buffer::ARRAY_BUFFER,
+            json::buffer::Target::ElementArrayBuffer => json::buffer::ELEMENT_ARRAY_BUFFER,
+        }));
+    }
+    o.bytes.push(b'}');
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use json::accessor::{ComponentType, GenericComponentType, Type};
+    use json::buffer::{Stride, Target};
+    use json::validation::{Checked::Valid, USize64};
+    use json::Index;
+
+    /// A document with every kind of accessor and view the writers make,
+    /// and some they do not (names with quotes and escapes, extras).
+    fn mixed() -> json::Root {
+        let mut root = json::Root::default();
+        let buffer = root.push(json::Buffer { byte_length: USize64(4096), name: None, uri: None, extensions: None, extras: None });
+        for (k, target) in [None, Some(Valid(Target::ArrayBuffer)), Some(Valid(Target::ElementArrayBuffer)), Some(Valid(Target::ArrayBuffer))].into_iter().enumerate() {
+            root.push(json::buffer::View {
+                buffer,
+                byte_length: USize64(12 * k as u64 + 1),
+                byte_offset: (k % 2 == 1).then_some(USize64(8 * k as u64)),
+                byte_stride: (k == 2).then_some(Stride(12)),
+                name: (k == 3).then(|| "a \"named\" view\n".to_string()),
+                target,
+                extensions: None,
+                extras: None,
+            });
+        }
+        let kinds = [(ComponentType::F32, Type::Vec3), (ComponentType::U8, Type::Vec4), (ComponentType::U16, Type::Scalar), (ComponentType::U32, Type::Scalar), (ComponentType::I16, Type::Mat4), (ComponentType::I8, Type::Vec2)];
+        for (k, (component, kind)) in kinds.into_iter().enumerate() {
+            let mut a = json::Accessor {
+                buffer_view: (k != 5).then(|| Index::new(k as u32 % 4)),
+                byte_offset: (k % 2 == 0).then_some(USize64(4 * k as u64)),
+                count: USize64(1000 + k as u64),
+                component_type: Valid(GenericComponentType(component)),
+                extensions: None,
+                extras: None,
+                type_: Valid(kind),
+                min: None,
+                max: None,
+                name: (k == 4).then(|| "ünïcode \\ name".to_string()),
+                normalized: k == 1,
+                sparse: None,
+            };
+            if k == 0 {
+                a.min = Some(serde_json::json!([-0.5, 1e-7, 3.0]));
+                a.max = Some(serde_json::json!([0.1, 123456.789, 1e30]));
+            }
+            if k == 3 {
+                a.extras = Some(json::extras::RawValue::from_string("{\"x\":1}".to_string()).expect("raw"));
+            }
+            root.push(a);
+        }
+        root.extensions_used.push("EXT_mesh_gpu_instancing".to_string());
+        root.asset.generator = Some("rulemesh test".to_string());
+        root
+    }
+
+    #[test]
+    fn the_bytes_are_serde_jsons() {
+        let root = mixed();
+        assert_eq!(String::from_utf8(root_json(&root).unwrap()).unwrap(), String::from_utf8(root.to_vec().unwrap()).unwrap());
+        let empty = json::Root::default();
+        assert_eq!(root_json(&empty).unwrap(), empty.to_vec().unwrap());
+        // An invalid enum is refused by both.
+        let mut bad = mixed();
+        bad.buffer_views[1].target = Some(json::validation::Checked::Invalid);
+        assert!(root_json(&bad).is_err() && bad.to_vec().is_err());
+        let mut bad = mixed();
+        bad.accessors[0].type_ = json::validation::Checked::Invalid;
+        assert!(root_json(&bad).is_err() && bad.to_vec().is_err());
+    }
+}
