@@ -47,8 +47,14 @@ pub(super) fn root_json(root: &json::Root) -> Result<Vec<u8>, ExportError> {
     o.vec_field("cameras", &root.cameras)?;
     o.vec_field("images", &root.images)?;
     o.vec_field("materials", &root.materials)?;
-    o.vec_field("meshes", &root.meshes)?;
-    o.vec_field("nodes", &root.nodes)?;
+    if !root.meshes.is_empty() {
+        o.key("meshes");
+        o.array(&root.meshes, mesh)?;
+    }
+    if !root.nodes.is_empty() {
+        o.key("nodes");
+        o.array(&root.nodes, node)?;
+    }
     o.vec_field("samplers", &root.samplers)?;
     o.vec_field("scenes", &root.scenes)?;
     o.vec_field("skins", &root.skins)?;
@@ -116,7 +122,44 @@ impl Out {
     /// A number field.
     fn number(&mut self, name: &str, value: u64) {
         self.key(name);
+        self.integer(value);
+    }
+
+    /// A bare integer.
+    fn integer(&mut self, value: u64) {
         self.bytes.extend_from_slice(itoa::Buffer::new().format(value).as_bytes());
+    }
+
+    /// A string as serde_json writes it: as it is when nothing in it needs
+    /// escaping (no quote, backslash or control character; serde_json leaves
+    /// every other character, non-ASCII included, as it is), else by serde.
+    fn string(&mut self, s: &str) -> Result<(), ExportError> {
+        if s.bytes().all(|b| b >= 0x20 && b != b'"' && b != b'\\') {
+            self.bytes.push(b'"');
+            self.bytes.extend_from_slice(s.as_bytes());
+            self.bytes.push(b'"');
+        } else {
+            serde_json::to_writer(&mut self.bytes, s)?;
+        }
+        Ok(())
+    }
+
+    /// A string field skipped when `None`.
+    fn name_field(&mut self, name: &str, value: &Option<String>) -> Result<(), ExportError> {
+        match value {
+            Some(v) => {
+                self.key(name);
+                self.string(v)
+            }
+            None => Ok(()),
+        }
+    }
+
+    /// An index field skipped when `None`.
+    fn index_field<T>(&mut self, name: &str, value: Option<json::Index<T>>) {
+        if let Some(i) = value {
+            self.number(name, i.value() as u64);
+        }
     }
 }
 
@@ -211,6 +254,86 @@ fn view(o: &mut Out, v: &json::buffer::View) -> Result<(), ExportError> {
     Ok(())
 }
 
+/// One mesh: its fields in gltf-json's order, the primitives by hand
+/// unless one has extensions, extras or morph targets.
+fn mesh(o: &mut Out, m: &json::Mesh) -> Result<(), ExportError> {
+    if m.primitives.iter().any(|p| p.extensions.is_some() || p.extras.is_some() || p.targets.is_some()) {
+        serde_json::to_writer(&mut o.bytes, m)?;
+        return Ok(());
+    }
+    o.bytes.push(b'{');
+    o.option_field("extensions", &m.extensions)?;
+    o.option_field("extras", &m.extras)?;
+    o.name_field("name", &m.name)?;
+    o.key("primitives");
+    o.array(&m.primitives, primitive)?;
+    o.option_field("weights", &m.weights)?;
+    o.bytes.push(b'}');
+    Ok(())
+}
+
+/// One primitive with no extensions, extras or morph targets.
+fn primitive(o: &mut Out, p: &json::mesh::Primitive) -> Result<(), ExportError> {
+    o.bytes.push(b'{');
+    o.key("attributes");
+    o.bytes.push(b'{');
+    // The map's own order, as serde walks it.
+    for (k, (semantic, index)) in p.attributes.iter().enumerate() {
+        if k > 0 {
+            o.bytes.push(b',');
+        }
+        match semantic {
+            Checked::Valid(s) => o.string(&s.to_string())?,
+            // serde refuses an invalid key: so does this.
+            Checked::Invalid => {
+                serde_json::to_writer(&mut o.bytes, semantic)?;
+            }
+        }
+        o.bytes.push(b':');
+        o.integer(index.value() as u64);
+    }
+    o.bytes.push(b'}');
+    o.index_field("indices", p.indices);
+    o.index_field("material", p.material);
+    match p.mode {
+        Checked::Valid(json::mesh::Mode::Triangles) => {}
+        Checked::Valid(mode) => o.number("mode", u64::from(mode.as_gl_enum())),
+        Checked::Invalid => o.field("mode", &p.mode)?,
+    }
+    o.bytes.push(b'}');
+    Ok(())
+}
+
+/// One node: its fields in gltf-json's order; numbers and the name by
+/// hand, floats, extensions and extras by serde.
+fn node(o: &mut Out, n: &json::Node) -> Result<(), ExportError> {
+    o.bytes.push(b'{');
+    o.index_field("camera", n.camera);
+    if let Some(children) = &n.children {
+        o.key("children");
+        o.bytes.push(b'[');
+        for (k, c) in children.iter().enumerate() {
+            if k > 0 {
+                o.bytes.push(b',');
+            }
+            o.integer(c.value() as u64);
+        }
+        o.bytes.push(b']');
+    }
+    o.option_field("extensions", &n.extensions)?;
+    o.option_field("extras", &n.extras)?;
+    o.option_field("matrix", &n.matrix)?;
+    o.index_field("mesh", n.mesh);
+    o.name_field("name", &n.name)?;
+    o.option_field("rotation", &n.rotation)?;
+    o.option_field("scale", &n.scale)?;
+    o.option_field("translation", &n.translation)?;
+    o.index_field("skin", n.skin);
+    o.option_field("weights", &n.weights)?;
+    o.bytes.push(b'}');
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -261,6 +384,30 @@ mod tests {
             }
             root.push(a);
         }
+        for (k, name) in ["plain", "quo\"ted", "tab\there", "ünï"].into_iter().enumerate() {
+            let mut attributes = std::collections::BTreeMap::new();
+            attributes.insert(Valid(json::mesh::Semantic::Colors(0)), Index::new(2));
+            attributes.insert(Valid(json::mesh::Semantic::Positions), Index::new(0));
+            attributes.insert(Valid(json::mesh::Semantic::Normals), Index::new(1));
+            if k == 3 {
+                attributes.insert(Valid(json::mesh::Semantic::TexCoords(1)), Index::new(4));
+            }
+            let mode = if k == 2 { json::mesh::Mode::Lines } else { json::mesh::Mode::Triangles };
+            let primitive = json::mesh::Primitive { attributes, extensions: None, extras: None, indices: (k != 1).then(|| Index::new(3)), material: (k == 0).then(|| Index::new(0)), mode: Valid(mode), targets: None };
+            let mesh = root.push(json::Mesh { extensions: None, extras: None, name: Some(name.to_string()), primitives: vec![primitive], weights: (k == 3).then(|| vec![0.25, 1.5]) });
+            root.push(json::Node {
+                mesh: Some(mesh),
+                name: (k != 1).then(|| name.to_string()),
+                translation: (k % 2 == 0).then_some([1.5, -2.25, 1e-9]),
+                scale: (k == 2).then_some([0.1; 3]),
+                rotation: (k == 3).then_some(json::scene::UnitQuaternion([0.0, 0.70710677, 0.0, 0.70710677])),
+                children: (k == 1).then(|| vec![Index::new(0), Index::new(2)]),
+                camera: (k == 2).then(|| Index::new(0)),
+                matrix: None,
+                ..Default::default()
+            });
+        }
+        root.nodes[0].extras = Some(json::extras::RawValue::from_string("[1,2]".to_string()).expect("raw"));
         root.extensions_used.push("EXT_mesh_gpu_instancing".to_string());
         root.asset.generator = Some("rulemesh test".to_string());
         root
