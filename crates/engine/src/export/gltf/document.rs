@@ -110,7 +110,8 @@ fn scene_extras(meta: &ExportMeta) -> Result<json::Extras, ExportError> {
     if map.is_empty() {
         return Ok(None);
     }
-    Ok(Some(json::extras::RawValue::from_string(serde_json::to_string(&map)?)?))
+    // Written, not parsed back: the map's text is JSON already.
+    Ok(Some(serde_json::value::to_raw_value(&map)?))
 }
 
 /// The material every mesh is drawn with: white, metallic 0, roughness 0.8,
@@ -301,7 +302,7 @@ impl Doc {
         }
         let scene = self.root.push(json::Scene { extensions: None, extras: scene_extras(meta)?, name: None, nodes });
         if let Some(p) = &meta.provenance {
-            self.root.asset.extras = Some(json::extras::RawValue::from_string(serde_json::to_string(&p.json())?)?);
+            self.root.asset.extras = Some(p.raw_json()?);
         }
         self.root.scene = Some(scene);
         Ok(self.root)
