@@ -1,17 +1,23 @@
 //! A glTF document's JSON: the bytes serde_json writes for gltf-json's
-//! `Root` (`Root::to_vec`), with the two arrays that make up most of a
-//! document, its accessors and buffer views, written without serde.
+//! `Root` (`Root::to_vec`), with the arrays that make up most of a
+//! document (accessors, buffer views, meshes and nodes) written without
+//! serde.
 //!
 //! Why: in a fresh icon render (issue 33's `gem.glb`: 25 accessors and 25
 //! views in 5 KB of JSON) serialising the document was a quarter of the
 //! whole render's CPU, mostly serde's per-field machinery around short
-//! keys (`format_escaped_str` alone a third of it). An accessor or a view
-//! with nothing but numbers and fixed words is written here as plain
-//! bytes; anything else (a name, extensions, extras, sparse storage, the
-//! other arrays and objects) goes through serde_json as before, field by
-//! field in gltf-json's declaration order, so the output is the same bytes
-//! `Root::to_vec` gives. The unit tests compare the two on documents with
-//! every field these writers set, and the golden table on every model.
+//! keys (`format_escaped_str` alone a third of it). Their keys, integers,
+//! fixed words and names that need no escaping are written here as plain
+//! bytes; floats, extensions, extras, sparse storage and the other objects
+//! go through serde_json as before, field by field in gltf-json's
+//! declaration order, so the output is the same bytes `Root::to_vec` gives.
+//! The unit test compares the two on a document with every field these
+//! writers set, and the golden table on every model.
+//!
+//! The field lists follow gltf-json 1.4.1 (`Cargo.lock`): a new version
+//! that adds or reorders a field of these four types must be read against
+//! them before it is taken (the golden table fails if a field rulemesh sets
+//! moves; one it never sets would pass unnoticed).
 
 use crate::export::ExportError;
 use gltf_json as json;
