@@ -56,16 +56,6 @@ impl<T> Slots<'_, T> {
             self.filled += 1;
         }
     }
-
-    /// Slots in this stretch.
-    pub fn len(&self) -> usize {
-        self.slots.len()
-    }
-
-    /// Whether the stretch has no slots.
-    pub fn is_empty(&self) -> bool {
-        self.slots.is_empty()
-    }
 }
 
 impl<T> Drop for Slots<'_, T> {

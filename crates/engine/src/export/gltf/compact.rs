@@ -421,7 +421,7 @@ pub(crate) fn write_glb(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOpti
     let built = build(meshes, meta, opts)?;
     // Building (welding, quantising, compressing) is the work; writing is a copy.
     budget.check_deadline()?;
-    let json_bytes = super::document::serialise(&built.root)?;
+    let json_bytes = super::json_out::root_json(&built.root)?;
     let json_len = json_bytes.len().next_multiple_of(4);
     let has_bin = !built.root.buffers.is_empty();
     let bin_len = built.bin.len().next_multiple_of(4);
@@ -456,7 +456,7 @@ pub(crate) fn write_gltf(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOpt
         // Base64 text is ASCII.
         b0.uri = Some(String::from_utf8_lossy(&uri).into_owned());
     }
-    let out = super::document::serialise(&built.root)?;
+    let out = super::json_out::root_json(&built.root)?;
     budget.reserve_memory(out.len() as u64)?;
     Ok(out)
 }

@@ -345,10 +345,5 @@ pub(super) fn plain(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, 
 /// The plain writers' JSON (see [`plain`]), serialised.
 pub(super) fn document(placed: &[Placement<'_>], buffer_len: u64, tracks: &Tracks, meta: &ExportMeta, uri: Option<String>) -> Result<Vec<u8>, ExportError> {
     let (doc, _, _) = plain(placed, buffer_len, tracks, meta, uri);
-    serialise(&doc.finish(meta)?)
-}
-
-/// `root` as compact JSON, the bytes `Root::to_vec` gives (`json_out`).
-pub(super) fn serialise(root: &json::Root) -> Result<Vec<u8>, ExportError> {
-    super::json_out::root_json(root)
+    super::json_out::root_json(&doc.finish(meta)?)
 }

@@ -141,7 +141,7 @@ impl InstancedSink {
             let colour = if layout.colour { accessors.next() } else { None };
             doc.instance(node, InstanceAccessors { translation, rotation, scale, colour })?;
         }
-        let json_bytes = super::document::serialise(&doc.finish(meta)?)?;
+        let json_bytes = super::json_out::root_json(&doc.finish(meta)?)?;
         let bin_len = end as usize;
         let (total, bin_at) = if glb {
             let json_len = align4(json_bytes.len() as u64);

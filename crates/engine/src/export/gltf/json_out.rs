@@ -34,17 +34,11 @@ pub(super) fn root_json(root: &json::Root) -> Result<Vec<u8>, ExportError> {
     o.bytes.push(b'{');
     // gltf-json's `Root` fields in declaration order, each skipped exactly
     // when its `skip_serializing_if` says.
-    if !root.accessors.is_empty() {
-        o.key("accessors");
-        o.array(&root.accessors, accessor)?;
-    }
+    o.array_field("accessors", &root.accessors, accessor)?;
     o.vec_field("animations", &root.animations)?;
     o.field("asset", &root.asset)?;
     o.vec_field("buffers", &root.buffers)?;
-    if !root.buffer_views.is_empty() {
-        o.key("bufferViews");
-        o.array(&root.buffer_views, view)?;
-    }
+    o.array_field("bufferViews", &root.buffer_views, view)?;
     o.option_field("scene", &root.scene)?;
     o.option_field("extensions", &root.extensions)?;
     o.option_field("extras", &root.extras)?;
@@ -53,14 +47,8 @@ pub(super) fn root_json(root: &json::Root) -> Result<Vec<u8>, ExportError> {
     o.vec_field("cameras", &root.cameras)?;
     o.vec_field("images", &root.images)?;
     o.vec_field("materials", &root.materials)?;
-    if !root.meshes.is_empty() {
-        o.key("meshes");
-        o.array(&root.meshes, mesh)?;
-    }
-    if !root.nodes.is_empty() {
-        o.key("nodes");
-        o.array(&root.nodes, node)?;
-    }
+    o.array_field("meshes", &root.meshes, mesh)?;
+    o.array_field("nodes", &root.nodes, node)?;
     o.vec_field("samplers", &root.samplers)?;
     o.vec_field("scenes", &root.scenes)?;
     o.vec_field("skins", &root.skins)?;
@@ -108,6 +96,15 @@ impl Out {
             true => Ok(()),
             false => self.field(name, &value),
         }
+    }
+
+    /// A field skipped when empty, its elements written by `write`.
+    fn array_field<T>(&mut self, name: &str, items: &[T], write: fn(&mut Out, &T) -> Result<(), ExportError>) -> Result<(), ExportError> {
+        if items.is_empty() {
+            return Ok(());
+        }
+        self.key(name);
+        self.array(items, write)
     }
 
     /// An array whose elements `write` writes (each an object of its own).
@@ -180,14 +177,11 @@ fn valid<T: Copy>(c: &Checked<T>) -> Option<T> {
 /// One accessor: by hand when it holds only numbers, bounds and fixed
 /// words, else by serde.
 fn accessor(o: &mut Out, a: &json::Accessor) -> Result<(), ExportError> {
-    let (Some(component), Some(kind)) = (valid(&a.component_type), valid(&a.type_)) else {
+    let plain = a.extensions.is_none() && a.extras.is_none() && a.name.is_none() && a.sparse.is_none();
+    let (Some(component), Some(kind), true) = (valid(&a.component_type), valid(&a.type_), plain) else {
         serde_json::to_writer(&mut o.bytes, a)?;
         return Ok(());
     };
-    if a.extensions.is_some() || a.extras.is_some() || a.name.is_some() || a.sparse.is_some() {
-        serde_json::to_writer(&mut o.bytes, a)?;
-        return Ok(());
-    }
     o.bytes.push(b'{');
     if let Some(v) = a.buffer_view {
         o.number("bufferView", v.value() as u64);
@@ -227,17 +221,8 @@ fn type_name(t: json::accessor::Type) -> &'static str {
 
 /// One buffer view: by hand when it holds only numbers, else by serde.
 fn view(o: &mut Out, v: &json::buffer::View) -> Result<(), ExportError> {
-    let target = match &v.target {
-        None => None,
-        Some(t) => match valid(t) {
-            Some(t) => Some(t),
-            None => {
-                serde_json::to_writer(&mut o.bytes, v)?;
-                return Ok(());
-            }
-        },
-    };
-    if v.extensions.is_some() || v.extras.is_some() || v.name.is_some() {
+    let target = v.target.as_ref().map(valid);
+    if matches!(target, Some(None)) || v.extensions.is_some() || v.extras.is_some() || v.name.is_some() {
         serde_json::to_writer(&mut o.bytes, v)?;
         return Ok(());
     }
@@ -250,7 +235,7 @@ fn view(o: &mut Out, v: &json::buffer::View) -> Result<(), ExportError> {
     if let Some(s) = v.byte_stride {
         o.number("byteStride", s.0 as u64);
     }
-    if let Some(t) = target {
+    if let Some(Some(t)) = target {
         o.number("target", u64::from(match t {
             json::buffer::Target::ArrayBuffer => json::buffer::ARRAY_BUFFER,
             json::buffer::Target::ElementArrayBuffer => json::buffer::ELEMENT_ARRAY_BUFFER,

@@ -207,7 +207,11 @@ pub(crate) fn write_scene(
         }
     }
     let w = index_width(order.len());
-    let block = provenance.map(|p| p.json().to_string()).unwrap_or_default();
+    // The same text as `Provenance::json`, written directly (`raw_json`).
+    let block = match provenance {
+        Some(p) => p.raw_json()?.get().to_owned(),
+        None => String::new(),
+    };
     let protos: &[Prototype] = if hierarchy.is_some() { &[] } else { &scene.shapes };
     let empty = Hierarchy::default();
     let h = hierarchy.unwrap_or(&empty);
