@@ -110,8 +110,9 @@ impl Language {
     /// The language whose front end claims extension `ext` (without the
     /// dot, case-insensitively): the library's entries are stored by it.
     pub fn from_extension_name(ext: &str) -> Option<Language> {
-        let ext = ext.to_ascii_lowercase();
-        Language::ALL.iter().copied().find(|l| l.front_end().extensions().contains(&ext.as_str()))
+        // Compared without case in place: lowercasing into a new String cost
+        // every model request an allocation (issue 33).
+        Language::ALL.iter().copied().find(|l| l.front_end().extensions().iter().any(|e| e.eq_ignore_ascii_case(ext)))
     }
 
     /// Guesses the language from the source text; `None` if nothing matches.

@@ -12,8 +12,22 @@ use std::borrow::Cow;
 use std::collections::BTreeMap;
 
 /// A 32-byte BLAKE3 digest identifying one model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CacheKey(pub [u8; 32]);
+
+/// Hashes the digest's first eight bytes only. The key is a BLAKE3 digest
+/// already, so those bytes are as evenly spread as all 32, and the tables
+/// that hold keys seed their own hasher per process: a client choosing
+/// sources would need 2^64 work to put two keys in one bucket on purpose.
+/// Hashing all 32 bytes (the derived `Hash`, length prefix included) took
+/// foldhash's long-input path on every cache insert and lookup (issue 33).
+/// Equal keys have equal first bytes, so this agrees with `Eq`.
+impl std::hash::Hash for CacheKey {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        let [a, b, c, d, e, f, g, h, ..] = self.0;
+        state.write_u64(u64::from_le_bytes([a, b, c, d, e, f, g, h]));
+    }
+}
 
 impl CacheKey {
     /// The key as lowercase hex.

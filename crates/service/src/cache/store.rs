@@ -246,7 +246,9 @@ impl ModelCache {
                 Err(e) => Err(Fill::Failed(e)),
             }
         };
-        match self.inner.entry(key).or_try_insert_with(init).await {
+        // Boxed: the fill (disk, Redis and its lock, the render) is most of
+        // the size of this future, which every request carries (issue 33).
+        match self.inner.entry(key).or_try_insert_with(Box::pin(init)).await {
             Ok(entry) => {
                 let tier = from_tier.lock().ok().and_then(|t| *t);
                 // Not fresh: another call's fill answered this one, from memory.

@@ -130,11 +130,28 @@ impl Engine {
     /// Serves `plan` from the cache, or renders it (once for all concurrent
     /// identical requests). Records the language, the cache key and the
     /// cache result on the caller's span (fields `language`, `key`, `cache`).
-    pub async fn serve(&self, plan: RenderPlan) -> Result<Served, ServiceError> {
+    ///
+    /// The future is boxed: it sits inside every caller's future, and
+    /// axum's layers move the handler's future several times a request.
+    /// It was 8.6 KB, so a fresh `gem.glb` copied tens of kilobytes for
+    /// nothing (issue 33's profile: `memcpy` under tower's `MapFuture`, 2 %
+    /// of the request's instructions). The cache's fill for a miss and the
+    /// render are boxed where they are made (most of the size, and a fresh
+    /// render never makes the fill); the 2.7 KB left is boxed here, so each
+    /// move copies a pointer, for one allocation.
+    pub fn serve(&self, plan: RenderPlan) -> futures_util::future::BoxFuture<'_, Result<Served, ServiceError>> {
+        Box::pin(self.serve_unboxed(plan))
+    }
+
+    /// [`Engine::serve`]'s work, unboxed.
+    async fn serve_unboxed(&self, plan: RenderPlan) -> Result<Served, ServiceError> {
         let key = plan.key;
         let fresh = plan.no_cache;
         let span = tracing::Span::current();
-        span.record("key", tracing::field::display(key.hex()));
+        // The key's hex is made only for a span that keeps it (issue 33).
+        if !span.is_disabled() {
+            span.record("key", tracing::field::display(key.hex()));
+        }
         let language = plan.request.language.or_else(|| Language::detect(&plan.source));
         span.record("language", tracing::field::display(language.map_or("unknown", Language::name)));
         if !self.allow_javascript && language == Some(Language::Eisenscript) && crate::lang::eisen::syntax::is_javascript(&plan.source) {
@@ -143,7 +160,9 @@ impl Engine {
         }
         // Filled by `run` only when this call is the one that renders.
         let ran: Mutex<Option<RanRender>> = Mutex::new(None);
-        let (model, lookup) = self.cache.get_or_render(key, fresh, || self.run(plan, &ran)).await?;
+        // The render's future boxed too: inline, it would sit in the cache's
+        // fill future and in this one, whatever the cache answers.
+        let (model, lookup) = self.cache.get_or_render(key, fresh, || Box::pin(self.run(plan, &ran))).await?;
         let cache = lookup.outcome;
         self.metrics.cache(cache == CacheOutcome::Hit);
         span.record("cache", tracing::field::display(if cache == CacheOutcome::Hit { "hit" } else { "miss" }));

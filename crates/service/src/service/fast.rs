@@ -225,8 +225,8 @@ impl Answers {
         let id = super::http::next_request_id();
         let mut h = chosen.kept.headers;
         // `insert` keeps a header's place, so the order is the router's.
-        h.insert("server-timing", HeaderValue::from_str(&timing.header_value()).unwrap_or_else(|_| HeaderValue::from_static("invalid")));
-        h.insert("x-request-id", HeaderValue::from(id));
+        h.insert(super::header_names::SERVER_TIMING, HeaderValue::from_str(&timing.header_value()).unwrap_or_else(|_| HeaderValue::from_static("invalid")));
+        h.insert(super::header_names::X_REQUEST_ID, HeaderValue::from(id));
         let (status, body, bytes) = match chosen.modified {
             true => (StatusCode::OK, Body::from(model.bytes.clone()), model.bytes.len()),
             false => (StatusCode::NOT_MODIFIED, Body::empty(), 0),

@@ -160,7 +160,8 @@ impl GrpcService {
             }
         };
         let id = super::http::next_request_id();
-        let span = tracing::info_span!(
+        // DEBUG, as HTTP's request span (`super::http::observe` says why).
+        let span = tracing::debug_span!(
             "grpc",
             id,
             method,
@@ -238,7 +239,8 @@ impl Rulemesh for GrpcService {
 
     async fn render_batch(&self, request: Request<pb::RenderBatchRequest>) -> Result<Response<Self::RenderBatchStream>, Status> {
         let started = Instant::now();
-        let span = tracing::info_span!(
+        // DEBUG, as HTTP's request span (`super::http::observe` says why).
+        let span = tracing::debug_span!(
             "grpc",
             id = super::http::next_request_id(),
             method = "RenderBatch",

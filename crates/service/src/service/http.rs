@@ -4,6 +4,7 @@ use super::library::{self, GrammarInfo};
 use super::request::{from_json, CheckBody, RenderBody};
 use super::metrics::{wants_openmetrics, OPENMETRICS, PROMETHEUS_TEXT};
 use super::access_log::{log_request, Finished};
+use super::header_names as names;
 use super::timing::RequestTiming;
 use super::{AppState, Served, ServiceError};
 use crate::cache::CacheOutcome;
@@ -235,7 +236,15 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
     let route = matched.as_ref().map_or("unmatched", MatchedPath::as_str);
     let id = next_request_id();
     let method = req.method().clone();
-    let span = tracing::info_span!(
+    // The span is at DEBUG level: at the default INFO nothing reads it (the
+    // access line is written outside it), and creating it cost every request
+    // the formatting of its fields into the log layer's storage, then again
+    // on each `record` (about 3 % of a fresh `gem.glb`'s instructions, issue
+    // 33). It exists whenever its readers do: with `--log debug` (the detail
+    // line) and while spans are exported (the OTLP layer takes every
+    // rulemesh span whatever its level). A warning logged inside a request
+    // at the default level therefore carries no `http{id=…}` prefix.
+    let span = tracing::debug_span!(
         "http",
         id,
         method = %method,
@@ -262,9 +271,7 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
     let bytes = axum::body::HttpBody::size_hint(resp.body()).exact();
     let finished = Finished { id, method: method.as_str(), route, status: Some(status), code: None, wall: took, bytes, etag, timing };
     log_request(&finished, &span);
-    if let Ok(v) = HeaderValue::from_str(&id.to_string()) {
-        resp.headers_mut().insert("x-request-id", v);
-    }
+    resp.headers_mut().insert(names::X_REQUEST_ID, HeaderValue::from(id));
     resp
 }
 
@@ -317,21 +324,21 @@ fn model_response(served: &Served, cache_control: Option<&'static str>, text: bo
 /// it), counts, truncation, `Cache-Control` and `Server-Timing`.
 fn model_headers(h: &mut HeaderMap, served: &Served, cache_control: Option<&'static str>) {
     let m = &served.model;
-    h.insert("server-timing", header_value(&served.timing.header_value()));
+    h.insert(names::SERVER_TIMING, header_value(&served.timing.header_value()));
     h.insert(header::ETAG, header_value(&format!("\"{}\"", m.etag)));
-    h.insert("x-rulemesh-cache", HeaderValue::from_static(if served.cache == CacheOutcome::Hit { "hit" } else { "miss" }));
-    h.insert("x-rulemesh-seed", HeaderValue::from(m.seed));
+    h.insert(names::X_CACHE, HeaderValue::from_static(if served.cache == CacheOutcome::Hit { "hit" } else { "miss" }));
+    h.insert(names::X_SEED, HeaderValue::from(m.seed));
     // A Context Free design's variation code, the seed as Context Free names it.
     if let Some(code) = crate::lang::cfdg::variation_code(m.language, m.seed) {
-        h.insert("x-rulemesh-variation", header_value(&code));
+        h.insert(names::X_VARIATION, header_value(&code));
     }
-    h.insert("x-rulemesh-primitives", HeaderValue::from(m.primitives));
-    h.insert("x-rulemesh-triangles", HeaderValue::from(m.triangles));
-    h.insert("x-rulemesh-truncated", HeaderValue::from_static(if m.truncated.is_some() { "true" } else { "false" }));
+    h.insert(names::X_PRIMITIVES, HeaderValue::from(m.primitives));
+    h.insert(names::X_TRIANGLES, HeaderValue::from(m.triangles));
+    h.insert(names::X_TRUNCATED, HeaderValue::from_static(if m.truncated.is_some() { "true" } else { "false" }));
     if let Some(t) = &m.truncated {
-        h.insert("x-rulemesh-truncated-limit", HeaderValue::from_static(t.limit.name()));
-        h.insert("x-rulemesh-truncated-configured", HeaderValue::from(t.configured));
-        h.insert("x-rulemesh-truncated-reached", HeaderValue::from(t.reached));
+        h.insert(names::X_TRUNCATED_LIMIT, HeaderValue::from_static(t.limit.name()));
+        h.insert(names::X_TRUNCATED_CONFIGURED, HeaderValue::from(t.configured));
+        h.insert(names::X_TRUNCATED_REACHED, HeaderValue::from(t.reached));
     }
     // A printed model's figures (STL and 3MF alike), as the print stage
     // measured them: kept with the bytes, never measured again here.

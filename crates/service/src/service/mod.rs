@@ -14,6 +14,7 @@ pub mod engine;
 pub mod error;
 pub mod fast;
 pub mod grpc;
+pub(crate) mod header_names;
 pub(crate) mod grpc_batch;
 pub(crate) mod grpc_conn;
 pub mod http;
