@@ -20,6 +20,8 @@ mod print_report;
 mod options;
 mod phone;
 mod fast;
+mod direct;
+mod wire;
 
 
 /// A grammar that runs until its deadline (10^10 iterator copies, no primitives).

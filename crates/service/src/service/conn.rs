@@ -117,7 +117,8 @@ impl Drop for InFlight {
 }
 
 /// The router as a hyper service that keeps its connection's [`Activity`],
-/// with the cached-GET fast path ([`super::fast`]) in front of it.
+/// with the cached-GET fast path ([`super::fast`]) and the direct model
+/// route ([`super::direct`]) in front of it.
 #[derive(Clone)]
 struct Tracked {
     inner: TowerToHyperService<Router>,
@@ -148,7 +149,10 @@ impl hyper::service::Service<hyper::Request<hyper::body::Incoming>> for Tracked 
                 },
                 None => None,
             };
-            let r = inner.call(req).await;
+            let r = match super::direct::answer(&state, req).await {
+                Ok(resp) => Ok(resp),
+                Err(req) => inner.call(req).await,
+            };
             if let (Some(target), Ok(resp)) = (target, &r) {
                 fast.offer(target, resp);
             }

@@ -45,7 +45,7 @@ pub fn router(state: Arc<AppState>) -> Router {
         .fallback(|| async { ServiceError::NotFound("no such route".into()) })
         .layer(DefaultBodyLimit::max(state.config.body_limit))
         .layer(middleware::from_fn_with_state(state.clone(), access))
-        .layer(CompressionLayer::new().compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(TextBodies)))
+        .layer(compression())
         .layer(middleware::from_fn(etag_per_encoding))
         .layer(middleware::from_fn_with_state(state.clone(), observe));
     // Outermost, so that preflights are answered before access control and
@@ -184,6 +184,14 @@ async fn openapi_json() -> Response {
 /// Responses smaller than this are sent as they are.
 pub(crate) const COMPRESS_MIN_BYTES: u16 = 256;
 
+/// The response compression of every route: text and JSON bodies of at
+/// least [`COMPRESS_MIN_BYTES`], in the codings the request accepts. One
+/// constructor for the router and the direct model route (`super::direct`),
+/// so the two compress alike.
+pub(super) fn compression() -> CompressionLayer<tower_http::compression::predicate::And<SizeAbove, TextBodies>> {
+    CompressionLayer::new().compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(TextBodies))
+}
+
 /// Marks a response whose body is text (glTF JSON, ASCII STL) so that it may
 /// be compressed although its type is `model/*`.
 #[derive(Debug, Clone, Copy)]
@@ -211,6 +219,12 @@ impl Predicate for TextBodies {
 /// entity tag must name one byte sequence; [`etag_matches`] accepts both.
 async fn etag_per_encoding(req: Request, next: Next) -> Response {
     let mut resp = next.run(req).await;
+    tag_encoded_etag(&mut resp);
+    resp
+}
+
+/// [`etag_per_encoding`]'s work on a finished response (also the direct model route's).
+pub(super) fn tag_encoded_etag(resp: &mut Response) {
     let encoding = resp.headers().get(header::CONTENT_ENCODING).and_then(|v| v.to_str().ok()).map(str::to_string);
     if let Some(enc) = encoding {
         let tagged = resp.headers().get(header::ETAG).and_then(|v| v.to_str().ok()).and_then(|t| t.strip_suffix('"').map(|t| format!("{t}-{enc}\"")));
@@ -218,7 +232,6 @@ async fn etag_per_encoding(req: Request, next: Next) -> Response {
             resp.headers_mut().insert(header::ETAG, header_value(&t));
         }
     }
-    resp
 }
 
 static REQUEST_ID: AtomicU64 = AtomicU64::new(1);
@@ -263,16 +276,21 @@ async fn observe(State(state): State<Arc<AppState>>, req: Request, next: Next) -
     super::telemetry::adopt_parent(&span, |name| req.headers().get(name).and_then(|v| v.to_str().ok()));
     let started = Instant::now();
     let mut resp = next.run(req).instrument(span.clone()).await;
+    observed(&state, id, method.as_str(), route, started.elapsed(), &mut resp, &span);
+    resp
+}
+
+/// [`observe`]'s work on a finished response (also the direct model
+/// route's): counts it, writes its access line and gives it its request id.
+pub(super) fn observed(state: &AppState, id: u64, method: &str, route: &str, took: std::time::Duration, resp: &mut Response, span: &tracing::Span) {
     let status = resp.status().as_u16();
-    let took = started.elapsed();
     state.metrics.request("http", route, status, took);
     let etag = resp.headers().get(header::ETAG).and_then(|v| v.to_str().ok());
     let timing = resp.extensions().get::<RequestTiming>();
     let bytes = axum::body::HttpBody::size_hint(resp.body()).exact();
-    let finished = Finished { id, method: method.as_str(), route, status: Some(status), code: None, wall: took, bytes, etag, timing };
-    log_request(&finished, &span);
+    let finished = Finished { id, method, route, status: Some(status), code: None, wall: took, bytes, etag, timing };
+    log_request(&finished, span);
     resp.headers_mut().insert(names::X_REQUEST_ID, HeaderValue::from(id));
-    resp
 }
 
 /// Whether the request asks to bypass the cache.
@@ -422,7 +440,7 @@ pub(super) fn etag_matches(headers: &HeaderMap, etag: &str) -> bool {
 }
 
 /// The route of [`model_get`], as the router's `MatchedPath` names it.
-const MODELS_ROUTE: &str = "/v1/models/{file}";
+pub(super) const MODELS_ROUTE: &str = "/v1/models/{file}";
 
 /// `GET /v1/models/{name}.{glb|gltf|stl|3mf|png}?seed=N&p.<param>=V&detail=D&…`: the
 /// declaration's query options (`request::query_body`); a png also `size`, `view`, `background`.
@@ -476,7 +494,13 @@ async fn model_get(
     // headers of every request (issue 33's profile).
     req: Request,
 ) -> Response {
-    let headers = req.headers();
+    model_for(&st, &caller, &file, query.as_deref(), req.headers()).await
+}
+
+/// [`model_get`]'s work, given what its extractors took (also the direct
+/// model route's, `super::direct`): `file` is the path's last segment,
+/// percent-decoded, and `query` the raw query string.
+pub(super) async fn model_for(st: &AppState, caller: &Caller, file: &str, query: Option<&str>, headers: &HeaderMap) -> Response {
     let result = async {
         // Every extension of the registry's formats (the first format that claims one).
         let known = || Format::extensions().join(", ");
@@ -488,7 +512,7 @@ async fn model_get(
             return Err(ServiceError::NotFound(format!("`{file}`: unknown extension ({})", known())));
         };
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
-        let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.as_deref().unwrap_or(""))?;
+        let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.unwrap_or(""))?;
         let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?.with_phone_default(super::phone::is_phone(headers));
         let pinned = body.options.seed.is_some();
         let text = is_text(format);

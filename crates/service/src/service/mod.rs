@@ -10,6 +10,7 @@ pub mod access_log;
 pub mod batch;
 pub mod config;
 pub mod conn;
+pub(crate) mod direct;
 pub mod engine;
 pub mod error;
 pub mod fast;

@@ -134,6 +134,8 @@ pub struct Metrics {
     memory_waits: Counter,
     /// Cached GETs answered by `service::fast` before the router.
     fast_hits: Counter,
+    /// Model GETs answered by the direct route (`service::direct`).
+    direct_models: Counter,
     cache: Arc<OnceLock<ModelCache>>,
     memory: Arc<OnceLock<Arc<crate::service::memory::MemoryGuard>>>,
 }
@@ -181,6 +183,7 @@ impl Metrics {
             memory_refusals: Counter::default(),
             memory_waits: Counter::default(),
             fast_hits: Counter::default(),
+            direct_models: Counter::default(),
             cache: Arc::new(OnceLock::new()),
             memory: Arc::new(OnceLock::new()),
             registry: Registry::default(),
@@ -210,6 +213,7 @@ impl Metrics {
         r.register("memory_refusals", "Renders refused because resident memory plus their memory budget would pass the memory ceiling (HTTP 503 memory_pressure)", m.memory_refusals.clone());
         r.register("memory_waits", "Renders that waited for memory under the ceiling and then started", m.memory_waits.clone());
         r.register("fast_path_hits", "Cached GETs answered before the router from a kept response (also counted in requests, cache_hits and cache_lookups)", m.fast_hits.clone());
+        r.register("direct_model_requests", "Model GETs answered before the router by the direct model route (also counted in requests)", m.direct_models.clone());
         r.register_collector(Box::new(figures::CacheFigures::new(m.cache.clone())));
         r.register_collector(Box::new(figures::MemoryFigures::new(m.memory.clone())));
         r.register_collector(Box::new(figures::LogFigures));
@@ -237,6 +241,11 @@ impl Metrics {
     /// Counts a cached GET answered by the fast path (`service::fast`).
     pub(crate) fn fast_path_hit(&self) {
         self.fast_hits.inc();
+    }
+
+    /// Counts a model GET answered by the direct route (`service::direct`).
+    pub(crate) fn direct_model_request(&self) {
+        self.direct_models.inc();
     }
 
     /// Counts a render that waited for memory and then started.
