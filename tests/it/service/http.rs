@@ -225,7 +225,6 @@ async fn truncation_is_flagged_and_not_cached() {
         assert_eq!(header(&r, "x-rulemesh-primitives"), "4");
         assert_eq!(header(&r, "x-rulemesh-cache"), "miss");
     }
-    srv.state.engine.cache().sync().await;
     assert_eq!(srv.state.engine.cache().entry_count(), 0);
     srv.shutdown();
     srv.wait().await.expect("clean shutdown");

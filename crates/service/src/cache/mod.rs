@@ -5,6 +5,7 @@
 //! ([`redis`]).
 
 pub mod disk;
+mod flight;
 pub mod observe;
 pub mod redis;
 pub mod store;

@@ -1,7 +1,18 @@
-//! The in-process model store: a moka cache weighted by model bytes, with
-//! single-flight fills, optionally backed by a [`DiskTier`] and a shared
-//! [`RedisTier`]. Failed and truncated renders are handed to every waiting
-//! caller but never stored.
+//! The in-process model store: a table weighted by model bytes
+//! (`quick_cache`), with single-flight fills (`super::flight`), optionally
+//! backed by a [`DiskTier`] and a shared [`RedisTier`]. Failed and
+//! truncated renders are handed to every waiting caller but never stored.
+//!
+//! Why `quick_cache` and not moka (issue 33): under a stream of fresh
+//! renders every insert evicts, and moka's concurrent table left a
+//! tombstone per eviction that it swept by rehashing the whole table now
+//! and then, behind a write-op channel and a housekeeper: 6–7 % of a fresh
+//! `gem.glb` request's CPU went to moka. quick_cache's table is a hash map
+//! under a lock with a CLOCK-Pro-like policy (Arthur Silva's quick_cache;
+//! its policy is close to S3-FIFO: Yang, Zhang, Qiu, Yue and Vinayak, "FIFO
+//! queues are all you need for cache eviction", SOSP 2023), scan-resistant
+//! like moka's TinyLFU, so a burst of one-off renders does not flush the
+//! models in demand.
 
 use super::disk::DiskTier;
 use super::observe::{CacheObserver, Lookup, Tier};
@@ -9,7 +20,10 @@ use super::redis::RedisTier;
 use super::CacheKey;
 use crate::core::LimitExceeded;
 use crate::lang::Language;
-use moka::future::Cache;
+use super::flight::{self, Flights, Landed, Turn};
+use quick_cache::sync::Cache;
+use quick_cache::{Lifecycle, OptionsBuilder, Weighter};
+use std::any::Any;
 use std::future::Future;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -72,19 +86,39 @@ pub enum CacheOutcome {
     Miss,
 }
 
-/// What a fill that is not stored hands to its waiters.
-#[derive(Debug)]
-enum Fill<E> {
-    /// A truncated model: returned, not stored.
-    Uncacheable(Arc<Rendered>),
-    /// The render failed.
-    Failed(E),
+/// Weighs a stored model by its bytes plus [`ENTRY_OVERHEAD`].
+#[derive(Debug, Clone, Copy)]
+struct ByBytes;
+
+impl Weighter<CacheKey, Arc<Rendered>> for ByBytes {
+    fn weight(&self, _: &CacheKey, v: &Arc<Rendered>) -> u64 {
+        v.bytes.len().saturating_add(ENTRY_OVERHEAD) as u64
+    }
 }
+
+/// Counts the models the table evicts (or refuses, when one alone is
+/// heavier than the table may hold).
+#[derive(Debug, Clone, Default)]
+struct CountEvictions(Arc<AtomicU64>);
+
+impl Lifecycle<CacheKey, Arc<Rendered>> for CountEvictions {
+    type RequestState = ();
+
+    fn begin_request(&self) {}
+
+    fn on_evict(&self, _: &mut (), _: CacheKey, _: Arc<Rendered>) {
+        self.0.fetch_add(1, Ordering::Relaxed);
+    }
+}
+
+/// The store's table.
+type Table = Cache<CacheKey, Arc<Rendered>, ByBytes, KeyHasher, CountEvictions>;
 
 /// The byte-budgeted, single-flight model store.
 #[derive(Clone)]
 pub struct ModelCache {
-    inner: Cache<CacheKey, Arc<Rendered>, KeyHasher>,
+    table: Arc<Table>,
+    flights: Arc<Flights>,
     evictions: Arc<AtomicU64>,
     disk: Option<Arc<DiskTier>>,
     redis: Option<Arc<RedisTier>>,
@@ -92,35 +126,37 @@ pub struct ModelCache {
 }
 
 /// The hasher of the model cache's table. Its keys are BLAKE3 digests, so
-/// SipHash (moka's default, `RandomState`) bought nothing but time: under a
-/// stream of fresh renders every insert evicts, and moka's concurrent table
-/// rehashes its whole key set now and then to drop the evicted entries'
-/// tombstones, which cost about 5 µs of each fresh `gem.glb` request's
-/// CPU in SipHash alone (issue 33's profile). foldhash is hashbrown's own
+/// SipHash bought nothing but time (about 5 µs of each fresh `gem.glb`
+/// request under moka, issue 33's profile). foldhash is hashbrown's own
 /// hasher, seeded per process, so a client that chooses sources still cannot
 /// aim keys at one bucket.
 type KeyHasher = foldhash::fast::RandomState;
 
-/// Bytes charged per entry besides the model itself (key, metadata, moka's bookkeeping).
+/// Bytes charged per entry besides the model itself (key, metadata, the table's bookkeeping).
 const ENTRY_OVERHEAD: usize = 256;
+
+/// The model size the table is sized for (its slots, not its budget).
+const TYPICAL_MODEL_BYTES: u64 = 16 * 1024;
 
 impl ModelCache {
     /// A store holding at most about `max_bytes` of models.
+    ///
+    /// One shard: quick_cache splits its budget evenly between shards and
+    /// refuses a model heavier than one shard's share, while moka, before
+    /// it, kept any model up to the whole budget. Two workers' lookups
+    /// are a few hundred nanoseconds under the lock, against renders of
+    /// tens of microseconds and more.
     pub fn new(max_bytes: u64) -> ModelCache {
-        let evictions = Arc::new(AtomicU64::new(0));
-        let counter = evictions.clone();
-        let inner = Cache::builder()
-            .max_capacity(max_bytes)
-            .weigher(|_k: &CacheKey, v: &Arc<Rendered>| {
-                u32::try_from(v.bytes.len().saturating_add(ENTRY_OVERHEAD)).unwrap_or(u32::MAX)
-            })
-            .eviction_listener(move |_k, _v, cause| {
-                if cause.was_evicted() {
-                    counter.fetch_add(1, Ordering::Relaxed);
-                }
-            })
-            .build_with_hasher(KeyHasher::default());
-        ModelCache { inner, evictions, disk: None, redis: None, observer: None }
+        let evictions = CountEvictions::default();
+        let counter = evictions.0.clone();
+        let items = (max_bytes / TYPICAL_MODEL_BYTES).clamp(64, 1 << 20) as usize;
+        let options = OptionsBuilder::new().shards(1).estimated_items_capacity(items).weight_capacity(max_bytes.max(1)).build();
+        let table = match options {
+            Ok(o) => Cache::with_options(o, ByBytes, KeyHasher::default(), evictions),
+            // Unreachable: every option above is set and in range.
+            Err(_) => Cache::with(items, max_bytes.max(1), ByBytes, KeyHasher::default(), evictions),
+        };
+        ModelCache { table: Arc::new(table), flights: Arc::default(), evictions: counter, disk: None, redis: None, observer: None }
     }
 
     /// The same store, reading from and writing complete models to `disk`
@@ -163,13 +199,14 @@ impl ModelCache {
     }
 
     /// Returns the model for `key`, calling `render` on a miss. Concurrent
-    /// misses on one key share a single call. With `fresh`, the store is not
-    /// read (but a complete result still refreshes it). On an in-process
-    /// miss the disk tier (if any) is read before rendering, and a complete
-    /// render is written to it; then Redis (if any) is read the same way,
-    /// under its distributed lock when enabled. A model read from disk or
-    /// Redis counts as a hit; a model read from Redis is also written to disk.
-    /// The [`Lookup`] says which tier answered and how long the reads took.
+    /// misses on one key share a single call, and its outcome, failures
+    /// included. With `fresh`, the store is not read (but a complete result
+    /// still refreshes it). On an in-process miss the disk tier (if any) is
+    /// read before rendering, and a complete render is written to it; then
+    /// Redis (if any) is read the same way, under its distributed lock when
+    /// enabled. A model read from disk or Redis counts as a hit; a model read
+    /// from Redis is also written to disk. The [`Lookup`] says which tier
+    /// answered and how long the reads took.
     pub(crate) async fn get_or_render<E, F, Fut>(&self, key: CacheKey, fresh: bool, render: F) -> Result<(Arc<Rendered>, Lookup), E>
     where
         E: Clone + Send + Sync + 'static,
@@ -177,11 +214,10 @@ impl ModelCache {
         Fut: Future<Output = Result<Rendered, E>>,
     {
         let spent = AtomicU64::new(0);
-        let lookup = |outcome, tier, spent: &AtomicU64| Lookup { outcome, tier, took: Duration::from_nanos(spent.load(Ordering::Relaxed)) };
         if fresh {
             let r = Arc::new(render().await?);
             if r.cacheable() {
-                self.inner.insert(key, r.clone()).await;
+                self.table.insert(key, r.clone());
                 if let Some(d) = &self.disk {
                     d.write(key, r.clone()).await;
                 }
@@ -192,77 +228,91 @@ impl ModelCache {
             return Ok((r, lookup(CacheOutcome::Miss, None, &spent)));
         }
         let started = Instant::now();
-        let found = self.inner.get(&key).await;
+        let found = self.table.get(&key);
         self.observed(Tier::Memory, found.is_some(), started, &spent);
         if let Some(r) = found {
             return Ok((r, lookup(CacheOutcome::Hit, Some(Tier::Memory), &spent)));
         }
-        // The tier a fill by this call found its model in (none: rendered).
-        let from_tier: std::sync::Mutex<Option<Tier>> = std::sync::Mutex::new(None);
-        let note = |tier| {
-            if let Ok(mut t) = from_tier.lock() {
-                *t = Some(tier);
-            }
-        };
-        let init = async {
-            if let Some(d) = &self.disk {
-                let started = Instant::now();
-                let found = d.read(key).await;
-                self.observed(Tier::Disk, found.is_some(), started, &spent);
-                if let Some(r) = found {
-                    note(Tier::Disk);
-                    return Ok(Arc::new(r));
-                }
-            }
-            let rendered = match &self.redis {
-                Some(t) => {
-                    let started = Instant::now();
-                    let found = t.read(key).await;
-                    self.observed(Tier::Redis, found.is_some(), started, &spent);
-                    match found {
-                        Some(r) => {
-                            note(Tier::Redis);
-                            Ok(r)
-                        }
-                        None => t.render_locked(key, render).await.map(|(r, shared)| {
-                            if shared {
-                                note(Tier::Redis);
-                            }
-                            r
-                        }),
-                    }
-                }
-                None => render().await,
-            };
-            match rendered {
-                Ok(r) if r.cacheable() => {
-                    let r = Arc::new(r);
-                    if let Some(d) = &self.disk {
-                        d.write(key, r.clone()).await;
-                    }
-                    Ok(r)
-                }
-                Ok(r) => Err(Fill::Uncacheable(Arc::new(r))),
-                Err(e) => Err(Fill::Failed(e)),
+        let leader = loop {
+            match self.flights.turn(key, || self.table.get(&key)) {
+                // A fill that landed between the lookup above and now.
+                Turn::Ready(r) => return Ok((r, lookup(CacheOutcome::Hit, Some(Tier::Memory), &spent))),
+                Turn::Follow(rx) => match flight::outcome(rx).await {
+                    Some(Landed::Stored(r)) => return Ok((r, lookup(CacheOutcome::Hit, Some(Tier::Memory), &spent))),
+                    // Every waiter on an uncacheable fill gets the same model; the
+                    // caller that rendered it cannot be told apart here, so all say miss.
+                    Some(Landed::Unstored(r)) => return Ok((r, lookup(CacheOutcome::Miss, None, &spent))),
+                    Some(Landed::Failed(e)) => match e.downcast_ref::<E>() {
+                        Some(e) => return Err(e.clone()),
+                        // A leader of another error type: fill afresh.
+                        None => continue,
+                    },
+                    // The leader went away without landing: start over.
+                    None => continue,
+                },
+                Turn::Lead(leader) => break leader,
             }
         };
         // Boxed: the fill (disk, Redis and its lock, the render) is most of
         // the size of this future, which every request carries (issue 33).
-        match self.inner.entry(key).or_try_insert_with(Box::pin(init)).await {
-            Ok(entry) => {
-                let tier = from_tier.lock().ok().and_then(|t| *t);
-                // Not fresh: another call's fill answered this one, from memory.
-                let tier = if entry.is_fresh() { tier } else { Some(Tier::Memory) };
+        let (filled, tier) = Box::pin(self.fill(key, render, &spent)).await;
+        match filled {
+            Ok(r) if r.cacheable() => {
+                self.table.insert(key, r.clone());
+                leader.land(Landed::Stored(r.clone()));
                 let outcome = if tier.is_some() { CacheOutcome::Hit } else { CacheOutcome::Miss };
-                Ok((entry.into_value(), lookup(outcome, tier, &spent)))
+                Ok((r, lookup(outcome, tier, &spent)))
             }
-            Err(fill) => match &*fill {
-                // Every waiter on an uncacheable fill gets the same model; the
-                // caller that rendered it cannot be told apart here, so all say miss.
-                Fill::Uncacheable(r) => Ok((r.clone(), lookup(CacheOutcome::Miss, None, &spent))),
-                Fill::Failed(e) => Err(e.clone()),
-            },
+            Ok(r) => {
+                leader.land(Landed::Unstored(r.clone()));
+                Ok((r, lookup(CacheOutcome::Miss, None, &spent)))
+            }
+            Err(e) => {
+                leader.land(Landed::Failed(Arc::new(e.clone()) as Arc<dyn Any + Send + Sync>));
+                Err(e)
+            }
         }
+    }
+
+    /// A leader's fill: the disk tier, then Redis (or its lock's holder),
+    /// else `render`; a complete model is written to disk. Returns the model
+    /// and the tier it was found in (none: rendered here).
+    async fn fill<E, F, Fut>(&self, key: CacheKey, render: F, spent: &AtomicU64) -> (Result<Arc<Rendered>, E>, Option<Tier>)
+    where
+        F: FnOnce() -> Fut,
+        Fut: Future<Output = Result<Rendered, E>>,
+    {
+        if let Some(d) = &self.disk {
+            let started = Instant::now();
+            let found = d.read(key).await;
+            self.observed(Tier::Disk, found.is_some(), started, spent);
+            if let Some(r) = found {
+                return (Ok(Arc::new(r)), Some(Tier::Disk));
+            }
+        }
+        let (rendered, tier) = match &self.redis {
+            Some(t) => {
+                let started = Instant::now();
+                let found = t.read(key).await;
+                self.observed(Tier::Redis, found.is_some(), started, spent);
+                match found {
+                    Some(r) => (Ok(r), Some(Tier::Redis)),
+                    None => match t.render_locked(key, render).await {
+                        Ok((r, true)) => (Ok(r), Some(Tier::Redis)),
+                        Ok((r, false)) => (Ok(r), None),
+                        Err(e) => (Err(e), None),
+                    },
+                }
+            }
+            None => (render().await, None),
+        };
+        let rendered = rendered.map(Arc::new);
+        if let (Ok(r), Some(d)) = (&rendered, &self.disk) {
+            if r.cacheable() {
+                d.write(key, r.clone()).await;
+            }
+        }
+        (rendered, tier)
     }
 
     /// The model the in-process tier holds for `key` now, and how long
@@ -270,9 +320,10 @@ impl ModelCache {
     /// while this is the model it kept. Not reported to the observer, so
     /// that a peek that finds nothing is not counted beside the lookup the
     /// router then makes; a peek that answers is ([`Self::observe_memory_hit`]).
-    pub(crate) async fn memory_peek(&self, key: &CacheKey) -> (Option<Arc<Rendered>>, Duration) {
+    /// A lookup like any other for the table's policy: it keeps the model hot.
+    pub(crate) fn memory_peek(&self, key: &CacheKey) -> (Option<Arc<Rendered>>, Duration) {
         let started = Instant::now();
-        let found = self.inner.get(key).await;
+        let found = self.table.get(key);
         (found, started.elapsed())
     }
 
@@ -290,12 +341,12 @@ impl ModelCache {
 
     /// Stored models.
     pub fn entry_count(&self) -> u64 {
-        self.inner.entry_count()
+        self.table.len() as u64
     }
 
     /// Bytes charged to stored models.
     pub(crate) fn weighted_bytes(&self) -> u64 {
-        self.inner.weighted_size()
+        self.table.weight()
     }
 
     /// Models evicted to stay within the byte budget.
@@ -303,13 +354,102 @@ impl ModelCache {
         self.evictions.load(Ordering::Relaxed)
     }
 
-    /// Runs moka's pending maintenance (so counts are current), for metrics and tests.
-    pub async fn sync(&self) {
-        self.inner.run_pending_tasks().await;
-    }
-
     /// Drops every stored model.
     pub fn clear(&self) {
-        self.inner.invalidate_all();
+        self.table.clear();
+    }
+}
+
+/// A [`Lookup`] of `outcome` answered by `tier`, after the reads `spent` counted (nanoseconds).
+fn lookup(outcome: CacheOutcome, tier: Option<Tier>, spent: &AtomicU64) -> Lookup {
+    Lookup { outcome, tier, took: Duration::from_nanos(spent.load(Ordering::Relaxed)) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::AtomicUsize;
+
+    fn model(bytes: usize, truncated: bool) -> Rendered {
+        Rendered {
+            bytes: bytes::Bytes::from(vec![1; bytes]),
+            etag: String::new(),
+            content_type: "model/gltf-binary",
+            language: crate::lang::Language::Mdg,
+            seed: 0,
+            primitives: 0,
+            triangles: 0,
+            truncated: truncated.then(|| LimitExceeded { limit: crate::core::Limit::Primitives, configured: 1, reached: 2 }),
+            print: None,
+        }
+    }
+
+    /// Fifty concurrent misses of one key: `render` runs once, and every
+    /// caller gets its outcome (a model, a truncated model, an error).
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn concurrent_misses_share_one_fill_and_its_outcome() {
+        for (case, outcome) in [(0u8, Ok(false)), (1, Ok(true)), (2, Err("boom".to_string()))] {
+            let cache = ModelCache::new(1 << 20);
+            let calls = Arc::new(AtomicUsize::new(0));
+            let key = CacheKey([case; 32]);
+            let callers = (0..50).map(|_| {
+                let (cache, calls, outcome) = (cache.clone(), calls.clone(), outcome.clone());
+                tokio::spawn(async move {
+                    cache
+                        .get_or_render(key, false, || async move {
+                            calls.fetch_add(1, Ordering::SeqCst);
+                            tokio::time::sleep(Duration::from_millis(50)).await;
+                            outcome.map(|truncated| model(100, truncated))
+                        })
+                        .await
+                        .map(|(m, l)| (m.truncated.is_some(), l.outcome))
+                })
+            });
+            let results: Vec<_> = futures_util::future::join_all(callers).await.into_iter().map(|r| r.expect("joined")).collect();
+            assert_eq!(calls.load(Ordering::SeqCst), 1, "case {case}: one fill");
+            let misses = results.iter().filter(|r| matches!(r, Ok((_, CacheOutcome::Miss)))).count();
+            match case {
+                0 => assert_eq!(misses, 1, "the leader misses, the others hit: {results:?}"),
+                1 => assert!(results.iter().all(|r| matches!(r, Ok((true, CacheOutcome::Miss)))), "{results:?}"),
+                _ => assert!(results.iter().all(|r| r.as_ref().err().map(String::as_str) == Some("boom")), "{results:?}"),
+            }
+            assert_eq!(cache.entry_count(), u64::from(case == 0), "only a complete model is stored");
+        }
+    }
+
+    /// The table keeps at most its budget, counting what it lets go, and
+    /// keeps a model as heavy as most of the budget (one shard).
+    #[tokio::test]
+    async fn the_budget_bounds_the_table_and_evictions_are_counted() {
+        let cache = ModelCache::new(64 * 1024);
+        for i in 0..40u8 {
+            let fill = cache.get_or_render(CacheKey([i; 32]), true, || async { Ok::<_, String>(model(4000, false)) }).await;
+            assert!(fill.is_ok());
+        }
+        assert!(cache.weighted_bytes() <= 64 * 1024, "{}", cache.weighted_bytes());
+        assert_eq!(cache.entry_count() + cache.evictions(), 40);
+        let big = cache.get_or_render(CacheKey([99; 32]), true, || async { Ok::<_, String>(model(60_000, false)) }).await;
+        assert!(big.is_ok());
+        assert!(cache.memory_peek(&CacheKey([99; 32])).0.is_some(), "a model of 60 KB in a 64 KB table is kept");
+    }
+
+    /// Scan resistance: a model asked for again survives a stream of
+    /// one-off renders ten times the table's size.
+    #[tokio::test]
+    async fn models_in_demand_survive_a_burst_of_one_off_renders() {
+        let cache = ModelCache::new(100 * 4352);
+        let popular = CacheKey([0xee; 32]);
+        let fill = || async { Ok::<_, String>(model(4096, false)) };
+        cache.get_or_render(popular, true, fill).await.map(|_| ()).expect("filled");
+        for i in 0..1000u32 {
+            let mut key = [0u8; 32];
+            key[..4].copy_from_slice(&i.to_le_bytes());
+            cache.get_or_render(CacheKey(key), true, fill).await.map(|_| ()).expect("filled");
+            if i % 50 == 0 {
+                assert!(cache.memory_peek(&popular).0.is_some(), "after {i} one-off renders");
+            }
+        }
+        assert!(cache.memory_peek(&popular).0.is_some());
+        assert!(cache.evictions() >= 900);
     }
 }

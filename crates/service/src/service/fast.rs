@@ -39,8 +39,8 @@
 //!   source and every option), and answers only if the cache still holds
 //!   the very model the entry was made from (the same `Arc`); otherwise the
 //!   entry is dropped and the router answers. Clearing or evicting a model
-//!   ends its fast answers, and the lookup keeps the model hot in moka's
-//!   admission policy, as the router's lookup would.
+//!   ends its fast answers, and the lookup keeps the model hot in the
+//!   table's eviction policy, as the router's lookup would.
 //! - **Counted and logged like the router's answers.** `/metrics` counts
 //!   the request (route, status, latency), the response bytes, the cache
 //!   hit and the memory-tier lookup, plus `rulemesh_fast_path_hits_total`;
@@ -206,7 +206,7 @@ impl Answers {
         let started = Instant::now();
         let chosen = self.choose(probe, headers)?;
         let model = chosen.model.upgrade();
-        let (held, took) = state.engine.cache().memory_peek(&chosen.key).await;
+        let (held, took) = state.engine.cache().memory_peek(&chosen.key);
         let model = match (model, held) {
             (Some(m), Some(h)) if Arc::ptr_eq(&m, &h) => m,
             _ => {

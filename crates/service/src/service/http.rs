@@ -677,7 +677,6 @@ async fn readyz(State(st): State<Arc<AppState>>) -> Response {
 #[utoipa::path(get, path = "/metrics", tag = "meta",
     responses((status = 200, description = "Prometheus text exposition", content_type = "text/plain", body = String)))]
 async fn metrics(State(st): State<Arc<AppState>>, headers: HeaderMap) -> Response {
-    st.engine.cache().sync().await;
     let om = wants_openmetrics(headers.get(header::ACCEPT).and_then(|v| v.to_str().ok()));
     ([(header::CONTENT_TYPE, if om { OPENMETRICS } else { PROMETHEUS_TEXT })], st.metrics.render_text(om)).into_response()
 }
