@@ -95,12 +95,20 @@ fn base_colour(program: &Program) -> [f64; 4] {
 /// object is placed twice), in which case nothing was charged to `budget`.
 /// Its leaves, walked, are the instances [`evaluate`] places, in order.
 pub fn evaluate_hierarchy(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Option<Hierarchy>, EvalError> {
-    let ev = Evaluator::new(program, params, options)?;
-    if !super::share::shareable(&ev) {
+    hierarchy_of(&Evaluator::new(program, params, options)?, budget)
+}
+
+/// [`evaluate_hierarchy`] with the evaluator made already: `build_model`
+/// makes one for both attempts (a hierarchy, then the flat scene when
+/// there is none to share), since making it evaluates every constant
+/// adjustment of the program (issue 33: twice was 4 % of a fresh icon).
+pub(super) fn hierarchy_of(ev: &Evaluator<'_>, budget: &mut Budget) -> Result<Option<Hierarchy>, EvalError> {
+    let program = ev.program;
+    if !super::share::shareable(ev) {
         return Ok(None);
     }
     let mark = budget.mark();
-    let h = super::memo::build(&ev, base_colour(program), budget)?;
+    let h = super::memo::build(ev, base_colour(program), budget)?;
     if h.multiplicities().iter().all(|&m| m <= 1) {
         budget.rewind(mark);
         return Ok(None);
@@ -115,7 +123,12 @@ pub(super) fn background(program: &Program) -> Option<[f32; 4]> {
 
 /// Evaluates `program` with bound `params` into a scene, under `budget`.
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
-    let ev = Evaluator::new(program, params, options)?;
+    scene_of(&Evaluator::new(program, params, options)?, options, budget)
+}
+
+/// [`evaluate`] with the evaluator made already (see [`hierarchy_of`]).
+pub(super) fn scene_of(ev: &Evaluator<'_>, options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
+    let program = ev.program;
     let seed = options.seed.or(program.directives.randseed).unwrap_or(0);
     let animated = program.groups.iter().flat_map(|g| &g.rules).any(|r| matches!(r.transform, RuleTransform::Animate(_)));
     let scene = Scene {
@@ -124,7 +137,7 @@ pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget
         ..Scene::default()
     };
     let root = Ctx { frame: Frame::IDENTITY, colour: base_colour(program), depth: 0, key: StreamKey::root(seed), bone: 0, ns: 0 };
-    let mut m = Machine::new(&ev, budget, scene, None, root.key);
+    let mut m = Machine::new(ev, budget, scene, None, root.key);
     let mut result = m.run(ev.program.start, root);
     if result.is_ok() {
         match m.camera() {

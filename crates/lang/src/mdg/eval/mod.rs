@@ -42,10 +42,11 @@ pub fn build_model(language: Language, program: &Program, req: &BuildRequest<'_>
     let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit, downstream: req.downstream };
     // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
     let seed = req.seed.or(program.directives.randseed).unwrap_or(0);
-    if let Some(h) = hierarchy(program, &params, &options, req, budget)? {
+    let ev = machine::Evaluator::new(program, &params, &options)?;
+    if let Some(h) = hierarchy(&ev, req, budget)? {
         return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(program), ..Scene::default() }, hierarchy: Some(h), drawing: None, warnings: program.warnings.clone() });
     }
-    let scene = evaluate(program, &params, &options, budget)?;
+    let scene = evaluator::scene_of(&ev, &options, budget)?;
     Ok(Model {
         language,
         seed,
@@ -63,12 +64,12 @@ pub fn build_model(language: Language, program: &Program, req: &BuildRequest<'_>
 /// charges its size or expansion as the route writes it). Under `truncate`
 /// a hierarchy that does not fit is given up (its charges refunded) for the
 /// flat derivation, which stops at the limit.
-fn hierarchy(program: &Program, params: &[f64], options: &EvalOptions, req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Option<Hierarchy>, BuildError> {
+fn hierarchy(ev: &machine::Evaluator<'_>, req: &BuildRequest<'_>, budget: &mut Budget) -> Result<Option<Hierarchy>, BuildError> {
     if !req.hierarchy {
         return Ok(None);
     }
     let mark = budget.mark();
-    match evaluate_hierarchy(program, params, options, budget) {
+    match evaluator::hierarchy_of(ev, budget) {
         Ok(h) => Ok(h),
         Err(EvalError::Limit(_)) if req.on_limit == OnLimit::Truncate => {
             budget.rewind(mark);
