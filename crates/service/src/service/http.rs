@@ -332,6 +332,9 @@ fn model_response(served: &Served, cache_control: Option<&'static str>, text: bo
     // The request's log line (in `observe`) reads the timing from here.
     resp.extensions_mut().insert(served.timing);
     let h = resp.headers_mut();
+    // Room for every header the response gets (model_headers, Vary, the
+    // request id, hyper's date and length): no regrowth on the way.
+    h.reserve(16);
     h.insert(header::CONTENT_TYPE, HeaderValue::from_static(m.content_type));
     model_headers(h, served, cache_control);
     resp
