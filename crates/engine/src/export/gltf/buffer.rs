@@ -10,8 +10,7 @@ use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::{NamedMesh, STOP_EVERY};
 use crate::model::graph::{NodeGraph, Trs};
-use gltf_json as json;
-use json::validation::{Checked::Valid, USize64};
+use super::tree::{Accessor, Component, Ix, Kind, Path, Target, View};
 
 /// glTF buffers (and GLB files) address at most 2³² − 1 bytes.
 pub(super) const MAX_BYTES: u64 = u32::MAX as u64;
@@ -133,41 +132,13 @@ pub(super) fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), E
 }
 
 /// A buffer view of `length` bytes at `offset` of `buffer`.
-pub(super) fn view(buffer: json::Index<json::Buffer>, offset: u64, length: u64, target: Option<json::buffer::Target>) -> json::buffer::View {
-    json::buffer::View {
-        buffer,
-        byte_length: USize64(length),
-        byte_offset: Some(USize64(offset)),
-        byte_stride: None,
-        name: None,
-        target: target.map(Valid),
-        extensions: None,
-        extras: None,
-    }
+pub(super) fn view(buffer: Ix, offset: u64, length: u64, target: Option<Target>) -> View {
+    View { buffer, byte_length: length, byte_offset: offset, byte_stride: None, name: None, target, meshopt: None }
 }
 
 /// An accessor of `count` elements reading `view` from its start.
-pub(super) fn accessor(
-    view: json::Index<json::buffer::View>,
-    count: usize,
-    component: json::accessor::ComponentType,
-    type_: json::accessor::Type,
-    normalized: bool,
-) -> json::Accessor {
-    json::Accessor {
-        buffer_view: Some(view),
-        byte_offset: None,
-        count: USize64(count as u64),
-        component_type: Valid(json::accessor::GenericComponentType(component)),
-        extensions: None,
-        extras: None,
-        type_: Valid(type_),
-        min: None,
-        max: None,
-        name: None,
-        normalized,
-        sparse: None,
-    }
+pub(super) fn accessor(view: Ix, count: usize, component: Component, kind: Kind, normalized: bool) -> Accessor {
+    Accessor { view, byte_offset: None, count: count as u64, component, kind, bounds: None, normalized }
 }
 
 /// What an animation channel moves.
@@ -191,7 +162,7 @@ pub(super) struct Tracks {
     /// The last sample time.
     pub(super) end: f32,
     /// Per channel: what it moves, which property, and where its outputs start in `bytes`.
-    pub(super) channels: Vec<(Mover, json::animation::Property, u64)>,
+    pub(super) channels: Vec<(Mover, Path, u64)>,
 }
 
 impl Tracks {
@@ -199,7 +170,6 @@ impl Tracks {
     /// empty when nothing does. Rotations are sign-aligned sample to sample
     /// so LINEAR interpolation takes the short way.
     fn of(graph: Option<&NodeGraph>, offset: u64) -> Tracks {
-        use json::animation::Property;
         let Some(g) = graph.filter(|g| g.is_animated()) else { return Tracks::default() };
         let count = g.times.len();
         let mut t = Tracks { offset, count, end: g.times.last().copied().unwrap_or(0.0), ..Tracks::default() };
@@ -216,13 +186,13 @@ impl Tracks {
             movers.push((Mover::Camera, &c.placements, false));
         }
         for (mover, samples, with_scale) in movers {
-            t.channels.push((mover, Property::Translation, t.bytes.len() as u64));
+            t.channels.push((mover, Path::Translation, t.bytes.len() as u64));
             for s in samples {
                 for c in s.translation {
                     t.bytes.extend_from_slice(&c.to_le_bytes());
                 }
             }
-            t.channels.push((mover, Property::Rotation, t.bytes.len() as u64));
+            t.channels.push((mover, Path::Rotation, t.bytes.len() as u64));
             let mut prev = [0.0f32, 0.0, 0.0, 1.0];
             for s in samples {
                 let dot: f32 = s.rotation.iter().zip(prev).map(|(a, b)| a * b).sum();
@@ -233,7 +203,7 @@ impl Tracks {
                 prev = q;
             }
             if with_scale {
-                t.channels.push((mover, Property::Scale, t.bytes.len() as u64));
+                t.channels.push((mover, Path::Scale, t.bytes.len() as u64));
                 for s in samples {
                     for c in s.scale {
                         t.bytes.extend_from_slice(&c.to_le_bytes());
