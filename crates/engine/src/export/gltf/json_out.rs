@@ -22,6 +22,17 @@ use super::tree::{Accessor, Animation, Bounds, Buffer, Camera, Ix, Material, Mes
 use super::document::EXT_INSTANCING;
 use super::document::EXT_MESHOPT;
 use crate::export::ExportError;
+use serde_json::ser::{CompactFormatter, Formatter};
+
+/// `,"name":`, the text that starts field `name` of an object, for
+/// [`Out::key`] and the field writers (one copy of a constant, where
+/// writing the comma, quotes and colon byte by byte was most of the cost
+/// of a small number field).
+macro_rules! k {
+    ($name:literal) => {
+        concat!(",\"", $name, "\":")
+    };
+}
 
 /// `root` as compact JSON: the bytes of gltf-json's `Root::to_vec` for the
 /// same document.
@@ -33,22 +44,22 @@ pub(super) fn root_json(root: &Root<'_>) -> Result<Vec<u8>, ExportError> {
     let uri = root.buffers.iter().filter_map(|b| b.uri.as_ref()).map(String::len).sum::<usize>();
     let mut o = Out { bytes: Vec::with_capacity(1024 + 160 * items + uri), first: true };
     o.bytes.push(b'{');
-    o.array_field("accessors", &root.accessors, accessor)?;
-    o.array_field("animations", &root.animations, animation)?;
-    o.key("asset");
+    o.array_field(k!("accessors"), &root.accessors, accessor)?;
+    o.array_field(k!("animations"), &root.animations, animation)?;
+    o.key(k!("asset"));
     asset(&mut o, root)?;
-    o.array_field("buffers", &root.buffers, buffer)?;
-    o.array_field("bufferViews", &root.views, view)?;
+    o.array_field(k!("buffers"), &root.buffers, buffer)?;
+    o.array_field(k!("bufferViews"), &root.views, view)?;
     if let Some(s) = root.scene {
-        o.number("scene", s);
+        o.number(k!("scene"), s);
     }
-    o.array_field("extensionsUsed", &root.extensions, |o, e| o.string(e))?;
-    o.array_field("extensionsRequired", &root.extensions, |o, e| o.string(e))?;
-    o.array_field("cameras", &root.cameras, camera)?;
-    o.array_field("materials", &root.materials, material)?;
-    o.array_field("meshes", &root.meshes, mesh)?;
-    o.array_field("nodes", &root.nodes, node)?;
-    o.array_field("scenes", &root.scenes, scene)?;
+    o.array_field(k!("extensionsUsed"), &root.extensions, |o, e| o.string(e))?;
+    o.array_field(k!("extensionsRequired"), &root.extensions, |o, e| o.string(e))?;
+    o.array_field(k!("cameras"), &root.cameras, camera)?;
+    o.array_field(k!("materials"), &root.materials, material)?;
+    o.array_field(k!("meshes"), &root.meshes, mesh)?;
+    o.array_field(k!("nodes"), &root.nodes, node)?;
+    o.array_field(k!("scenes"), &root.scenes, scene)?;
     o.bytes.push(b'}');
     Ok(o.bytes)
 }
@@ -60,8 +71,19 @@ struct Out {
 }
 
 impl Out {
-    /// Starts field `name` of the open object (no key needs escaping).
-    fn key(&mut self, name: &str) {
+    /// Starts a field of the open object: `key` is its `,"name":` (made
+    /// by [`k!`]), written in one copy, the comma left out for the
+    /// object's first field.
+    #[inline]
+    fn key(&mut self, key: &str) {
+        let text = if self.first { key.strip_prefix(',').unwrap_or(key) } else { key };
+        self.first = false;
+        self.bytes.extend_from_slice(text.as_bytes());
+    }
+
+    /// Starts field `name` of the open object, for a name held in a
+    /// constant (no key needs escaping).
+    fn named_key(&mut self, name: &str) {
         if !self.first {
             self.bytes.push(b',');
         }
@@ -72,12 +94,14 @@ impl Out {
     }
 
     /// Opens an object.
+    #[inline]
     fn open(&mut self) {
         self.bytes.push(b'{');
         self.first = true;
     }
 
     /// Closes the open object (a field of an enclosing object follows with a comma).
+    #[inline]
     fn close(&mut self) {
         self.bytes.push(b'}');
         self.first = false;
@@ -120,27 +144,38 @@ impl Out {
     }
 
     /// A number field.
+    #[inline]
     fn number(&mut self, name: &str, value: impl Into<u64>) {
         self.key(name);
         self.integer(value.into());
     }
 
     /// A bare integer.
+    #[inline]
     fn integer(&mut self, value: u64) {
         self.bytes.extend_from_slice(itoa::Buffer::new().format(value).as_bytes());
     }
 
     /// A float as serde_json writes an `f32` (gltf-json's transform and
-    /// material fields).
+    /// material fields): its own formatter's text for a finite value,
+    /// `null` for any other, as its `serialize_f32` does, without a
+    /// serializer around it.
     fn f32(&mut self, value: f32) -> Result<(), ExportError> {
-        serde_json::to_writer(&mut self.bytes, &value)?;
+        match value.is_finite() {
+            true => CompactFormatter.write_f32(&mut self.bytes, value).map_err(serde_json::Error::io)?,
+            false => self.bytes.extend_from_slice(b"null"),
+        }
         Ok(())
     }
 
     /// A float as serde_json writes an `f64` (gltf-json's bounds and
-    /// rulemesh's extras, made as `Value`s from `f64::from(f32)`).
+    /// rulemesh's extras, made as `Value`s from `f64::from(f32)`), as
+    /// [`Out::f32`] does.
     fn f64(&mut self, value: f64) -> Result<(), ExportError> {
-        serde_json::to_writer(&mut self.bytes, &value)?;
+        match value.is_finite() {
+            true => CompactFormatter.write_f64(&mut self.bytes, value).map_err(serde_json::Error::io)?,
+            false => self.bytes.extend_from_slice(b"null"),
+        }
         Ok(())
     }
 
@@ -202,6 +237,7 @@ impl Out {
     }
 
     /// A fixed word, which needs no escaping, as a string.
+    #[inline]
     fn word_field(&mut self, name: &str, word: &str) {
         self.key(name);
         self.bytes.push(b'"');
@@ -210,6 +246,7 @@ impl Out {
     }
 
     /// An index field skipped when `None`.
+    #[inline]
     fn index_field(&mut self, name: &str, value: Option<Ix>) {
         if let Some(i) = value {
             self.number(name, i);
@@ -223,10 +260,10 @@ impl Out {
 fn asset(o: &mut Out, root: &Root<'_>) -> Result<(), ExportError> {
     o.open();
     if let Some(p) = &root.provenance {
-        o.key("extras");
+        o.key(k!("extras"));
         o.bytes.extend_from_slice(p.get().as_bytes());
     }
-    o.key("generator");
+    o.key(k!("generator"));
     // The version is a crate version (digits, dots, letters): no escaping,
     // so no `format!`; serde writes it should that ever change.
     let version = crate::ENGINE_VERSION;
@@ -237,7 +274,7 @@ fn asset(o: &mut Out, root: &Root<'_>) -> Result<(), ExportError> {
     } else {
         o.string(&format!("rulemesh {version}"))?;
     }
-    o.word_field("version", "2.0");
+    o.word_field(k!("version"), "2.0");
     o.close();
     Ok(())
 }
@@ -247,22 +284,22 @@ fn asset(o: &mut Out, root: &Root<'_>) -> Result<(), ExportError> {
 /// sparse).
 fn accessor(o: &mut Out, a: &Accessor) -> Result<(), ExportError> {
     o.open();
-    o.number("bufferView", a.view);
+    o.number(k!("bufferView"), a.view);
     if let Some(off) = a.byte_offset {
-        o.number("byteOffset", off);
+        o.number(k!("byteOffset"), off);
     }
-    o.number("count", a.count);
-    o.number("componentType", a.component.gl());
-    o.word_field("type", a.kind.word());
+    o.number(k!("count"), a.count);
+    o.number(k!("componentType"), a.component.gl());
+    o.word_field(k!("type"), a.kind.word());
     match a.bounds {
         Some(Bounds::Float(min, max)) => {
-            o.key("min");
+            o.key(k!("min"));
             o.f64s(&min)?;
-            o.key("max");
+            o.key(k!("max"));
             o.f64s(&max)?;
         }
         Some(Bounds::Grid(min, max)) => {
-            for (name, v) in [("min", min), ("max", max)] {
+            for (name, v) in [(k!("min"), min), (k!("max"), max)] {
                 o.key(name);
                 o.bytes.push(b'[');
                 for (k, c) in v.into_iter().enumerate() {
@@ -275,15 +312,15 @@ fn accessor(o: &mut Out, a: &Accessor) -> Result<(), ExportError> {
             }
         }
         Some(Bounds::Times(end)) => {
-            o.key("min");
+            o.key(k!("min"));
             o.f64s(&[0.0])?;
-            o.key("max");
+            o.key(k!("max"));
             o.f64s(&[end])?;
         }
         None => {}
     }
     if a.normalized {
-        o.key("normalized");
+        o.key(k!("normalized"));
         o.bytes.extend_from_slice(b"true");
     }
     o.close();
@@ -295,23 +332,23 @@ fn accessor(o: &mut Out, a: &Accessor) -> Result<(), ExportError> {
 /// path; `Sampler`: input, interpolation, output).
 fn animation(o: &mut Out, a: &Animation) -> Result<(), ExportError> {
     o.open();
-    o.array_field("channels", &a.channels, |o, c| {
+    o.array_field(k!("channels"), &a.channels, |o, c| {
         o.open();
-        o.number("sampler", c.sampler);
-        o.key("target");
+        o.number(k!("sampler"), c.sampler);
+        o.key(k!("target"));
         o.open();
-        o.number("node", c.node);
-        o.word_field("path", c.path.word());
+        o.number(k!("node"), c.node);
+        o.word_field(k!("path"), c.path.word());
         o.close();
         o.close();
         Ok(())
     })?;
-    o.word_field("name", "rulemesh");
-    o.array_field("samplers", &a.samplers, |o, s| {
+    o.word_field(k!("name"), "rulemesh");
+    o.array_field(k!("samplers"), &a.samplers, |o, s| {
         o.open();
-        o.number("input", s.input);
-        o.word_field("interpolation", if s.step { "STEP" } else { "LINEAR" });
-        o.number("output", s.output);
+        o.number(k!("input"), s.input);
+        o.word_field(k!("interpolation"), if s.step { "STEP" } else { "LINEAR" });
+        o.number(k!("output"), s.output);
         o.close();
         Ok(())
     })?;
@@ -322,12 +359,12 @@ fn animation(o: &mut Out, a: &Animation) -> Result<(), ExportError> {
 /// One buffer (gltf-json's `Buffer`: byteLength, name, uri, extensions, extras).
 fn buffer(o: &mut Out, b: &Buffer) -> Result<(), ExportError> {
     o.open();
-    o.number("byteLength", b.byte_length);
+    o.number(k!("byteLength"), b.byte_length);
     if let Some(uri) = &b.uri {
-        o.string_field("uri", uri)?;
+        o.string_field(k!("uri"), uri)?;
     }
     if b.meshopt_fallback {
-        o.key("extensions");
+        o.key(k!("extensions"));
         o.bytes.push(b'{');
         o.bytes.push(b'"');
         o.bytes.extend_from_slice(EXT_MESHOPT.as_bytes());
@@ -342,29 +379,29 @@ fn buffer(o: &mut Out, b: &Buffer) -> Result<(), ExportError> {
 /// keys sorted, as its `Map` held them).
 fn view(o: &mut Out, v: &View) -> Result<(), ExportError> {
     o.open();
-    o.number("buffer", v.buffer);
-    o.number("byteLength", v.byte_length);
-    o.number("byteOffset", v.byte_offset);
+    o.number(k!("buffer"), v.buffer);
+    o.number(k!("byteLength"), v.byte_length);
+    o.number(k!("byteOffset"), v.byte_offset);
     if let Some(s) = v.byte_stride {
-        o.number("byteStride", s);
+        o.number(k!("byteStride"), s);
     }
     if let Some(name) = v.name {
-        o.string_field("name", name)?;
+        o.string_field(k!("name"), name)?;
     }
     if let Some(t) = v.target {
-        o.number("target", t.gl());
+        o.number(k!("target"), t.gl());
     }
     if let Some(m) = &v.meshopt {
-        o.key("extensions");
+        o.key(k!("extensions"));
         o.open();
-        o.key(EXT_MESHOPT);
+        o.named_key(EXT_MESHOPT);
         o.open();
-        o.number("buffer", m.buffer);
-        o.number("byteLength", m.byte_length);
-        o.number("byteOffset", m.byte_offset);
-        o.number("byteStride", m.byte_stride);
-        o.number("count", m.count);
-        o.word_field("mode", m.mode);
+        o.number(k!("buffer"), m.buffer);
+        o.number(k!("byteLength"), m.byte_length);
+        o.number(k!("byteOffset"), m.byte_offset);
+        o.number(k!("byteStride"), m.byte_stride);
+        o.number(k!("count"), m.count);
+        o.word_field(k!("mode"), m.mode);
         o.close();
         o.close();
     }
@@ -377,20 +414,20 @@ fn view(o: &mut Out, v: &View) -> Result<(), ExportError> {
 fn camera(o: &mut Out, c: &Camera<'_>) -> Result<(), ExportError> {
     o.open();
     if let Some(name) = c.name {
-        o.string_field("name", name)?;
+        o.string_field(k!("name"), name)?;
     }
-    o.key("perspective");
+    o.key(k!("perspective"));
     o.open();
-    o.key("yfov");
+    o.key(k!("yfov"));
     o.f32(c.yfov)?;
     if let Some(zfar) = c.zfar {
-        o.key("zfar");
+        o.key(k!("zfar"));
         o.f32(zfar)?;
     }
-    o.key("znear");
+    o.key(k!("znear"));
     o.f32(c.znear)?;
     o.close();
-    o.word_field("type", "perspective");
+    o.word_field(k!("type"), "perspective");
     o.close();
     Ok(())
 }
@@ -403,7 +440,7 @@ fn material(o: &mut Out, m: &Material<'_>) -> Result<(), ExportError> {
     o.bytes.extend_from_slice(b"{\"alphaMode\":\"OPAQUE\",\"doubleSided\":false");
     o.first = false;
     if let Some(name) = m.name {
-        o.string_field("name", name)?;
+        o.string_field(k!("name"), name)?;
     }
     o.bytes.extend_from_slice(b",\"pbrMetallicRoughness\":{\"baseColorFactor\":[1.0,1.0,1.0,1.0],\"metallicFactor\":0.0,\"roughnessFactor\":0.8},\"emissiveFactor\":[0.0,0.0,0.0]}");
     Ok(())
@@ -415,8 +452,8 @@ fn material(o: &mut Out, m: &Material<'_>) -> Result<(), ExportError> {
 /// TRIANGLES, targets).
 fn mesh(o: &mut Out, m: &Mesh<'_>) -> Result<(), ExportError> {
     o.open();
-    o.string_field("name", m.name)?;
-    o.key("primitives");
+    o.string_field(k!("name"), m.name)?;
+    o.key(k!("primitives"));
     o.bytes.extend_from_slice(b"[{\"attributes\":{\"POSITION\":");
     o.integer(u64::from(m.position));
     o.bytes.extend_from_slice(b",\"NORMAL\":");
@@ -437,31 +474,31 @@ fn mesh(o: &mut Out, m: &Mesh<'_>) -> Result<(), ExportError> {
 /// instancing extension's attributes sorted, as its `Map` held them).
 fn node(o: &mut Out, n: &Node<'_>) -> Result<(), ExportError> {
     o.open();
-    o.index_field("camera", n.camera);
+    o.index_field(k!("camera"), n.camera);
     if !n.children.is_empty() {
-        o.key("children");
+        o.key(k!("children"));
         o.indices(&n.children);
     }
     if let Some(i) = &n.instancing {
-        o.key("extensions");
+        o.key(k!("extensions"));
         o.open();
-        o.key(EXT_INSTANCING);
+        o.named_key(EXT_INSTANCING);
         o.open();
-        o.key("attributes");
+        o.key(k!("attributes"));
         o.open();
-        o.index_field("ROTATION", i.rotation);
-        o.index_field("SCALE", i.scale);
-        o.number("TRANSLATION", i.translation);
-        o.index_field("_COLOR_0", i.colour);
+        o.index_field(k!("ROTATION"), i.rotation);
+        o.index_field(k!("SCALE"), i.scale);
+        o.number(k!("TRANSLATION"), i.translation);
+        o.index_field(k!("_COLOR_0"), i.colour);
         o.close();
         o.close();
         o.close();
     }
-    o.index_field("mesh", n.mesh);
-    o.string_field("name", n.name)?;
-    o.f32s_field("rotation", n.rotation.as_ref().map(|r| &r[..]))?;
-    o.f32s_field("scale", n.scale.as_ref().map(|s| &s[..]))?;
-    o.f32s_field("translation", n.translation.as_ref().map(|t| &t[..]))?;
+    o.index_field(k!("mesh"), n.mesh);
+    o.string_field(k!("name"), n.name)?;
+    o.f32s_field(k!("rotation"), n.rotation.as_ref().map(|r| &r[..]))?;
+    o.f32s_field(k!("scale"), n.scale.as_ref().map(|s| &s[..]))?;
+    o.f32s_field(k!("translation"), n.translation.as_ref().map(|t| &t[..]))?;
     o.close();
     Ok(())
 }
@@ -471,20 +508,20 @@ fn node(o: &mut Out, n: &Node<'_>) -> Result<(), ExportError> {
 fn scene(o: &mut Out, s: &Scene) -> Result<(), ExportError> {
     o.open();
     if s.background.is_some() || s.truncated {
-        o.key("extras");
+        o.key(k!("extras"));
         o.open();
         if let Some(bg) = &s.background {
-            o.key("background");
+            o.key(k!("background"));
             o.f64s(bg)?;
         }
         if s.truncated {
-            o.key("truncated");
+            o.key(k!("truncated"));
             o.bytes.extend_from_slice(b"true");
         }
         o.close();
     }
     if !s.nodes.is_empty() {
-        o.key("nodes");
+        o.key(k!("nodes"));
         o.indices(&s.nodes);
     }
     o.close();
