@@ -30,8 +30,8 @@
 //! component, so under 0.5° off. Output is deterministic.
 
 use super::buffer::{accessor, view};
-use super::document::{Attributes, Doc, EXT_MESHOPT, KHR_QUANT};
-use super::tree::{push, Bounds, Component, Ix, Kind, MeshoptView, Root, Target};
+use super::document::{Attributes, Doc};
+use super::tree::{push, Bounds, Component, Ix, Kind, MeshoptView, Root, Target, EXT_MESHOPT, KHR_QUANT};
 use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
@@ -361,7 +361,9 @@ fn encode_vertices(bytes: &[u8], stride: usize) -> Result<Vec<u8>, ExportError> 
 
 /// The finished document and its binary buffer.
 struct Built<'a> {
+    /// The document.
     root: Root<'a>,
+    /// Buffer 0's bytes (raw, or meshopt-encoded).
     bin: Vec<u8>,
 }
 

@@ -14,15 +14,8 @@
 
 use super::buffer::{accessor, view, Placement, Tracks};
 use super::graph::add_graph;
-use super::tree::{push, Bounds, Buffer, Component, Instancing, Ix, Kind, Material, Mesh, MeshoptView, Node, Root, Scene, Target, View};
+use super::tree::{push, Bounds, Buffer, Component, Instancing, Ix, Kind, Material, Mesh, MeshoptView, Node, Root, Scene, Target, View, EXT_INSTANCING};
 use crate::export::{ExportError, ExportMeta};
-
-/// `EXT_meshopt_compression`: meshoptimizer's codecs on buffer views.
-pub(super) const EXT_MESHOPT: &str = "EXT_meshopt_compression";
-/// `KHR_mesh_quantization`: integer vertex attributes.
-pub(super) const KHR_QUANT: &str = "KHR_mesh_quantization";
-/// `EXT_mesh_gpu_instancing`: per-node instance transforms.
-pub(crate) const EXT_INSTANCING: &str = "EXT_mesh_gpu_instancing";
 
 /// The vertex attributes of one mesh primitive.
 pub(super) struct Attributes {

@@ -6,9 +6,9 @@
 //! `Root::to_vec`'s bytes equal to `root_json`'s, on a document with every
 //! field and variant the tree has and on documents the builder makes.
 
-use super::document::{plain, Doc, EXT_INSTANCING, EXT_MESHOPT, KHR_QUANT};
+use super::document::{plain, Doc};
 use super::json_out::root_json;
-use super::tree::{push, Accessor, Animation, Bounds, Buffer, Camera, Channel, Component, Instancing, Kind, Material, Mesh, MeshoptView, Node, Path, Root, Sampler, Target, View};
+use super::tree::{push, Accessor, Animation, Bounds, Buffer, Camera, Channel, Component, Instancing, Kind, Material, Mesh, MeshoptView, Node, Path, Root, Sampler, Target, View, EXT_INSTANCING, EXT_MESHOPT, KHR_QUANT};
 use crate::export::ExportMeta;
 use gltf_json as json;
 use json::validation::{Checked::Valid, USize64};
@@ -56,6 +56,7 @@ fn f64s(v: &[f32]) -> Value {
     Value::Array(v.iter().map(|&c| Value::from(f64::from(c))).collect())
 }
 
+/// An accessor, its bounds as the `Value` arrays the writers made.
 fn accessor(a: &Accessor) -> json::Accessor {
     use json::accessor::{ComponentType, GenericComponentType, Type};
     let component = match a.component {
@@ -95,6 +96,7 @@ fn accessor(a: &Accessor) -> json::Accessor {
     }
 }
 
+/// The `"rulemesh"` animation.
 fn animation(a: &Animation) -> json::Animation {
     use json::animation::{Interpolation, Property};
     let channels = a
@@ -128,11 +130,13 @@ fn animation(a: &Animation) -> json::Animation {
     json::Animation { name: Some("rulemesh".to_string()), channels, samplers, extensions: None, extras: None }
 }
 
+/// A buffer, the meshopt fallback flag as its extension map.
 fn buffer(b: &Buffer) -> json::Buffer {
     let extensions = b.meshopt_fallback.then(|| json::extensions::buffer::Buffer { others: extension(EXT_MESHOPT, serde_json::json!({ "fallback": true })) });
     json::Buffer { byte_length: USize64(b.byte_length), name: None, uri: b.uri.clone(), extensions, extras: None }
 }
 
+/// A buffer view, the meshopt extension as a map (`to_value` of a struct sorted its keys so).
 fn view(v: &View) -> json::buffer::View {
     use json::buffer::Target as T;
     let extensions = v.meshopt.map(|m| {
@@ -154,6 +158,7 @@ fn view(v: &View) -> json::buffer::View {
     }
 }
 
+/// A perspective camera.
 fn camera(c: &Camera<'_>) -> json::Camera {
     json::Camera {
         name: c.name.map(str::to_string),
@@ -165,6 +170,7 @@ fn camera(c: &Camera<'_>) -> json::Camera {
     }
 }
 
+/// The one material, as the builder made it.
 fn material(m: &Material<'_>) -> json::Material {
     json::Material {
         name: m.name.map(str::to_string),
@@ -179,6 +185,7 @@ fn material(m: &Material<'_>) -> json::Material {
     }
 }
 
+/// A mesh of one primitive, its attributes in a `BTreeMap`.
 fn mesh(m: &Mesh<'_>) -> json::Mesh {
     let mut attributes = BTreeMap::new();
     attributes.insert(Valid(json::mesh::Semantic::Positions), Index::new(m.position));
@@ -196,6 +203,7 @@ fn mesh(m: &Mesh<'_>) -> json::Mesh {
     json::Mesh { extensions: None, extras: None, name: Some(m.name.to_string()), primitives: vec![primitive], weights: None }
 }
 
+/// A node, the instancing extension as a map.
 fn node(n: &Node<'_>) -> json::Node {
     let extensions = n.instancing.map(|i: Instancing| {
         let mut attributes = serde_json::Map::new();
@@ -220,6 +228,7 @@ fn node(n: &Node<'_>) -> json::Node {
     }
 }
 
+/// The scene, its extras a `BTreeMap` made raw, as the builder made them.
 fn scene(s: &super::tree::Scene) -> json::Scene {
     let mut map = BTreeMap::new();
     if let Some(bg) = s.background {
@@ -301,6 +310,7 @@ fn mixed() -> Root<'static> {
     r
 }
 
+/// Every field and variant, the empty tree and the empty document.
 #[test]
 fn the_bytes_are_gltf_jsons() {
     assert_same(&mixed());
@@ -308,6 +318,8 @@ fn the_bytes_are_gltf_jsons() {
     assert_same(&Doc::new().finish(&ExportMeta::default()).expect("empty"));
 }
 
+/// Documents the plain builder makes, with and without extras, camera,
+/// named materials, a URI and an instanced node.
 #[test]
 fn built_documents_are_gltf_jsons() {
     use super::buffer::{place, Tracks};

@@ -18,9 +18,7 @@
 //! the same documents as gltf-json trees and hold the bytes equal; a new
 //! gltf-json must be read against them before it is taken.
 
-use super::tree::{Accessor, Animation, Bounds, Buffer, Camera, Ix, Material, Mesh, Node, Root, Scene, View};
-use super::document::EXT_INSTANCING;
-use super::document::EXT_MESHOPT;
+use super::tree::{Accessor, Animation, Bounds, Buffer, Camera, Ix, Material, Mesh, Node, Root, Scene, View, EXT_INSTANCING, EXT_MESHOPT};
 use crate::export::ExportError;
 use serde_json::ser::{CompactFormatter, Formatter};
 
@@ -66,7 +64,9 @@ pub(super) fn root_json(root: &Root<'_>) -> Result<Vec<u8>, ExportError> {
 
 /// The JSON being written, and whether the open object has a field yet.
 struct Out {
+    /// The JSON so far.
     bytes: Vec<u8>,
+    /// Whether the open object has no field yet (its first needs no comma).
     first: bool,
 }
 

@@ -17,6 +17,13 @@
 
 use crate::model::graph::Trs;
 
+/// `EXT_meshopt_compression`: meshoptimizer's codecs on buffer views.
+pub(super) const EXT_MESHOPT: &str = "EXT_meshopt_compression";
+/// `KHR_mesh_quantization`: integer vertex attributes.
+pub(super) const KHR_QUANT: &str = "KHR_mesh_quantization";
+/// `EXT_mesh_gpu_instancing`: per-node instance transforms.
+pub(super) const EXT_INSTANCING: &str = "EXT_mesh_gpu_instancing";
+
 /// An index into one of the document's arrays.
 pub(super) type Ix = u32;
 
