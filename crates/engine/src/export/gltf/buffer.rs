@@ -10,8 +10,7 @@ use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::{NamedMesh, STOP_EVERY};
 use crate::model::graph::{NodeGraph, Trs};
-use gltf_json as json;
-use json::validation::{Checked::Valid, USize64};
+use super::tree::{Accessor, Component, Ix, Kind, Path, Target, View};
 
 /// glTF buffers (and GLB files) address at most 2³² − 1 bytes.
 pub(super) const MAX_BYTES: u64 = u32::MAX as u64;
@@ -88,10 +87,13 @@ pub(super) fn check_mesh(m: &NamedMesh) -> Result<(), ExportError> {
     if mesh.indices.len() % 3 != 0 {
         return Err(invalid(&m.name, "index count is not a multiple of 3"));
     }
-    if mesh.indices.iter().any(|&i| i as usize >= n) {
+    // The largest index and one pass over every coordinate, without an
+    // early exit, which the compiler vectorises (issue 33: a fresh icon's
+    // glTF checked its meshes a value at a time).
+    if mesh.indices.iter().copied().max().is_some_and(|i| i as usize >= n) {
         return Err(invalid(&m.name, "index out of range"));
     }
-    if mesh.positions.iter().flatten().any(|c| !c.is_finite()) {
+    if !mesh.positions.iter().flatten().fold(true, |finite, c| finite & c.is_finite()) {
         return Err(invalid(&m.name, "non-finite position"));
     }
     Ok(())
@@ -133,41 +135,13 @@ pub(super) fn place(meshes: &[NamedMesh]) -> Result<(Vec<Placement<'_>>, u64), E
 }
 
 /// A buffer view of `length` bytes at `offset` of `buffer`.
-pub(super) fn view(buffer: json::Index<json::Buffer>, offset: u64, length: u64, target: Option<json::buffer::Target>) -> json::buffer::View {
-    json::buffer::View {
-        buffer,
-        byte_length: USize64(length),
-        byte_offset: Some(USize64(offset)),
-        byte_stride: None,
-        name: None,
-        target: target.map(Valid),
-        extensions: None,
-        extras: None,
-    }
+pub(super) fn view(buffer: Ix, offset: u64, length: u64, target: Option<Target>) -> View {
+    View { buffer, byte_length: length, byte_offset: offset, byte_stride: None, name: None, target, meshopt: None }
 }
 
 /// An accessor of `count` elements reading `view` from its start.
-pub(super) fn accessor(
-    view: json::Index<json::buffer::View>,
-    count: usize,
-    component: json::accessor::ComponentType,
-    type_: json::accessor::Type,
-    normalized: bool,
-) -> json::Accessor {
-    json::Accessor {
-        buffer_view: Some(view),
-        byte_offset: None,
-        count: USize64(count as u64),
-        component_type: Valid(json::accessor::GenericComponentType(component)),
-        extensions: None,
-        extras: None,
-        type_: Valid(type_),
-        min: None,
-        max: None,
-        name: None,
-        normalized,
-        sparse: None,
-    }
+pub(super) fn accessor(view: Ix, count: usize, component: Component, kind: Kind, normalized: bool) -> Accessor {
+    Accessor { view, byte_offset: None, count: count as u64, component, kind, bounds: None, normalized }
 }
 
 /// What an animation channel moves.
@@ -191,7 +165,7 @@ pub(super) struct Tracks {
     /// The last sample time.
     pub(super) end: f32,
     /// Per channel: what it moves, which property, and where its outputs start in `bytes`.
-    pub(super) channels: Vec<(Mover, json::animation::Property, u64)>,
+    pub(super) channels: Vec<(Mover, Path, u64)>,
 }
 
 impl Tracks {
@@ -199,7 +173,6 @@ impl Tracks {
     /// empty when nothing does. Rotations are sign-aligned sample to sample
     /// so LINEAR interpolation takes the short way.
     fn of(graph: Option<&NodeGraph>, offset: u64) -> Tracks {
-        use json::animation::Property;
         let Some(g) = graph.filter(|g| g.is_animated()) else { return Tracks::default() };
         let count = g.times.len();
         let mut t = Tracks { offset, count, end: g.times.last().copied().unwrap_or(0.0), ..Tracks::default() };
@@ -216,13 +189,13 @@ impl Tracks {
             movers.push((Mover::Camera, &c.placements, false));
         }
         for (mover, samples, with_scale) in movers {
-            t.channels.push((mover, Property::Translation, t.bytes.len() as u64));
+            t.channels.push((mover, Path::Translation, t.bytes.len() as u64));
             for s in samples {
                 for c in s.translation {
                     t.bytes.extend_from_slice(&c.to_le_bytes());
                 }
             }
-            t.channels.push((mover, Property::Rotation, t.bytes.len() as u64));
+            t.channels.push((mover, Path::Rotation, t.bytes.len() as u64));
             let mut prev = [0.0f32, 0.0, 0.0, 1.0];
             for s in samples {
                 let dot: f32 = s.rotation.iter().zip(prev).map(|(a, b)| a * b).sum();
@@ -233,7 +206,7 @@ impl Tracks {
                 prev = q;
             }
             if with_scale {
-                t.channels.push((mover, Property::Scale, t.bytes.len() as u64));
+                t.channels.push((mover, Path::Scale, t.bytes.len() as u64));
                 for s in samples {
                     for c in s.scale {
                         t.bytes.extend_from_slice(&c.to_le_bytes());
@@ -288,12 +261,30 @@ pub(super) struct Base64<'a> {
 /// The standard base64 alphabet.
 pub(super) const BASE64_ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
+/// Bytes encoded per copy into the output by [`Base64`]'s `put` (in groups of three).
+const BASE64_BLOCK: usize = 256;
+
+/// The four base64 characters of three bytes.
+fn quad([a, b, c]: [u8; 3]) -> [u8; 4] {
+    let sextets = [a >> 2, ((a & 0x03) << 4) | (b >> 4), ((b & 0x0f) << 2) | (c >> 6), c & 0x3f];
+    sextets.map(|q| BASE64_ALPHABET[q as usize])
+}
+
 impl Base64<'_> {
+    /// Writes the carried group: its first `n + 1` characters, then `=`s.
     fn emit(&mut self, n: usize) {
-        let [a, b, c] = self.carry;
-        let quad = [a >> 2, ((a & 0x03) << 4) | (b >> 4), ((b & 0x0f) << 2) | (c >> 6), c & 0x3f];
-        for (k, &q) in quad.iter().enumerate() {
-            self.out.push(if k <= n { BASE64_ALPHABET[q as usize] } else { b'=' });
+        for (k, &q) in quad(self.carry).iter().enumerate() {
+            self.out.push(if k <= n { q } else { b'=' });
+        }
+    }
+
+    /// Carries one byte, writing the group when it is whole.
+    fn carry_byte(&mut self, b: u8) {
+        self.carry[self.held] = b;
+        self.held += 1;
+        if self.held == 3 {
+            self.emit(3);
+            self.held = 0;
         }
     }
 
@@ -309,14 +300,29 @@ impl Base64<'_> {
 }
 
 impl Sink for Base64<'_> {
+    /// Completes the carried group, then encodes whole groups a block at
+    /// a time through a small array (a byte at a time, a `.gltf`'s
+    /// base64 cost three times the rest of its export, issue 33), and
+    /// carries the last one or two bytes.
     fn put(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.carry[self.held] = b;
-            self.held += 1;
-            if self.held == 3 {
-                self.emit(3);
-                self.held = 0;
+        let mut rest = bytes;
+        while self.held > 0 {
+            let Some((&b, tail)) = rest.split_first() else { return };
+            self.carry_byte(b);
+            rest = tail;
+        }
+        let (groups, tail) = rest.split_at(rest.len() / 3 * 3);
+        let mut text = [0u8; 4 * BASE64_BLOCK];
+        for block in groups.chunks(3 * BASE64_BLOCK) {
+            for (slot, group) in text.chunks_exact_mut(4).zip(block.chunks_exact(3)) {
+                if let Ok(group) = <[u8; 3]>::try_from(group) {
+                    slot.copy_from_slice(&quad(group));
+                }
             }
+            self.out.extend_from_slice(&text[..block.len() / 3 * 4]);
+        }
+        for &b in tail {
+            self.carry_byte(b);
         }
     }
 }
@@ -377,9 +383,15 @@ pub(super) fn write_buffer_until<E>(sink: &mut impl Sink, placed: &[Placement<'_
         for r in runs(mesh.indices.len()) {
             check()?;
             if p.short {
-                for &i in &mesh.indices[r] {
-                    // Fits: `short` means every index is below 65535.
-                    sink.put(&(i as u16).to_le_bytes());
+                // Through a small array, a run at a time: one `put` per
+                // index was most of a small model's buffer write.
+                let mut words = [0u8; 2 * SHORT_RUN];
+                for run in mesh.indices[r].chunks(SHORT_RUN) {
+                    for (word, &i) in words.chunks_exact_mut(2).zip(run) {
+                        // Fits: `short` means every index is below 65535.
+                        word.copy_from_slice(&(i as u16).to_le_bytes());
+                    }
+                    sink.put(&words[..2 * run.len()]);
                 }
             } else {
                 put_words(sink, &mesh.indices[r], u32::to_le_bytes);
@@ -397,14 +409,21 @@ pub(super) fn write_buffer_until<E>(sink: &mut impl Sink, placed: &[Placement<'_
     Ok(())
 }
 
+/// Short indices narrowed per `put` by [`write_buffer_until`].
+const SHORT_RUN: usize = 512;
+
 /// Consecutive ranges of at most [`STOP_EVERY`] covering `0..len`.
 fn runs(len: usize) -> impl Iterator<Item = std::ops::Range<usize>> {
     (0..len).step_by(STOP_EVERY).map(move |start| start..len.min(start + STOP_EVERY))
 }
 
-/// Where `needle` first occurs in `haystack`.
+/// Where `needle` (not empty) first occurs in `haystack`. A window is
+/// compared whole only when its first two bytes match: comparing every
+/// window of a `.gltf`'s JSON for its buffer URI cost more than writing
+/// the JSON (issue 33).
 pub(super) fn find(haystack: &[u8], needle: &[u8]) -> Option<usize> {
-    haystack.windows(needle.len()).position(|w| w == needle)
+    let (first, second) = (needle.first(), needle.get(1));
+    haystack.windows(needle.len().max(1)).position(|w| w.first() == first && w.get(1) == second && w == needle)
 }
 
 #[cfg(test)]
@@ -421,5 +440,44 @@ mod tests {
             assert_eq!(out, enc.as_bytes());
             assert_eq!(base64_len(raw.len() as u64) as usize, enc.len());
         }
+    }
+
+    /// The URI search finds what comparing every window finds.
+    #[test]
+    fn find_is_the_first_window_equal_to_the_needle() {
+        let hay = b"{\"uri\":1,\"u\":\"uri\",\"uri\":\"data:x\"} \"uri\":\"data:x\"";
+        for needle in [&b"\"uri\":\"data:x\""[..], b"\"u", b"}", b"x", b"nothing", b"\"uri\":1"] {
+            assert_eq!(find(hay, needle), hay.windows(needle.len()).position(|w| w == needle), "{needle:?}");
+        }
+    }
+
+    /// Blocks, groups and carried bytes give the text of one byte at a
+    /// time, however the input is split between puts.
+    #[test]
+    fn base64_is_the_same_however_the_bytes_arrive() {
+        let bytes: Vec<u8> = (0..2000u32).map(|k| (k * 7919 % 251) as u8).collect();
+        let mut one = Vec::new();
+        let mut b = Base64 { out: &mut one, carry: [0; 3], held: 0 };
+        for &x in &bytes {
+            b.carry_byte(x);
+        }
+        b.finish();
+        for len in [0, 1, 2, 3, 4, 5, 767, 768, 769, 1999, 2000] {
+            for split in [0, 1, 2, 5, 768, 1000].into_iter().filter(|&s| s <= len) {
+                let mut out = Vec::new();
+                let mut b = Base64 { out: &mut out, carry: [0; 3], held: 0 };
+                b.put(&bytes[..split]);
+                b.put(&bytes[split..len]);
+                b.finish();
+                let mut want = Vec::new();
+                let mut w = Base64 { out: &mut want, carry: [0; 3], held: 0 };
+                for &x in &bytes[..len] {
+                    w.carry_byte(x);
+                }
+                w.finish();
+                assert_eq!(out, want, "{len} split at {split}");
+            }
+        }
+        assert_eq!(base64(&bytes), one);
     }
 }

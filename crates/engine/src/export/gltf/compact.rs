@@ -30,14 +30,11 @@
 //! component, so under 0.5° off. Output is deterministic.
 
 use super::buffer::{accessor, view};
-use super::document::{Attributes, Doc, MeshoptView, EXT_MESHOPT, KHR_QUANT};
+use super::document::{Attributes, Doc};
+use super::tree::{push, Bounds, Component, Ix, Kind, MeshoptView, Root, Target, EXT_MESHOPT, KHR_QUANT};
 use crate::export::{ExportError, ExportMeta};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
-use gltf_json as json;
-use json::accessor::{ComponentType, Type};
-use json::buffer::Target;
-use serde_json::Value;
 
 /// Compression of the glTF buffer.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
@@ -89,17 +86,16 @@ struct Stream {
     /// Bytes per element (also the view's byteStride for attributes).
     stride: usize,
     count: usize,
-    component: ComponentType,
-    type_: Type,
+    component: Component,
+    type_: Kind,
     normalized: bool,
     /// POSITION bounds (glTF requires them on POSITION only).
-    min: Option<Value>,
-    max: Option<Value>,
+    bounds: Option<Bounds>,
 }
 
 /// A mesh ready to be written: POSITION, NORMAL and COLOR_0, then the indices.
-struct Prepared {
-    name: String,
+struct Prepared<'a> {
+    name: &'a str,
     attributes: [Stream; 3],
     indices: Stream,
 }
@@ -167,7 +163,7 @@ fn column<const N: usize>(records: &[[u8; N]], from: usize, to: usize) -> Vec<u8
     records.iter().flat_map(|r| r[from..to].iter().copied()).collect()
 }
 
-fn int_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
+fn int_bounds<const N: usize>(records: &[[u8; N]]) -> Bounds {
     let mut lo = [u16::MAX; 3];
     let mut hi = [0u16; 3];
     for r in records {
@@ -177,11 +173,10 @@ fn int_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
             hi[a] = hi[a].max(q);
         }
     }
-    let v = |x: [u16; 3]| Value::Array(x.iter().map(|&c| Value::from(c)).collect());
-    (v(lo), v(hi))
+    Bounds::Grid(lo, hi)
 }
 
-fn float_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
+fn float_bounds<const N: usize>(records: &[[u8; N]]) -> Bounds {
     let mut lo = [f32::INFINITY; 3];
     let mut hi = [f32::NEG_INFINITY; 3];
     for r in records {
@@ -191,12 +186,11 @@ fn float_bounds<const N: usize>(records: &[[u8; N]]) -> (Value, Value) {
             hi[a] = hi[a].max(c);
         }
     }
-    let v = |x: [f32; 3]| Value::Array(x.iter().map(|&c| Value::from(f64::from(c))).collect());
-    (v(lo), v(hi))
+    Bounds::Float(lo, hi)
 }
 
-fn attribute(bytes: Vec<u8>, stride: usize, count: usize, component: ComponentType, type_: Type, normalized: bool) -> Stream {
-    Stream { bytes, stride, count, component, type_, normalized, min: None, max: None }
+fn attribute(bytes: Vec<u8>, stride: usize, count: usize, component: Component, type_: Kind, normalized: bool) -> Stream {
+    Stream { bytes, stride, count, component, type_, normalized, bounds: None }
 }
 
 fn index_stream(list: &[u32], vertices: usize) -> Stream {
@@ -211,15 +205,14 @@ fn index_stream(list: &[u32], vertices: usize) -> Stream {
         bytes,
         stride: if short { 2 } else { 4 },
         count: list.len(),
-        component: if short { ComponentType::U16 } else { ComponentType::U32 },
-        type_: Type::Scalar,
+        component: if short { Component::U16 } else { Component::U32 },
+        type_: Kind::Scalar,
         normalized: false,
-        min: None,
-        max: None,
+        bounds: None,
     }
 }
 
-fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Prepared>, ExportError> {
+fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Prepared<'_>>, ExportError> {
     super::buffer::check_mesh(m)?;
     let mesh = &m.mesh;
     if mesh.indices.is_empty() {
@@ -245,11 +238,10 @@ fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Pr
             if list.is_empty() {
                 return Ok(None);
             }
-            let (min, max) = int_bounds(&v);
-            let mut pos = attribute(column(&v, 0, 8), 8, v.len(), ComponentType::U16, Type::Vec3, false);
-            (pos.min, pos.max) = (Some(min), Some(max));
-            let nrm = attribute(column(&v, 8, 12), 4, v.len(), ComponentType::I8, Type::Vec3, true);
-            let col = attribute(column(&v, 12, 16), 4, v.len(), ComponentType::U8, Type::Vec4, true);
+            let mut pos = attribute(column(&v, 0, 8), 8, v.len(), Component::U16, Kind::Vec3, false);
+            pos.bounds = Some(int_bounds(&v));
+            let nrm = attribute(column(&v, 8, 12), 4, v.len(), Component::I8, Kind::Vec3, true);
+            let col = attribute(column(&v, 12, 16), 4, v.len(), Component::U8, Kind::Vec4, true);
             ([pos, nrm, col], index_stream(&list, v.len()))
         }
         None => {
@@ -268,15 +260,14 @@ fn prepare(m: &NamedMesh, quantize: Option<([f64; 3], f64)>) -> Result<Option<Pr
             if list.is_empty() {
                 return Ok(None);
             }
-            let (min, max) = float_bounds(&v);
-            let mut pos = attribute(column(&v, 0, 12), 12, v.len(), ComponentType::F32, Type::Vec3, false);
-            (pos.min, pos.max) = (Some(min), Some(max));
-            let nrm = attribute(column(&v, 12, 24), 12, v.len(), ComponentType::F32, Type::Vec3, false);
-            let col = attribute(column(&v, 24, 28), 4, v.len(), ComponentType::U8, Type::Vec4, true);
+            let mut pos = attribute(column(&v, 0, 12), 12, v.len(), Component::F32, Kind::Vec3, false);
+            pos.bounds = Some(float_bounds(&v));
+            let nrm = attribute(column(&v, 12, 24), 12, v.len(), Component::F32, Kind::Vec3, false);
+            let col = attribute(column(&v, 24, 28), 4, v.len(), Component::U8, Kind::Vec4, true);
             ([pos, nrm, col], index_stream(&list, v.len()))
         }
     };
-    Ok(Some(Prepared { name: m.name.clone(), attributes, indices }))
+    Ok(Some(Prepared { name: &m.name, attributes, indices }))
 }
 
 fn align4(v: &mut Vec<u8>) {
@@ -305,14 +296,14 @@ const FALLBACK_BUFFER: u32 = 1;
 
 impl Layout {
     /// Places a stream, adds its view to `doc` and returns the view.
-    fn place(&mut self, doc: &mut Doc, s: &Stream, vertex: bool) -> Result<json::Index<json::buffer::View>, ExportError> {
+    fn place(&mut self, doc: &mut Doc<'_>, s: &Stream, vertex: bool) -> Result<Ix, ExportError> {
         self.raw_len = self.raw_len.next_multiple_of(4);
         let offset = self.raw_len;
         self.raw_len += s.bytes.len();
-        let buffer = json::Index::new(if self.meshopt { FALLBACK_BUFFER } else { DATA_BUFFER });
-        let mut v = view(buffer, offset as u64, s.bytes.len() as u64, Some(if vertex { Target::ArrayBuffer } else { Target::ElementArrayBuffer }));
+        let buffer = if self.meshopt { FALLBACK_BUFFER } else { DATA_BUFFER };
+        let mut v = view(buffer, offset as u64, s.bytes.len() as u64, Some(if vertex { Target::Vertices } else { Target::Indices }));
         if vertex {
-            v.byte_stride = Some(json::buffer::Stride(s.stride));
+            v.byte_stride = Some(s.stride as u64);
         }
         let meshopt = if self.meshopt {
             align4(&mut self.packed);
@@ -345,15 +336,15 @@ impl Layout {
         if self.raw_len > u32::MAX as usize || self.packed.len() > u32::MAX as usize {
             return Err(too_large("buffer exceeds the 4 GiB limit"));
         }
-        doc.view(v, meshopt)
+        Ok(doc.view(v, meshopt))
     }
 
     /// Places a stream and adds its view and accessor to `doc`.
-    fn accessor(&mut self, doc: &mut Doc, s: &Stream, vertex: bool) -> Result<json::Index<json::Accessor>, ExportError> {
+    fn accessor(&mut self, doc: &mut Doc<'_>, s: &Stream, vertex: bool) -> Result<Ix, ExportError> {
         let v = self.place(doc, s, vertex)?;
         let mut a = accessor(v, s.count, s.component, s.type_, s.normalized);
-        (a.min, a.max) = (s.min.clone(), s.max.clone());
-        Ok(doc.root.push(a))
+        a.bounds = s.bounds;
+        Ok(push(&mut doc.root.accessors, a))
     }
 }
 
@@ -369,12 +360,15 @@ fn encode_vertices(bytes: &[u8], stride: usize) -> Result<Vec<u8>, ExportError> 
 }
 
 /// The finished document and its binary buffer.
-struct Built {
-    root: json::Root,
+struct Built<'a> {
+    /// The document.
+    root: Root<'a>,
+    /// Buffer 0's bytes (raw, or meshopt-encoded).
     bin: Vec<u8>,
 }
 
-fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<Built, ExportError> {
+/// Prepares every mesh and builds the document and the buffer 0 it describes.
+fn build<'a>(meshes: &'a [NamedMesh], meta: &'a ExportMeta, opts: &GltfOptions) -> Result<Built<'a>, ExportError> {
     let grid = opts.quantize.then(|| grid(meshes));
     let meshopt = opts.compress == Compression::Meshopt;
     let mut prepared = Vec::new();
@@ -395,7 +389,7 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
             colour: layout.accessor(&mut doc, colour, true)?,
         };
         let indices = layout.accessor(&mut doc, &p.indices, false)?;
-        doc.mesh(&p.name, attributes, indices, meta, placement, None);
+        doc.mesh(p.name, attributes, indices, meta, placement, None);
     }
     if !prepared.is_empty() {
         if meshopt {
@@ -405,10 +399,10 @@ fn build(meshes: &[NamedMesh], meta: &ExportMeta, opts: &GltfOptions) -> Result<
             doc.require(KHR_QUANT);
         }
         let data = doc.buffer(if meshopt { layout.packed.len() } else { layout.raw.len() } as u64, None);
-        debug_assert_eq!(data.value(), DATA_BUFFER as usize);
+        debug_assert_eq!(data, DATA_BUFFER);
         if meshopt {
-            let fallback = doc.meshopt_fallback_buffer(layout.raw_len as u64)?;
-            debug_assert_eq!(fallback.value(), FALLBACK_BUFFER as usize);
+            let fallback = doc.meshopt_fallback_buffer(layout.raw_len as u64);
+            debug_assert_eq!(fallback, FALLBACK_BUFFER);
         }
     }
     let bin = if meshopt { layout.packed } else { layout.raw };
@@ -467,6 +461,7 @@ mod tests {
     use crate::core::budget::Limits;
     use crate::export::gltf::tests::{all_nine, meshes_of};
     use crate::mesh::MeshLayout;
+    use serde_json::Value;
 
     fn glb_json(b: &[u8]) -> Value {
         let jl = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;

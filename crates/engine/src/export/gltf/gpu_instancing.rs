@@ -10,13 +10,12 @@
 use super::buffer::{
     accessor, align4, base64_len, find, invalid, place, view, write_buffer, Base64, Sink, Tracks, CHUNK_BIN, CHUNK_JSON, DATA_URI, GLB_MAGIC, MAX_BYTES,
 };
-use super::document::{plain, InstanceAccessors};
+use super::document::plain;
+use super::tree::{push, Component, Instancing, Kind};
 use crate::export::sink::{Drawn, GeometrySink, MeshId};
 use crate::export::{ExportError, ExportMeta, ExportOptions};
 use crate::core::budget::Budget;
 use crate::geom::NamedMesh;
-use gltf_json as json;
-use json::accessor::{ComponentType, Type};
 
 pub(crate) use crate::export::sink::{InstanceData, InstanceLayout};
 
@@ -107,39 +106,31 @@ impl InstancedSink {
             return Err(ExportError::TooLarge { format: "glTF", detail: format!("buffer of {end} bytes exceeds the 4 GiB limit") });
         }
         let uri = (!glb).then(|| DATA_URI.to_string());
-        let (mut doc, nodes, Some(buffer)) = plain(&placed, end, &Tracks::default(), meta, uri) else {
+        // Up to four instance attributes per mesh, each a view and an accessor.
+        let (mut doc, nodes, Some(buffer)) = plain(&placed, end, &Tracks::default(), meta, uri, 4) else {
             return Err(invalid("model", "an instanced model needs a buffer"));
         };
         for ((_, p), &node) in placed.iter().zip(&nodes) {
             let (c, layout, Some(region)) = (counts[p.mesh], layouts[p.mesh], regions[p.mesh]) else { continue };
             // Views, then accessors, in attribute order (an L-system's documents
             // keep the bytes they had before SCALE and colour existed).
-            let attributes: Vec<(u64, u64)> = [
+            let attributes = [
                 Some((region.translation, 12)),
                 layout.rotation.then_some((region.rotation, 16)),
                 layout.scale.then_some((region.scale, 12)),
                 layout.colour.then_some((region.colour, 12)),
-            ]
-            .into_iter()
-            .flatten()
-            .collect();
-            let views: Vec<_> = attributes.iter().map(|&(at, size)| doc.root.push(view(buffer, at, size * c, None))).collect();
-            let mut accessors = views
-                .iter()
-                .zip(&attributes)
-                .map(|(&v, &(_, size))| {
-                    let kind = if size == 16 { Type::Vec4 } else { Type::Vec3 };
-                    doc.root.push(accessor(v, c as usize, ComponentType::F32, kind, false))
+            ];
+            let views = attributes.map(|a| a.map(|(at, size)| (push(&mut doc.root.views, view(buffer, at, size * c, None)), size)));
+            let accessors = views.map(|v| {
+                v.map(|(v, size)| {
+                    let kind = if size == 16 { Kind::Vec4 } else { Kind::Vec3 };
+                    push(&mut doc.root.accessors, accessor(v, c as usize, Component::F32, kind, false))
                 })
-                .collect::<Vec<_>>()
-                .into_iter();
-            let Some(translation) = accessors.next() else {
+            });
+            let [Some(translation), rotation, scale, colour] = accessors else {
                 return Err(invalid("model", "instance accessors missing"));
             };
-            let rotation = if layout.rotation { accessors.next() } else { None };
-            let scale = if layout.scale { accessors.next() } else { None };
-            let colour = if layout.colour { accessors.next() } else { None };
-            doc.instance(node, InstanceAccessors { translation, rotation, scale, colour })?;
+            doc.instance(node, Instancing { translation, rotation, scale, colour })?;
         }
         let json_bytes = super::json_out::root_json(&doc.finish(meta)?)?;
         let bin_len = end as usize;

@@ -1,71 +1,89 @@
-//! A glTF document's JSON: the bytes serde_json writes for gltf-json's
-//! `Root` (`Root::to_vec`), with the arrays that make up most of a
-//! document (accessors, buffer views, meshes and nodes) written without
-//! serde.
+//! A glTF document's JSON: rulemesh's own document ([`tree`](super::tree))
+//! written as compact JSON, byte for byte what serde_json wrote for the
+//! same document built as gltf-json's `Root` (`Root::to_vec`).
 //!
-//! Why: in a fresh icon render (issue 33's `gem.glb`: 25 accessors and 25
-//! views in 5 KB of JSON) serialising the document was a quarter of the
-//! whole render's CPU, mostly serde's per-field machinery around short
-//! keys (`format_escaped_str` alone a third of it). Their keys, integers,
-//! fixed words and names that need no escaping are written here as plain
-//! bytes; floats, extensions, extras, sparse storage and the other objects
-//! go through serde_json as before, field by field in gltf-json's
-//! declaration order, so the output is the same bytes `Root::to_vec` gives.
-//! The unit test compares the two on a document with every field these
-//! writers set, and the golden table on every model.
+//! Why by hand: in a fresh icon render (issue 33's `gem.glb`: 25
+//! accessors and 25 views in 5 KB of JSON) serialising the document was a
+//! quarter of the whole render's CPU, mostly serde's per-field machinery
+//! around short keys and `serde_json::Value` bounds. Keys, integers, fixed
+//! words and names that need no escaping are written here as plain bytes;
+//! each float goes through serde_json (so f32 and f64 print exactly as
+//! serde_json prints them, non-finite as `null`), as does a string that
+//! needs escaping.
 //!
-//! The field lists follow gltf-json 1.4.1 (`Cargo.lock`): a new version
-//! that adds or reorders a field of these four types must be read against
-//! them before it is taken (the golden table fails if a field rulemesh sets
-//! moves; one it never sets would pass unnoticed).
+//! The field orders are gltf-json 1.4.1's (`Cargo.lock`) declaration
+//! orders, each field skipped exactly when its `skip_serializing_if` says;
+//! extension objects, which gltf-json held as `serde_json::Map`s, have
+//! their keys sorted as that map sorts them. `json_oracle`'s tests build
+//! the same documents as gltf-json trees and hold the bytes equal; a new
+//! gltf-json must be read against them before it is taken.
 
+use super::tree::{Accessor, Animation, Bounds, Buffer, Camera, Ix, Material, Mesh, Node, Root, Scene, View, EXT_INSTANCING, EXT_MESHOPT};
 use crate::export::ExportError;
-use gltf_json as json;
-use json::validation::Checked;
-use serde::Serialize;
+use serde_json::ser::{CompactFormatter, Formatter};
 
-/// `root` as compact JSON: the bytes of `Root::to_vec`.
-pub(super) fn root_json(root: &json::Root) -> Result<Vec<u8>, ExportError> {
+/// `,"name":`, the text that starts field `name` of an object, for
+/// [`Out::key`] and the field writers (one copy of a constant, where
+/// writing the comma, quotes and colon byte by byte was most of the cost
+/// of a small number field).
+macro_rules! k {
+    ($name:literal) => {
+        concat!(",\"", $name, "\":")
+    };
+}
+
+/// `root` as compact JSON: the bytes of gltf-json's `Root::to_vec` for the
+/// same document.
+pub(super) fn root_json(root: &Root<'_>) -> Result<Vec<u8>, ExportError> {
     // About what one accessor, view, node or mesh takes, with room to spare
     // for the asset, the scene and the extras: one allocation, not the
-    // doubling from 128 bytes that `to_vec` starts with.
-    let items = root.accessors.len() + root.buffer_views.len() + root.nodes.len() + root.meshes.len() + root.materials.len();
-    let mut o = Out { bytes: Vec::with_capacity(1024 + 160 * items), first: true };
+    // doubling from 128 bytes that serde_json's `to_vec` starts with.
+    let items = root.accessors.len() + root.views.len() + root.nodes.len() + root.meshes.len() + root.materials.len();
+    let uri = root.buffers.iter().filter_map(|b| b.uri.as_ref()).map(String::len).sum::<usize>();
+    let mut o = Out { bytes: Vec::with_capacity(1024 + 160 * items + uri), first: true };
     o.bytes.push(b'{');
-    // gltf-json's `Root` fields in declaration order, each skipped exactly
-    // when its `skip_serializing_if` says.
-    o.array_field("accessors", &root.accessors, accessor)?;
-    o.vec_field("animations", &root.animations)?;
-    o.field("asset", &root.asset)?;
-    o.vec_field("buffers", &root.buffers)?;
-    o.array_field("bufferViews", &root.buffer_views, view)?;
-    o.option_field("scene", &root.scene)?;
-    o.option_field("extensions", &root.extensions)?;
-    o.option_field("extras", &root.extras)?;
-    o.vec_field("extensionsUsed", &root.extensions_used)?;
-    o.vec_field("extensionsRequired", &root.extensions_required)?;
-    o.vec_field("cameras", &root.cameras)?;
-    o.vec_field("images", &root.images)?;
-    o.vec_field("materials", &root.materials)?;
-    o.array_field("meshes", &root.meshes, mesh)?;
-    o.array_field("nodes", &root.nodes, node)?;
-    o.vec_field("samplers", &root.samplers)?;
-    o.vec_field("scenes", &root.scenes)?;
-    o.vec_field("skins", &root.skins)?;
-    o.vec_field("textures", &root.textures)?;
+    o.array_field(k!("accessors"), &root.accessors, accessor)?;
+    o.array_field(k!("animations"), &root.animations, animation)?;
+    o.key(k!("asset"));
+    asset(&mut o, root)?;
+    o.array_field(k!("buffers"), &root.buffers, buffer)?;
+    o.array_field(k!("bufferViews"), &root.views, view)?;
+    if let Some(s) = root.scene {
+        o.number(k!("scene"), s);
+    }
+    o.array_field(k!("extensionsUsed"), &root.extensions, |o, e| o.string(e))?;
+    o.array_field(k!("extensionsRequired"), &root.extensions, |o, e| o.string(e))?;
+    o.array_field(k!("cameras"), &root.cameras, camera)?;
+    o.array_field(k!("materials"), &root.materials, material)?;
+    o.array_field(k!("meshes"), &root.meshes, mesh)?;
+    o.array_field(k!("nodes"), &root.nodes, node)?;
+    o.array_field(k!("scenes"), &root.scenes, scene)?;
     o.bytes.push(b'}');
     Ok(o.bytes)
 }
 
 /// The JSON being written, and whether the open object has a field yet.
 struct Out {
+    /// The JSON so far.
     bytes: Vec<u8>,
+    /// Whether the open object has no field yet (its first needs no comma).
     first: bool,
 }
 
 impl Out {
-    /// Starts field `name` of the open object (no key needs escaping).
-    fn key(&mut self, name: &str) {
+    /// Starts a field of the open object: `key` is its `,"name":` (made
+    /// by [`k!`]), written in one copy, the comma left out for the
+    /// object's first field.
+    #[inline]
+    fn key(&mut self, key: &str) {
+        let text = if self.first { key.strip_prefix(',').unwrap_or(key) } else { key };
+        self.first = false;
+        self.bytes.extend_from_slice(text.as_bytes());
+    }
+
+    /// Starts field `name` of the open object, for a name held in a
+    /// constant (no key needs escaping).
+    fn named_key(&mut self, name: &str) {
         if !self.first {
             self.bytes.push(b',');
         }
@@ -75,30 +93,22 @@ impl Out {
         self.bytes.extend_from_slice(b"\":");
     }
 
-    /// A field whose value serde writes.
-    fn field(&mut self, name: &str, value: &impl Serialize) -> Result<(), ExportError> {
-        self.key(name);
-        serde_json::to_writer(&mut self.bytes, value)?;
-        Ok(())
+    /// Opens an object.
+    #[inline]
+    fn open(&mut self) {
+        self.bytes.push(b'{');
+        self.first = true;
     }
 
-    /// A field skipped when `None` (`skip_serializing_if = "Option::is_none"`).
-    fn option_field<T: Serialize>(&mut self, name: &str, value: &Option<T>) -> Result<(), ExportError> {
-        match value {
-            Some(v) => self.field(name, v),
-            None => Ok(()),
-        }
+    /// Closes the open object (a field of an enclosing object follows with a comma).
+    #[inline]
+    fn close(&mut self) {
+        self.bytes.push(b'}');
+        self.first = false;
     }
 
-    /// A field skipped when empty (`skip_serializing_if = "Vec::is_empty"`).
-    fn vec_field<T: Serialize>(&mut self, name: &str, value: &[T]) -> Result<(), ExportError> {
-        match value.is_empty() {
-            true => Ok(()),
-            false => self.field(name, &value),
-        }
-    }
-
-    /// A field skipped when empty, its elements written by `write`.
+    /// A field skipped when empty (`skip_serializing_if = "Vec::is_empty"`),
+    /// its elements written by `write`.
     fn array_field<T>(&mut self, name: &str, items: &[T], write: fn(&mut Out, &T) -> Result<(), ExportError>) -> Result<(), ExportError> {
         if items.is_empty() {
             return Ok(());
@@ -107,14 +117,13 @@ impl Out {
         self.array(items, write)
     }
 
-    /// An array whose elements `write` writes (each an object of its own).
+    /// An array whose elements `write` writes.
     fn array<T>(&mut self, items: &[T], write: fn(&mut Out, &T) -> Result<(), ExportError>) -> Result<(), ExportError> {
         self.bytes.push(b'[');
         for (k, item) in items.iter().enumerate() {
             if k > 0 {
                 self.bytes.push(b',');
             }
-            self.first = true;
             write(self, item)?;
         }
         self.bytes.push(b']');
@@ -122,15 +131,89 @@ impl Out {
         Ok(())
     }
 
+    /// An array of indices.
+    fn indices(&mut self, items: &[Ix]) {
+        self.bytes.push(b'[');
+        for (k, &i) in items.iter().enumerate() {
+            if k > 0 {
+                self.bytes.push(b',');
+            }
+            self.integer(u64::from(i));
+        }
+        self.bytes.push(b']');
+    }
+
     /// A number field.
-    fn number(&mut self, name: &str, value: u64) {
+    #[inline]
+    fn number(&mut self, name: &str, value: impl Into<u64>) {
         self.key(name);
-        self.integer(value);
+        self.integer(value.into());
     }
 
     /// A bare integer.
+    #[inline]
     fn integer(&mut self, value: u64) {
         self.bytes.extend_from_slice(itoa::Buffer::new().format(value).as_bytes());
+    }
+
+    /// A float as serde_json writes an `f32` (gltf-json's transform and
+    /// material fields): its own formatter's text for a finite value,
+    /// `null` for any other, as its `serialize_f32` does, without a
+    /// serializer around it.
+    fn f32(&mut self, value: f32) -> Result<(), ExportError> {
+        match value.is_finite() {
+            true => CompactFormatter.write_f32(&mut self.bytes, value).map_err(serde_json::Error::io)?,
+            false => self.bytes.extend_from_slice(b"null"),
+        }
+        Ok(())
+    }
+
+    /// A float as serde_json writes an `f64` (gltf-json's bounds and
+    /// rulemesh's extras, made as `Value`s from `f64::from(f32)`), as
+    /// [`Out::f32`] does.
+    fn f64(&mut self, value: f64) -> Result<(), ExportError> {
+        match value.is_finite() {
+            true => CompactFormatter.write_f64(&mut self.bytes, value).map_err(serde_json::Error::io)?,
+            false => self.bytes.extend_from_slice(b"null"),
+        }
+        Ok(())
+    }
+
+    /// An array of `f32`s.
+    fn f32s(&mut self, values: &[f32]) -> Result<(), ExportError> {
+        self.bytes.push(b'[');
+        for (k, &v) in values.iter().enumerate() {
+            if k > 0 {
+                self.bytes.push(b',');
+            }
+            self.f32(v)?;
+        }
+        self.bytes.push(b']');
+        Ok(())
+    }
+
+    /// An array of `f32`s each written as its `f64`.
+    fn f64s(&mut self, values: &[f32]) -> Result<(), ExportError> {
+        self.bytes.push(b'[');
+        for (k, &v) in values.iter().enumerate() {
+            if k > 0 {
+                self.bytes.push(b',');
+            }
+            self.f64(f64::from(v))?;
+        }
+        self.bytes.push(b']');
+        Ok(())
+    }
+
+    /// An optional `f32` array field.
+    fn f32s_field(&mut self, name: &str, values: Option<&[f32]>) -> Result<(), ExportError> {
+        match values {
+            Some(v) => {
+                self.key(name);
+                self.f32s(v)
+            }
+            None => Ok(()),
+        }
     }
 
     /// A string as serde_json writes it: as it is when nothing in it needs
@@ -147,275 +230,300 @@ impl Out {
         Ok(())
     }
 
-    /// A string field skipped when `None`.
-    fn name_field(&mut self, name: &str, value: &Option<String>) -> Result<(), ExportError> {
-        match value {
-            Some(v) => {
-                self.key(name);
-                self.string(v)
-            }
-            None => Ok(()),
-        }
+    /// A string field.
+    fn string_field(&mut self, name: &str, value: &str) -> Result<(), ExportError> {
+        self.key(name);
+        self.string(value)
+    }
+
+    /// A fixed word, which needs no escaping, as a string.
+    #[inline]
+    fn word_field(&mut self, name: &str, word: &str) {
+        self.key(name);
+        self.bytes.push(b'"');
+        self.bytes.extend_from_slice(word.as_bytes());
+        self.bytes.push(b'"');
     }
 
     /// An index field skipped when `None`.
-    fn index_field<T>(&mut self, name: &str, value: Option<json::Index<T>>) {
+    #[inline]
+    fn index_field(&mut self, name: &str, value: Option<Ix>) {
         if let Some(i) = value {
-            self.number(name, i.value() as u64);
+            self.number(name, i);
         }
     }
 }
 
-/// The value of a `Checked` enum, or `None` for `Invalid` (which serde refuses).
-fn valid<T: Copy>(c: &Checked<T>) -> Option<T> {
-    match c {
-        Checked::Valid(v) => Some(*v),
-        Checked::Invalid => None,
+/// `asset`: the provenance in `extras`, the generator and the version
+/// (gltf-json's `Asset`: copyright, extensions, extras, generator,
+/// minVersion, version).
+fn asset(o: &mut Out, root: &Root<'_>) -> Result<(), ExportError> {
+    o.open();
+    if let Some(p) = &root.provenance {
+        o.key(k!("extras"));
+        o.bytes.extend_from_slice(p.get().as_bytes());
     }
+    o.key(k!("generator"));
+    // The version is a crate version (digits, dots, letters): no escaping,
+    // so no `format!`; serde writes it should that ever change.
+    let version = crate::ENGINE_VERSION;
+    if version.bytes().all(|b| b >= 0x20 && b != b'"' && b != b'\\') {
+        o.bytes.extend_from_slice(b"\"rulemesh ");
+        o.bytes.extend_from_slice(version.as_bytes());
+        o.bytes.push(b'"');
+    } else {
+        o.string(&format!("rulemesh {version}"))?;
+    }
+    o.word_field(k!("version"), "2.0");
+    o.close();
+    Ok(())
 }
 
-/// One accessor: by hand when it holds only numbers, bounds and fixed
-/// words, else by serde.
-fn accessor(o: &mut Out, a: &json::Accessor) -> Result<(), ExportError> {
-    let plain = a.extensions.is_none() && a.extras.is_none() && a.name.is_none() && a.sparse.is_none();
-    let (Some(component), Some(kind), true) = (valid(&a.component_type), valid(&a.type_), plain) else {
-        serde_json::to_writer(&mut o.bytes, a)?;
-        return Ok(());
-    };
-    o.bytes.push(b'{');
-    if let Some(v) = a.buffer_view {
-        o.number("bufferView", v.value() as u64);
-    }
+/// One accessor (gltf-json's `Accessor`: bufferView, byteOffset, count,
+/// componentType, extensions, extras, type, min, max, name, normalized,
+/// sparse).
+fn accessor(o: &mut Out, a: &Accessor) -> Result<(), ExportError> {
+    o.open();
+    o.number(k!("bufferView"), a.view);
     if let Some(off) = a.byte_offset {
-        o.number("byteOffset", off.0);
+        o.number(k!("byteOffset"), off);
     }
-    o.number("count", a.count.0);
-    o.number("componentType", u64::from(component.0.as_gl_enum()));
-    o.key("type");
-    o.bytes.push(b'"');
-    o.bytes.extend_from_slice(type_name(kind).as_bytes());
-    o.bytes.push(b'"');
-    o.option_field("min", &a.min)?;
-    o.option_field("max", &a.max)?;
+    o.number(k!("count"), a.count);
+    o.number(k!("componentType"), a.component.gl());
+    o.word_field(k!("type"), a.kind.word());
+    match a.bounds {
+        Some(Bounds::Float(min, max)) => {
+            o.key(k!("min"));
+            o.f64s(&min)?;
+            o.key(k!("max"));
+            o.f64s(&max)?;
+        }
+        Some(Bounds::Grid(min, max)) => {
+            for (name, v) in [(k!("min"), min), (k!("max"), max)] {
+                o.key(name);
+                o.bytes.push(b'[');
+                for (k, c) in v.into_iter().enumerate() {
+                    if k > 0 {
+                        o.bytes.push(b',');
+                    }
+                    o.integer(u64::from(c));
+                }
+                o.bytes.push(b']');
+            }
+        }
+        Some(Bounds::Times(end)) => {
+            o.key(k!("min"));
+            o.f64s(&[0.0])?;
+            o.key(k!("max"));
+            o.f64s(&[end])?;
+        }
+        None => {}
+    }
     if a.normalized {
-        o.key("normalized");
+        o.key(k!("normalized"));
         o.bytes.extend_from_slice(b"true");
     }
-    o.bytes.push(b'}');
+    o.close();
     Ok(())
 }
 
-/// An accessor type's word, as gltf-json writes it.
-fn type_name(t: json::accessor::Type) -> &'static str {
-    use json::accessor::Type;
-    match t {
-        Type::Scalar => "SCALAR",
-        Type::Vec2 => "VEC2",
-        Type::Vec3 => "VEC3",
-        Type::Vec4 => "VEC4",
-        Type::Mat2 => "MAT2",
-        Type::Mat3 => "MAT3",
-        Type::Mat4 => "MAT4",
-    }
+/// The `"rulemesh"` animation (gltf-json's `Animation`: extensions, extras,
+/// channels, name, samplers; `Channel`: sampler, target; `Target`: node,
+/// path; `Sampler`: input, interpolation, output).
+fn animation(o: &mut Out, a: &Animation) -> Result<(), ExportError> {
+    o.open();
+    o.array_field(k!("channels"), &a.channels, |o, c| {
+        o.open();
+        o.number(k!("sampler"), c.sampler);
+        o.key(k!("target"));
+        o.open();
+        o.number(k!("node"), c.node);
+        o.word_field(k!("path"), c.path.word());
+        o.close();
+        o.close();
+        Ok(())
+    })?;
+    o.word_field(k!("name"), "rulemesh");
+    o.array_field(k!("samplers"), &a.samplers, |o, s| {
+        o.open();
+        o.number(k!("input"), s.input);
+        o.word_field(k!("interpolation"), if s.step { "STEP" } else { "LINEAR" });
+        o.number(k!("output"), s.output);
+        o.close();
+        Ok(())
+    })?;
+    o.close();
+    Ok(())
 }
 
-/// One buffer view: by hand when it holds only numbers, else by serde.
-fn view(o: &mut Out, v: &json::buffer::View) -> Result<(), ExportError> {
-    let target = v.target.as_ref().map(valid);
-    if matches!(target, Some(None)) || v.extensions.is_some() || v.extras.is_some() || v.name.is_some() {
-        serde_json::to_writer(&mut o.bytes, v)?;
-        return Ok(());
+/// One buffer (gltf-json's `Buffer`: byteLength, name, uri, extensions, extras).
+fn buffer(o: &mut Out, b: &Buffer) -> Result<(), ExportError> {
+    o.open();
+    o.number(k!("byteLength"), b.byte_length);
+    if let Some(uri) = &b.uri {
+        o.string_field(k!("uri"), uri)?;
     }
-    o.bytes.push(b'{');
-    o.number("buffer", v.buffer.value() as u64);
-    o.number("byteLength", v.byte_length.0);
-    if let Some(off) = v.byte_offset {
-        o.number("byteOffset", off.0);
+    if b.meshopt_fallback {
+        o.key(k!("extensions"));
+        o.bytes.push(b'{');
+        o.bytes.push(b'"');
+        o.bytes.extend_from_slice(EXT_MESHOPT.as_bytes());
+        o.bytes.extend_from_slice(b"\":{\"fallback\":true}}");
     }
+    o.close();
+    Ok(())
+}
+
+/// One buffer view (gltf-json's `View`: buffer, byteLength, byteOffset,
+/// byteStride, name, target, extensions, extras; the meshopt extension's
+/// keys sorted, as its `Map` held them).
+fn view(o: &mut Out, v: &View) -> Result<(), ExportError> {
+    o.open();
+    o.number(k!("buffer"), v.buffer);
+    o.number(k!("byteLength"), v.byte_length);
+    o.number(k!("byteOffset"), v.byte_offset);
     if let Some(s) = v.byte_stride {
-        o.number("byteStride", s.0 as u64);
+        o.number(k!("byteStride"), s);
     }
-    if let Some(Some(t)) = target {
-        o.number("target", u64::from(match t {
-            json::buffer::Target::ArrayBuffer => json::buffer::ARRAY_BUFFER,
-            json::buffer::Target::ElementArrayBuffer => json::buffer::ELEMENT_ARRAY_BUFFER,
-        }));
+    if let Some(name) = v.name {
+        o.string_field(k!("name"), name)?;
     }
-    o.bytes.push(b'}');
+    if let Some(t) = v.target {
+        o.number(k!("target"), t.gl());
+    }
+    if let Some(m) = &v.meshopt {
+        o.key(k!("extensions"));
+        o.open();
+        o.named_key(EXT_MESHOPT);
+        o.open();
+        o.number(k!("buffer"), m.buffer);
+        o.number(k!("byteLength"), m.byte_length);
+        o.number(k!("byteOffset"), m.byte_offset);
+        o.number(k!("byteStride"), m.byte_stride);
+        o.number(k!("count"), m.count);
+        o.word_field(k!("mode"), m.mode);
+        o.close();
+        o.close();
+    }
+    o.close();
     Ok(())
 }
 
-/// One mesh: its fields in gltf-json's order, the primitives by hand
-/// unless one has extensions, extras or morph targets.
-fn mesh(o: &mut Out, m: &json::Mesh) -> Result<(), ExportError> {
-    if m.primitives.iter().any(|p| p.extensions.is_some() || p.extras.is_some() || p.targets.is_some()) {
-        serde_json::to_writer(&mut o.bytes, m)?;
-        return Ok(());
+/// One perspective camera (gltf-json's `Camera`: name, orthographic,
+/// perspective, type; `Perspective`: aspectRatio, yfov, zfar, znear).
+fn camera(o: &mut Out, c: &Camera<'_>) -> Result<(), ExportError> {
+    o.open();
+    if let Some(name) = c.name {
+        o.string_field(k!("name"), name)?;
     }
-    o.bytes.push(b'{');
-    o.option_field("extensions", &m.extensions)?;
-    o.option_field("extras", &m.extras)?;
-    o.name_field("name", &m.name)?;
-    o.key("primitives");
-    o.array(&m.primitives, primitive)?;
-    o.option_field("weights", &m.weights)?;
-    o.bytes.push(b'}');
+    o.key(k!("perspective"));
+    o.open();
+    o.key(k!("yfov"));
+    o.f32(c.yfov)?;
+    if let Some(zfar) = c.zfar {
+        o.key(k!("zfar"));
+        o.f32(zfar)?;
+    }
+    o.key(k!("znear"));
+    o.f32(c.znear)?;
+    o.close();
+    o.word_field(k!("type"), "perspective");
+    o.close();
     Ok(())
 }
 
-/// One primitive with no extensions, extras or morph targets.
-fn primitive(o: &mut Out, p: &json::mesh::Primitive) -> Result<(), ExportError> {
-    o.bytes.push(b'{');
-    o.key("attributes");
-    o.bytes.push(b'{');
-    // The map's own order, as serde walks it.
-    for (k, (semantic, index)) in p.attributes.iter().enumerate() {
-        if k > 0 {
-            o.bytes.push(b',');
-        }
-        match semantic {
-            Checked::Valid(s) => o.string(&s.to_string())?,
-            // serde refuses an invalid key: so does this.
-            Checked::Invalid => {
-                serde_json::to_writer(&mut o.bytes, semantic)?;
-            }
-        }
-        o.bytes.push(b':');
-        o.integer(index.value() as u64);
+/// The one material, white, metallic 0, roughness 0.8 (gltf-json's
+/// `Material`: alphaCutoff, alphaMode, doubleSided, name,
+/// pbrMetallicRoughness, the textures, emissiveFactor; the factors are
+/// `f32`s and print as here).
+fn material(o: &mut Out, m: &Material<'_>) -> Result<(), ExportError> {
+    o.bytes.extend_from_slice(b"{\"alphaMode\":\"OPAQUE\",\"doubleSided\":false");
+    o.first = false;
+    if let Some(name) = m.name {
+        o.string_field(k!("name"), name)?;
     }
-    o.bytes.push(b'}');
-    o.index_field("indices", p.indices);
-    o.index_field("material", p.material);
-    match p.mode {
-        Checked::Valid(json::mesh::Mode::Triangles) => {}
-        Checked::Valid(mode) => o.number("mode", u64::from(mode.as_gl_enum())),
-        Checked::Invalid => o.field("mode", &p.mode)?,
-    }
-    o.bytes.push(b'}');
+    o.bytes.extend_from_slice(b",\"pbrMetallicRoughness\":{\"baseColorFactor\":[1.0,1.0,1.0,1.0],\"metallicFactor\":0.0,\"roughnessFactor\":0.8},\"emissiveFactor\":[0.0,0.0,0.0]}");
     Ok(())
 }
 
-/// One node: its fields in gltf-json's order; numbers and the name by
-/// hand, floats, extensions and extras by serde.
-fn node(o: &mut Out, n: &json::Node) -> Result<(), ExportError> {
-    o.bytes.push(b'{');
-    o.index_field("camera", n.camera);
-    if let Some(children) = &n.children {
-        o.key("children");
-        o.bytes.push(b'[');
-        for (k, c) in children.iter().enumerate() {
-            if k > 0 {
-                o.bytes.push(b',');
-            }
-            o.integer(c.value() as u64);
-        }
-        o.bytes.push(b']');
-    }
-    o.option_field("extensions", &n.extensions)?;
-    o.option_field("extras", &n.extras)?;
-    o.option_field("matrix", &n.matrix)?;
-    o.index_field("mesh", n.mesh);
-    o.name_field("name", &n.name)?;
-    o.option_field("rotation", &n.rotation)?;
-    o.option_field("scale", &n.scale)?;
-    o.option_field("translation", &n.translation)?;
-    o.index_field("skin", n.skin);
-    o.option_field("weights", &n.weights)?;
-    o.bytes.push(b'}');
+/// One mesh of one TRIANGLES primitive (gltf-json's `Mesh`: extensions,
+/// extras, name, primitives, weights; `Primitive`: attributes in its
+/// `BTreeMap`'s order, extensions, extras, indices, material, mode when not
+/// TRIANGLES, targets).
+fn mesh(o: &mut Out, m: &Mesh<'_>) -> Result<(), ExportError> {
+    o.open();
+    o.string_field(k!("name"), m.name)?;
+    o.key(k!("primitives"));
+    o.bytes.extend_from_slice(b"[{\"attributes\":{\"POSITION\":");
+    o.integer(u64::from(m.position));
+    o.bytes.extend_from_slice(b",\"NORMAL\":");
+    o.integer(u64::from(m.normal));
+    o.bytes.extend_from_slice(b",\"COLOR_0\":");
+    o.integer(u64::from(m.colour));
+    o.bytes.extend_from_slice(b"},\"indices\":");
+    o.integer(u64::from(m.indices));
+    o.bytes.extend_from_slice(b",\"material\":");
+    o.integer(u64::from(m.material));
+    o.bytes.extend_from_slice(b"}]");
+    o.close();
     Ok(())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use json::accessor::{ComponentType, GenericComponentType, Type};
-    use json::buffer::{Stride, Target};
-    use json::validation::{Checked::Valid, USize64};
-    use json::Index;
-
-    /// A document with every kind of accessor and view the writers make,
-    /// and some they do not (names with quotes and escapes, extras).
-    fn mixed() -> json::Root {
-        let mut root = json::Root::default();
-        let buffer = root.push(json::Buffer { byte_length: USize64(4096), name: None, uri: None, extensions: None, extras: None });
-        for (k, target) in [None, Some(Valid(Target::ArrayBuffer)), Some(Valid(Target::ElementArrayBuffer)), Some(Valid(Target::ArrayBuffer))].into_iter().enumerate() {
-            root.push(json::buffer::View {
-                buffer,
-                byte_length: USize64(12 * k as u64 + 1),
-                byte_offset: (k % 2 == 1).then_some(USize64(8 * k as u64)),
-                byte_stride: (k == 2).then_some(Stride(12)),
-                name: (k == 3).then(|| "a \"named\" view\n".to_string()),
-                target,
-                extensions: None,
-                extras: None,
-            });
-        }
-        let kinds = [(ComponentType::F32, Type::Vec3), (ComponentType::U8, Type::Vec4), (ComponentType::U16, Type::Scalar), (ComponentType::U32, Type::Scalar), (ComponentType::I16, Type::Mat4), (ComponentType::I8, Type::Vec2)];
-        for (k, (component, kind)) in kinds.into_iter().enumerate() {
-            let mut a = json::Accessor {
-                buffer_view: (k != 5).then(|| Index::new(k as u32 % 4)),
-                byte_offset: (k % 2 == 0).then_some(USize64(4 * k as u64)),
-                count: USize64(1000 + k as u64),
-                component_type: Valid(GenericComponentType(component)),
-                extensions: None,
-                extras: None,
-                type_: Valid(kind),
-                min: None,
-                max: None,
-                name: (k == 4).then(|| "ünïcode \\ name".to_string()),
-                normalized: k == 1,
-                sparse: None,
-            };
-            if k == 0 {
-                a.min = Some(serde_json::json!([-0.5, 1e-7, 3.0]));
-                a.max = Some(serde_json::json!([0.1, 123456.789, 1e30]));
-            }
-            if k == 3 {
-                a.extras = Some(json::extras::RawValue::from_string("{\"x\":1}".to_string()).expect("raw"));
-            }
-            root.push(a);
-        }
-        for (k, name) in ["plain", "quo\"ted", "tab\there", "ünï"].into_iter().enumerate() {
-            let mut attributes = std::collections::BTreeMap::new();
-            attributes.insert(Valid(json::mesh::Semantic::Colors(0)), Index::new(2));
-            attributes.insert(Valid(json::mesh::Semantic::Positions), Index::new(0));
-            attributes.insert(Valid(json::mesh::Semantic::Normals), Index::new(1));
-            if k == 3 {
-                attributes.insert(Valid(json::mesh::Semantic::TexCoords(1)), Index::new(4));
-            }
-            let mode = if k == 2 { json::mesh::Mode::Lines } else { json::mesh::Mode::Triangles };
-            let primitive = json::mesh::Primitive { attributes, extensions: None, extras: None, indices: (k != 1).then(|| Index::new(3)), material: (k == 0).then(|| Index::new(0)), mode: Valid(mode), targets: None };
-            let mesh = root.push(json::Mesh { extensions: None, extras: None, name: Some(name.to_string()), primitives: vec![primitive], weights: (k == 3).then(|| vec![0.25, 1.5]) });
-            root.push(json::Node {
-                mesh: Some(mesh),
-                name: (k != 1).then(|| name.to_string()),
-                translation: (k % 2 == 0).then_some([1.5, -2.25, 1e-9]),
-                scale: (k == 2).then_some([0.1; 3]),
-                rotation: (k == 3).then_some(json::scene::UnitQuaternion([0.0, 0.70710677, 0.0, 0.70710677])),
-                children: (k == 1).then(|| vec![Index::new(0), Index::new(2)]),
-                camera: (k == 2).then(|| Index::new(0)),
-                matrix: None,
-                ..Default::default()
-            });
-        }
-        root.nodes[0].extras = Some(json::extras::RawValue::from_string("[1,2]".to_string()).expect("raw"));
-        root.extensions_used.push("EXT_mesh_gpu_instancing".to_string());
-        root.asset.generator = Some("rulemesh test".to_string());
-        root
+/// One node (gltf-json's `Node`: camera, children, extensions, extras,
+/// matrix, mesh, name, rotation, scale, translation, skin, weights; the
+/// instancing extension's attributes sorted, as its `Map` held them).
+fn node(o: &mut Out, n: &Node<'_>) -> Result<(), ExportError> {
+    o.open();
+    o.index_field(k!("camera"), n.camera);
+    if !n.children.is_empty() {
+        o.key(k!("children"));
+        o.indices(&n.children);
     }
-
-    #[test]
-    fn the_bytes_are_serde_jsons() {
-        let root = mixed();
-        assert_eq!(String::from_utf8(root_json(&root).unwrap()).unwrap(), String::from_utf8(root.to_vec().unwrap()).unwrap());
-        let empty = json::Root::default();
-        assert_eq!(root_json(&empty).unwrap(), empty.to_vec().unwrap());
-        // An invalid enum is refused by both.
-        let mut bad = mixed();
-        bad.buffer_views[1].target = Some(json::validation::Checked::Invalid);
-        assert!(root_json(&bad).is_err() && bad.to_vec().is_err());
-        let mut bad = mixed();
-        bad.accessors[0].type_ = json::validation::Checked::Invalid;
-        assert!(root_json(&bad).is_err() && bad.to_vec().is_err());
+    if let Some(i) = &n.instancing {
+        o.key(k!("extensions"));
+        o.open();
+        o.named_key(EXT_INSTANCING);
+        o.open();
+        o.key(k!("attributes"));
+        o.open();
+        o.index_field(k!("ROTATION"), i.rotation);
+        o.index_field(k!("SCALE"), i.scale);
+        o.number(k!("TRANSLATION"), i.translation);
+        o.index_field(k!("_COLOR_0"), i.colour);
+        o.close();
+        o.close();
+        o.close();
     }
+    o.index_field(k!("mesh"), n.mesh);
+    o.string_field(k!("name"), n.name)?;
+    o.f32s_field(k!("rotation"), n.rotation.as_ref().map(|r| &r[..]))?;
+    o.f32s_field(k!("scale"), n.scale.as_ref().map(|s| &s[..]))?;
+    o.f32s_field(k!("translation"), n.translation.as_ref().map(|t| &t[..]))?;
+    o.close();
+    Ok(())
+}
+
+/// The scene (gltf-json's `Scene`: extensions, extras, name, nodes; the
+/// extras' keys sorted, as the `BTreeMap` they were made from held them).
+fn scene(o: &mut Out, s: &Scene) -> Result<(), ExportError> {
+    o.open();
+    if s.background.is_some() || s.truncated {
+        o.key(k!("extras"));
+        o.open();
+        if let Some(bg) = &s.background {
+            o.key(k!("background"));
+            o.f64s(bg)?;
+        }
+        if s.truncated {
+            o.key(k!("truncated"));
+            o.bytes.extend_from_slice(b"true");
+        }
+        o.close();
+    }
+    if !s.nodes.is_empty() {
+        o.key(k!("nodes"));
+        o.indices(&s.nodes);
+    }
+    o.close();
+    Ok(())
 }

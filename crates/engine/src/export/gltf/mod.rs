@@ -1,6 +1,7 @@
 //! glTF 2.0 export: binary (.glb) and JSON with an embedded data URI (.gltf).
 //!
-//! The JSON side is built with `gltf-json`; the binary buffer is streamed
+//! The JSON side is rulemesh's own small document (`tree`, which says why
+//! it is not gltf-json's), written by `json_out`; the binary buffer is streamed
 //! straight into the output vector (raw for GLB, base64 for .gltf), so the
 //! only large allocation is the output itself, whose exact size is computed
 //! and reserved in the [`Budget`] before it is allocated.
@@ -25,8 +26,9 @@
 //! This module holds the two formats' descriptors ([`GLB`], [`GLTF`]) and
 //! the two container writers ([`write_glb`], [`write_gltf`]); the parts are
 //! in the modules beside it: `buffer` (buffer layout, limits, sinks),
-//! `document` (the one document builder: meshes, materials, cameras,
-//! scene, extensions; also behind `compact` and instancing), `graph`
+//! `tree` (the document's types), `document` (the one document builder:
+//! meshes, materials, cameras, scene, extensions; also behind `compact`
+//! and instancing), `json_out` (its JSON), `graph`
 //! (bones, camera node, animation), `gpu_instancing` (the
 //! `EXT_mesh_gpu_instancing` writer, [`InstancedSink`], a
 //! [`GeometrySink`](crate::export::GeometrySink) the pipeline feeds a flat
@@ -39,7 +41,10 @@ mod document;
 mod gpu_instancing;
 mod graph;
 mod json_out;
+#[cfg(test)]
+mod json_oracle;
 mod instanced;
+mod tree;
 
 use super::descriptor::{Capabilities, FormatInfo, OptionGroup, SizeBound, Writer};
 use super::{ExportError, ExportMeta, ExportOptions};
