@@ -17,7 +17,6 @@
 //! request went away) drops the channel's sender, and its followers start
 //! over, one of them leading.
 
-use super::store::Rendered;
 use super::CacheKey;
 use std::any::Any;
 use std::collections::HashMap;
@@ -25,13 +24,14 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
 use tokio::sync::watch;
 
-/// What a finished fill hands the callers that waited on it.
+/// What a finished fill hands the callers that waited on it: `V` is the
+/// store's value (generic, so that this module needs nothing of the store's).
 #[derive(Clone)]
-pub(super) enum Landed {
+pub(super) enum Landed<V> {
     /// A complete model, stored in the table before the flight ended.
-    Stored(Arc<Rendered>),
+    Stored(V),
     /// A model that may not be stored (truncated).
-    Unstored(Arc<Rendered>),
+    Unstored(V),
     /// The fill's error, its type erased: the store is generic over the
     /// error, and a follower takes it back with `downcast_ref`.
     Failed(Arc<dyn Any + Send + Sync>),
@@ -39,35 +39,40 @@ pub(super) enum Landed {
 
 /// A flight in the air: its number (so that only its own leader ends it)
 /// and where its outcome will appear.
-type InAir = (u64, watch::Receiver<Option<Landed>>);
+type InAir<V> = (u64, watch::Receiver<Option<Landed<V>>>);
 
 /// The fills in the air, by key.
-#[derive(Default)]
-pub(super) struct Flights {
-    air: Mutex<HashMap<CacheKey, InAir, foldhash::fast::RandomState>>,
+pub(super) struct Flights<V> {
+    air: Mutex<HashMap<CacheKey, InAir<V>, foldhash::fast::RandomState>>,
     next: AtomicU64,
 }
 
-/// A caller's part in a fill.
-pub(super) enum Turn<'a> {
-    /// The table holds the model now.
-    Ready(Arc<Rendered>),
-    /// Another caller leads the fill: wait for its outcome.
-    Follow(watch::Receiver<Option<Landed>>),
-    /// This caller fills, and must [`Leader::land`] what it made.
-    Lead(Leader<'a>),
+impl<V> Default for Flights<V> {
+    fn default() -> Self {
+        Flights { air: Mutex::default(), next: AtomicU64::new(0) }
+    }
 }
 
-impl Flights {
+/// A caller's part in a fill.
+pub(super) enum Turn<'a, V> {
+    /// The table holds the model now.
+    Ready(V),
+    /// Another caller leads the fill: wait for its outcome.
+    Follow(watch::Receiver<Option<Landed<V>>>),
+    /// This caller fills, and must [`Leader::land`] what it made.
+    Lead(Leader<'a, V>),
+}
+
+impl<V: Clone> Flights<V> {
     /// The in-air map; a poisoned lock (a panic while it was held, which
     /// nothing in it can cause) still holds a consistent map.
-    fn air(&self) -> MutexGuard<'_, HashMap<CacheKey, InAir, foldhash::fast::RandomState>> {
+    fn air(&self) -> MutexGuard<'_, HashMap<CacheKey, InAir<V>, foldhash::fast::RandomState>> {
         self.air.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
     }
 
     /// This caller's turn for `key`; `stored` reads the table, under the
     /// lock that orders it against a landing leader.
-    pub(super) fn turn(&self, key: CacheKey, stored: impl FnOnce() -> Option<Arc<Rendered>>) -> Turn<'_> {
+    pub(super) fn turn(&self, key: CacheKey, stored: impl FnOnce() -> Option<V>) -> Turn<'_, V> {
         let mut air = self.air();
         if let Some((_, rx)) = air.get(&key) {
             return Turn::Follow(rx.clone());
@@ -84,30 +89,30 @@ impl Flights {
 
 /// Waits for the flight `rx` follows to land; `None` when its leader went
 /// away without landing (start over).
-pub(super) async fn outcome(mut rx: watch::Receiver<Option<Landed>>) -> Option<Landed> {
+pub(super) async fn outcome<V: Clone>(mut rx: watch::Receiver<Option<Landed<V>>>) -> Option<Landed<V>> {
     rx.wait_for(Option::is_some).await.ok().and_then(|landed| landed.clone())
 }
 
 /// The caller that fills a key; ends its flight when landed or dropped.
-pub(super) struct Leader<'a> {
-    flights: &'a Flights,
+pub(super) struct Leader<'a, V> {
+    flights: &'a Flights<V>,
     key: CacheKey,
     id: u64,
-    tx: watch::Sender<Option<Landed>>,
+    tx: watch::Sender<Option<Landed<V>>>,
 }
 
-impl Leader<'_> {
+impl<V> Leader<'_, V> {
     /// Hands `landed` to every follower and ends the flight. A `Stored`
     /// model must be in the table already, so that a caller arriving after
     /// the flight ends finds it there.
-    pub(super) fn land(self, landed: Landed) {
+    pub(super) fn land(self, landed: Landed<V>) {
         self.tx.send_replace(Some(landed));
     }
 }
 
-impl Drop for Leader<'_> {
+impl<V> Drop for Leader<'_, V> {
     fn drop(&mut self) {
-        let mut air = self.flights.air();
+        let mut air = self.flights.air.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         if air.get(&self.key).is_some_and(|(id, _)| *id == self.id) {
             air.remove(&self.key);
         }
@@ -118,33 +123,19 @@ impl Drop for Leader<'_> {
 mod tests {
     use super::*;
 
-    fn model(seed: u64) -> Arc<Rendered> {
-        Arc::new(Rendered {
-            bytes: bytes::Bytes::from_static(b"m"),
-            etag: String::new(),
-            content_type: "model/gltf-binary",
-            language: crate::lang::Language::Mdg,
-            seed,
-            primitives: 0,
-            triangles: 0,
-            truncated: None,
-            print: None,
-        })
-    }
-
     #[tokio::test]
     async fn followers_get_the_leaders_outcome_and_a_dropped_leader_lets_one_lead() {
-        let flights = Flights::default();
+        let flights = Flights::<u64>::default();
         let key = CacheKey([7; 32]);
         let Turn::Lead(leader) = flights.turn(key, || None) else { panic!("the first caller leads") };
-        let Turn::Follow(rx) = flights.turn(key, || Some(model(1))) else { panic!("the second follows") };
+        let Turn::Follow(rx) = flights.turn(key, || Some(1)) else { panic!("the second follows") };
         leader.land(Landed::Failed(Arc::new(String::from("boom"))));
         match outcome(rx).await {
             Some(Landed::Failed(e)) => assert_eq!(e.downcast_ref::<String>().map(String::as_str), Some("boom")),
             _ => panic!("the follower gets the failure"),
         }
         // The flight ended: the table answers, or a new flight starts.
-        assert!(matches!(flights.turn(key, || Some(model(2))), Turn::Ready(m) if m.seed == 2));
+        assert!(matches!(flights.turn(key, || Some(2)), Turn::Ready(2)));
         let Turn::Lead(leader) = flights.turn(key, || None) else { panic!("a new flight") };
         let Turn::Follow(rx) = flights.turn(key, || None) else { panic!("follows it") };
         drop(leader);

@@ -118,7 +118,7 @@ type Table = Cache<CacheKey, Arc<Rendered>, ByBytes, KeyHasher, CountEvictions>;
 #[derive(Clone)]
 pub struct ModelCache {
     table: Arc<Table>,
-    flights: Arc<Flights>,
+    flights: Arc<Flights<Arc<Rendered>>>,
     evictions: Arc<AtomicU64>,
     disk: Option<Arc<DiskTier>>,
     redis: Option<Arc<RedisTier>>,

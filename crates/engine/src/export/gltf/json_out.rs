@@ -181,25 +181,22 @@ impl Out {
 
     /// An array of `f32`s.
     fn f32s(&mut self, values: &[f32]) -> Result<(), ExportError> {
-        self.bytes.push(b'[');
-        for (k, &v) in values.iter().enumerate() {
-            if k > 0 {
-                self.bytes.push(b',');
-            }
-            self.f32(v)?;
-        }
-        self.bytes.push(b']');
-        Ok(())
+        self.floats(values, Out::f32)
     }
 
     /// An array of `f32`s each written as its `f64`.
     fn f64s(&mut self, values: &[f32]) -> Result<(), ExportError> {
+        self.floats(values, |o, v| o.f64(f64::from(v)))
+    }
+
+    /// An array of `values`, each written by `write`.
+    fn floats(&mut self, values: &[f32], write: fn(&mut Out, f32) -> Result<(), ExportError>) -> Result<(), ExportError> {
         self.bytes.push(b'[');
         for (k, &v) in values.iter().enumerate() {
             if k > 0 {
                 self.bytes.push(b',');
             }
-            self.f64(f64::from(v))?;
+            write(self, v)?;
         }
         self.bytes.push(b']');
         Ok(())
