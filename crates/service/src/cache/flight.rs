@@ -63,12 +63,15 @@ pub(super) enum Turn<'a, V> {
     Lead(Leader<'a, V>),
 }
 
-impl<V: Clone> Flights<V> {
+impl<V> Flights<V> {
     /// The in-air map; a poisoned lock (a panic while it was held, which
     /// nothing in it can cause) still holds a consistent map.
     fn air(&self) -> MutexGuard<'_, HashMap<CacheKey, InAir<V>, foldhash::fast::RandomState>> {
         self.air.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
     }
+}
+
+impl<V: Clone> Flights<V> {
 
     /// This caller's turn for `key`; `stored` reads the table, under the
     /// lock that orders it against a landing leader.
@@ -112,7 +115,7 @@ impl<V> Leader<'_, V> {
 
 impl<V> Drop for Leader<'_, V> {
     fn drop(&mut self) {
-        let mut air = self.flights.air.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let mut air = self.flights.air();
         if air.get(&self.key).is_some_and(|(id, _)| *id == self.id) {
             air.remove(&self.key);
         }

@@ -150,12 +150,10 @@ impl ModelCache {
         let evictions = CountEvictions::default();
         let counter = evictions.0.clone();
         let items = (max_bytes / TYPICAL_MODEL_BYTES).clamp(64, 1 << 20) as usize;
-        let options = OptionsBuilder::new().shards(1).estimated_items_capacity(items).weight_capacity(max_bytes.max(1)).build();
-        let table = match options {
-            Ok(o) => Cache::with_options(o, ByBytes, KeyHasher::default(), evictions),
-            // Unreachable: every option above is set and in range.
-            Err(_) => Cache::with(items, max_bytes.max(1), ByBytes, KeyHasher::default(), evictions),
-        };
+        // `build` fails only when the weight or item capacity is unset, and
+        // both are set here, whatever their values.
+        let options = OptionsBuilder::new().shards(1).estimated_items_capacity(items).weight_capacity(max_bytes.max(1)).build().expect("both capacities are set");
+        let table = Cache::with_options(options, ByBytes, KeyHasher::default(), evictions);
         ModelCache { table: Arc::new(table), flights: Arc::default(), evictions: counter, disk: None, redis: None, observer: None }
     }
 
