@@ -111,18 +111,27 @@ pub(crate) fn log_request(r: &Finished<'_>, span: &tracing::Span) {
             (CacheOutcome::Hit, None) => "hit",
             _ => "miss",
         });
-        // Displayed, not debugged: `route=/v1/render`, not `route="/v1/render"`.
-        tracing::info!(
-            id = r.id,
-            method = %r.method,
-            route = %r.route,
-            status = r.status,
-            code = r.code.map(tracing::field::display),
-            ms = (ms(r.wall) * 1000.0).round() / 1000.0,
-            cache = cache.map(tracing::field::display),
-            bytes = r.bytes,
-            "request"
-        );
+        let ms = (ms(r.wall) * 1000.0).round() / 1000.0;
+        // The same line without `tracing`'s machinery when its text is the
+        // formatter's (module `access_line` says when and why).
+        match super::telemetry::plain_info_writer().filter(|_| !detail_enabled()) {
+            Some(writer) => {
+                let now = std::time::SystemTime::now();
+                writer.push_with(|out| super::access_line::write(out, now, r, ms, cache));
+            }
+            // Displayed, not debugged: `route=/v1/render`, not `route="/v1/render"`.
+            None => tracing::info!(
+                id = r.id,
+                method = %r.method,
+                route = %r.route,
+                status = r.status,
+                code = r.code.map(tracing::field::display),
+                ms = ms,
+                cache = cache.map(tracing::field::display),
+                bytes = r.bytes,
+                "request"
+            ),
+        }
     }
     if detail_enabled() {
         span.in_scope(|| log_detail(r));

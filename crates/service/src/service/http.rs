@@ -515,7 +515,7 @@ pub(super) async fn model_for(st: &AppState, caller: &Caller, file: &str, query:
             return Err(ServiceError::NotFound(format!("`{file}`: unknown extension ({})", known())));
         };
         let builtin = library::find(name).ok_or_else(|| ServiceError::NotFound(format!("no built-in grammar `{name}`")))?;
-        let pairs: Vec<(String, String)> = serde_urlencoded_pairs(query.unwrap_or(""))?;
+        let pairs = query_pairs(query.unwrap_or(""));
         let body = super::request::query_body(builtin.source, builtin.language, ext, &pairs)?.with_phone_default(super::phone::is_phone(headers));
         let pinned = body.options.seed.is_some();
         let text = is_text(format);
@@ -550,13 +550,13 @@ pub(super) async fn model_for(st: &AppState, caller: &Caller, file: &str, query:
     }
 }
 
-/// Decodes `a=b&c=d` (percent-encoding and `+`) into pairs.
-fn serde_urlencoded_pairs(query: &str) -> Result<Vec<(String, String)>, ServiceError> {
-    axum::extract::Query::<Vec<(String, String)>>::try_from_uri(
-        &format!("/?{query}").parse().map_err(|_| ServiceError::BadRequest("malformed query string".into()))?,
-    )
-    .map(|q| q.0)
-    .map_err(|e| ServiceError::BadRequest(format!("malformed query string: {}", e.body_text())))
+/// Decodes `a=b&c=d` (percent-encoding and `+`) into pairs, as axum's
+/// `Query` extractor would (serde_urlencoded reads with the same
+/// `form_urlencoded::parse`), without its detour through a new `Uri` and
+/// serde: this runs on every model GET. Decoding cannot fail: bytes that
+/// are not UTF-8 after percent-decoding become U+FFFD, as with `Query`.
+fn query_pairs(query: &str) -> Vec<(String, String)> {
+    form_urlencoded::parse(query.as_bytes()).map(|(k, v)| (k.into_owned(), v.into_owned())).collect()
 }
 
 /// `GET /v1/grammars`.
@@ -682,4 +682,19 @@ async fn readyz(State(st): State<Arc<AppState>>) -> Response {
 async fn metrics(State(st): State<Arc<AppState>>, headers: HeaderMap) -> Response {
     let om = wants_openmetrics(headers.get(header::ACCEPT).and_then(|v| v.to_str().ok()));
     ([(header::CONTENT_TYPE, if om { OPENMETRICS } else { PROMETHEUS_TEXT })], st.metrics.render_text(om)).into_response()
+}
+
+#[cfg(test)]
+mod tests {
+    /// `query_pairs` reads what axum's `Query` extractor read before it
+    /// (the oracle here): percent-escapes, `+`, empty and repeated keys,
+    /// and bytes that are not UTF-8.
+    #[test]
+    fn query_pairs_read_as_axum_query_does() {
+        for query in ["", "seed=7", "seed=7&detail=4&seed=8", "p.name=a+b%20c", "a&=b&c=&&d=%FF%FE", "x=%zz%4", "%E2%9C%93=%e2%9c%93"] {
+            let uri: axum::http::Uri = format!("/?{query}").parse().expect("a valid URI");
+            let axum::extract::Query(oracle) = axum::extract::Query::<Vec<(String, String)>>::try_from_uri(&uri).expect("axum reads it");
+            assert_eq!(super::query_pairs(query), oracle, "{query}");
+        }
+    }
 }

@@ -87,6 +87,14 @@ impl BatchWriter {
     /// Queues `line` (one formatted event), or drops and counts it when
     /// the queue is full.
     fn push(&self, line: &[u8]) {
+        self.push_with(|bytes| bytes.extend_from_slice(line));
+    }
+
+    /// Queues the line `write` appends to the queue's bytes (one whole
+    /// line, its `\n` included), or drops and counts it, unwritten, when
+    /// the queue is full. Writing in place spares the line a buffer of its
+    /// own: the access log's direct line (`access_line`) is written so.
+    pub(crate) fn push_with(&self, write: impl FnOnce(&mut Vec<u8>)) {
         let mut q = self.shared.lock();
         if q.lines >= self.shared.capacity {
             drop(q);
@@ -94,7 +102,7 @@ impl BatchWriter {
             return;
         }
         let before = q.bytes.len();
-        q.bytes.extend_from_slice(line);
+        write(&mut q.bytes);
         q.lines += 1;
         let wake = before < WAKE_BYTES && q.bytes.len() >= WAKE_BYTES;
         drop(q);

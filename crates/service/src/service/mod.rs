@@ -7,6 +7,7 @@
 
 pub mod access;
 pub mod access_log;
+mod access_line;
 pub mod batch;
 pub mod config;
 pub mod conn;

@@ -67,6 +67,18 @@ pub(crate) fn tracing_on() -> bool {
 /// The log writer, whose count of dropped lines [`dropped_lines`] reads, once [`init`] ran.
 static WRITER: OnceLock<BatchWriter> = OnceLock::new();
 
+/// The log writer, when the access log may write its INFO line itself
+/// (`access_line`): the lines are plain text without colours, INFO is on,
+/// and so the line is exactly what `tracing-subscriber`'s formatter would
+/// write. Unset for JSON, a terminal's colours, a level above INFO, or a
+/// process that never called [`init`] (tests).
+static PLAIN_INFO: OnceLock<BatchWriter> = OnceLock::new();
+
+/// [`PLAIN_INFO`]'s writer, if set.
+pub(crate) fn plain_info_writer() -> Option<&'static BatchWriter> {
+    PLAIN_INFO.get()
+}
+
 /// Log lines dropped because the writer's queue was full (0 before
 /// [`init`], and in processes that log directly).
 pub(crate) fn dropped_lines() -> u64 {
@@ -170,9 +182,13 @@ pub fn init(level: LevelFilter, format: LogFormat, otlp: Option<&str>, worker: O
     use std::io::IsTerminal;
     let (writer, guard) = BatchWriter::start(std::io::stderr(), buffer_lines).map_err(|e| TelemetryError::Init(format!("cannot start the log writer thread: {e}")))?;
     let _ = WRITER.set(writer.clone());
+    let ansi = std::io::stderr().is_terminal();
+    if format == LogFormat::Text && !ansi && level >= LevelFilter::INFO {
+        let _ = PLAIN_INFO.set(writer.clone());
+    }
     let fmt = tracing_subscriber::fmt::layer().with_target(false).with_writer(writer);
     let fmt = match format {
-        LogFormat::Text => fmt.with_ansi(std::io::stderr().is_terminal()).boxed(),
+        LogFormat::Text => fmt.with_ansi(ansi).boxed(),
         LogFormat::Json => fmt.json().with_current_span(true).with_span_list(true).with_ansi(false).boxed(),
     };
     let mut telemetry = Telemetry { log_writer: Some(guard), ..Telemetry::default() };
