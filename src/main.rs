@@ -604,7 +604,7 @@ fn run_serve(args: ServeArgs, matches: &clap::ArgMatches) -> Result<(), Failure>
         return Ok(());
     }
     // The blocking pool only runs renders, which the engine already limits to
-    // `concurrency`; a few spare threads cover moka and file work.
+    // `concurrency`; a few spare threads cover the disk tier's reads and writes.
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()
         .max_blocking_threads(config.concurrency() + 4)

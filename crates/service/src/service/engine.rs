@@ -209,7 +209,7 @@ impl Engine {
         let timeout_ms = request.limits.timeout_ms;
         let format = request.format;
         // Only a request that may be tried on the worker has its source hashed for the memo.
-        let memo = super::inline::may_try(timeout_ms, request.export_options.print.enabled, source.len()).then(|| super::inline::memo_key(&source, format));
+        let memo = super::inline::may_try(timeout_ms, request.export_options.print.enabled, source.len()).then(|| self.quick.key(&source, format));
         let tried = match memo {
             Some(memo) if self.quick.is_quick(memo) => self.try_on_worker(&source, &mut request, memo),
             _ => None,

@@ -27,9 +27,8 @@
 
 use crate::core::{Limit, LimitExceeded};
 use crate::export::Format;
-use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
-use std::hash::{Hash, Hasher};
+use std::hash::BuildHasher as _;
 use std::sync::Mutex;
 use std::time::Duration;
 
@@ -58,18 +57,22 @@ const CAPACITY: usize = 4096;
 #[derive(Debug, Default)]
 pub(crate) struct QuickRenders {
     last: Mutex<HashMap<u64, Duration>>,
+    /// The memo key's hasher, seeded per process.
+    hasher: foldhash::fast::RandomState,
 }
 
-/// The memo's key: a hash of the source bytes and the format's name.
-/// Collisions only make a render try the worker first (and fall back).
-pub(crate) fn memo_key(source: &[u8], format: Format) -> u64 {
-    let mut h = DefaultHasher::new();
-    source.hash(&mut h);
-    format.name().hash(&mut h);
-    h.finish()
-}
 
 impl QuickRenders {
+    /// The memo's key: a hash of the source bytes and the format's name.
+    /// Collisions only make a render try the worker first (and fall back).
+    /// foldhash, not std's SipHash: this hashes the whole source on every
+    /// model request, and SipHash was about 1.5 % of a fresh icon's
+    /// instructions (issue 33). Its seed is the process's own, so a
+    /// collision cannot be chosen in advance.
+    pub(crate) fn key(&self, source: &[u8], format: Format) -> u64 {
+        self.hasher.hash_one((source, format.name()))
+    }
+
     /// Whether the last pool render of `key` was quick.
     pub(crate) fn is_quick(&self, key: u64) -> bool {
         self.last.lock().ok().and_then(|m| m.get(&key).copied()).is_some_and(|d| d <= QUICK)
@@ -114,9 +117,11 @@ mod tests {
     #[test]
     fn only_a_quick_last_render_makes_a_candidate() {
         let q = QuickRenders::default();
-        let gem = memo_key(b"gem", Format::Glb);
-        let png = memo_key(b"gem", Format::Png);
+        let gem = q.key(b"gem", Format::Glb);
+        let png = q.key(b"gem", Format::Png);
         assert_ne!(gem, png, "the format is part of the key");
+        assert_eq!(gem, q.key(b"gem", Format::Glb), "one process, one key");
+        assert_ne!(gem, q.key(b"gen", Format::Glb), "the source is part of the key");
         assert!(!q.is_quick(gem), "an unseen source goes to the pool");
         q.record(gem, Duration::from_micros(80));
         q.record(png, Duration::from_micros(1500));
