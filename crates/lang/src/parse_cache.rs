@@ -16,9 +16,8 @@
 //! their programs hold. Failures are not kept (a bad source is parsed again
 //! and gives the same error).
 
-use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
-use std::hash::{Hash, Hasher};
+use std::hash::BuildHasher as _;
 use std::sync::{Arc, Mutex};
 
 /// The most programs kept.
@@ -34,6 +33,12 @@ pub const MAX_SOURCE: usize = 1 << 20;
 #[derive(Debug)]
 pub(crate) struct ParseCache<T> {
     inner: Mutex<Inner<T>>,
+    /// Hashes sources to their keys: foldhash under a seed of the
+    /// process's own, not std's SipHash, which hashed every render's whole
+    /// source (about 1 % of a fresh icon's instructions, issue 33). The
+    /// seed keeps a colliding source from being made in advance (it would
+    /// only evict the other's entry: a hit compares the whole source).
+    hasher: foldhash::fast::RandomState,
 }
 
 #[derive(Debug)]
@@ -52,14 +57,8 @@ struct Entry<T> {
 
 impl<T> Default for ParseCache<T> {
     fn default() -> Self {
-        ParseCache { inner: Mutex::new(Inner { entries: HashMap::new(), bytes: 0, clock: 0 }) }
+        ParseCache { inner: Mutex::new(Inner { entries: HashMap::new(), bytes: 0, clock: 0 }), hasher: foldhash::fast::RandomState::default() }
     }
-}
-
-fn hash_of(source: &[u8]) -> u64 {
-    let mut h = DefaultHasher::new();
-    source.hash(&mut h);
-    h.finish()
 }
 
 impl<T> ParseCache<T> {
@@ -70,7 +69,7 @@ impl<T> ParseCache<T> {
         if source.len() > MAX_SOURCE {
             return parse(source).map(Arc::new);
         }
-        let key = hash_of(source);
+        let key = self.hasher.hash_one(source);
         if let Some(v) = self.lookup(key, source) {
             return Ok(v);
         }
