@@ -17,6 +17,7 @@
 
 use rulemesh::core::timing::Phase;
 use rulemesh::export::Format;
+use rulemesh::lang::Language;
 use rulemesh::{render, RenderRequest};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -68,6 +69,11 @@ fn run() -> Result<(), String> {
     let path = args.next().ok_or("usage: throughput GRAMMAR [SECONDS] [FORMAT,...]")?;
     let seconds: f64 = args.next().map(|s| s.parse().map_err(|e| format!("SECONDS: {e}"))).transpose()?.unwrap_or(10.0);
     let source = std::fs::read(&path).map_err(|e| format!("{path}: {e}"))?;
+    // Named by the file's extension, as the service names every request's
+    // language: without it each render would sniff the source
+    // (`Language::detect`, about 6K instructions a render), which no
+    // request the service serves pays.
+    let language = Language::from_extension(std::path::Path::new(&path));
     let names: Vec<String> = match args.next() {
         Some(list) => list.split(',').map(str::to_owned).collect(),
         None => FORMATS.iter().map(|n| n.to_string()).collect(),
@@ -78,7 +84,7 @@ fn run() -> Result<(), String> {
     // Warm up: code, allocator and page faults, once per format, not counted.
     for &format in &formats {
         for _ in 0..BATCH {
-            let req = RenderRequest { format, seed: Some(seed), ..RenderRequest::default() };
+            let req = RenderRequest { format, seed: Some(seed), language, ..RenderRequest::default() };
             render(&source, &req).map_err(|e| format!("{}: {e}", format.name()))?;
             seed += 1;
         }
@@ -88,7 +94,7 @@ fn run() -> Result<(), String> {
         for (format, tally) in formats.iter().zip(tallies.iter_mut()) {
             let cpu0 = thread_cpu()?;
             for _ in 0..BATCH {
-                let req = RenderRequest { format: *format, seed: Some(seed), ..RenderRequest::default() };
+                let req = RenderRequest { format: *format, seed: Some(seed), language, ..RenderRequest::default() };
                 seed += 1;
                 let out = render(&source, &req).map_err(|e| format!("{}: {e}", format.name()))?;
                 tally.bytes = out.bytes.len();
