@@ -14,6 +14,7 @@
 //! stalled log reader costs dropped lines, counted in
 //! `rulemesh_log_lines_dropped_total`, never a blocked worker.
 
+use super::access_line::Line;
 use super::timing::{ms, RequestTiming};
 use crate::cache::CacheOutcome;
 use crate::core::timing::Phase;
@@ -111,31 +112,36 @@ pub(crate) fn log_request(r: &Finished<'_>, span: &tracing::Span) {
             (CacheOutcome::Hit, None) => "hit",
             _ => "miss",
         });
-        let ms = (ms(r.wall) * 1000.0).round() / 1000.0;
+        let line = Line { id: r.id, method: r.method, route: r.route, status: r.status, code: r.code, ms: (ms(r.wall) * 1000.0).round() / 1000.0, cache, bytes: r.bytes };
         // The same line without `tracing`'s machinery when its text is the
         // formatter's (module `access_line` says when and why).
         match super::telemetry::plain_info_writer().filter(|_| !detail_enabled()) {
             Some(writer) => {
                 let now = std::time::SystemTime::now();
-                writer.push_with(|out| super::access_line::write(out, now, r, ms, cache));
+                writer.push_with(|out| super::access_line::write(out, now, &line));
             }
-            // Displayed, not debugged: `route=/v1/render`, not `route="/v1/render"`.
-            None => tracing::info!(
-                id = r.id,
-                method = %r.method,
-                route = %r.route,
-                status = r.status,
-                code = r.code.map(tracing::field::display),
-                ms = ms,
-                cache = cache.map(tracing::field::display),
-                bytes = r.bytes,
-                "request"
-            ),
+            None => info_event(&line),
         }
     }
     if detail_enabled() {
         span.in_scope(|| log_detail(r));
     }
+}
+
+/// The short line as a `tracing` event.
+fn info_event(l: &Line<'_>) {
+    // Displayed, not debugged: `route=/v1/render`, not `route="/v1/render"`.
+    tracing::info!(
+        id = l.id,
+        method = %l.method,
+        route = %l.route,
+        status = l.status,
+        code = l.code.map(tracing::field::display),
+        ms = l.ms,
+        cache = l.cache.map(tracing::field::display),
+        bytes = l.bytes,
+        "request"
+    );
 }
 
 /// The DEBUG line: the numbers of the `Server-Timing` header as fields
@@ -182,5 +188,50 @@ mod tests {
         assert!(!wanted(true));
         set_mode(AccessLog::All);
         assert!(wanted(false));
+    }
+
+    /// What `tracing-subscriber` writes, captured.
+    #[derive(Clone, Default)]
+    struct Captured(std::sync::Arc<std::sync::Mutex<Vec<u8>>>);
+
+    impl std::io::Write for Captured {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            self.0.lock().expect("buffer").extend_from_slice(buf);
+            Ok(buf.len())
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    /// The line written by hand (`access_line`) is the text the
+    /// formatter writes for `info_event` (plain, no target, no colours, as
+    /// `telemetry::init` sets it up): every field present and absent, and
+    /// `ms` values whose `Debug` text differs from `Display`'s. The
+    /// timestamps differ (two clocks read); each has RFC 3339's shape.
+    #[test]
+    fn the_line_by_hand_is_the_formatters_text() {
+        let base = Line { id: 7, method: "GET", route: "/v1/models/{file}", status: Some(200), code: None, ms: 0.635, cache: Some("miss"), bytes: Some(12460) };
+        let lines = [
+            base,
+            Line { status: None, code: Some("resource_exhausted"), method: "grpc", route: "Render", bytes: None, cache: None, ms: 12.0, ..base },
+            Line { id: u64::MAX, ms: 0.0, cache: Some("memory"), ..base },
+            Line { ms: 1234567.125, cache: Some("redis"), ..base },
+            Line { ms: 1e-7, cache: None, ..base },
+        ];
+        for line in lines {
+            let captured = Captured::default();
+            let sink = captured.clone();
+            let subscriber = tracing_subscriber::fmt().with_target(false).with_ansi(false).with_writer(move || sink.clone()).finish();
+            tracing::subscriber::with_default(subscriber, || info_event(&line));
+            let theirs = String::from_utf8(captured.0.lock().expect("buffer").clone()).expect("utf-8");
+            let mut ours = Vec::new();
+            crate::service::access_line::write(&mut ours, std::time::SystemTime::UNIX_EPOCH + Duration::from_micros(1_796_560_746_058_664), &line);
+            let ours = String::from_utf8(ours).expect("utf-8");
+            assert_eq!(ours.split_once(' ').map(|p| p.1), theirs.split_once(' ').map(|p| p.1), "{ours} against {theirs}");
+            assert_eq!(ours.split_once(' ').map(|p| p.0), Some("2026-12-06T12:39:06.058664Z"));
+            let stamp = theirs.split_once(' ').map_or("", |p| p.0);
+            assert!(stamp.len() == 27 && stamp.ends_with('Z') && stamp.as_bytes()[19] == b'.', "{stamp}");
+        }
     }
 }
