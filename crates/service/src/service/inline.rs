@@ -61,7 +61,6 @@ pub(crate) struct QuickRenders {
     hasher: foldhash::fast::RandomState,
 }
 
-
 impl QuickRenders {
     /// The memo's key: a hash of the source bytes and the format's name.
     /// Collisions only make a render try the worker first (and fall back).
