@@ -95,7 +95,7 @@ fn base_colour(program: &Program) -> [f64; 4] {
 /// object is placed twice), in which case nothing was charged to `budget`.
 /// Its leaves, walked, are the instances [`evaluate`] places, in order.
 pub fn evaluate_hierarchy(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Option<Hierarchy>, EvalError> {
-    hierarchy_of(&Evaluator::new(program, params, options)?, budget)
+    hierarchy_of(&Evaluator::new(program, params, options, None)?, budget)
 }
 
 /// [`evaluate_hierarchy`] with the evaluator made already: `build_model`
@@ -123,7 +123,7 @@ pub(super) fn background(program: &Program) -> Option<[f32; 4]> {
 
 /// Evaluates `program` with bound `params` into a scene, under `budget`.
 pub fn evaluate(program: &Program, params: &[f64], options: &EvalOptions, budget: &mut Budget) -> Result<Scene, EvalError> {
-    scene_of(&Evaluator::new(program, params, options)?, options, budget)
+    scene_of(&Evaluator::new(program, params, options, None)?, options, budget)
 }
 
 /// [`evaluate`] with the evaluator made already (see [`hierarchy_of`]).

@@ -7,7 +7,8 @@
 //! (`lines`, `shapes`, `select`, `paths`), which add methods to [`Machine`].
 //! No Rust recursion follows the grammar.
 
-use super::adjust::{collect_fixed, eval_adjust, finite, Ctx, Delta, Env};
+use super::adjust::{eval_adjust, finite, Ctx, Delta, Env};
+use super::setup::SetupMemo;
 use super::lines::Pen;
 use super::paths::Capture;
 use super::evaluator::EvalOptions;
@@ -23,6 +24,7 @@ use crate::model::{Downstream, EvalError};
 use glam::DVec3;
 use std::collections::HashMap;
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// Pending work.
 enum Task<'p> {
@@ -42,9 +44,9 @@ pub(super) struct Evaluator<'p> {
     pub(super) program: &'p Program,
     pub(super) params: &'p [f64],
     /// Deltas of call sites whose adjustments contain no `rand()`, indexed by site.
-    pub(super) fixed: Vec<Option<Delta>>,
+    pub(super) fixed: Arc<[Option<Delta>]>,
     /// Cumulative weights per group, for weighted selection.
-    pub(super) cumulative: Vec<Vec<f64>>,
+    pub(super) cumulative: Arc<[Vec<f64>]>,
     /// Triangles per primitive kind at the requested detail.
     pub(super) tris: [u64; 9],
     /// Bytes later stages need per primitive of each kind.
@@ -64,26 +66,12 @@ pub(super) const CONVOLVE_SLOT: u32 = u32::MAX - 1;
 pub(super) const CAPTURE_SLOT: u32 = u32::MAX - 2;
 
 impl<'p> Evaluator<'p> {
-    /// Precomputes the fixed deltas, cumulative weights and per-kind costs of `program`.
-    pub(super) fn new(program: &'p Program, params: &'p [f64], options: &EvalOptions) -> Result<Self, EvalError> {
+    /// Precomputes the fixed deltas, cumulative weights and per-kind costs
+    /// of `program`; the first two from `memo` when it holds them for the
+    /// same parameter values (module `setup`).
+    pub(super) fn new(program: &'p Program, params: &'p [f64], options: &EvalOptions, memo: Option<&SetupMemo>) -> Result<Self, EvalError> {
         let detail = options.detail;
-        let mut fixed = vec![None; program.site_count as usize];
-        for g in &program.groups {
-            for r in &g.rules {
-                collect_fixed(&r.body, params, &mut fixed)?;
-            }
-        }
-        let cumulative = program
-            .groups
-            .iter()
-            .map(|g| {
-                let mut acc = 0.0;
-                g.rules.iter().map(|r| {
-                    acc += r.weight.max(0.0);
-                    acc
-                }).collect()
-            })
-            .collect();
+        let setup = super::setup::setup(program, params, memo)?;
         let mut tris = [0u64; 9];
         for k in PrimitiveKind::ALL {
             tris[k as usize] = primitives::triangle_count(k, detail);
@@ -91,8 +79,8 @@ impl<'p> Evaluator<'p> {
         Ok(Evaluator {
             program,
             params,
-            fixed,
-            cumulative,
+            fixed: setup.fixed.clone(),
+            cumulative: setup.cumulative.clone(),
             tris,
             downstream: PrimitiveKind::ALL.map(|k| {
                 options.downstream.bytes(primitives::vertex_count(k, detail), primitives::triangle_count(k, detail))

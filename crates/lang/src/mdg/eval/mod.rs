@@ -12,12 +12,14 @@ mod memo;
 pub mod params;
 mod paths;
 mod select;
+mod setup;
 mod shapes;
 mod share;
 
 pub use evaluator::{evaluate, evaluate_hierarchy, EvalOptions};
 pub(crate) use evaluator::promised_bytes;
 pub use params::bind_params;
+pub use setup::SetupMemo;
 
 use crate::core::budget::Budget;
 use crate::core::timing::{Phase, StageClock};
@@ -37,12 +39,18 @@ use crate::model::{BuildError, BuildRequest, EvalError, Hierarchy, Model};
 /// ([`evaluate_hierarchy`], docs/mdg.md); every other output, and every other
 /// program, gets the flat derivation, exactly as before hierarchies existed.
 pub fn build_model(language: Language, program: &Program, req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
+    build_model_kept(language, program, None, req, budget, clock)
+}
+
+/// [`build_model`] with `memo`, the set-up kept beside a parsed program
+/// between its evaluations (module `setup`): MDG passes its parse cache's.
+pub fn build_model_kept(language: Language, program: &Program, memo: Option<&SetupMemo>, req: &BuildRequest<'_>, budget: &mut Budget, clock: &mut StageClock) -> Result<Model, BuildError> {
     let params = bind_params(program, req.params)?;
     clock.lap(Phase::Parse);
     let options = EvalOptions { seed: req.seed, detail: req.detail, on_limit: req.on_limit, downstream: req.downstream };
     // The evaluator's own rule (evaluator.rs): the request's seed, else `randseed`, else 0.
     let seed = req.seed.or(program.directives.randseed).unwrap_or(0);
-    let ev = machine::Evaluator::new(program, &params, &options)?;
+    let ev = machine::Evaluator::new(program, &params, &options, memo)?;
     if let Some(h) = hierarchy(&ev, req, budget)? {
         return Ok(Model { language, seed, primitives: h.leaves(), promised: 0, scene: Scene { background: evaluator::background(program), ..Scene::default() }, hierarchy: Some(h), drawing: None, warnings: program.warnings.clone() });
     }

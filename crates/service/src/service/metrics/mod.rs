@@ -15,6 +15,7 @@
 //! tiers (bytes held, Redis counters) are read at scrape time ([`figures`]).
 
 mod figures;
+mod kept;
 
 use crate::cache::{CacheObserver, ModelCache, Tier};
 use crate::core::timing::PhaseTimes;
@@ -136,6 +137,8 @@ pub struct Metrics {
     fast_hits: Counter,
     /// Model GETs answered by the direct route (`service::direct`).
     direct_models: Counter,
+    /// Handles of the request and stage series, looked up once per label set.
+    kept: kept::Kept,
     cache: Arc<OnceLock<ModelCache>>,
     memory: Arc<OnceLock<Arc<crate::service::memory::MemoryGuard>>>,
 }
@@ -184,6 +187,7 @@ impl Metrics {
             memory_waits: Counter::default(),
             fast_hits: Counter::default(),
             direct_models: Counter::default(),
+            kept: kept::Kept::default(),
             cache: Arc::new(OnceLock::new()),
             memory: Arc::new(OnceLock::new()),
             registry: Registry::default(),
@@ -255,9 +259,12 @@ impl Metrics {
 
     /// Counts one finished request and its latency (`protocol` is `http` or `grpc`).
     pub fn request(&self, protocol: &'static str, route: &str, status: u16, took: Duration) {
-        let labels = RequestLabels { protocol, route: route.to_string(), status };
-        self.requests.get_or_create(&labels).inc();
-        self.request_seconds.get_or_create(&labels).observe(took.as_secs_f64());
+        let (count, seconds) = self.kept.request(protocol, route, status, || {
+            let labels = RequestLabels { protocol, route: route.to_string(), status };
+            (self.requests.get_or_create(&labels).clone(), self.request_seconds.get_or_create(&labels).clone())
+        });
+        count.inc();
+        seconds.observe(took.as_secs_f64());
     }
 
     /// Counts model bytes sent in `format`.
@@ -274,8 +281,11 @@ impl Metrics {
     /// Records the time of every stage that ran in one render of `language` into `format`.
     pub fn stages(&self, language: Language, format: Format, phases: &PhaseTimes) {
         for (phase, took) in phases.ran() {
-            let labels = StageLabels { stage: phase.name(), language: language.name(), format: format.name() };
-            self.stage_seconds.get_or_create(&labels).observe(took.as_secs_f64());
+            let seconds = self.kept.stage(phase, language, format, || {
+                let labels = StageLabels { stage: phase.name(), language: language.name(), format: format.name() };
+                self.stage_seconds.get_or_create(&labels).clone()
+            });
+            seconds.observe(took.as_secs_f64());
         }
     }
 
