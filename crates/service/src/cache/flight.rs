@@ -72,7 +72,6 @@ impl<V> Flights<V> {
 }
 
 impl<V: Clone> Flights<V> {
-
     /// This caller's turn for `key`; `stored` reads the table, under the
     /// lock that orders it against a landing leader.
     pub(super) fn turn(&self, key: CacheKey, stored: impl FnOnce() -> Option<V>) -> Turn<'_, V> {

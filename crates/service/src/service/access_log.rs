@@ -190,20 +190,6 @@ mod tests {
         assert!(wanted(false));
     }
 
-    /// What `tracing-subscriber` writes, captured.
-    #[derive(Clone, Default)]
-    struct Captured(std::sync::Arc<std::sync::Mutex<Vec<u8>>>);
-
-    impl std::io::Write for Captured {
-        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-            self.0.lock().expect("buffer").extend_from_slice(buf);
-            Ok(buf.len())
-        }
-        fn flush(&mut self) -> std::io::Result<()> {
-            Ok(())
-        }
-    }
-
     /// The line written by hand (`access_line`) is the text the
     /// formatter writes for `info_event` (plain, no target, no colours, as
     /// `telemetry::init` sets it up): every field present and absent, and
@@ -220,7 +206,7 @@ mod tests {
             Line { ms: 1e-7, cache: None, ..base },
         ];
         for line in lines {
-            let captured = Captured::default();
+            let captured = crate::service::log_writer::Sink::default();
             let sink = captured.clone();
             let subscriber = tracing_subscriber::fmt().with_target(false).with_ansi(false).with_writer(move || sink.clone()).finish();
             tracing::subscriber::with_default(subscriber, || info_event(&line));

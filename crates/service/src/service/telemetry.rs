@@ -67,16 +67,16 @@ pub(crate) fn tracing_on() -> bool {
 /// The log writer, whose count of dropped lines [`dropped_lines`] reads, once [`init`] ran.
 static WRITER: OnceLock<BatchWriter> = OnceLock::new();
 
-/// The log writer, when the access log may write its INFO line itself
-/// (`access_line`): the lines are plain text without colours, INFO is on,
-/// and so the line is exactly what `tracing-subscriber`'s formatter would
-/// write. Unset for JSON, a terminal's colours, a level above INFO, or a
-/// process that never called [`init`] (tests).
-static PLAIN_INFO: OnceLock<BatchWriter> = OnceLock::new();
+/// Whether the access log may write its INFO line itself (`access_line`):
+/// [`init`] made the lines plain text without colours with INFO on, so the
+/// line is exactly what `tracing-subscriber`'s formatter would write. False
+/// for JSON, a terminal's colours, a level above INFO, or a process that
+/// never called [`init`] (tests).
+static PLAIN_INFO: AtomicBool = AtomicBool::new(false);
 
-/// [`PLAIN_INFO`]'s writer, if set.
+/// The log writer [`WRITER`], when [`PLAIN_INFO`] holds.
 pub(crate) fn plain_info_writer() -> Option<&'static BatchWriter> {
-    PLAIN_INFO.get()
+    WRITER.get().filter(|_| PLAIN_INFO.load(Ordering::Relaxed))
 }
 
 /// Log lines dropped because the writer's queue was full (0 before
@@ -183,9 +183,7 @@ pub fn init(level: LevelFilter, format: LogFormat, otlp: Option<&str>, worker: O
     let (writer, guard) = BatchWriter::start(std::io::stderr(), buffer_lines).map_err(|e| TelemetryError::Init(format!("cannot start the log writer thread: {e}")))?;
     let _ = WRITER.set(writer.clone());
     let ansi = std::io::stderr().is_terminal();
-    if format == LogFormat::Text && !ansi && level >= LevelFilter::INFO {
-        let _ = PLAIN_INFO.set(writer.clone());
-    }
+    PLAIN_INFO.store(format == LogFormat::Text && !ansi && level >= LevelFilter::INFO, Ordering::Relaxed);
     let fmt = tracing_subscriber::fmt::layer().with_target(false).with_writer(writer);
     let fmt = match format {
         LogFormat::Text => fmt.with_ansi(ansi).boxed(),

@@ -93,6 +93,24 @@ impl Out {
         self.bytes.extend_from_slice(b"\":");
     }
 
+    /// A `true` field (a flag written only when set).
+    fn true_field(&mut self, key: &str) {
+        self.key(key);
+        self.bytes.extend_from_slice(b"true");
+    }
+
+    /// The open object's `"extensions":{"NAME":{…}}` field, the one
+    /// extension it carries, its object's fields written by `fields`.
+    fn extension(&mut self, name: &str, fields: impl FnOnce(&mut Out)) {
+        self.key(k!("extensions"));
+        self.open();
+        self.named_key(name);
+        self.open();
+        fields(self);
+        self.close();
+        self.close();
+    }
+
     /// Opens an object.
     #[inline]
     fn open(&mut self) {
@@ -317,8 +335,7 @@ fn accessor(o: &mut Out, a: &Accessor) -> Result<(), ExportError> {
         None => {}
     }
     if a.normalized {
-        o.key(k!("normalized"));
-        o.bytes.extend_from_slice(b"true");
+        o.true_field(k!("normalized"));
     }
     o.close();
     Ok(())
@@ -361,11 +378,7 @@ fn buffer(o: &mut Out, b: &Buffer) -> Result<(), ExportError> {
         o.string_field(k!("uri"), uri)?;
     }
     if b.meshopt_fallback {
-        o.key(k!("extensions"));
-        o.bytes.push(b'{');
-        o.bytes.push(b'"');
-        o.bytes.extend_from_slice(EXT_MESHOPT.as_bytes());
-        o.bytes.extend_from_slice(b"\":{\"fallback\":true}}");
+        o.extension(EXT_MESHOPT, |o| o.true_field(k!("fallback")));
     }
     o.close();
     Ok(())
@@ -389,18 +402,14 @@ fn view(o: &mut Out, v: &View) -> Result<(), ExportError> {
         o.number(k!("target"), t.gl());
     }
     if let Some(m) = &v.meshopt {
-        o.key(k!("extensions"));
-        o.open();
-        o.named_key(EXT_MESHOPT);
-        o.open();
-        o.number(k!("buffer"), m.buffer);
-        o.number(k!("byteLength"), m.byte_length);
-        o.number(k!("byteOffset"), m.byte_offset);
-        o.number(k!("byteStride"), m.byte_stride);
-        o.number(k!("count"), m.count);
-        o.word_field(k!("mode"), m.mode);
-        o.close();
-        o.close();
+        o.extension(EXT_MESHOPT, |o| {
+            o.number(k!("buffer"), m.buffer);
+            o.number(k!("byteLength"), m.byte_length);
+            o.number(k!("byteOffset"), m.byte_offset);
+            o.number(k!("byteStride"), m.byte_stride);
+            o.number(k!("count"), m.count);
+            o.word_field(k!("mode"), m.mode);
+        });
     }
     o.close();
     Ok(())
@@ -477,19 +486,15 @@ fn node(o: &mut Out, n: &Node<'_>) -> Result<(), ExportError> {
         o.indices(&n.children);
     }
     if let Some(i) = &n.instancing {
-        o.key(k!("extensions"));
-        o.open();
-        o.named_key(EXT_INSTANCING);
-        o.open();
-        o.key(k!("attributes"));
-        o.open();
-        o.index_field(k!("ROTATION"), i.rotation);
-        o.index_field(k!("SCALE"), i.scale);
-        o.number(k!("TRANSLATION"), i.translation);
-        o.index_field(k!("_COLOR_0"), i.colour);
-        o.close();
-        o.close();
-        o.close();
+        o.extension(EXT_INSTANCING, |o| {
+            o.key(k!("attributes"));
+            o.open();
+            o.index_field(k!("ROTATION"), i.rotation);
+            o.index_field(k!("SCALE"), i.scale);
+            o.number(k!("TRANSLATION"), i.translation);
+            o.index_field(k!("_COLOR_0"), i.colour);
+            o.close();
+        });
     }
     o.index_field(k!("mesh"), n.mesh);
     o.string_field(k!("name"), n.name)?;
@@ -512,8 +517,7 @@ fn scene(o: &mut Out, s: &Scene) -> Result<(), ExportError> {
             o.f64s(bg)?;
         }
         if s.truncated {
-            o.key(k!("truncated"));
-            o.bytes.extend_from_slice(b"true");
+            o.true_field(k!("truncated"));
         }
         o.close();
     }

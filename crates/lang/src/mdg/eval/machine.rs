@@ -8,7 +8,7 @@
 //! No Rust recursion follows the grammar.
 
 use super::adjust::{eval_adjust, finite, Ctx, Delta, Env};
-use super::setup::SetupMemo;
+use super::setup::{setup, Setup, SetupMemo};
 use super::lines::Pen;
 use super::paths::Capture;
 use super::evaluator::EvalOptions;
@@ -43,10 +43,9 @@ const TASK_BYTES: u64 = std::mem::size_of::<Task<'static>>() as u64;
 pub(super) struct Evaluator<'p> {
     pub(super) program: &'p Program,
     pub(super) params: &'p [f64],
-    /// Deltas of call sites whose adjustments contain no `rand()`, indexed by site.
-    pub(super) fixed: Arc<[Option<Delta>]>,
-    /// Cumulative weights per group, for weighted selection.
-    pub(super) cumulative: Arc<[Vec<f64>]>,
+    /// The fixed deltas and cumulative weights (module `setup`), shared
+    /// with the program's memo.
+    pub(super) setup: Arc<Setup>,
     /// Triangles per primitive kind at the requested detail.
     pub(super) tris: [u64; 9],
     /// Bytes later stages need per primitive of each kind.
@@ -71,7 +70,7 @@ impl<'p> Evaluator<'p> {
     /// same parameter values (module `setup`).
     pub(super) fn new(program: &'p Program, params: &'p [f64], options: &EvalOptions, memo: Option<&SetupMemo>) -> Result<Self, EvalError> {
         let detail = options.detail;
-        let setup = super::setup::setup(program, params, memo)?;
+        let setup = setup(program, params, memo)?;
         let mut tris = [0u64; 9];
         for k in PrimitiveKind::ALL {
             tris[k as usize] = primitives::triangle_count(k, detail);
@@ -79,8 +78,7 @@ impl<'p> Evaluator<'p> {
         Ok(Evaluator {
             program,
             params,
-            fixed: setup.fixed.clone(),
-            cumulative: setup.cumulative.clone(),
+            setup,
             tris,
             downstream: PrimitiveKind::ALL.map(|k| {
                 options.downstream.bytes(primitives::vertex_count(k, detail), primitives::triangle_count(k, detail))
@@ -94,7 +92,7 @@ impl<'p> Evaluator<'p> {
 
     /// The delta of call site `site`: precomputed when deterministic, else evaluated in stream `key`.
     pub(super) fn delta(&self, adjust: &[Adjust], site: u32, key: StreamKey) -> Result<Delta, EvalError> {
-        if let Some(Some(d)) = self.fixed.get(site as usize) {
+        if let Some(Some(d)) = self.setup.fixed.get(site as usize) {
             return Ok(*d);
         }
         eval_adjust(adjust, &mut Env { params: self.params, key, pos: DVec3::ZERO }, 1.0)

@@ -157,7 +157,7 @@ impl Builder<'_, '_, '_> {
                         break;
                     }
                     Item::Call(c) => {
-                        let Some(Some(d)) = self.ev.fixed.get(c.site as usize) else { continue };
+                        let Some(Some(d)) = self.ev.setup.fixed.get(c.site as usize) else { continue };
                         self.budget.charge_step()?;
                         self.budget.reserve_memory(CALL_BYTES)?;
                         self.pending_bytes += CALL_BYTES;

@@ -22,7 +22,7 @@ impl<'p, 'b> Machine<'p, 'b> {
         Ok(match &group.selector {
             Selector::Random if rules.len() == 1 => rules.first(),
             Selector::Random => {
-                let cum = &self.ev.cumulative[g as usize];
+                let cum = &self.ev.setup.cumulative[g as usize];
                 let total = cum.last().copied().unwrap_or(0.0);
                 let target = ctx.key.uniform(SELECT_SLOT) * total;
                 cum.iter().position(|&c| c > target).and_then(|i| rules.get(i))

@@ -23,9 +23,9 @@ pub(super) struct Setup {
     /// matches itself and -0 does not match 0).
     params: Vec<u64>,
     /// Deltas of call sites whose adjustments contain no `rand()`, by site.
-    pub(super) fixed: Arc<[Option<Delta>]>,
+    pub(super) fixed: Vec<Option<Delta>>,
     /// Cumulative weights per group, for weighted selection.
-    pub(super) cumulative: Arc<[Vec<f64>]>,
+    pub(super) cumulative: Vec<Vec<f64>>,
 }
 
 /// The last [`Setup`] made for one program (empty until the first).
@@ -57,7 +57,7 @@ pub(super) fn setup(program: &Program, params: &[f64], memo: Option<&SetupMemo>)
             }).collect()
         })
         .collect();
-    let made = Arc::new(Setup { params: params.iter().map(|p| p.to_bits()).collect(), fixed: fixed.into(), cumulative });
+    let made = Arc::new(Setup { params: params.iter().map(|p| p.to_bits()).collect(), fixed, cumulative });
     if let Some(slot) = memo.and_then(|m| m.0.lock().ok()).as_deref_mut() {
         *slot = Some(made.clone());
     }

@@ -74,7 +74,7 @@ fn items_shareable(ev: &Evaluator<'_>, items: &[Item], groups: &mut Vec<u32>) ->
                         _ => return false,
                     }
                     // Deterministic (precomputed), unmirrored, not collapsing.
-                    match ev.fixed.get(c.site as usize) {
+                    match ev.setup.fixed.get(c.site as usize) {
                         Some(Some(d)) if !d.frame().parity && d.frame().scale > 0.0 => {}
                         _ => return false,
                     }

@@ -34,45 +34,71 @@ struct RequestSeries {
     seconds: Histogram,
 }
 
-/// Kept handles of the request and stage series.
+/// Handles kept by a small, `Copy` label key.
+#[derive(Debug)]
+struct ByKey<K, M>(RwLock<HashMap<K, M, Fold>>);
+
+impl<K, M> Default for ByKey<K, M> {
+    fn default() -> Self {
+        ByKey(RwLock::default())
+    }
+}
+
+impl<K: std::hash::Hash + Eq + Copy, M: Clone> ByKey<K, M> {
+    /// The handle of `key`, made by `make` (the family's `get_or_create`)
+    /// the first time. A poisoned lock (a panic while holding it) only
+    /// costs the shortcut.
+    fn get(&self, key: K, make: impl FnOnce() -> M) -> M {
+        if let Some(m) = self.0.read().ok().and_then(|map| map.get(&key).cloned()) {
+            return m;
+        }
+        let m = make();
+        if let Ok(mut map) = self.0.write() {
+            map.entry(key).or_insert_with(|| m.clone());
+        }
+        m
+    }
+}
+
+/// Kept handles of the request, response-bytes and stage series.
 #[derive(Debug, Default)]
 pub(super) struct Kept {
-    /// By route, then (protocol, status) in the route's short list.
+    /// By route, then (protocol, status) in the route's short list: keyed
+    /// by the borrowed route, a lookup allocates nothing.
     requests: RwLock<HashMap<String, Vec<RequestSeries>, Fold>>,
-    stages: RwLock<HashMap<(Phase, Language, Format), Histogram, Fold>>,
+    bytes: ByKey<(&'static str, Format), Counter>,
+    stages: ByKey<(Phase, Language, Format), Histogram>,
 }
 
 impl Kept {
     /// The count and duration handles of (`protocol`, `route`, `status`),
     /// made by `make` (the families' `get_or_create`) the first time.
     pub(super) fn request(&self, protocol: &'static str, route: &str, status: u16, make: impl FnOnce() -> (Counter, Histogram)) -> (Counter, Histogram) {
-        let found = |list: &Vec<RequestSeries>| list.iter().find(|s| s.protocol == protocol && s.status == status).map(|s| (s.count.clone(), s.seconds.clone()));
+        let this = |s: &RequestSeries| s.protocol == protocol && s.status == status;
         // A poisoned lock (a panic while holding it) only costs the shortcut.
-        if let Some(handles) = self.requests.read().ok().and_then(|m| m.get(route).and_then(found)) {
+        if let Some(handles) = self.requests.read().ok().and_then(|m| m.get(route).and_then(|list| list.iter().find(|s| this(s)).map(|s| (s.count.clone(), s.seconds.clone())))) {
             return handles;
         }
         let (count, seconds) = make();
         if let Ok(mut m) = self.requests.write() {
             let list = m.entry(route.to_string()).or_default();
-            if found(list).is_none() {
+            if !list.iter().any(this) {
                 list.push(RequestSeries { protocol, status, count: count.clone(), seconds: seconds.clone() });
             }
         }
         (count, seconds)
     }
 
+    /// The response-bytes handle of (`protocol`, `format`), made by `make`
+    /// the first time.
+    pub(super) fn bytes(&self, protocol: &'static str, format: Format, make: impl FnOnce() -> Counter) -> Counter {
+        self.bytes.get((protocol, format), make)
+    }
+
     /// The duration handle of (`stage`, `language`, `format`), made by
     /// `make` the first time.
     pub(super) fn stage(&self, stage: Phase, language: Language, format: Format, make: impl FnOnce() -> Histogram) -> Histogram {
-        let key = (stage, language, format);
-        if let Some(h) = self.stages.read().ok().and_then(|m| m.get(&key).cloned()) {
-            return h;
-        }
-        let h = make();
-        if let Ok(mut m) = self.stages.write() {
-            m.entry(key).or_insert_with(|| h.clone());
-        }
-        h
+        self.stages.get((stage, language, format), make)
     }
 }
 
@@ -111,5 +137,14 @@ mod tests {
         kept.stage(Phase::Eval, Language::Mdg, Format::Glb, make_stage);
         kept.stage(Phase::Export, Language::Mdg, Format::Glb, make_stage);
         assert_eq!(stage_made.get(), 2);
+        let bytes_made = Cell::new(0);
+        let make_bytes = || {
+            bytes_made.set(bytes_made.get() + 1);
+            Counter::default()
+        };
+        kept.bytes("http", Format::Glb, make_bytes).inc_by(5);
+        assert_eq!(kept.bytes("http", Format::Glb, make_bytes).get(), 5, "the kept handle counts into the first");
+        kept.bytes("grpc", Format::Glb, make_bytes);
+        assert_eq!(bytes_made.get(), 2);
     }
 }

@@ -269,7 +269,7 @@ impl Metrics {
 
     /// Counts model bytes sent in `format`.
     pub(crate) fn bytes_out(&self, protocol: &'static str, format: Format, bytes: usize) {
-        self.response_bytes.get_or_create(&BytesLabels { protocol, format: format.name() }).inc_by(bytes as u64);
+        self.kept.bytes(protocol, format, || self.response_bytes.get_or_create(&BytesLabels { protocol, format: format.name() }).clone()).inc_by(bytes as u64);
     }
 
     /// Records one pipeline run and its duration.
